@@ -1,0 +1,301 @@
+"""Import the DAS3 release into the armrt model file (docs/model_schema.md).
+
+    python -m codegen.import_das3 --das3 ../shared/reference/das3 --out models/das2.json
+
+builds the paper's fixed-scapula, 5-DOF, 102-element model: DOFs and ranges, the fixed SC/AC posture,
+the arm's bodies and joints from das3.osim, the Hill parameters of the 102 elements, glenoid geometry,
+and muscle paths. `--paths opensim` (the default) fits length and line-of-action polynomials against
+OpenSim path geometry (codegen/fit_paths.py; needs `pip install opensim`); `--paths das3` keeps the
+DAS3 release polynomials with the girdle angles substituted, which needs no OpenSim but does not
+match das3.osim for a fixed girdle (see docs/path_accuracy.md).
+"""
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from . import das3_source as src
+from .das3_source import ModelInputError
+from .polynomial import substitute
+
+SCHEMA_VERSION = 1
+ARM_BODIES = [("humerus", "humerus_r"), ("ulna", "ulna_r"), ("radius", "radius_r"), ("hand", "hand_r")]
+OSIM_DOF = {"SCy": "SC_y", "SCz": "SC_z", "SCx": "SC_x", "ACy": "AC_y", "ACz": "AC_z", "ACx": "AC_x",
+            "GHy": "GH_y", "GHz": "GH_z", "GHyy": "GH_yy", "ELx": "EL_x", "PSy": "PS_y"}
+GRAVITY_THORAX = [0.0, -9.80665, 0.0]
+
+# DSEM cadaver landmarks (cm, DSEM global frame) and glenoid rim half-angles, from the reference README.
+DSEM_CM = {
+    "GH": [17.08, -1.92, 6.55], "glenoid": [15.14, -1.98, 7.81],
+    "AA": [18.26, 0.75, 10.56], "TS": [7.50, -1.17, 15.60], "AI": [10.16, -12.62, 15.67],
+}
+RIM_HALF_ANGLE_MAJOR_DEG = 44.37
+RIM_HALF_ANGLE_MINOR_DEG = 38.55
+# DAS3 real-time code's passive joint moments (reference README).
+PASSIVE_JOINT = {"stiffness_inside": 1.0, "stiffness_outside": 5000.0, "damping": 1.0}
+# Facts from the reference README used to cross-check das3.osim.
+README_MASSES = {"humerus": 2.0519, "ulna": 0.5464, "radius": 0.5464, "hand": 0.5250}
+README_AXES = {"ELx": [0.999766, 0.008446, -0.019909], "PSy": [-0.113295, 0.974059, 0.195892]}
+
+GROUPS = {
+    "rotator_cuff": ["infra", "termin", "supra", "subscap"],
+    "deltoid": ["deltscap", "deltclav"],
+    "elbow_flexors": ["bicl", "bicb", "brachialis", "brachiorad"],
+    "elbow_extensors": ["triclong", "tricmed", "triclat", "anconeus"],
+    "pronators": ["pronteres", "pronquad"],
+    "supinators": ["supinator"],
+    "biceps": ["bicl", "bicb"],
+    "triceps": ["triclong", "tricmed", "triclat"],
+    "pectoralis_major": ["pectmajt", "pectmajc"],
+}
+
+
+def sha256(path: Path) -> str:
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
+def reduce_length_poly(element: src.Das3Element, girdle: dict[str, float]) -> dict:
+    """The DAS3 length polynomial with the fixed girdle angles substituted and equal monomials merged."""
+    fixed = {j: girdle[d] for j, d in enumerate(element.dof_names) if d in girdle}
+    kept, exps, coefs = substitute(element.lparams, element.lcoefs, fixed)
+    return {"dofs": [element.dof_names[j] for j in kept], "exponents": exps, "coefs": coefs}
+
+
+def reduce_direction_poly(element: src.Das3Element, girdle: dict[str, float]) -> dict | None:
+    if element.direction is None:
+        return None
+    fixed = {j: girdle[d] for j, d in enumerate(element.dof_names) if d in girdle}
+    out = {"dofs": [d for d in element.dof_names if d not in girdle]}
+    for axis, (e, c) in element.direction.items():
+        _, exps, coefs = substitute(e, c, fixed)
+        out[axis] = {"exponents": exps, "coefs": coefs}
+    return out
+
+
+def kabsch(a: np.ndarray, b: np.ndarray):
+    """Rotation R and translation t minimising |R a_i + t - b_i|; returns (R, t, rms residual)."""
+    ca, cb = a.mean(axis=0), b.mean(axis=0)
+    H = (a - ca).T @ (b - cb)
+    U, _, Vt = np.linalg.svd(H)
+    d = np.sign(np.linalg.det(Vt.T @ U.T))
+    R = Vt.T @ np.diag([1, 1, d]) @ U.T
+    t = cb - R @ ca
+    rms = float(np.sqrt(np.mean(np.sum((a @ R.T + t - b) ** 2, axis=1))))
+    return R, t, rms
+
+
+def glenoid_geometry(gh_centre_scapula: np.ndarray, struct_ts: np.ndarray, struct_ai: np.ndarray) -> dict:
+    """Glenoid basis in the scapula (scapula_r) frame from the DSEM landmarks.
+
+    The DSEM landmarks are in the cadaver's global frame. They are registered onto the scapula body
+    frame by a least-squares rigid fit of four points known in both: the GH centre, the scapula
+    origin (the acromial angle AA, whose distance to GH matches to 0.1 mm), and the DAS3 TS and AI
+    points (model_struct TSprojection/AIprojection, which lie close to but not exactly on the DSEM
+    landmarks; the fit residual is recorded).
+    """
+    d = {k: np.array(v) / 100.0 for k, v in DSEM_CM.items()}
+    a = np.array([d["GH"], d["AA"], d["TS"], d["AI"]])
+    b = np.array([gh_centre_scapula, np.zeros(3), struct_ts, struct_ai])
+    R, t, rms = kabsch(a, b)
+    # Landmark frame (README): x from TS to AA; z perpendicular to x and AA-AI; y = z x x.
+    x = d["AA"] - d["TS"]
+    x /= np.linalg.norm(x)
+    z = np.cross(x, d["AA"] - d["AI"])
+    z /= np.linalg.norm(z)
+    y = np.cross(z, x)
+    normal_dsem = d["glenoid"] - d["GH"]
+    normal_dsem /= np.linalg.norm(normal_dsem)
+    normal_landmark = np.array([x, y, z]) @ normal_dsem
+    normal = R @ normal_dsem
+    superior = R @ y
+    major = superior - normal * (superior @ normal)
+    major /= np.linalg.norm(major)
+    minor = np.cross(normal, major)
+    return {
+        "gh_centre": gh_centre_scapula.tolist(),
+        "glenoid_centre": (R @ d["glenoid"] + t).tolist(),
+        "normal": normal.tolist(),
+        "major_axis": major.tolist(),
+        "minor_axis": minor.tolist(),
+        "normal_in_landmark_frame": normal_landmark.tolist(),
+        "rim_half_angle_major": math.radians(RIM_HALF_ANGLE_MAJOR_DEG),
+        "rim_half_angle_minor": math.radians(RIM_HALF_ANGLE_MINOR_DEG),
+        "landmarks_dsem_cm": DSEM_CM,
+        "registration": {"method": "Kabsch fit of GH, AA (scapula origin), TS, AI onto the scapula frame",
+                         "rms_residual_m": rms},
+    }
+
+
+def check_against_readme(bodies: dict, dof_axes: dict[str, np.ndarray]):
+    for name, mass in README_MASSES.items():
+        if abs(bodies[name]["mass"] - mass) > 1e-3:
+            raise ModelInputError(f"das3.osim: body '{name}' mass {bodies[name]['mass']} differs from the "
+                                  f"reference value {mass} kg")
+    for dof, axis in README_AXES.items():
+        a = np.asarray(axis) / np.linalg.norm(axis)
+        if np.degrees(np.arccos(min(1.0, abs(float(a @ dof_axes[dof]))))) > 0.1:
+            raise ModelInputError(f"das3.osim: {dof} axis {dof_axes[dof]} differs from the reference {axis}")
+
+
+def build_model(das3_dir: Path, paths: str = "opensim", cache_dir: Path | None = None, seed: int = 0) -> dict:
+    das3_dir = Path(das3_dir)
+    files = {k: das3_dir / k for k in ["model_struct.mat", "equilibrium.mat", "das3.osim"]}
+    for f in files.values():
+        if not f.exists():
+            raise ModelInputError(f"missing input file {f}")
+    struct = src.read_model_struct(files["model_struct.mat"])
+    posture = src.read_equilibrium(files["equilibrium.mat"])
+    osim = src.read_osim(files["das3.osim"])
+    girdle = {d: posture[d] for d in src.GIRDLE_DOFS}
+    coords = {OSIM_DOF[d]: v for d, v in posture.items()}
+
+    for needed in ["scapula_r", "humerus_r", "ulna_r", "radius_r", "hand_r"]:
+        if needed not in osim:
+            raise ModelInputError(f"das3.osim: missing Body '{needed}'")
+    R_scap, p_scap = src.body_in_frame(osim, "scapula_r", "ground", coords)
+
+    # Arm bodies. The GH joint is three massless CustomJoints in series (gh1..gh3), collapsed into one
+    # joint of three body-fixed rotations at gh1's location in the scapula.
+    bodies, dof_axes = {}, {}
+    for name, osim_name in ARM_BODIES:
+        b = osim[osim_name]
+        if name == "humerus":
+            chain, jname, parent = ["humerus_1", "humerus_2", "humerus_r"], "gh", "scapula"
+        else:
+            chain, jname = [osim_name], b.joint.name
+            parent = {"ulna": "humerus", "radius": "ulna", "hand": "radius"}[name]
+        axes, dofs = [], []
+        for link in chain:
+            j = osim[link].joint
+            for axis, coord, slope, const in j.rotations:
+                if coord is None:
+                    if const != 0.0:
+                        raise ModelInputError(f"das3.osim: joint '{j.name}' has a constant rotation")
+                    continue
+                if slope != 1.0:
+                    raise ModelInputError(f"das3.osim: joint '{j.name}' coordinate {coord} has slope {slope}")
+                dof = {v: k for k, v in OSIM_DOF.items()}[coord]
+                axes.append(axis.tolist())
+                dofs.append(dof)
+                dof_axes[dof] = axis
+            if link != chain[0] and np.any(j.location_in_parent != 0):
+                raise ModelInputError(f"das3.osim: joint '{j.name}' is offset from its parent")
+        jtype = {3: "gimbal_yzy", 1: "pin", 0: "weld"}[len(dofs)]
+        bodies[name] = {
+            "name": name, "osim_name": osim_name, "parent": parent,
+            "mass": b.mass, "com": b.com.tolist(), "inertia": b.inertia.tolist(),
+            "joint": {"name": jname, "type": jtype,
+                      "location_in_parent": osim[chain[0]].joint.location_in_parent.tolist(),
+                      "axes": axes, "dofs": dofs},
+        }
+    if [d for b in bodies.values() for d in b["joint"]["dofs"]] != src.ARM_DOFS:
+        raise ModelInputError("das3.osim: the arm joints do not carry GHy, GHz, GHyy, ELx, PSy in order")
+    check_against_readme(bodies, dof_axes)
+
+    arm = [e for e in struct.elements if src.muscle_of(e.name) in src.PAPER_MUSCLES]
+    gh_centre = np.array(bodies["humerus"]["joint"]["location_in_parent"])
+    import scipy.io as sio
+    ms = sio.loadmat(files["model_struct.mat"], squeeze_me=True, struct_as_record=False)["model"]
+    glenoid = glenoid_geometry(gh_centre, np.asarray(ms.TSprojection, float), np.asarray(ms.AIprojection, float))
+
+    if paths == "opensim":
+        from .fit_paths import fit_paths  # needs OpenSim
+        fits = fit_paths(str(files["das3.osim"]), {OSIM_DOF[d]: v for d, v in girdle.items()},
+                         [{"name": e.name, "osim_name": e.osim_name} for e in arm],
+                         str(cache_dir or Path("build")), seed=seed)
+        rom = {d: [float(v) for v in fits["rom"][d]] for d in src.ARM_DOFS}
+        path_note = "length and line-of-action polynomials fitted against das3.osim (codegen/fit_paths.py)"
+    elif paths == "das3":
+        fits = None
+        rom = {d: [float(v) for v in struct.dof_ranges[d]] for d in src.ARM_DOFS}
+        path_note = "DAS3 release polynomials with the fixed girdle angles substituted (not refitted)"
+    else:
+        raise ValueError(f"paths must be 'opensim' or 'das3', got {paths!r}")
+
+    elements = []
+    for e in arm:
+        p = e.params
+        entry = {
+            "name": e.name, "osim_name": e.osim_name, "muscle": src.muscle_of(e.name),
+            "fmax": p["fmax"], "lceopt": p["lceopt"], "lslack": p["lslack"], "pennopt": p["pennopt"],
+            "vmax": p["vmax"], "tact": p["tact"], "tdeact": p["tdeact"], "peeslack": p["PEEslack"],
+            "mass": p["mass"],
+        }
+        if fits is None:
+            length = reduce_length_poly(e, girdle)
+            entry.update({"dofs": [d for d in src.ARM_DOFS if d in length["dofs"]], "crosses_gh": e.crosses_gh,
+                          "length_poly": length, "gh_direction": reduce_direction_poly(e, girdle),
+                          "fit": None})
+        else:
+            f = fits["elements"][e.name]
+            entry.update({"dofs": list(f["dofs"]), "crosses_gh": bool(f["crosses_gh"]),
+                          "length_poly": f["length_poly"], "gh_direction": f["gh_direction"], "fit": f["fit"]})
+        elements.append(entry)
+
+    muscles = []
+    for m in src.PAPER_MUSCLES:
+        members = [e for e in elements if e["muscle"] == m]
+        dofs = {d for e in members for d in e["dofs"]}
+        crosses = [j for j, ds in [("GH", {"GHy", "GHz", "GHyy"}), ("HU", {"ELx"}), ("RU", {"PSy"})] if dofs & ds]
+        muscles.append({"name": m, "elements": [e["name"] for e in members], "crosses": crosses})
+
+    return {
+        "schema": "armrt-model",
+        "schema_version": SCHEMA_VERSION,
+        "name": "das2",
+        "description": ("The paper's real-time arm model: fixed scapula, 5 DOF (GH 3, elbow flexion, forearm "
+                        "pronation), 22 muscles in 102 Hill-type elements, from the DAS3 release. Ranges of "
+                        "motion: the paper's Table I (Gunal et al.) was lost; see dofs[].range and "
+                        "docs/path_accuracy.md for how the fixed-scapula range was chosen inside the DAS3 "
+                        "ranges. Muscle paths: " + path_note + "."),
+        "source": {"importer": "python -m codegen.import_das3 --paths " + paths,
+                   "files": {k: sha256(f) for k, f in files.items()}},
+        "gravity_thorax": GRAVITY_THORAX,
+        "dofs": [{"name": d, "osim_name": OSIM_DOF[d], "range": rom[d],
+                  "das3_range": [float(v) for v in struct.dof_ranges[d]], "rest": posture[d]}
+                 for d in src.ARM_DOFS],
+        "girdle": {"dofs": [{"name": d, "osim_name": OSIM_DOF[d], "angle": v} for d, v in girdle.items()],
+                   "source": "equilibrium.mat x[0:6]"},
+        "scapula": {"rotation_in_thorax": R_scap.tolist(), "origin_in_thorax": p_scap.tolist()},
+        "bodies": [bodies[n] for n, _ in ARM_BODIES],
+        "hand_point": {"body": "hand", "point": bodies["hand"]["com"]},
+        "glenoid": glenoid,
+        "passive_joint": PASSIVE_JOINT,
+        "muscles": muscles,
+        "groups": GROUPS,
+        "elements": elements,
+    }
+
+
+def write_model(model: dict, path: Path):
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps(model, indent=1, sort_keys=False) + "\n")
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(prog="python -m codegen.import_das3", description=__doc__.split("\n\n")[0])
+    ap.add_argument("--das3", type=Path, default=Path(__file__).resolve().parents[1] / ".." / "shared" / "reference" / "das3",
+                    help="folder with model_struct.mat, equilibrium.mat, das3.osim")
+    ap.add_argument("--out", type=Path, default=Path("models/das2.json"))
+    ap.add_argument("--paths", choices=["opensim", "das3"], default="opensim")
+    ap.add_argument("--cache", type=Path, default=Path("build"), help="where OpenSim samples are cached")
+    ap.add_argument("--seed", type=int, default=0)
+    args = ap.parse_args(argv)
+    try:
+        model = build_model(args.das3, paths=args.paths, cache_dir=args.cache, seed=args.seed)
+    except ModelInputError as exc:
+        print(f"import_das3: {exc}", file=sys.stderr)
+        return 2
+    write_model(model, args.out)
+    print(f"wrote {args.out}: {len(model['elements'])} elements, {len(model['muscles'])} muscles")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

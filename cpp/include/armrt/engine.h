@@ -1,0 +1,47 @@
+// The simulation stages, one per file under cpp/src/:
+//   muscle.cc        Hill-type muscle element: tendon force and contractile-element velocity
+//   forward.cc       state derivative: paths, muscles, joint torques, M(q) qdd = tau + b, GH stability
+//   integrate.cc     fixed-step Euler and RK4, with TET measured every step
+//   cvode.cc         SUNDIALS CVODE (BDF), the accurate reference
+//   kinematics.cc    outputs derived from q: thorax-humerus angles
+#pragma once
+
+#include "armrt/data.h"
+#include "armrt/model.h"
+
+namespace armrt {
+
+// ---- muscle.cc
+struct MuscleOut {
+  double force;          // N, SEE (tendon) force
+  double fibre_velocity; // m/s, d lce / dt
+};
+// One element: muscle-tendon length L (m), contractile-element length lce (m), activation a.
+MuscleOut muscle_element(const ElementConstants& e, double fibre_damping, double L, double lce, double a);
+// Contractile-element length at which the element is in static equilibrium (zero fibre velocity)
+// at muscle-tendon length L and activation a; used to start simulations without transients.
+double muscle_equilibrium_lce(const ElementConstants& e, double fibre_damping, double L, double a);
+
+// ---- forward.cc
+// Evaluates dx/dt at state x into xdot. With record = true also fills the outputs of d (forces,
+// moment arms, qdd, hand position, GH force and stability).
+void forward(const Model& m, Data& d, const double* x, double* xdot, bool record);
+// GH stability of a force of the humeral head on the glenoid (scapula frame).
+void gh_stability(const ModelDef& def, const double* force, double* theta, double* phi, double* stab);
+// Passive joint moments (N m) at q, qd.
+void passive_joint_torque(const ModelDef& def, const double* q, const double* qd, double* tau);
+
+// ---- integrate.cc
+// Advances d by one step of dt with the fixed-step integrator; the outputs of d describe the state
+// at the start of the step. Returns false (and sets d.status) if the state became non-finite or
+// a joint moved faster than m.max_joint_speed.
+bool step(const Model& m, Data& d, Integrator integrator, double dt);
+bool check_state(const Model& m, Data& d);
+const char* state_name(const Model& m, int index, char* buf, int buflen);
+
+// ---- kinematics.cc
+// Thorax-humerus angles (rad): plane of elevation, elevation, axial rotation (Y-Z-Y sequence in the
+// DSEM thorax axes: plane 0 = abduction in the frontal plane, 90 deg = forward flexion).
+void thorax_humerus_angles(const Model& m, const double* q, double* angles);
+
+}  // namespace armrt

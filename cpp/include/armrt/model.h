@@ -1,0 +1,56 @@
+// Model: the immutable description of one arm (like mjModel / pinocchio::Model). It is built once from
+// a generated ModelDef; per-element strength and maximum activation may be changed between runs
+// (weakness and paralysis), after which derived constants are recomputed by update_derived().
+#pragma once
+
+#include <array>
+
+#include "armrt/model_def.h"
+
+namespace armrt {
+
+inline constexpr int kNumDofs = 5;
+inline constexpr int kMaxElements = 128;
+inline constexpr int kMaxState = 2 * kNumDofs + 2 * kMaxElements;
+
+// Hill-type muscle constants (McLean et al. 2003, as used by the DAS3 real-time code).
+inline constexpr double kHillA = 0.25;             // Hill a/Fmax (concentric curvature)
+inline constexpr double kEccentricFmax = 1.5;      // eccentric force limit, x isometric force
+inline constexpr double kForceLengthWidth = 0.56;  // width of the Gaussian force-length curve (x lceopt)
+inline constexpr double kTendonStrainAtFmax = 0.04;
+inline constexpr double kLinearStiffness = 10.0;   // N/m in SEE and PEE: keeps the equations solvable when slack
+inline constexpr double kFibreDamping = 10.0;      // N/(m/s), parallel to the contractile element
+
+// Integrator choices.
+enum class Integrator { kEuler = 0, kRk4 = 1, kCvode = 2 };
+
+struct ElementConstants {
+  double fmax;          // N, after strength scaling
+  double lceopt;        // m
+  double lslack;        // m
+  double thickness;     // m, lceopt * sin(pennopt): constant for a constant-volume pennate muscle
+  double vmax;          // m/s (vmax * lceopt)
+  double k_see;         // N/m^2, quadratic SEE: fmax at 4% strain
+  double k_pee;         // N/m^2, quadratic PEE: fmax at (peeslack + width) * lceopt
+  double pee_slack;     // m
+  double c1, c2;        // activation dynamics: da/dt = (c1 u + c2)(u - a)
+  double ecc_c;         // m/s, eccentric F-V constant matching the concentric slope at zero velocity
+  double max_activation;  // [0, 1]
+  double strength_scale;  // multiplies DAS3 fmax (1 = intact)
+};
+
+struct Model {
+  const ModelDef* def = nullptr;
+  int num_elements = 0;
+  std::array<ElementConstants, kMaxElements> element{};
+  std::array<double, 3> gravity_scapula{};  // m/s^2, may be changed (e.g. a lying posture)
+  double fibre_damping = kFibreDamping;     // N/(m/s)
+  double max_joint_speed = 100.0;           // rad/s; faster means the simulation diverged
+};
+
+// Builds a Model from generated tables. Never allocates.
+void model_init(Model& m, const ModelDef& def);
+// Recomputes per-element constants after strength_scale or max_activation changed.
+void model_update_derived(Model& m);
+
+}  // namespace armrt

@@ -1,0 +1,79 @@
+// The interface between generated model code (cpp/generated/, written by `python -m codegen.generate`)
+// and the engine. A ModelDef is immutable, static data: parameter tables plus straight-line functions.
+// Arrays are row-major; frames and sign conventions are in docs/conventions.md.
+#pragma once
+
+namespace armrt {
+
+struct ElementParams {
+  const char* name;        // DAS3 element name, e.g. "deltscap1"
+  const char* muscle;      // parent muscle, e.g. "deltscap"
+  double fmax;             // N
+  double lceopt;           // m
+  double lslack;           // m, series elastic (tendon) slack length
+  double pennopt;          // rad
+  double vmax;             // lceopt/s
+  double tact;             // s
+  double tdeact;           // s
+  double peeslack;         // x lceopt
+  double mass;             // kg
+  int crosses_gh;          // 0/1
+  int dof_mask;            // bit j set if the element crosses DOF j
+};
+
+struct DofParams {
+  const char* name;        // "GHy", ...
+  const char* osim_name;   // "GH_y", ...
+  double range_min;        // rad, fixed-scapula range of motion
+  double range_max;        // rad
+  double rest;             // rad, DAS3 equilibrium posture
+};
+
+struct GroupDef {
+  const char* name;              // muscle or group name
+  int num_elements;
+  const int* elements;           // element indices
+};
+
+struct ModelDef {
+  const char* name;              // "das2"
+  const char* source_hash;       // SHA-256 of the model file it was generated from
+  int num_dofs;                  // 5
+  int num_elements;              // 102
+  const DofParams* dofs;
+  const ElementParams* elements;
+  int num_muscles;
+  const GroupDef* muscles;       // the 22 muscles
+  int num_groups;
+  const GroupDef* groups;        // named groups (rotator_cuff, elbow_flexors, ...)
+
+  double gravity_scapula[3];     // m/s^2, gravity in the scapula frame
+  double scapula_rotation_in_thorax[9];  // columns = scapula axes in thorax coordinates
+  double scapula_origin_in_thorax[3];    // m
+  double gh_centre[3];           // m, scapula frame
+  double glenoid_normal[3];      // unit, scapula frame, GH centre -> glenoid centre
+  double glenoid_major_axis[3];  // unit, superior-inferior axis of the glenoid ellipse
+  double glenoid_minor_axis[3];  // unit, normal x major
+  double rim_half_angle_major;   // rad
+  double rim_half_angle_minor;   // rad
+  double arm_mass;               // kg, humerus + ulna + radius + hand
+  double passive_stiffness_inside;   // N m/rad
+  double passive_stiffness_outside;  // N m/rad^2
+  double passive_damping;            // N m s/rad
+
+  // Dynamics: M(q) qdd = tau + bias_force(q, qd, g).
+  void (*mass_matrix)(const double* q, double* M);                       // M[5*5]
+  void (*bias_force)(const double* q, const double* qd, const double* g_scapula,
+                     double* b);                                         // b[5]: gravity and Coriolis/centrifugal generalised forces
+  void (*hand_position)(const double* q, double* p);                     // p[3], m, scapula frame
+  void (*hand_jacobian)(const double* q, double* Jv, double* Jw);        // 3x5 each: hand point velocity, hand angular velocity
+  void (*arm_momentum_rate)(const double* q, const double* qd,
+                            double* A, double* c);                       // sum_b m_b a_b = A qdd + c; A[3*5], c[3]
+  void (*body_poses)(const double* q, double* R, double* p);             // R[4*9], p[4*3]: humerus, ulna, radius, hand in scapula frame
+  // Muscle paths (polynomials): lengths, moment arms -dL/dq, lines of action at GH.
+  void (*muscle_lengths)(const double* q, double* L);                    // L[102], m
+  void (*muscle_paths)(const double* q, double* L, double* moment_arm);  // L[102], moment_arm[102*5], m
+  void (*gh_directions)(const double* q, double* d);                     // d[102*3], unit, zero rows for non-GH elements
+};
+
+}  // namespace armrt

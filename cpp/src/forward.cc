@@ -1,0 +1,136 @@
+// The state derivative (paper eq. 1): M(q) qdd = Q_muscle + Q_passive + Q_external + b(q, qd, g),
+// plus activation and contractile-element dynamics of every element, and the GH stability value.
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include "armrt/engine.h"
+
+namespace armrt {
+
+using Mat5 = Eigen::Matrix<double, kNumDofs, kNumDofs, Eigen::RowMajor>;
+using Vec5 = Eigen::Matrix<double, kNumDofs, 1>;
+using Mat35 = Eigen::Matrix<double, 3, kNumDofs, Eigen::RowMajor>;
+
+void passive_joint_torque(const ModelDef& def, const double* q, const double* qd, double* tau) {
+  for (int j = 0; j < kNumDofs; ++j) {
+    const DofParams& dof = def.dofs[j];
+    double t = -def.passive_stiffness_inside * (q[j] - dof.rest) - def.passive_damping * qd[j];
+    if (q[j] > dof.range_max) {
+      const double over = q[j] - dof.range_max;
+      t -= def.passive_stiffness_outside * over * over;
+    } else if (q[j] < dof.range_min) {
+      const double under = dof.range_min - q[j];
+      t += def.passive_stiffness_outside * under * under;
+    }
+    tau[j] = t;
+  }
+}
+
+void gh_stability(const ModelDef& def, const double* f, double* theta, double* phi, double* stab) {
+  double fn = 0, fmaj = 0, fmin = 0;
+  for (int k = 0; k < 3; ++k) {
+    fn += f[k] * def.glenoid_normal[k];
+    fmaj += f[k] * def.glenoid_major_axis[k];
+    fmin += f[k] * def.glenoid_minor_axis[k];
+  }
+  *theta = std::atan2(fmaj, fn);
+  *phi = std::atan2(fmin, fn);
+  const double rt = *theta / def.rim_half_angle_major, rp = *phi / def.rim_half_angle_minor;
+  *stab = rt * rt + rp * rp;
+}
+
+void forward(const Model& m, Data& d, const double* x, double* xdot, bool record) {
+  const ModelDef& def = *m.def;
+  const int n = m.num_elements;
+  const int ia = act_offset(m);
+  const double* q = x + kQ;
+  const double* qd = x + kQd;
+
+  double L[kMaxElements];
+  double R[kMaxElements * kNumDofs];
+  def.muscle_paths(q, L, R);
+
+  // Muscles: activation dynamics, CE velocity, tendon force, generalised force R^T F.
+  double tau[kNumDofs] = {0, 0, 0, 0, 0};
+  double force[kMaxElements];
+  for (int i = 0; i < n; ++i) {
+    const ElementConstants& e = m.element[i];
+    const double u = std::clamp(d.excitation[i], 0.0, e.max_activation);
+    const double a = x[ia + i];
+    xdot[ia + i] = (e.c1 * u + e.c2) * (u - a);
+    const MuscleOut mo = muscle_element(e, m.fibre_damping, L[i], x[kLce + i], a);
+    xdot[kLce + i] = mo.fibre_velocity;
+    force[i] = mo.force;
+    const double* r = R + i * kNumDofs;
+    for (int j = 0; j < kNumDofs; ++j) tau[j] += r[j] * mo.force;
+    if (record) {
+      d.muscle_force[i] = mo.force;
+      d.fibre_velocity[i] = mo.fibre_velocity;
+    }
+  }
+
+  double tau_passive[kNumDofs];
+  passive_joint_torque(def, q, qd, tau_passive);
+
+  // External hand load, given in the thorax frame; the Jacobians are in the scapula frame.
+  const double* Rs = def.scapula_rotation_in_thorax;  // columns = scapula axes in thorax
+  double f_ext[3], t_ext[3];
+  for (int k = 0; k < 3; ++k) {
+    f_ext[k] = Rs[0 * 3 + k] * d.hand_force[0] + Rs[1 * 3 + k] * d.hand_force[1] + Rs[2 * 3 + k] * d.hand_force[2];
+    t_ext[k] = Rs[0 * 3 + k] * d.hand_moment[0] + Rs[1 * 3 + k] * d.hand_moment[1] + Rs[2 * 3 + k] * d.hand_moment[2];
+  }
+  double tau_ext[kNumDofs] = {0, 0, 0, 0, 0};
+  const bool loaded = f_ext[0] != 0 || f_ext[1] != 0 || f_ext[2] != 0 || t_ext[0] != 0 || t_ext[1] != 0 || t_ext[2] != 0;
+  if (loaded) {
+    double Jv[3 * kNumDofs], Jw[3 * kNumDofs];
+    def.hand_jacobian(q, Jv, Jw);
+    for (int j = 0; j < kNumDofs; ++j)
+      for (int k = 0; k < 3; ++k) tau_ext[j] += Jv[k * kNumDofs + j] * f_ext[k] + Jw[k * kNumDofs + j] * t_ext[k];
+  }
+
+  Mat5 M;
+  def.mass_matrix(q, M.data());
+  Vec5 rhs;
+  def.bias_force(q, qd, m.gravity_scapula.data(), rhs.data());
+  for (int j = 0; j < kNumDofs; ++j) rhs[j] += tau[j] + tau_passive[j] + tau_ext[j];
+  const Vec5 qdd = M.llt().solve(rhs);
+  for (int j = 0; j < kNumDofs; ++j) {
+    xdot[kQ + j] = qd[j];
+    xdot[kQd + j] = qdd[j];
+  }
+
+  if (!record) return;
+  for (int j = 0; j < kNumDofs; ++j) {
+    d.qdd[j] = qdd[j];
+    d.muscle_torque[j] = tau[j];
+    d.passive_torque[j] = tau_passive[j];
+    d.external_torque[j] = tau_ext[j];
+  }
+  std::copy(L, L + n, d.muscle_length.begin());
+  std::copy(R, R + n * kNumDofs, d.moment_arm.begin());
+
+  double p[3];
+  def.hand_position(q, p);
+  for (int k = 0; k < 3; ++k)
+    d.hand_position[k] = def.scapula_origin_in_thorax[k] + Rs[k * 3 + 0] * p[0] + Rs[k * 3 + 1] * p[1] + Rs[k * 3 + 2] * p[2];
+
+  // GH reaction (conventions.md): muscle forces along their lines of action, the hand load, and the
+  // arm's weight minus its mass times acceleration.
+  double dir[kMaxElements * 3];
+  def.gh_directions(q, dir);
+  Mat35 A;
+  Eigen::Vector3d c;
+  def.arm_momentum_rate(q, qd, A.data(), c.data());
+  const Eigen::Vector3d inertial = A * qdd + c;
+  for (int k = 0; k < 3; ++k) {
+    double fk = f_ext[k] + def.arm_mass * m.gravity_scapula[k] - inertial[k];
+    for (int i = 0; i < n; ++i) fk += force[i] * dir[i * 3 + k];
+    d.gh_force[k] = fk;
+  }
+  gh_stability(def, d.gh_force.data(), &d.gh_theta, &d.gh_phi, &d.gh_stab);
+}
+
+}  // namespace armrt

@@ -1,0 +1,72 @@
+// Fixed-step explicit integrators. TET (task execution time) is the wall time of one whole step.
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+
+#include "armrt/engine.h"
+
+namespace armrt {
+namespace {
+
+inline double now_ns() {
+  timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e9 + static_cast<double>(ts.tv_nsec);
+}
+
+}  // namespace
+
+const char* state_name(const Model& m, int index, char* buf, int buflen) {
+  const int n = m.num_elements;
+  if (index < kQd) std::snprintf(buf, buflen, "q[%s]", m.def->dofs[index].name);
+  else if (index < kLce) std::snprintf(buf, buflen, "qdot[%s]", m.def->dofs[index - kQd].name);
+  else if (index < kLce + n) std::snprintf(buf, buflen, "lce[%s]", m.def->elements[index - kLce].name);
+  else std::snprintf(buf, buflen, "activation[%s]", m.def->elements[index - kLce - n].name);
+  return buf;
+}
+
+bool check_state(const Model& m, Data& d) {
+  const int ns = state_size(m);
+  for (int k = 0; k < ns; ++k) {
+    if (!std::isfinite(d.x[k])) {
+      d.status = Status::kNonFinite;
+      d.bad_index = k;
+      d.bad_time = d.time;
+      return false;
+    }
+  }
+  for (int j = 0; j < kNumDofs; ++j) {
+    if (std::fabs(d.x[kQd + j]) > m.max_joint_speed) {
+      d.status = Status::kTooFast;
+      d.bad_index = kQd + j;
+      d.bad_time = d.time;
+      return false;
+    }
+  }
+  return true;
+}
+
+bool step(const Model& m, Data& d, Integrator integrator, double dt) {
+  const double t0 = now_ns();
+  const int ns = state_size(m);
+  double* x = d.x.data();
+  forward(m, d, x, d.k1.data(), true);
+  if (integrator == Integrator::kEuler) {
+    for (int k = 0; k < ns; ++k) x[k] += dt * d.k1[k];
+  } else {
+    double* xt = d.xtmp.data();
+    for (int k = 0; k < ns; ++k) xt[k] = x[k] + 0.5 * dt * d.k1[k];
+    forward(m, d, xt, d.k2.data(), false);
+    for (int k = 0; k < ns; ++k) xt[k] = x[k] + 0.5 * dt * d.k2[k];
+    forward(m, d, xt, d.k3.data(), false);
+    for (int k = 0; k < ns; ++k) xt[k] = x[k] + dt * d.k3[k];
+    forward(m, d, xt, d.k4.data(), false);
+    const double h6 = dt / 6.0;
+    for (int k = 0; k < ns; ++k) x[k] += h6 * (d.k1[k] + 2.0 * (d.k2[k] + d.k3[k]) + d.k4[k]);
+  }
+  d.time += dt;
+  d.tet.add(now_ns() - t0);
+  return check_state(m, d);
+}
+
+}  // namespace armrt

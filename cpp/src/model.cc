@@ -1,0 +1,53 @@
+#include <cmath>
+
+#include "armrt/data.h"
+#include "armrt/engine.h"
+
+namespace armrt {
+
+void model_update_derived(Model& m) {
+  for (int i = 0; i < m.num_elements; ++i) {
+    const ElementParams& p = m.def->elements[i];
+    ElementConstants& e = m.element[i];
+    e.fmax = p.fmax * e.strength_scale;
+    e.lceopt = p.lceopt;
+    e.lslack = p.lslack;
+    e.thickness = p.lceopt * std::sin(p.pennopt);
+    e.vmax = p.vmax * p.lceopt;
+    const double tendon_stretch_at_fmax = kTendonStrainAtFmax * p.lslack;
+    e.k_see = e.fmax / (tendon_stretch_at_fmax * tendon_stretch_at_fmax);
+    const double pee_stretch_at_fmax = kForceLengthWidth * p.lceopt;
+    e.k_pee = e.fmax / (pee_stretch_at_fmax * pee_stretch_at_fmax);
+    e.pee_slack = p.peeslack * p.lceopt;
+    e.c2 = 1.0 / p.tdeact;
+    e.c1 = 1.0 / p.tact - e.c2;
+    // The eccentric branch (gmax v + c)/(v + c) has slope (gmax - 1)/c at v = 0; matching the concentric
+    // slope (1 + A)/(A vmax) keeps dF/dv continuous, which the explicit velocity inversion relies on.
+    e.ecc_c = (kEccentricFmax - 1.0) * kHillA * e.vmax / (1.0 + kHillA);
+  }
+}
+
+void model_init(Model& m, const ModelDef& def) {
+  m.def = &def;
+  m.num_elements = def.num_elements;
+  for (int k = 0; k < 3; ++k) m.gravity_scapula[k] = def.gravity_scapula[k];
+  for (int i = 0; i < m.num_elements; ++i) {
+    m.element[i].strength_scale = 1.0;
+    m.element[i].max_activation = 1.0;
+  }
+  model_update_derived(m);
+}
+
+void data_reset(const Model& m, Data& d, const double* q) {
+  d = Data{};
+  for (int j = 0; j < kNumDofs; ++j) d.x[kQ + j] = q ? q[j] : m.def->dofs[j].rest;
+  double L[kMaxElements];
+  m.def->muscle_lengths(&d.x[kQ], L);
+  const int ia = act_offset(m);
+  for (int i = 0; i < m.num_elements; ++i) {
+    d.x[ia + i] = 0.0;
+    d.x[kLce + i] = muscle_equilibrium_lce(m.element[i], m.fibre_damping, L[i], 0.0);
+  }
+}
+
+}  // namespace armrt

@@ -1,0 +1,99 @@
+#include "armrt/simulator.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "das2.h"
+
+namespace armrt {
+
+const ModelDef* find_model(const std::string& name) {
+  if (name == "das2") return &generated::das2::model_def();
+  return nullptr;
+}
+
+std::string model_names() { return "das2"; }
+
+Integrator parse_integrator(const std::string& name) {
+  if (name == "euler") return Integrator::kEuler;
+  if (name == "rk4") return Integrator::kRk4;
+  if (name == "cvode") return Integrator::kCvode;
+  throw std::invalid_argument("unknown integrator '" + name + "' (expected euler, rk4 or cvode)");
+}
+
+const char* integrator_name(Integrator integrator) {
+  switch (integrator) {
+    case Integrator::kEuler: return "euler";
+    case Integrator::kRk4: return "rk4";
+    case Integrator::kCvode: return "cvode";
+  }
+  return "?";
+}
+
+Simulator::Simulator(const ModelDef& def, Integrator integ, double step) : integrator(integ), dt(step) {
+  if (!(dt > 0)) throw std::invalid_argument("dt must be positive, got " + std::to_string(dt));
+  model_init(model, def);
+  data_reset(model, data, nullptr);
+  set_integrator(integ, step);
+}
+
+void Simulator::set_integrator(Integrator integ, double step) {
+  if (!(step > 0)) throw std::invalid_argument("dt must be positive, got " + std::to_string(step));
+  integrator = integ;
+  dt = step;
+  if (integrator == Integrator::kCvode) cvode_ = std::make_unique<CvodeIntegrator>(model, data);
+  else cvode_.reset();
+}
+
+void Simulator::reset(const double* q, const double* qd, const double* activation) {
+  const auto excitation = data.excitation;
+  const auto hand_force = data.hand_force;
+  const auto hand_moment = data.hand_moment;
+  data_reset(model, data, q);
+  data.excitation = excitation;
+  data.hand_force = hand_force;
+  data.hand_moment = hand_moment;
+  if (qd) for (int j = 0; j < kNumDofs; ++j) data.x[kQd + j] = qd[j];
+  if (activation) {
+    double L[kMaxElements];
+    model.def->muscle_lengths(&data.x[kQ], L);
+    const int ia = act_offset(model);
+    for (int i = 0; i < model.num_elements; ++i) {
+      data.x[ia + i] = activation[i];
+      data.x[kLce + i] = muscle_equilibrium_lce(model.element[i], model.fibre_damping, L[i], activation[i]);
+    }
+  }
+  if (cvode_) cvode_->reinit();
+}
+
+bool Simulator::step() {
+  if (data.status != Status::kOk) return false;
+  if (cvode_) return cvode_->advance(dt);
+  return armrt::step(model, data, integrator, dt);
+}
+
+void Simulator::evaluate_outputs() { forward(model, data, data.x.data(), data.k1.data(), true); }
+
+std::string Simulator::error_message() const {
+  char name[96];
+  char buf[256];
+  switch (data.status) {
+    case Status::kOk: return "";
+    case Status::kNonFinite:
+      std::snprintf(buf, sizeof buf, "simulation diverged: %s became non-finite at t = %.6f s",
+                    state_name(model, data.bad_index, name, sizeof name), data.bad_time);
+      return buf;
+    case Status::kTooFast:
+      std::snprintf(buf, sizeof buf,
+                    "simulation diverged: %s = %.4g rad/s exceeds the bound %.4g rad/s at t = %.6f s",
+                    state_name(model, data.bad_index, name, sizeof name), data.x[data.bad_index],
+                    model.max_joint_speed, data.bad_time);
+      return buf;
+    case Status::kCvodeFailed:
+      std::snprintf(buf, sizeof buf, "CVODE failed to advance at t = %.6f s", data.bad_time);
+      return buf;
+  }
+  return "unknown error";
+}
+
+}  // namespace armrt

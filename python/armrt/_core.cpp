@@ -1,0 +1,330 @@
+// Thin pybind11 bindings: the Python API (armrt/arm.py) validates inputs and names things; this file
+// only moves arrays across and runs loops in C++ with the GIL released.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "armrt/engine.h"
+#include "armrt/simulator.h"
+
+namespace py = pybind11;
+using namespace armrt;
+
+namespace {
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// A numpy view of memory owned by `owner` (kept alive by the array).
+Array view(double* ptr, std::vector<py::ssize_t> shape, py::handle owner) {
+  std::vector<py::ssize_t> strides(shape.size());
+  py::ssize_t s = sizeof(double);
+  for (int k = static_cast<int>(shape.size()) - 1; k >= 0; --k) {
+    strides[k] = s;
+    s *= shape[k];
+  }
+  return Array(shape, strides, ptr, owner);
+}
+
+const double* checked(const Array& a, py::ssize_t n, const char* what) {
+  if (a.size() != n) throw py::value_error(std::string(what) + ": expected " + std::to_string(n) +
+                                           " values, got " + std::to_string(a.size()));
+  return a.data();
+}
+
+void raise_if_failed(const Simulator& s) {
+  if (s.data.status != Status::kOk) throw std::runtime_error(s.error_message());
+}
+
+const ModelDef& require_model(const std::string& name) {
+  const ModelDef* def = find_model(name);
+  if (!def) throw py::value_error("unknown model '" + name + "' (compiled-in models: " + model_names() + ")");
+  return *def;
+}
+
+py::dict model_info(const ModelDef& def) {
+  py::dict info;
+  info["name"] = def.name;
+  info["source_hash"] = def.source_hash;
+  py::list dofs, elements, muscles, groups;
+  for (int j = 0; j < def.num_dofs; ++j) {
+    const DofParams& d = def.dofs[j];
+    dofs.append(py::dict(py::arg("name") = d.name, py::arg("osim_name") = d.osim_name,
+                         py::arg("range") = py::make_tuple(d.range_min, d.range_max), py::arg("rest") = d.rest));
+  }
+  for (int i = 0; i < def.num_elements; ++i) {
+    const ElementParams& e = def.elements[i];
+    std::vector<int> crossed;
+    for (int j = 0; j < def.num_dofs; ++j) if (e.dof_mask & (1 << j)) crossed.push_back(j);
+    elements.append(py::dict(py::arg("name") = e.name, py::arg("muscle") = e.muscle, py::arg("fmax") = e.fmax,
+                             py::arg("lceopt") = e.lceopt, py::arg("lslack") = e.lslack,
+                             py::arg("pennopt") = e.pennopt, py::arg("vmax") = e.vmax, py::arg("tact") = e.tact,
+                             py::arg("tdeact") = e.tdeact, py::arg("peeslack") = e.peeslack,
+                             py::arg("crosses_gh") = static_cast<bool>(e.crosses_gh), py::arg("dofs") = crossed));
+  }
+  auto groups_of = [](const GroupDef* g, int n, py::list& out) {
+    for (int k = 0; k < n; ++k)
+      out.append(py::make_tuple(g[k].name, std::vector<int>(g[k].elements, g[k].elements + g[k].num_elements)));
+  };
+  groups_of(def.muscles, def.num_muscles, muscles);
+  groups_of(def.groups, def.num_groups, groups);
+  info["dofs"] = dofs;
+  info["elements"] = elements;
+  info["muscles"] = muscles;
+  info["groups"] = groups;
+  info["arm_mass"] = def.arm_mass;
+  info["gravity_scapula"] = std::vector<double>(def.gravity_scapula, def.gravity_scapula + 3);
+  info["scapula_rotation_in_thorax"] = std::vector<double>(def.scapula_rotation_in_thorax, def.scapula_rotation_in_thorax + 9);
+  info["scapula_origin_in_thorax"] = std::vector<double>(def.scapula_origin_in_thorax, def.scapula_origin_in_thorax + 3);
+  info["gh_centre"] = std::vector<double>(def.gh_centre, def.gh_centre + 3);
+  info["glenoid_normal"] = std::vector<double>(def.glenoid_normal, def.glenoid_normal + 3);
+  info["glenoid_major_axis"] = std::vector<double>(def.glenoid_major_axis, def.glenoid_major_axis + 3);
+  info["glenoid_minor_axis"] = std::vector<double>(def.glenoid_minor_axis, def.glenoid_minor_axis + 3);
+  info["rim_half_angle_major"] = def.rim_half_angle_major;
+  info["rim_half_angle_minor"] = def.rim_half_angle_minor;
+  return info;
+}
+
+// Channels recorded by simulate(), one row per recorded step.
+struct Recording {
+  std::vector<double> t, q, qd, lce, act, excitation, force, length, gh_force, gh_stab, gh_angles, hand, th_angles, tet;
+};
+
+}  // namespace
+
+PYBIND11_MODULE(_core, mod) {
+  mod.doc() = "armrt engine bindings (use armrt.Arm)";
+  mod.attr("NUM_DOFS") = kNumDofs;
+  mod.def("model_info", [](const std::string& name) { return model_info(require_model(name)); });
+
+  py::class_<Simulator>(mod, "Simulator")
+      .def(py::init([](const std::string& model, const std::string& integrator, double dt) {
+             return std::make_unique<Simulator>(require_model(model), parse_integrator(integrator), dt);
+           }),
+           py::arg("model"), py::arg("integrator"), py::arg("dt"))
+      .def_property_readonly("num_elements", [](const Simulator& s) { return s.model.num_elements; })
+      .def_property_readonly("dt", [](const Simulator& s) { return s.dt; })
+      .def_property_readonly("integrator", [](const Simulator& s) { return integrator_name(s.integrator); })
+      .def("set_integrator", [](Simulator& s, const std::string& name, double dt) { s.set_integrator(parse_integrator(name), dt); })
+      .def_property("time", [](const Simulator& s) { return s.data.time; }, [](Simulator& s, double t) { s.data.time = t; })
+      // Zero-copy views of the state and inputs.
+      .def_property_readonly("state", [](py::object self) {
+        auto& s = self.cast<Simulator&>();
+        return view(s.data.x.data(), {state_size(s.model)}, self);
+      })
+      .def_property_readonly("excitation", [](py::object self) {
+        auto& s = self.cast<Simulator&>();
+        return view(s.data.excitation.data(), {s.model.num_elements}, self);
+      })
+      .def_property_readonly("hand_force", [](py::object self) { return view(self.cast<Simulator&>().data.hand_force.data(), {3}, self); })
+      .def_property_readonly("hand_moment", [](py::object self) { return view(self.cast<Simulator&>().data.hand_moment.data(), {3}, self); })
+      .def("reset", [](Simulator& s, py::object q, py::object qd, py::object act) {
+        Array qa, qda, aa;
+        const double *qp = nullptr, *qdp = nullptr, *ap = nullptr;
+        if (!q.is_none()) { qa = q.cast<Array>(); qp = checked(qa, kNumDofs, "q"); }
+        if (!qd.is_none()) { qda = qd.cast<Array>(); qdp = checked(qda, kNumDofs, "qdot"); }
+        if (!act.is_none()) { aa = act.cast<Array>(); ap = checked(aa, s.model.num_elements, "activation"); }
+        s.reset(qp, qdp, ap);
+      }, py::arg("q") = py::none(), py::arg("qdot") = py::none(), py::arg("activation") = py::none())
+      .def("step", [](Simulator& s, long n) {
+        {
+          py::gil_scoped_release release;
+          for (long k = 0; k < n; ++k) if (!s.step()) break;
+        }
+        raise_if_failed(s);
+      }, py::arg("n") = 1)
+      .def("clear_error", [](Simulator& s) { s.data.status = Status::kOk; s.data.bad_index = -1; })
+      .def("evaluate_outputs", &Simulator::evaluate_outputs)
+      .def("outputs", [](Simulator& s) {
+        const int n = s.model.num_elements;
+        py::dict o;
+        auto copy = [](const double* p, std::vector<py::ssize_t> shape) {
+          Array a(shape);
+          std::copy(p, p + a.size(), a.mutable_data());
+          return a;
+        };
+        o["qddot"] = copy(s.data.qdd.data(), {kNumDofs});
+        o["muscle_length"] = copy(s.data.muscle_length.data(), {n});
+        o["moment_arm"] = copy(s.data.moment_arm.data(), {n, kNumDofs});
+        o["muscle_force"] = copy(s.data.muscle_force.data(), {n});
+        o["fibre_velocity"] = copy(s.data.fibre_velocity.data(), {n});
+        o["muscle_torque"] = copy(s.data.muscle_torque.data(), {kNumDofs});
+        o["passive_torque"] = copy(s.data.passive_torque.data(), {kNumDofs});
+        o["external_torque"] = copy(s.data.external_torque.data(), {kNumDofs});
+        o["hand_position"] = copy(s.data.hand_position.data(), {3});
+        o["gh_force"] = copy(s.data.gh_force.data(), {3});
+        o["gh_theta"] = s.data.gh_theta;
+        o["gh_phi"] = s.data.gh_phi;
+        o["gh_stab"] = s.data.gh_stab;
+        return o;
+      })
+      .def("tet_stats", [](const Simulator& s) {
+        const TetStats& t = s.data.tet;
+        return py::dict(py::arg("count") = t.count, py::arg("mean_ns") = t.mean_ns, py::arg("min_ns") = t.min_ns,
+                        py::arg("max_ns") = t.max_ns, py::arg("last_ns") = t.last_ns);
+      })
+      .def("reset_tet", [](Simulator& s) { s.data.tet = TetStats{}; })
+      .def("get_strength", [](const Simulator& s) {
+        Array a({s.model.num_elements});
+        for (int i = 0; i < s.model.num_elements; ++i) a.mutable_data()[i] = s.model.element[i].strength_scale;
+        return a;
+      })
+      .def("get_max_activation", [](const Simulator& s) {
+        Array a({s.model.num_elements});
+        for (int i = 0; i < s.model.num_elements; ++i) a.mutable_data()[i] = s.model.element[i].max_activation;
+        return a;
+      })
+      .def("set_strength_and_max_activation", [](Simulator& s, const Array& strength, const Array& maxact) {
+        const double* st = checked(strength, s.model.num_elements, "strength");
+        const double* ma = checked(maxact, s.model.num_elements, "max_activation");
+        for (int i = 0; i < s.model.num_elements; ++i) {
+          s.model.element[i].strength_scale = st[i];
+          s.model.element[i].max_activation = ma[i];
+        }
+        model_update_derived(s.model);
+      })
+      .def_property("gravity", [](const Simulator& s) { return std::vector<double>(s.model.gravity_scapula.begin(), s.model.gravity_scapula.end()); },
+                    [](Simulator& s, const Array& g) { const double* p = checked(g, 3, "gravity"); for (int k = 0; k < 3; ++k) s.model.gravity_scapula[k] = p[k]; })
+      .def_property("max_joint_speed", [](const Simulator& s) { return s.model.max_joint_speed; },
+                    [](Simulator& s, double v) { s.model.max_joint_speed = v; })
+      // simulate: excitation is (T, n) (one row per step) or (1, n) (held); the loop runs without the GIL.
+      .def("simulate", [](Simulator& s, const Array& excitation, long n_steps, long record_every) {
+        const int n = s.model.num_elements;
+        if (excitation.ndim() != 2 || excitation.shape(1) != n || (excitation.shape(0) != n_steps && excitation.shape(0) != 1))
+          throw py::value_error("excitation must have shape (" + std::to_string(n_steps) + ", " + std::to_string(n) + ") or (1, " + std::to_string(n) + ")");
+        if (record_every < 1) throw py::value_error("record_every must be >= 1");
+        const double* u = excitation.data();
+        const bool held = excitation.shape(0) == 1;
+        Recording r;
+        const long n_rec = n_steps / record_every + 1;
+        for (auto* v : {&r.t, &r.gh_stab, &r.tet}) v->reserve(n_rec);
+        long steps_done = 0;
+        {
+          py::gil_scoped_release release;
+          double angles[3];
+          auto record = [&](double tet_ns) {
+            const double* x = s.data.x.data();
+            r.t.push_back(s.data.time);
+            r.q.insert(r.q.end(), x + kQ, x + kQ + kNumDofs);
+            r.qd.insert(r.qd.end(), x + kQd, x + kQd + kNumDofs);
+            r.lce.insert(r.lce.end(), x + kLce, x + kLce + n);
+            r.act.insert(r.act.end(), x + act_offset(s.model), x + act_offset(s.model) + n);
+            r.excitation.insert(r.excitation.end(), s.data.excitation.begin(), s.data.excitation.begin() + n);
+            r.force.insert(r.force.end(), s.data.muscle_force.begin(), s.data.muscle_force.begin() + n);
+            r.length.insert(r.length.end(), s.data.muscle_length.begin(), s.data.muscle_length.begin() + n);
+            r.gh_force.insert(r.gh_force.end(), s.data.gh_force.begin(), s.data.gh_force.end());
+            r.gh_stab.push_back(s.data.gh_stab);
+            r.gh_angles.push_back(s.data.gh_theta);
+            r.gh_angles.push_back(s.data.gh_phi);
+            r.hand.insert(r.hand.end(), s.data.hand_position.begin(), s.data.hand_position.end());
+            thorax_humerus_angles(s.model, x + kQ, angles);
+            r.th_angles.insert(r.th_angles.end(), angles, angles + 3);
+            r.tet.push_back(tet_ns);
+          };
+          // Outputs of a step describe its starting state, so each recorded row is one consistent
+          // time point; the final state is recorded after one more output evaluation.
+          std::vector<double> snapshot(state_size(s.model));
+          for (long k = 0; k < n_steps; ++k) {
+            const double* uk = u + (held ? 0 : k) * n;
+            for (int i = 0; i < n; ++i) s.data.excitation[i] = uk[i];
+            const auto x0 = s.data.x;
+            const double t0 = s.data.time;
+            if (!s.step()) break;
+            ++steps_done;
+            if (k % record_every == 0) {
+              const auto x1 = s.data.x;
+              const double t1 = s.data.time;
+              s.data.x = x0;
+              s.data.time = t0;
+              record(s.data.tet.last_ns);
+              s.data.x = x1;
+              s.data.time = t1;
+            }
+          }
+          if (s.data.status == Status::kOk && n_steps % record_every == 0) {
+            s.evaluate_outputs();
+            record(0.0);
+          }
+        }
+        raise_if_failed(s);
+        const py::ssize_t T = static_cast<py::ssize_t>(r.t.size());
+        auto arr = [T](const std::vector<double>& v, py::ssize_t w) {
+          Array a(w == 0 ? std::vector<py::ssize_t>{T} : std::vector<py::ssize_t>{T, w});
+          std::copy(v.begin(), v.end(), a.mutable_data());
+          return a;
+        };
+        py::dict out;
+        out["time"] = arr(r.t, 0);
+        out["q"] = arr(r.q, kNumDofs);
+        out["qdot"] = arr(r.qd, kNumDofs);
+        out["lce"] = arr(r.lce, n);
+        out["activation"] = arr(r.act, n);
+        out["excitation"] = arr(r.excitation, n);
+        out["muscle_force"] = arr(r.force, n);
+        out["muscle_length"] = arr(r.length, n);
+        out["gh_force"] = arr(r.gh_force, 3);
+        out["gh_stab"] = arr(r.gh_stab, 0);
+        out["gh_angles"] = arr(r.gh_angles, 2);
+        out["hand_position"] = arr(r.hand, 3);
+        out["thorax_humerus"] = arr(r.th_angles, 3);
+        out["tet_ns"] = arr(r.tet, 0);
+        out["steps"] = steps_done;
+        return out;
+      }, py::arg("excitation"), py::arg("n_steps"), py::arg("record_every") = 1)
+      // Model functions at any pose.
+      .def("muscle_paths", [](const Simulator& s, const Array& q) {
+        const double* qp = checked(q, kNumDofs, "q");
+        const int n = s.model.num_elements;
+        Array L({n}), R({n, kNumDofs});
+        s.model.def->muscle_paths(qp, L.mutable_data(), R.mutable_data());
+        return py::make_tuple(L, R);
+      })
+      .def("gh_directions", [](const Simulator& s, const Array& q) {
+        Array d({s.model.num_elements, 3});
+        s.model.def->gh_directions(checked(q, kNumDofs, "q"), d.mutable_data());
+        return d;
+      })
+      .def("mass_matrix", [](const Simulator& s, const Array& q) {
+        Array M({kNumDofs, kNumDofs});
+        s.model.def->mass_matrix(checked(q, kNumDofs, "q"), M.mutable_data());
+        return M;
+      })
+      .def("bias_force", [](const Simulator& s, const Array& q, const Array& qd) {
+        Array b({kNumDofs});
+        s.model.def->bias_force(checked(q, kNumDofs, "q"), checked(qd, kNumDofs, "qdot"), s.model.gravity_scapula.data(), b.mutable_data());
+        return b;
+      })
+      .def("body_poses", [](const Simulator& s, const Array& q) {
+        Array R({4, 3, 3}), p({4, 3});
+        s.model.def->body_poses(checked(q, kNumDofs, "q"), R.mutable_data(), p.mutable_data());
+        return py::make_tuple(R, p);
+      })
+      .def("thorax_humerus_angles", [](const Simulator& s, const Array& q) {
+        Array a({3});
+        thorax_humerus_angles(s.model, checked(q, kNumDofs, "q"), a.mutable_data());
+        return a;
+      })
+      .def("passive_joint_torque", [](const Simulator& s, const Array& q, const Array& qd) {
+        Array t({kNumDofs});
+        passive_joint_torque(*s.model.def, checked(q, kNumDofs, "q"), checked(qd, kNumDofs, "qdot"), t.mutable_data());
+        return t;
+      })
+      .def("muscle_element", [](const Simulator& s, int i, double L, double lce, double a) {
+        if (i < 0 || i >= s.model.num_elements) throw py::index_error("element index out of range");
+        const MuscleOut o = muscle_element(s.model.element[i], s.model.fibre_damping, L, lce, a);
+        return py::make_tuple(o.force, o.fibre_velocity);
+      })
+      .def("muscle_equilibrium_lce", [](const Simulator& s, int i, double L, double a) {
+        if (i < 0 || i >= s.model.num_elements) throw py::index_error("element index out of range");
+        return muscle_equilibrium_lce(s.model.element[i], s.model.fibre_damping, L, a);
+      })
+      .def("gh_stability", [](const Simulator& s, const Array& f) {
+        double th, ph, st;
+        gh_stability(*s.model.def, checked(f, 3, "force"), &th, &ph, &st);
+        return py::make_tuple(th, ph, st);
+      });
+}
