@@ -1,0 +1,569 @@
+"""Generate the C++ model code (cpp/generated/) from an armrt model file (docs/model_schema.md).
+
+    python -m codegen.generate --model models/das2.json --out cpp/generated
+
+Writes <name>.h, <name>_model.cc (parameter tables, ModelDef), <name>_dynamics.cc (equations of
+motion, kinematics) and <name>_paths.cc (muscle path polynomials). Output depends only on the bytes
+of the model file, so regenerating from the same file gives byte-identical sources.
+"""
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import math
+import re
+import sys
+import time
+from pathlib import Path
+
+from . import cxx, eom
+
+SCHEMA = "armrt-model"
+SCHEMA_VERSION = 1
+NDOF = eom.NDOF
+BODY_CHAIN = [("humerus", "scapula"), ("ulna", "humerus"), ("radius", "ulna"), ("hand", "radius")]
+JOINT_AXES = {"gimbal_yzy": 3, "pin": 1, "weld": 0}
+
+
+class ModelFileError(ValueError):
+    """The model file does not follow the schema; the message names the offending field."""
+
+
+# ---------------------------------------------------------------------------------------------
+# Model file validation
+
+def _get(obj, key, where):
+    if not isinstance(obj, dict):
+        raise ModelFileError(f"model file: '{where}' must be an object")
+    if key not in obj:
+        raise ModelFileError(f"model file: missing field '{where}.{key}'" if where else
+                             f"model file: missing field '{key}'")
+    return obj[key]
+
+
+def _path(where, key):
+    return f"{where}.{key}" if where else key
+
+
+def _number(obj, key, where, positive=False, nonneg=False):
+    v = _get(obj, key, where)
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+        raise ModelFileError(f"model file: field '{_path(where, key)}' must be a finite number, got {v!r}")
+    if positive and not v > 0:
+        raise ModelFileError(f"model file: field '{_path(where, key)}' must be > 0, got {v!r}")
+    if nonneg and not v >= 0:
+        raise ModelFileError(f"model file: field '{_path(where, key)}' must be >= 0, got {v!r}")
+    return float(v)
+
+
+def _array(v, shape, name):
+    """Check a nested list of finite numbers of the given shape; returns it as nested floats."""
+    def rec(x, dims, label):
+        if not dims:
+            if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x):
+                raise ModelFileError(f"model file: field '{name}' must hold finite numbers, got {x!r} at {label}")
+            return float(x)
+        if not isinstance(x, list) or (dims[0] is not None and len(x) != dims[0]):
+            want = "x".join("n" if d is None else str(d) for d in shape)
+            raise ModelFileError(f"model file: field '{name}' must have shape {want}")
+        return [rec(y, dims[1:], f"{label}[{i}]") for i, y in enumerate(x)]
+    return rec(v, list(shape), "")
+
+
+def _vector(obj, key, where, n=3):
+    return _array(_get(obj, key, where), (n,), _path(where, key))
+
+
+def _string(obj, key, where):
+    v = _get(obj, key, where)
+    if not isinstance(v, str) or not v:
+        raise ModelFileError(f"model file: field '{_path(where, key)}' must be a non-empty string")
+    return v
+
+
+def _list(obj, key, where, n=None):
+    v = _get(obj, key, where)
+    if not isinstance(v, list) or (n is not None and len(v) != n):
+        raise ModelFileError(f"model file: field '{_path(where, key)}' must be a list"
+                             + (f" of {n}" if n is not None else ""))
+    return v
+
+
+def _poly(obj, where, ndof):
+    exps = _list(obj, "exponents", where)
+    coefs = _array(_get(obj, "coefs", where), (len(exps),), _path(where, "coefs"))
+    for k, row in enumerate(exps):
+        if (not isinstance(row, list) or len(row) != ndof
+                or any(isinstance(e, bool) or not isinstance(e, int) or e < 0 for e in row)):
+            raise ModelFileError(f"model file: field '{where}.exponents[{k}]' must be {ndof} non-negative ints")
+    return exps, coefs
+
+
+def validate(model) -> dict:
+    """Check every field the generator reads; raise ModelFileError naming the first bad one."""
+    if not isinstance(model, dict):
+        raise ModelFileError("model file: top level must be a JSON object")
+    schema = _get(model, "schema", "")
+    if schema != SCHEMA:
+        raise ModelFileError(f"model file: field 'schema' is {schema!r}, expected {SCHEMA!r}")
+    version = _get(model, "schema_version", "")
+    if version != SCHEMA_VERSION or isinstance(version, bool):
+        raise ModelFileError(f"model file: field 'schema_version' is {version!r}; this generator reads "
+                             f"version {SCHEMA_VERSION} only")
+    name = _string(model, "name", "")
+    if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name):
+        raise ModelFileError(f"model file: field 'name' must be a C identifier, got {name!r}")
+    _vector(model, "gravity_thorax", "")
+
+    dofs = _list(model, "dofs", "", NDOF)
+    dof_names = []
+    for i, d in enumerate(dofs):
+        w = f"dofs[{i}]"
+        dof_names.append(_string(d, "name", w))
+        _string(d, "osim_name", w)
+        lo, hi = _vector(d, "range", w, 2)
+        if not lo < hi:
+            raise ModelFileError(f"model file: field '{w}.range' must have lo < hi")
+        _number(d, "rest", w)
+    if len(set(dof_names)) != NDOF:
+        raise ModelFileError("model file: field 'dofs' has repeated names")
+
+    scap = _get(model, "scapula", "")
+    _array(_get(scap, "rotation_in_thorax", "scapula"), (3, 3), "scapula.rotation_in_thorax")
+    _vector(scap, "origin_in_thorax", "scapula")
+
+    bodies = _list(model, "bodies", "", len(BODY_CHAIN))
+    used_dofs = []
+    for i, (b, (bname, parent)) in enumerate(zip(bodies, BODY_CHAIN)):
+        w = f"bodies[{i}]"
+        if _string(b, "name", w) != bname:
+            raise ModelFileError(f"model file: field '{w}.name' must be {bname!r}")
+        if _string(b, "parent", w) != parent:
+            raise ModelFileError(f"model file: field '{w}.parent' must be {parent!r}")
+        _number(b, "mass", w, positive=True)
+        _vector(b, "com", w)
+        _array(_get(b, "inertia", w), (3, 3), f"{w}.inertia")
+        jt = _get(b, "joint", w)
+        jw = f"{w}.joint"
+        jtype = _string(jt, "type", jw)
+        if jtype not in JOINT_AXES:
+            raise ModelFileError(f"model file: field '{jw}.type' is {jtype!r}, expected one of {sorted(JOINT_AXES)}")
+        _vector(jt, "location_in_parent", jw)
+        naxes = JOINT_AXES[jtype]
+        axes = _array(_get(jt, "axes", jw), (naxes, 3), f"{jw}.axes")
+        for k, a in enumerate(axes):
+            if abs(math.sqrt(sum(x * x for x in a)) - 1.0) > 1e-9:
+                raise ModelFileError(f"model file: field '{jw}.axes[{k}]' must be a unit vector")
+        jd = _list(jt, "dofs", jw, naxes)
+        used_dofs.extend(jd)
+    if used_dofs != dof_names:
+        raise ModelFileError(f"model file: field 'bodies[].joint.dofs' must be {dof_names} in chain order, "
+                             f"got {used_dofs}")
+
+    hp = _get(model, "hand_point", "")
+    if _string(hp, "body", "hand_point") not in [b for b, _ in BODY_CHAIN]:
+        raise ModelFileError("model file: field 'hand_point.body' must name a body")
+    _vector(hp, "point", "hand_point")
+
+    gl = _get(model, "glenoid", "")
+    for k in ("gh_centre", "normal", "major_axis", "minor_axis"):
+        _vector(gl, k, "glenoid")
+    for k in ("rim_half_angle_major", "rim_half_angle_minor"):
+        _number(gl, k, "glenoid", positive=True)
+    pj = _get(model, "passive_joint", "")
+    for k in ("stiffness_inside", "stiffness_outside", "damping"):
+        _number(pj, k, "passive_joint", nonneg=True)
+
+    elements = _list(model, "elements", "")
+    if not elements:
+        raise ModelFileError("model file: field 'elements' is empty")
+    el_names = []
+    for i, e in enumerate(elements):
+        w = f"elements[{i}]"
+        el_names.append(_string(e, "name", w))
+        _string(e, "muscle", w)
+        for k in ("fmax", "lceopt", "lslack", "vmax", "tact", "tdeact", "peeslack", "mass"):
+            _number(e, k, w, positive=True)
+        _number(e, "pennopt", w, nonneg=True)
+        edofs = _list(e, "dofs", w)
+        if not edofs or any(d not in dof_names for d in edofs):
+            raise ModelFileError(f"model file: field '{w}.dofs' must name DOFs from {dof_names}")
+        cgh = _get(e, "crosses_gh", w)
+        if not isinstance(cgh, bool):
+            raise ModelFileError(f"model file: field '{w}.crosses_gh' must be true/false")
+        lp = _get(e, "length_poly", w)
+        lpd = _list(lp, "dofs", f"{w}.length_poly")
+        if any(d not in dof_names for d in lpd) or len(set(lpd)) != len(lpd):
+            raise ModelFileError(f"model file: field '{w}.length_poly.dofs' must name distinct DOFs from {dof_names}")
+        _poly(lp, f"{w}.length_poly", len(lpd))
+        gd = _get(e, "gh_direction", w)
+        if cgh:
+            if not isinstance(gd, dict):
+                raise ModelFileError(f"model file: field '{w}.gh_direction' must be an object for a GH-crossing element")
+            gdd = _list(gd, "dofs", f"{w}.gh_direction")
+            if any(d not in dof_names for d in gdd) or len(set(gdd)) != len(gdd):
+                raise ModelFileError(f"model file: field '{w}.gh_direction.dofs' must name distinct DOFs")
+            for c in "xyz":
+                _poly(_get(gd, c, f"{w}.gh_direction"), f"{w}.gh_direction.{c}", len(gdd))
+        elif gd is not None:
+            raise ModelFileError(f"model file: field '{w}.gh_direction' must be null for an element not crossing GH")
+    if len(set(el_names)) != len(el_names):
+        raise ModelFileError("model file: field 'elements' has repeated names")
+
+    muscles = _list(model, "muscles", "")
+    mus_names = []
+    for i, m in enumerate(muscles):
+        w = f"muscles[{i}]"
+        mus_names.append(_string(m, "name", w))
+        els = _list(m, "elements", w)
+        for e in els:
+            if e not in el_names:
+                raise ModelFileError(f"model file: field '{w}.elements' names unknown element {e!r}")
+    groups = _get(model, "groups", "")
+    if not isinstance(groups, dict):
+        raise ModelFileError("model file: field 'groups' must be an object")
+    for g, ms in groups.items():
+        if not isinstance(ms, list) or any(x not in mus_names for x in ms):
+            raise ModelFileError(f"model file: field 'groups.{g}' must list muscle names")
+    return model
+
+
+def load_model(path) -> tuple[dict, str]:
+    """Read and validate a model file; returns (model, sha256 of its bytes)."""
+    path = Path(path)
+    data = path.read_bytes()
+    try:
+        model = json.loads(data)
+    except json.JSONDecodeError as exc:
+        raise ModelFileError(f"model file {path}: not valid JSON ({exc})") from None
+    return validate(model), hashlib.sha256(data).hexdigest()
+
+
+# ---------------------------------------------------------------------------------------------
+# Code emission
+
+def _banner(model_file: str, digest: str) -> str:
+    return (f"// GENERATED FILE - DO NOT EDIT BY HAND.\n"
+            f"// Written by `python -m codegen.generate --model models/{model_file} --out cpp/generated`\n"
+            f"// from the model file {model_file} (sha256 {digest}).\n"
+            f"// Change the model file or the generator and regenerate instead.\n")
+
+
+def _global_poly(poly: dict, dofs: list, dof_index: dict):
+    """Terms of a polynomial as (coef, exponent tuple over all NDOF dofs)."""
+    idx = [dof_index[d] for d in dofs]
+    terms = []
+    for row, c in zip(poly["exponents"], poly["coefs"]):
+        e = [0] * NDOF
+        for j, k in zip(idx, row):
+            e[j] += int(k)
+        terms.append((float(c), tuple(e)))
+    return terms
+
+
+class _Monomials:
+    """Shares each monomial (and each power of each q) once per function."""
+
+    def __init__(self):
+        self.names: dict[tuple, str] = {}
+        self.order: list[tuple] = []
+
+    def ref(self, e: tuple) -> str | None:
+        if not any(e):
+            return None
+        if e not in self.names:
+            self.names[e] = f"m{len(self.order)}"
+            self.order.append(e)
+        return self.names[e]
+
+    def preamble(self) -> list[str]:
+        maxpow = [max((e[j] for e in self.order), default=0) for j in range(NDOF)]
+        lines = []
+        for j in range(NDOF):
+            if maxpow[j] >= 1:
+                lines.append(f"  const double q{j} = q[{j}];")
+            for p in range(2, maxpow[j] + 1):
+                prev = f"q{j}" if p == 2 else f"q{j}_{p - 1}"
+                lines.append(f"  const double q{j}_{p} = {prev}*q{j};")
+        if not any(maxpow):
+            lines.append("  (void)q;")
+        for e in self.order:
+            factors = [f"q{j}" if k == 1 else f"q{j}_{k}" for j, k in enumerate(e) if k]
+            lines.append(f"  const double {self.names[e]} = {'*'.join(factors)};")
+        return lines
+
+
+def _sum(terms, mono: _Monomials) -> str:
+    parts = []
+    for c, e in terms:
+        if c == 0.0:
+            continue
+        name = mono.ref(e)
+        parts.append(cxx.fmt(c) if name is None else f"{cxx.fmt(c)}*{name}")
+    if not parts:
+        return "0.0"
+    return " + ".join(parts).replace("+ -", "- ")
+
+
+def _gradient(terms, j):
+    out = []
+    for c, e in terms:
+        if e[j]:
+            d = list(e)
+            d[j] -= 1
+            out.append((c * e[j], tuple(d)))
+    return out
+
+
+def paths_source(model: dict, ns: str) -> str:
+    dof_index = {d["name"]: i for i, d in enumerate(model["dofs"])}
+    els = model["elements"]
+    lengths = [_global_poly(e["length_poly"], e["length_poly"]["dofs"], dof_index) for e in els]
+
+    out = []
+    # muscle_lengths
+    mono = _Monomials()
+    body = [f"  L[{i}] = {_sum(t, mono)};" for i, t in enumerate(lengths)]
+    out.append("void muscle_lengths(const double* q, double* L) {\n" + "\n".join(mono.preamble() + body) + "\n}\n")
+
+    # muscle_paths: lengths and moment arms -dL/dq
+    mono = _Monomials()
+    body = []
+    for i, (t, e) in enumerate(zip(lengths, els)):
+        body.append(f"  L[{i}] = {_sum(t, mono)};")
+        crossed = {dof_index[d] for d in e["dofs"]}
+        for j in range(NDOF):
+            g = [(-c, m) for c, m in _gradient(t, j)]
+            if j not in crossed and g:
+                raise ValueError(f"element {e['name']}: length depends on {model['dofs'][j]['name']}, "
+                                 f"which it does not cross")
+            body.append(f"  moment_arm[{i * NDOF + j}] = {_sum(g, mono)};")
+    out.append("void muscle_paths(const double* q, double* L, double* moment_arm) {\n"
+               + "\n".join(mono.preamble() + body) + "\n}\n")
+
+    # gh_directions
+    mono = _Monomials()
+    body = []
+    for i, e in enumerate(els):
+        gd = e["gh_direction"]
+        if gd is None:
+            body.append(f"  d[{3 * i}] = 0.0; d[{3 * i + 1}] = 0.0; d[{3 * i + 2}] = 0.0;")
+            continue
+        comps = [_sum(_global_poly(gd[c], gd["dofs"], dof_index), mono) for c in "xyz"]
+        body.append("  {")
+        for c, expr in zip("xyz", comps):
+            body.append(f"    const double {c} = {expr};")
+        body.append("    const double n = std::sqrt(x*x + y*y + z*z);")
+        body.append("    const double s = n > 0.0 ? 1.0/n : 0.0;")
+        body.append(f"    d[{3 * i}] = x*s; d[{3 * i + 1}] = y*s; d[{3 * i + 2}] = z*s;")
+        body.append("  }")
+    out.append("void gh_directions(const double* q, double* d) {\n" + "\n".join(mono.preamble() + body) + "\n}\n")
+
+    return ("#include <cmath>\n\n#include \"" + ns + ".h\"\n\n"
+            f"namespace armrt::generated::{ns} {{\n\n" + "\n".join(out) + f"\n}}  // namespace armrt::generated::{ns}\n")
+
+
+def dynamics_source(model: dict, ns: str) -> tuple[str, dict]:
+    ex = eom.derive(model)
+    q, qd, g = ex.q, ex.qd, ex.g
+    fns = []
+    stats = {}
+
+    def fn(name, sig, inputs, outputs):
+        code, ntemps = cxx.emit_function(sig, inputs, outputs, trig_of=q)
+        stats[name] = ntemps
+        fns.append(code)
+
+    M = ex.mass_matrix
+    fn("mass_matrix", "void mass_matrix(const double* q, double* M)", [("q", q)],
+       [("M", [M[i, j] for i in range(NDOF) for j in range(NDOF)])])
+    fn("bias_force", "void bias_force(const double* q, const double* qd, const double* g_scapula, double* b)",
+       [("q", q), ("qd", qd), ("g_scapula", g)], [("b", list(ex.bias_force))])
+    fn("hand_position", "void hand_position(const double* q, double* p)", [("q", q)],
+       [("p", list(ex.hand_position))])
+    fn("hand_jacobian", "void hand_jacobian(const double* q, double* Jv, double* Jw)", [("q", q)],
+       [("Jv", list(ex.hand_jv)), ("Jw", list(ex.hand_jw))])
+    fn("arm_momentum_rate", "void arm_momentum_rate(const double* q, const double* qd, double* A, double* c)",
+       [("q", q), ("qd", qd)], [("A", list(ex.momentum_a)), ("c", list(ex.momentum_c))])
+    Rs = [x for R in ex.body_rotations for x in R]        # sympy Matrix iterates row-major
+    ps = [x for p in ex.body_origins for x in p]
+    fn("body_poses", "void body_poses(const double* q, double* R, double* p)", [("q", q)], [("R", Rs), ("p", ps)])
+
+    src = ("#include <cmath>\n\n#include \"" + ns + ".h\"\n\n"
+           f"namespace armrt::generated::{ns} {{\n\n" + "\n".join(fns) + f"\n}}  // namespace armrt::generated::{ns}\n")
+    return src, stats
+
+
+def header_source(ns: str) -> str:
+    return f"""#pragma once
+
+#include "armrt/model_def.h"
+
+namespace armrt::generated::{ns} {{
+
+const armrt::ModelDef& model_def();
+
+void mass_matrix(const double* q, double* M);
+void bias_force(const double* q, const double* qd, const double* g_scapula, double* b);
+void hand_position(const double* q, double* p);
+void hand_jacobian(const double* q, double* Jv, double* Jw);
+void arm_momentum_rate(const double* q, const double* qd, double* A, double* c);
+void body_poses(const double* q, double* R, double* p);
+void muscle_lengths(const double* q, double* L);
+void muscle_paths(const double* q, double* L, double* moment_arm);
+void gh_directions(const double* q, double* d);
+
+}}  // namespace armrt::generated::{ns}
+"""
+
+
+def _arr(vals) -> str:
+    return "{" + ", ".join(cxx.fmt(v) for v in vals) + "}"
+
+
+def model_source(model: dict, ns: str, digest: str) -> str:
+    f = cxx.fmt
+    dof_index = {d["name"]: i for i, d in enumerate(model["dofs"])}
+    els = model["elements"]
+    el_index = {e["name"]: i for i, e in enumerate(els)}
+    lines = ["#include \"" + ns + ".h\"", "", f"namespace armrt::generated::{ns} {{", "", "namespace {", ""]
+
+    lines.append(f"const DofParams kDofs[{NDOF}] = {{")
+    for d in model["dofs"]:
+        lines.append(f"    {{{cxx.cstr(d['name'])}, {cxx.cstr(d['osim_name'])}, {f(d['range'][0])}, "
+                     f"{f(d['range'][1])}, {f(d['rest'])}}},")
+    lines.append("};")
+    lines.append("")
+    lines.append(f"const ElementParams kElements[{len(els)}] = {{")
+    for e in els:
+        mask = sum(1 << dof_index[d] for d in e["dofs"])
+        lines.append(f"    {{{cxx.cstr(e['name'])}, {cxx.cstr(e['muscle'])}, {f(e['fmax'])}, {f(e['lceopt'])}, "
+                     f"{f(e['lslack'])}, {f(e['pennopt'])}, {f(e['vmax'])}, {f(e['tact'])}, {f(e['tdeact'])}, "
+                     f"{f(e['peeslack'])}, {f(e['mass'])}, {1 if e['crosses_gh'] else 0}, {mask}}},")
+    lines.append("};")
+    lines.append("")
+
+    muscle_elements = {}
+    for k, m in enumerate(model["muscles"]):
+        idx = [el_index[n] for n in m["elements"]]
+        muscle_elements[m["name"]] = idx
+        lines.append(f"const int kMuscle{k}[{len(idx)}] = {{{', '.join(map(str, idx))}}};")
+    lines.append("")
+    lines.append(f"const GroupDef kMuscles[{len(model['muscles'])}] = {{")
+    for k, m in enumerate(model["muscles"]):
+        lines.append(f"    {{{cxx.cstr(m['name'])}, {len(muscle_elements[m['name']])}, kMuscle{k}}},")
+    lines.append("};")
+    lines.append("")
+    groups = list(model["groups"].items())
+    for k, (gname, ms) in enumerate(groups):
+        idx = sorted({i for mname in ms for i in muscle_elements[mname]})
+        lines.append(f"const int kGroup{k}[{max(len(idx), 1)}] = {{{', '.join(map(str, idx)) or '0'}}};")
+    lines.append("")
+    if groups:
+        lines.append(f"const GroupDef kGroups[{len(groups)}] = {{")
+        for k, (gname, ms) in enumerate(groups):
+            n = len({i for mname in ms for i in muscle_elements[mname]})
+            lines.append(f"    {{{cxx.cstr(gname)}, {n}, kGroup{k}}},")
+        lines.append("};")
+        groups_ptr = "kGroups"
+    else:
+        groups_ptr = "nullptr"
+    lines.append("")
+
+    R = model["scapula"]["rotation_in_thorax"]
+    gt = model["gravity_thorax"]
+    g_scap = [math.fsum(R[i][k] * gt[i] for i in range(3)) for k in range(3)]   # R^T g
+    gl = model["glenoid"]
+    pj = model["passive_joint"]
+    arm_mass = math.fsum(b["mass"] for b in model["bodies"])
+    lines += [
+        "const ModelDef kModel = {",
+        f"    {cxx.cstr(model['name'])},",
+        f"    {cxx.cstr(digest)},",
+        f"    {NDOF},",
+        f"    {len(els)},",
+        "    kDofs,",
+        "    kElements,",
+        f"    {len(model['muscles'])},",
+        "    kMuscles,",
+        f"    {len(groups)},",
+        f"    {groups_ptr},",
+        f"    {_arr(g_scap)},",
+        f"    {_arr([x for row in R for x in row])},",
+        f"    {_arr(model['scapula']['origin_in_thorax'])},",
+        f"    {_arr(gl['gh_centre'])},",
+        f"    {_arr(gl['normal'])},",
+        f"    {_arr(gl['major_axis'])},",
+        f"    {_arr(gl['minor_axis'])},",
+        f"    {f(gl['rim_half_angle_major'])},",
+        f"    {f(gl['rim_half_angle_minor'])},",
+        f"    {f(arm_mass)},",
+        f"    {f(pj['stiffness_inside'])},",
+        f"    {f(pj['stiffness_outside'])},",
+        f"    {f(pj['damping'])},",
+        "    &mass_matrix,",
+        "    &bias_force,",
+        "    &hand_position,",
+        "    &hand_jacobian,",
+        "    &arm_momentum_rate,",
+        "    &body_poses,",
+        "    &muscle_lengths,",
+        "    &muscle_paths,",
+        "    &gh_directions,",
+        "};",
+        "",
+        "}  // namespace",
+        "",
+        "const armrt::ModelDef& model_def() { return kModel; }",
+        "",
+        f"}}  // namespace armrt::generated::{ns}",
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def generate(model_path, out_dir, verbose=False) -> dict:
+    """Write the generated sources for the model file into out_dir; returns {file name: bytes written}."""
+    t0 = time.perf_counter()
+    model, digest = load_model(model_path)
+    ns = model["name"]
+    banner = _banner(Path(model_path).name, digest)
+    dyn, stats = dynamics_source(model, ns)
+    files = {
+        f"{ns}.h": banner + header_source(ns),
+        f"{ns}_model.cc": banner + "\n" + model_source(model, ns, digest),
+        f"{ns}_dynamics.cc": banner + "\n" + dyn,
+        f"{ns}_paths.cc": banner + "\n" + paths_source(model, ns),
+    }
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    written = {}
+    for fname, text in files.items():
+        data = text.encode("utf-8")
+        path = out / fname
+        # Leave an identical file untouched so that build systems do not recompile it.
+        if not path.exists() or path.read_bytes() != data:
+            path.write_bytes(data)
+        written[fname] = len(data)
+    if verbose:
+        print(f"generated {', '.join(f'{k} ({v} bytes)' for k, v in written.items())} in {out} "
+              f"in {time.perf_counter() - t0:.1f} s; CSE temporaries: {stats}")
+    return written
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--model", required=True, help="model file, e.g. models/das2.json")
+    ap.add_argument("--out", required=True, help="output directory, e.g. cpp/generated")
+    args = ap.parse_args(argv)
+    try:
+        generate(args.model, args.out, verbose=True)
+    except ModelFileError as exc:
+        print(f"codegen.generate: {exc}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
