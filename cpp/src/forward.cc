@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include "armrt/engine.h"
+#include "armrt/muscle_kernel.h"
 
 namespace armrt {
 
@@ -53,23 +54,32 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
   double R[kMaxElements * kNumDofs];
   def.muscle_paths(q, L, R);
 
-  // Muscles: activation dynamics, CE velocity, tendon force, generalised force R^T F.
-  double tau[kNumDofs] = {0, 0, 0, 0, 0};
+  // Muscles: activation dynamics and CE velocity, a vectorised loop over all elements.
+  const MuscleArrays& mc = m.muscles;
+  const double b = m.fibre_damping;
+  const double* act = x + ia;
+  const double* lce = x + kLce;
+  double* act_dot = xdot + ia;
+  double* lce_dot = xdot + kLce;
   double force[kMaxElements];
+#pragma omp simd
   for (int i = 0; i < n; ++i) {
-    const ElementConstants& e = m.element[i];
-    const double u = std::clamp(d.excitation[i], 0.0, e.max_activation);
-    const double a = x[ia + i];
-    xdot[ia + i] = (e.c1 * u + e.c2) * (u - a);
-    const MuscleOut mo = muscle_element(e, m.fibre_damping, L[i], x[kLce + i], a);
-    xdot[kLce + i] = mo.fibre_velocity;
-    force[i] = mo.force;
+    double u = d.excitation[i];
+    u = u < 0.0 ? 0.0 : (u > mc.max_activation[i] ? mc.max_activation[i] : u);
+    act_dot[i] = (mc.c1[i] * u + mc.c2[i]) * (u - act[i]);
+    muscle_kernel(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
+                  mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], b, L[i], lce[i], act[i], &force[i],
+                  &lce_dot[i]);
+  }
+  // Generalised muscle forces R^T F.
+  double tau[kNumDofs] = {0, 0, 0, 0, 0};
+  for (int i = 0; i < n; ++i) {
     const double* r = R + i * kNumDofs;
-    for (int j = 0; j < kNumDofs; ++j) tau[j] += r[j] * mo.force;
-    if (record) {
-      d.muscle_force[i] = mo.force;
-      d.fibre_velocity[i] = mo.fibre_velocity;
-    }
+    for (int j = 0; j < kNumDofs; ++j) tau[j] += r[j] * force[i];
+  }
+  if (record) {
+    std::copy(force, force + n, d.muscle_force.begin());
+    std::copy(lce_dot, lce_dot + n, d.fibre_velocity.begin());
   }
 
   double tau_passive[kNumDofs];

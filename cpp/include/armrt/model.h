@@ -27,6 +27,8 @@ enum class Integrator { kEuler = 0, kRk4 = 1, kCvode = 2 };
 struct ElementConstants {
   double fmax;          // N, after strength scaling
   double lceopt;        // m
+  double inv_lceopt;    // 1/m
+  double min_lce;       // m, shortest CE length the pennation geometry allows
   double lslack;        // m
   double thickness;     // m, lceopt * sin(pennopt): constant for a constant-volume pennate muscle
   double vmax;          // m/s (vmax * lceopt)
@@ -39,10 +41,17 @@ struct ElementConstants {
   double strength_scale;  // multiplies DAS3 fmax (1 = intact)
 };
 
+// The same constants as structure-of-arrays, for the vectorised muscle loop in forward().
+struct MuscleArrays {
+  std::array<double, kMaxElements> fmax, inv_lceopt, lslack, thickness, min_lce, vmax, k_see, k_pee,
+      pee_slack, ecc_c, c1, c2, max_activation;
+};
+
 struct Model {
   const ModelDef* def = nullptr;
   int num_elements = 0;
   std::array<ElementConstants, kMaxElements> element{};
+  MuscleArrays muscles{};  // derived from element[] by model_update_derived()
   std::array<double, 3> gravity_scapula{};  // m/s^2, may be changed (e.g. a lying posture)
   double fibre_damping = kFibreDamping;     // N/(m/s)
   double max_joint_speed = 100.0;           // rad/s; faster means the simulation diverged

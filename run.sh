@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# One entry point that also does all set-up on a fresh Debian machine (root, or sudo available):
+#   ./run.sh experiments   the paper's experiments on the default model (the main job)
+#   ./run.sh test          every test: C++ (ctest) and Python (pytest)
+#   ./run.sh setup         only install Debian and pip packages and build armrt
+set -euo pipefail
+cd "$(dirname "$0")"
+PY=${PYTHON:-python3}
+
+setup() {
+  local debs=(g++ cmake ninja-build libeigen3-dev libsundials-dev doctest-dev)
+  local missing=()
+  for p in "${debs[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
+  if [ ${#missing[@]} -gt 0 ]; then
+    local sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
+    echo "run.sh: installing Debian packages: ${missing[*]}"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+  fi
+  echo "run.sh: installing Python packages and building armrt"
+  "$PY" -m pip install -q --disable-pip-version-check "numpy>=1.24" "scipy>=1.10" "matplotlib>=3.7" \
+      "pytest>=7" "sympy>=1.12" "opensim>=4.5" scikit-build-core pybind11
+  "$PY" -m pip install -q --disable-pip-version-check --no-build-isolation .
+}
+
+run_tests() {
+  echo "run.sh: C++ tests"
+  cmake -S . -B build/ctest -G Ninja -DARMRT_BUILD_TESTS=ON -DARMRT_BUILD_PYTHON=OFF >/dev/null
+  cmake --build build/ctest -j2
+  ctest --test-dir build/ctest --output-on-failure
+  echo "run.sh: Python tests"
+  local rc=0
+  "$PY" -m pytest -ra tests || rc=$?
+  if [ "$rc" -eq 5 ]; then echo "run.sh: pytest collected no tests"; exit 1; fi
+  return "$rc"
+}
+
+case "${1:-}" in
+  setup) setup ;;
+  test) setup; run_tests ;;
+  experiments) setup; shift; "$PY" -m armrt.cli experiments "$@" ;;
+  *) echo "usage: ./run.sh experiments | test | setup" >&2; exit 2 ;;
+esac
