@@ -100,8 +100,11 @@ def read_model_struct(path: str | Path) -> Das3Struct:
         raise ModelInputError(f"{path}: not a readable MATLAB file ({exc})") from None
     if "model" not in mat:
         raise ModelInputError(f"{path}: no variable 'model'")
-    model = mat["model"]
-    where = f"{path.name}: model"
+    return parse_model_struct(mat["model"], f"{path.name}: model")
+
+
+def parse_model_struct(model, where: str = "model") -> Das3Struct:
+    """Validates a loaded DAS3 `model` struct (scipy mat_struct) and extracts what the importer uses."""
     dofs = np.atleast_1d(_field(model, "dofs", where))
     dof_ranges = {}
     for i, d in enumerate(dofs):

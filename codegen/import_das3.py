@@ -102,7 +102,7 @@ def glenoid_geometry(gh_centre_scapula: np.ndarray, struct_ts: np.ndarray, struc
     d = {k: np.array(v) / 100.0 for k, v in DSEM_CM.items()}
     a = np.array([d["GH"], d["AA"], d["TS"], d["AI"]])
     b = np.array([gh_centre_scapula, np.zeros(3), struct_ts, struct_ai])
-    R, t, rms = kabsch(a, b)
+    R, _, rms = kabsch(a, b)
     # Landmark frame (README): x from TS to AA; z perpendicular to x and AA-AI; y = z x x.
     x = d["AA"] - d["TS"]
     x /= np.linalg.norm(x)
@@ -119,7 +119,8 @@ def glenoid_geometry(gh_centre_scapula: np.ndarray, struct_ts: np.ndarray, struc
     minor = np.cross(normal, major)
     return {
         "gh_centre": gh_centre_scapula.tolist(),
-        "glenoid_centre": (R @ d["glenoid"] + t).tolist(),
+        # Anchored at the GH centre, which is known exactly in the scapula frame.
+        "glenoid_centre": (gh_centre_scapula + R @ (d["glenoid"] - d["GH"])).tolist(),
         "normal": normal.tolist(),
         "major_axis": major.tolist(),
         "minor_axis": minor.tolist(),
