@@ -29,7 +29,9 @@ MuscleOut muscle_element(const ElementConstants& e, double b, double L, double l
 
 double muscle_equilibrium_lce(const ElementConstants& e, double b, double L, double a) {
   // The CE velocity falls monotonically as lce grows (the tendon slackens); bisect on its sign.
-  double lo = e.min_lce, hi = L > lo ? L : lo * 1.0001;
+  // A slack muscle-tendon unit settles where the two linear slack springs balance, which can be
+  // longer than L itself, hence the generous upper bracket.
+  double lo = e.min_lce, hi = (L > lo ? L : lo) + e.pee_slack + e.lceopt;
   for (int it = 0; it < 100; ++it) {
     const double mid = 0.5 * (lo + hi);
     if (muscle_element(e, b, L, mid, a).fibre_velocity > 0) lo = mid; else hi = mid;
