@@ -68,8 +68,8 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
     u = u < 0.0 ? 0.0 : (u > mc.max_activation[i] ? mc.max_activation[i] : u);
     act_dot[i] = (mc.c1[i] * u + mc.c2[i]) * (u - act[i]);
     muscle_kernel(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
-                  mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], b, L[i], lce[i], act[i], &force[i],
-                  &lce_dot[i]);
+                  mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], mc.damping_slope[i], b, L[i], lce[i],
+                  act[i], &force[i], &lce_dot[i]);
   }
   // Generalised muscle forces R^T F.
   double tau[kNumDofs] = {0, 0, 0, 0, 0};

@@ -25,13 +25,14 @@ void model_update_derived(Model& m) {
     // The eccentric branch (gmax v + c)/(v + c) has slope (gmax - 1)/c at v = 0; matching the concentric
     // slope (1 + A)/(A vmax) keeps dF/dv continuous, which the explicit velocity inversion relies on.
     e.ecc_c = (kEccentricFmax - 1.0) * kHillA * e.vmax / (1.0 + kHillA);
+    e.damping_slope = e.fmax * (1.0 + kHillA) / (kHillA * e.vmax);
     e.inv_lceopt = 1.0 / p.lceopt;
     // Fibres cannot be shorter than the muscle is thick; the floor also keeps 1/cos(pennation) finite.
     e.min_lce = std::max(1.001 * e.thickness, 0.05 * p.lceopt);
     MuscleArrays& a = m.muscles;
     a.fmax[i] = e.fmax, a.inv_lceopt[i] = e.inv_lceopt, a.lslack[i] = e.lslack, a.thickness[i] = e.thickness;
     a.min_lce[i] = e.min_lce, a.vmax[i] = e.vmax, a.k_see[i] = e.k_see, a.k_pee[i] = e.k_pee;
-    a.pee_slack[i] = e.pee_slack, a.ecc_c[i] = e.ecc_c, a.c1[i] = e.c1, a.c2[i] = e.c2;
+    a.pee_slack[i] = e.pee_slack, a.ecc_c[i] = e.ecc_c, a.damping_slope[i] = e.damping_slope, a.c1[i] = e.c1, a.c2[i] = e.c2;
     a.max_activation[i] = e.max_activation;
   }
 }

@@ -8,9 +8,15 @@
 //   F0 g(v) + b v = F_see / cos(pennation) - F_pee,          F0 = a fmax f(lce), f Gaussian (width 0.56)
 // Each branch is a quadratic in v with one root on its side of zero (muscle_kernel.h).
 //
-// The damper b = 10 N/(m/s) is kept at all activations instead of only below a = 0.02 as in the paper:
-// the switch would make the right-hand side discontinuous (bad for CVODE and for stable step sizes),
-// and above a = 0.02 its force is under 1% of the CE's own force-velocity damping. With it,
+// Regularisation at low activation (the paper: a 10 N/(m/s) damper below a = 0.02). A fixed 10 N/(m/s)
+// cannot carry the tendon force of a relaxed muscle: with 4%-strain tendons a few mm long, the CE mode
+// then has eigenvalues near -1.6e4 1/s (anconeus, 9 N passive), forcing steps under 0.2 ms. So the
+// damper is b = 10 N/(m/s) + (1+A)/(A vmax) * max(0, 0.02 fmax - F0), F0 = a fmax f(lce): the CE's own
+// damping at v = 0 is F0 (1+A)/(A vmax), so the total never falls below that of a muscle at a = 0.02
+// and optimal length, which is what the paper relies on above its threshold. The extra term fades
+// continuously (no switch, so CVODE sees a continuous right-hand side) and is zero whenever the CE
+// carries more than 2% of fmax isometrically; it also covers active muscles far from optimal length,
+// whose force-length factor would otherwise leave them as undamped as a relaxed one. With it,
 // F0 g(v) + b v is strictly increasing in v, so the inversion has exactly one root, finite at zero
 // activation. Pennation keeps the muscle's thickness lceopt sin(pennopt) constant (constant volume).
 // SEE: k (L - lslack)^2 with 4% strain at fmax; PEE: k (lce - peeslack lceopt)^2 reaching fmax at
@@ -23,7 +29,7 @@ namespace armrt {
 MuscleOut muscle_element(const ElementConstants& e, double b, double L, double lce, double a) {
   MuscleOut out;
   muscle_kernel(e.fmax, e.inv_lceopt, e.lslack, e.thickness, e.min_lce, e.vmax, e.k_see, e.k_pee, e.pee_slack,
-                e.ecc_c, b, L, lce, a, &out.force, &out.fibre_velocity);
+                e.ecc_c, e.damping_slope, b, L, lce, a, &out.force, &out.fibre_velocity);
   return out;
 }
 

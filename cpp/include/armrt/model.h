@@ -20,6 +20,7 @@ inline constexpr double kForceLengthWidth = 0.56;  // width of the Gaussian forc
 inline constexpr double kTendonStrainAtFmax = 0.04;
 inline constexpr double kLinearStiffness = 10.0;   // N/m in SEE and PEE: keeps the equations solvable when slack
 inline constexpr double kFibreDamping = 10.0;      // N/(m/s), parallel to the contractile element
+inline constexpr double kLowActivation = 0.02;     // below it the damper adds the CE damping that is lost
 
 // Integrator choices.
 enum class Integrator { kEuler = 0, kRk4 = 1, kCvode = 2 };
@@ -37,6 +38,7 @@ struct ElementConstants {
   double pee_slack;     // m
   double c1, c2;        // activation dynamics: da/dt = (c1 u + c2)(u - a)
   double ecc_c;         // m/s, eccentric F-V constant matching the concentric slope at zero velocity
+  double damping_slope; // N s/m per unit activation: the CE's force-velocity damping at v = 0, fmax (1+A)/(A vmax)
   double max_activation;  // [0, 1]
   double strength_scale;  // multiplies DAS3 fmax (1 = intact)
 };
@@ -44,7 +46,7 @@ struct ElementConstants {
 // The same constants as structure-of-arrays, for the vectorised muscle loop in forward().
 struct MuscleArrays {
   std::array<double, kMaxElements> fmax, inv_lceopt, lslack, thickness, min_lce, vmax, k_see, k_pee,
-      pee_slack, ecc_c, c1, c2, max_activation;
+      pee_slack, ecc_c, damping_slope, c1, c2, max_activation;
 };
 
 struct Model {

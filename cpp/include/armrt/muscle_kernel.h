@@ -42,11 +42,12 @@ inline double exp_nonpositive(double x) {
   return p * scale;
 }
 
-// Inputs: constants of one element, damper b (N s/m), muscle-tendon length L (m), CE length lce (m),
-// activation a. Outputs: tendon force (N) and CE velocity (m/s, lengthening positive).
+// Inputs: constants of one element, the fixed damper b0 (N s/m), muscle-tendon length L (m), CE
+// length lce (m), activation a. Outputs: tendon force (N) and CE velocity (m/s, lengthening positive).
 inline void muscle_kernel(double fmax, double inv_lceopt, double lslack, double thickness, double min_lce,
-                          double vmax, double k_see, double k_pee, double pee_slack, double ecc_c, double b,
-                          double L, double lce, double a, double* force, double* velocity) {
+                          double vmax, double k_see, double k_pee, double pee_slack, double ecc_c,
+                          double damping_slope, double b0, double L, double lce, double a, double* force,
+                          double* velocity) {
   lce = lce > min_lce ? lce : min_lce;
   const double s = thickness / lce;
   const double cos_pen = std::sqrt(1.0 - s * s);
@@ -59,6 +60,9 @@ inline void muscle_kernel(double fmax, double inv_lceopt, double lslack, double 
   const double F = f_see / cos_pen - f_pee;  // what the CE and damper must carry along the fibres
   const double xfl = (lce * inv_lceopt - 1.0) * (1.0 / kForceLengthWidth);
   const double F0 = a * fmax * exp_nonpositive(-xfl * xfl);
+  // Damping floor (muscle.cc): the CE's own damping at v = 0 is F0 (1+A)/(A vmax) = F0 damping_slope/fmax.
+  const double missing_damping = damping_slope * (kLowActivation - F0 / fmax);
+  const double b = b0 + (missing_damping > 0 ? missing_damping : 0.0);
 
   // Concentric (F <= F0): (b/A) v^2 - beta v - gamma = 0, root <= 0.
   const double alpha_c = b * (1.0 / kHillA);
