@@ -1,0 +1,149 @@
+// Sanity of the generated model tables (cpp/generated, via find_model).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "armrt/simulator.h"
+#include "test_util.h"
+
+using namespace armrt;
+
+TEST_SUITE("model") {
+
+TEST_CASE("sizes, names and DOF order") {
+  const ModelDef& def = armrt_test::das2();
+  CHECK(std::string(def.name) == "das2");
+  CHECK(def.num_elements == 102);
+  CHECK(def.num_dofs == 5);
+  CHECK(def.num_dofs == kNumDofs);
+  CHECK(def.num_muscles == 22);
+  const char* dofs[] = {"GHy", "GHz", "GHyy", "ELx", "PSy"};
+  for (int j = 0; j < 5; ++j) {
+    CHECK(std::string(def.dofs[j].name) == dofs[j]);
+    CHECK(def.dofs[j].range_min < def.dofs[j].range_max);
+  }
+  CHECK(std::string(def.elements[0].name) == "deltscap1");
+  CHECK(std::string(def.elements[101].name) == "anconeus5");
+  CHECK(find_model("nope") == nullptr);
+  Model m;
+  model_init(m, def);
+  CHECK(m.num_elements == 102);
+  CHECK(state_size(m) == 214);
+}
+
+TEST_CASE("element parameters are physical") {
+  const ModelDef& def = armrt_test::das2();
+  std::set<std::string> names;
+  for (int i = 0; i < def.num_elements; ++i) {
+    const ElementParams& p = def.elements[i];
+    CAPTURE(p.name);
+    names.insert(p.name);
+    CHECK(p.fmax > 0);
+    CHECK(p.lceopt > 0);
+    CHECK(p.lslack > 0);
+    CHECK(p.pennopt >= 0);
+    CHECK(p.pennopt < M_PI / 2);
+    CHECK(p.vmax > 0);
+    CHECK(p.tact > 0);
+    CHECK(p.tdeact > 0);
+    CHECK(p.dof_mask != 0);
+    CHECK((p.dof_mask & ~31) == 0);
+    CHECK(std::string(p.name).rfind(p.muscle, 0) == 0);  // element name starts with its muscle's
+  }
+  CHECK(names.size() == 102u);
+}
+
+TEST_CASE("muscles cover each element exactly once, in order") {
+  const ModelDef& def = armrt_test::das2();
+  std::vector<int> count(def.num_elements, 0);
+  for (int k = 0; k < def.num_muscles; ++k) {
+    const GroupDef& mu = def.muscles[k];
+    CAPTURE(mu.name);
+    for (int e = 0; e < mu.num_elements; ++e) {
+      const int i = mu.elements[e];
+      REQUIRE(i >= 0);
+      REQUIRE(i < def.num_elements);
+      ++count[i];
+      CHECK(std::string(def.elements[i].muscle) == mu.name);
+    }
+  }
+  for (int i = 0; i < def.num_elements; ++i) {
+    CAPTURE(i);
+    CHECK(count[i] == 1);
+  }
+}
+
+TEST_CASE("rotator_cuff = infra + termin + supra + subscap") {
+  const ModelDef& def = armrt_test::das2();
+  const GroupDef* rc = armrt_test::find_group(def.groups, def.num_groups, "rotator_cuff");
+  REQUIRE(rc != nullptr);
+  std::set<int> expected;
+  for (const char* name : {"infra", "termin", "supra", "subscap"}) {
+    const GroupDef* mu = armrt_test::find_group(def.muscles, def.num_muscles, name);
+    REQUIRE(mu != nullptr);
+    expected.insert(mu->elements, mu->elements + mu->num_elements);
+  }
+  const std::set<int> got(rc->elements, rc->elements + rc->num_elements);
+  CHECK(static_cast<int>(got.size()) == rc->num_elements);  // no duplicates
+  CHECK(got == expected);
+  // Every group's indices are valid and unique.
+  for (int k = 0; k < def.num_groups; ++k) {
+    const GroupDef& g = def.groups[k];
+    CAPTURE(g.name);
+    std::set<int> s(g.elements, g.elements + g.num_elements);
+    CHECK(static_cast<int>(s.size()) == g.num_elements);
+    CHECK(*s.begin() >= 0);
+    CHECK(*s.rbegin() < def.num_elements);
+  }
+}
+
+TEST_CASE("gravity magnitude 9.80665, scapula rotation orthonormal, gravity = R^T g_thorax") {
+  const ModelDef& def = armrt_test::das2();
+  const double* g = def.gravity_scapula;
+  CHECK(std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) == doctest::Approx(9.80665).epsilon(1e-12));
+  const double* R = def.scapula_rotation_in_thorax;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      double s = 0;
+      for (int k = 0; k < 3; ++k) s += R[k * 3 + a] * R[k * 3 + b];
+      CHECK(s == doctest::Approx(a == b ? 1.0 : 0.0).epsilon(1e-12));
+    }
+  // g_scapula = R^T (0, -9.80665, 0)
+  for (int k = 0; k < 3; ++k) CHECK(g[k] == doctest::Approx(R[1 * 3 + k] * -9.80665).epsilon(1e-9));
+  Model m;
+  model_init(m, def);
+  for (int k = 0; k < 3; ++k) CHECK(m.gravity_scapula[k] == g[k]);
+}
+
+TEST_CASE("mass matrix symmetric positive definite; moment arms = -dL/dq") {
+  const ModelDef& def = armrt_test::das2();
+  double q[5];
+  for (int j = 0; j < 5; ++j) q[j] = def.dofs[j].rest;
+  double M[25];
+  def.mass_matrix(q, M);
+  for (int a = 0; a < 5; ++a) {
+    CHECK(M[a * 5 + a] > 0);
+    for (int b = 0; b < 5; ++b) CHECK(M[a * 5 + b] == doctest::Approx(M[b * 5 + a]).epsilon(1e-12));
+  }
+  double L[102], R[102 * 5], Lp[102], Lm[102];
+  def.muscle_paths(q, L, R);
+  const double h = 1e-6;
+  for (int j = 0; j < 5; ++j) {
+    double qp[5], qm[5];
+    for (int k = 0; k < 5; ++k) qp[k] = qm[k] = q[k];
+    qp[j] += h, qm[j] -= h;
+    def.muscle_lengths(qp, Lp);
+    def.muscle_lengths(qm, Lm);
+    for (int i = 0; i < 102; ++i) {
+      CAPTURE(i);
+      CAPTURE(j);
+      CHECK(R[i * 5 + j] == doctest::Approx(-(Lp[i] - Lm[i]) / (2 * h)).epsilon(1e-5).scale(1e-3));
+      if (!(def.elements[i].dof_mask & (1 << j))) CHECK(R[i * 5 + j] == 0.0);
+    }
+  }
+}
+
+}  // TEST_SUITE
