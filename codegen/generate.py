@@ -380,6 +380,10 @@ def dynamics_source(model: dict, ns: str) -> tuple[str, dict]:
        [("M", [M[i, j] for i in range(NDOF) for j in range(NDOF)])])
     fn("bias_force", "void bias_force(const double* q, const double* qd, const double* g_scapula, double* b)",
        [("q", q), ("qd", qd), ("g_scapula", g)], [("b", list(ex.bias_force))])
+    # M and b together share their sines, cosines and common subexpressions: the engine's hot path.
+    fn("dynamics", "void dynamics(const double* q, const double* qd, const double* g_scapula, double* M, double* b)",
+       [("q", q), ("qd", qd), ("g_scapula", g)],
+       [("M", [M[i, j] for i in range(NDOF) for j in range(NDOF)]), ("b", list(ex.bias_force))])
     fn("hand_position", "void hand_position(const double* q, double* p)", [("q", q)],
        [("p", list(ex.hand_position))])
     fn("hand_jacobian", "void hand_jacobian(const double* q, double* Jv, double* Jw)", [("q", q)],
@@ -406,6 +410,7 @@ const armrt::ModelDef& model_def();
 
 void mass_matrix(const double* q, double* M);
 void bias_force(const double* q, const double* qd, const double* g_scapula, double* b);
+void dynamics(const double* q, const double* qd, const double* g_scapula, double* M, double* b);
 void hand_position(const double* q, double* p);
 void hand_jacobian(const double* q, double* Jv, double* Jw);
 void arm_momentum_rate(const double* q, const double* qd, double* A, double* c);
@@ -504,6 +509,7 @@ def model_source(model: dict, ns: str, digest: str) -> str:
         f"    {f(pj['damping'])},",
         "    &mass_matrix,",
         "    &bias_force,",
+        "    &dynamics,",
         "    &hand_position,",
         "    &hand_jacobian,",
         "    &arm_momentum_rate,",

@@ -12,6 +12,7 @@ const armrt::ModelDef& model_def();
 
 void mass_matrix(const double* q, double* M);
 void bias_force(const double* q, const double* qd, const double* g_scapula, double* b);
+void dynamics(const double* q, const double* qd, const double* g_scapula, double* M, double* b);
 void hand_position(const double* q, double* p);
 void hand_jacobian(const double* q, double* Jv, double* Jw);
 void arm_momentum_rate(const double* q, const double* qd, double* A, double* c);

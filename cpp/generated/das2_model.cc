@@ -218,6 +218,7 @@ const ModelDef kModel = {
     1.0,
     &mass_matrix,
     &bias_force,
+    &dynamics,
     &hand_position,
     &hand_jacobian,
     &arm_momentum_rate,

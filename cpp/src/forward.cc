@@ -102,9 +102,8 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
   }
 
   Mat5 M;
-  def.mass_matrix(q, M.data());
   Vec5 rhs;
-  def.bias_force(q, qd, m.gravity_scapula.data(), rhs.data());
+  def.dynamics(q, qd, m.gravity_scapula.data(), M.data(), rhs.data());
   for (int j = 0; j < kNumDofs; ++j) rhs[j] += tau[j] + tau_passive[j] + tau_ext[j];
   const Vec5 qdd = M.llt().solve(rhs);
   for (int j = 0; j < kNumDofs; ++j) {

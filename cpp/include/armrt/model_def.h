@@ -65,6 +65,8 @@ struct ModelDef {
   void (*mass_matrix)(const double* q, double* M);                       // M[5*5]
   void (*bias_force)(const double* q, const double* qd, const double* g_scapula,
                      double* b);                                         // b[5]: gravity and Coriolis/centrifugal generalised forces
+  void (*dynamics)(const double* q, const double* qd, const double* g_scapula,
+                   double* M, double* b);                                // both at once, sharing subexpressions
   void (*hand_position)(const double* q, double* p);                     // p[3], m, scapula frame
   void (*hand_jacobian)(const double* q, double* Jv, double* Jw);        // 3x5 each: hand point velocity, hand angular velocity
   void (*arm_momentum_rate)(const double* q, const double* qd,
