@@ -8,7 +8,7 @@ cd "$(dirname "$0")"
 PY=${PYTHON:-python3}
 
 setup() {
-  local debs=(g++ cmake ninja-build libeigen3-dev libsundials-dev doctest-dev)
+  local debs=(g++ cmake ninja-build libeigen3-dev libsundials-dev doctest-dev chromium ffmpeg)
   local missing=()
   for p in "${debs[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
   if [ ${#missing[@]} -gt 0 ]; then
@@ -19,7 +19,8 @@ setup() {
   fi
   echo "run.sh: installing Python packages and building armrt"
   "$PY" -m pip install -q --disable-pip-version-check "numpy>=1.24" "scipy>=1.10" "matplotlib>=3.7" \
-      "pytest>=7" "sympy>=1.12" "opensim>=4.5" scikit-build-core pybind11
+      "pytest>=7" "sympy>=1.12" "opensim>=4.5" "viser>=1.0" "websocket-client>=1.6" \
+      scikit-build-core pybind11
   "$PY" -m pip install -q --disable-pip-version-check --no-build-isolation .
 }
 

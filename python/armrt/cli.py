@@ -73,6 +73,8 @@ def main(argv=None) -> int:
     p.add_argument("--out", default="results", help="output folder")
     p.add_argument("--quick", action="store_true", help="shorter runs (for tests)")
     p.set_defaults(func=cmd_experiments)
+    from .view import add_cli
+    add_cli(sub)  # view, animate, export (viser is imported only when `view` runs)
     args = ap.parse_args(argv)
     return args.func(args)
 

@@ -1,0 +1,145 @@
+"""Offline animation of a saved result: `armrt animate run.npz -o arm.mp4` (or .gif).
+
+Front and side views of the arm (same geometry as the live view, armrt.geometry), the GH stability
+trace (red above 1) and per-muscle activation bars. matplotlib's writers: .gif with Pillow (no extra
+software), .mp4 with ffmpeg (Debian package `ffmpeg`).
+"""
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import numpy as np
+
+from .geometry import POINTS, SEGMENTS, ArmGeometry
+
+BONE_COLOURS = {"humerus": "#ff8000", "ulna": "#00a0ff", "radius": "#005aff", "hand": "#c800c8"}
+
+
+def frame_indices(time: np.ndarray, fps: float, speed: float = 1.0) -> np.ndarray:
+    """Rows of a result shown at `fps` frames per second of wall time, `speed` x real time."""
+    time = np.asarray(time, dtype=float)
+    if time.size == 0:
+        raise ValueError("the result has no rows")
+    if fps <= 0 or speed <= 0:
+        raise ValueError("fps and speed must be positive")
+    t = np.arange(time[0], time[-1] + 1e-12, speed / fps)
+    return np.clip(np.searchsorted(time, t, side="left"), 0, time.size - 1)
+
+
+def animate(result, out, fps: int = 30, speed: float = 1.0, dpi: int = 80, lines_of_action: bool = True,
+            max_frames: int | None = None) -> Path:
+    """Renders a Result (or a path to a saved .npz) to `out` (.gif or .mp4). Returns the path."""
+    import matplotlib
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+    from matplotlib import animation
+
+    from .arm import Result
+    if not isinstance(result, Result):
+        result = Result.load(result)
+    out = Path(out)
+    suffix = out.suffix.lower()
+    if suffix == ".gif":
+        writer = animation.PillowWriter(fps=fps)
+    elif suffix == ".mp4":
+        if shutil.which(matplotlib.rcParams["animation.ffmpeg_path"]) is None:
+            raise RuntimeError("writing .mp4 needs ffmpeg (Debian: apt-get install ffmpeg); use a .gif instead")
+        writer = animation.FFMpegWriter(fps=fps, codec="libx264", extra_args=["-pix_fmt", "yuv420p"])
+    else:
+        raise ValueError(f"output must end in .gif or .mp4, got {out.name!r}")
+
+    geom = ArmGeometry(result.model or "das2")
+    rows = frame_indices(result.time, fps, speed)
+    if max_frames is not None:
+        rows = rows[:max_frames]
+    pts = geom.points_series(result.q[rows])                  # (F, 6, 3)
+    static = geom.static()
+    ix = {n: i for i, n in enumerate(POINTS)}
+    info = geom.info
+    muscles = [(m, np.array(e)) for m, e in info["muscles"]]
+    same_elements = list(result.element_names) == [e["name"] for e in info["elements"]]
+
+    fig = plt.figure(figsize=(10, 6.4), dpi=dpi)
+    gs = fig.add_gridspec(2, 3, height_ratios=[3, 1], width_ratios=[1, 1, 0.8])
+    ax_front, ax_side = fig.add_subplot(gs[0, 0]), fig.add_subplot(gs[0, 1])
+    ax_act, ax_stab = fig.add_subplot(gs[:, 2]), fig.add_subplot(gs[1, :2])
+    # Views: front (from anterior: the subject's right, +x, on the viewer's left) and right side
+    # (anterior, -z, to the right). Thorax frame: x lateral, y up, z posterior.
+    views = [(ax_front, lambda p: (-p[..., 0], p[..., 1]), "front (thorax x to the left)"),
+             (ax_side, lambda p: (-p[..., 2], p[..., 1]), "right side (anterior to the right)")]
+    allp = np.concatenate([pts.reshape(-1, 3)] + list(static.values()))
+    artists = []
+    for ax, proj, title in views:
+        h, v = proj(allp)
+        pad = 0.05
+        ax.set_xlim(h.min() - pad, h.max() + pad)
+        ax.set_ylim(v.min() - pad, v.max() + pad)
+        ax.set_aspect("equal")
+        ax.set_title(title, fontsize=9)
+        ax.tick_params(labelsize=7)
+        for poly in static.values():
+            ax.plot(*proj(poly), color="0.55", lw=1.5)
+        bones = {name: ax.plot([], [], color=BONE_COLOURS[name], lw=5, solid_capstyle="round")[0]
+                 for name, _, _ in SEGMENTS}
+        head = ax.plot([], [], "o", ms=9, color="tab:green")[0]
+        loa = ax.plot([], [], color="tab:red", lw=0.6, alpha=0.8)[0] if lines_of_action else None
+        artists.append((proj, bones, head, loa))
+
+    ax_stab.plot(result.time, result.gh_stab, color="0.3", lw=1)
+    ax_stab.axhline(1.0, color="tab:red", ls="--", lw=0.8)
+    ax_stab.set_ylabel("GHstab", fontsize=8)
+    ax_stab.set_xlabel("time (s)", fontsize=8)
+    ax_stab.tick_params(labelsize=7)
+    cursor = ax_stab.axvline(result.time[0], color="tab:blue")
+    stab_text = ax_stab.text(0.01, 0.85, "", transform=ax_stab.transAxes, fontsize=9)
+
+    names = [m for m, _ in muscles] if same_elements else ["all elements"]
+    bars = ax_act.barh(np.arange(len(names)), np.zeros(len(names)), color="tab:red")
+    ax_act.set_yticks(np.arange(len(names)), names, fontsize=7)
+    ax_act.invert_yaxis()
+    ax_act.set_xlim(0, 1)
+    ax_act.set_title("activation (mean of elements)", fontsize=9)
+    ax_act.tick_params(axis="x", labelsize=7)
+    title = fig.suptitle("", fontsize=10)
+    fig.tight_layout()
+
+    def draw(k: int):
+        r = rows[k]
+        p = pts[k]
+        stab = float(result.gh_stab[r])
+        colour = "tab:red" if stab > 1 else "tab:green"
+        loa_xyz = None
+        if lines_of_action:
+            seg, idx = geom.gh_lines_of_action(result.q[r])
+            active = np.asarray(result.activation[r])[idx] > 0.02
+            seg = seg[active]
+            loa_xyz = np.concatenate([np.concatenate([s, np.full((1, 3), np.nan)]) for s in seg]) if len(seg) else None
+        for proj, bones, head, loa in artists:
+            for name, a, b in SEGMENTS:
+                bones[name].set_data(*proj(np.array([p[ix[a]], p[ix[b]]])))
+            head.set_data(*proj(p[ix["gh"]][None]))
+            head.set_color(colour)
+            if loa is not None:
+                loa.set_data(*(proj(loa_xyz) if loa_xyz is not None else ([], [])))
+        cursor.set_xdata([result.time[r]])
+        stab_text.set_text(f"GHstab {stab:.2f}" + ("  > 1: outside the rim" if stab > 1 else ""))
+        stab_text.set_color(colour)
+        act = np.asarray(result.activation[r])
+        values = [act[e].mean() for _, e in muscles] if same_elements else [act.mean()]
+        for bar, v in zip(bars, values):
+            bar.set_width(v)
+        title.set_text(f"{result.model or 'armrt'}  t = {result.time[r]:.2f} s  "
+                       f"q = {np.array2string(np.degrees(result.q[r]), precision=0, separator=', ')} deg")
+        return []
+
+    out.parent.mkdir(parents=True, exist_ok=True)
+    try:
+        # One draw per frame (FuncAnimation.save draws twice).
+        with writer.saving(fig, str(out), dpi):
+            for k in range(len(rows)):
+                draw(k)
+                writer.grab_frame()
+    finally:
+        plt.close(fig)
+    return out

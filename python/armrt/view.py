@@ -1,0 +1,458 @@
+"""Live 3D view of the arm in a browser page served on localhost (viser; its web client is bundled in
+the PyPI package, nothing is downloaded at run time).
+
+    armrt view                       # a demo simulation, http://localhost:8080
+    armrt view --result run.npz      # replay a saved result
+    armrt view --udp 0.0.0.0:9870    # the armrt-rt state stream (needs armrt.realtime)
+
+    from armrt.view import serve, SimulationSource
+    serve(SimulationSource(excitation=lambda t: {"elbow_flexors": 0.3}))
+
+Data come from a *source*: any object with `start()`, `latest() -> Frame | None`, `close()` and the
+attributes `model` (name) and `element_names`. Three are provided: `SimulationSource` (an `armrt.Arm`
+stepped in real time in a thread), `ResultSource` (a saved `Result` replayed), `UdpSource` (the
+armrt-rt UDP state stream, decoded with `armrt.realtime`).
+"""
+from __future__ import annotations
+
+import threading
+import time
+from dataclasses import dataclass
+from typing import Callable, Protocol
+
+import numpy as np
+
+from .geometry import POINTS, ArmGeometry
+
+BONE_COLOURS = {  # distinct, saturated: the browser test finds the arm by these colours
+    "humerus": (255, 128, 0), "ulna": (0, 160, 255), "radius": (0, 90, 255), "hand": (200, 0, 200)}
+STATIC_COLOUR = (120, 120, 120)
+STAB_OK, STAB_BAD = (40, 180, 60), (230, 30, 30)
+
+
+@dataclass
+class Frame:
+    """One state to draw."""
+    time: float
+    q: np.ndarray                      # (5,) rad
+    activation: np.ndarray | None      # (n,) or None
+    gh_stab: float = float("nan")
+
+
+class Source(Protocol):
+    model: str
+    element_names: list
+
+    def start(self) -> None: ...
+    def latest(self) -> Frame | None: ...
+    def close(self) -> None: ...
+
+
+def demo_excitation(t: float) -> dict:
+    """A slow, stable reaching-like pattern: elbow flexion and shoulder abduction cycles."""
+    return {"rotator_cuff": 0.08,
+            "elbow_flexors": 0.15 * (1 + np.sin(2 * np.pi * 0.3 * t)),
+            "deltscap": 0.08 * (1 + np.sin(2 * np.pi * 0.2 * t - 1.0))}
+
+
+class SimulationSource:
+    """An `armrt.Arm` stepped in a background thread, paced to wall-clock time x `speed`.
+
+    excitation: f(t) -> anything `Arm.set_excitation` takes, or a constant; default demo_excitation.
+    A diverged simulation restarts from the rest posture."""
+
+    def __init__(self, arm=None, excitation: Callable | dict | None = None, model: str = "das2",
+                 integrator: str = "rk4", dt: float = 1e-3, speed: float = 1.0, chunk: float = 0.01):
+        from .arm import Arm
+        self.arm = arm if arm is not None else Arm(model=model, integrator=integrator, dt=dt)
+        self.model = self.arm.model_name
+        self.element_names = list(self.arm.element_names)
+        self.excitation = demo_excitation if excitation is None else excitation
+        self.speed = float(speed)
+        self.steps_per_chunk = max(1, int(round(chunk / self.arm.dt)))
+        self._frame: Frame | None = None
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+        self.restarts = 0
+        self.error: BaseException | None = None
+
+    def _snapshot(self) -> Frame:
+        return Frame(time=self.arm.time, q=self.arm.q.copy(), activation=self.arm.activation.copy(),
+                     gh_stab=float(self.arm.gh_stab))
+
+    def _run(self) -> None:
+        from .arm import SimulationError
+        try:
+            t_wall0, t_sim0 = time.perf_counter(), self.arm.time
+            while not self._stop.is_set():
+                u = self.excitation(self.arm.time) if callable(self.excitation) else self.excitation
+                self.arm.set_excitation(u)
+                try:
+                    self.arm.step(self.steps_per_chunk)
+                except SimulationError:
+                    self.restarts += 1
+                    self.arm.reset()
+                    t_wall0, t_sim0 = time.perf_counter(), self.arm.time
+                self._frame = self._snapshot()
+                lag = (self.arm.time - t_sim0) / self.speed - (time.perf_counter() - t_wall0)
+                if lag > 0:
+                    self._stop.wait(lag)
+        except BaseException as exc:  # reported by latest(); the viewer keeps serving
+            self.error = exc
+
+    def start(self) -> None:
+        if self._thread is None:
+            self._frame = self._snapshot()
+            self._thread = threading.Thread(target=self._run, name="armrt-sim", daemon=True)
+            self._thread.start()
+
+    def latest(self) -> Frame | None:
+        if self.error is not None:
+            raise RuntimeError(f"simulation source failed: {self.error}") from self.error
+        return self._frame
+
+    def close(self) -> None:
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(timeout=2.0)
+
+
+class ResultSource:
+    """A saved `Result` replayed in real time x `speed`, looping."""
+
+    def __init__(self, result, speed: float = 1.0, loop: bool = True):
+        if isinstance(result, (str, bytes)) or hasattr(result, "__fspath__"):
+            from .arm import Result
+            result = Result.load(result)
+        self.result = result
+        self.model = result.model or "das2"
+        self.element_names = list(result.element_names)
+        self.speed, self.loop = float(speed), loop
+        self._t0 = None
+
+    def start(self) -> None:
+        self._t0 = time.perf_counter()
+
+    def latest(self) -> Frame | None:
+        r = self.result
+        if self._t0 is None or len(r.time) == 0:
+            return None
+        span = float(r.time[-1] - r.time[0])
+        t = (time.perf_counter() - self._t0) * self.speed
+        t = (t % span if self.loop and span > 0 else min(t, span)) + float(r.time[0])
+        k = int(np.clip(np.searchsorted(r.time, t, side="right") - 1, 0, len(r.time) - 1))
+        return Frame(time=float(r.time[k]), q=np.asarray(r.q[k]), activation=np.asarray(r.activation[k]),
+                     gh_stab=float(r.gh_stab[k]))
+
+    def close(self) -> None:
+        pass
+
+
+class UdpSource:
+    """The armrt-rt UDP state stream (docs/realtime.md): run the runner with `--state-to HOST:PORT` (or
+    `RealtimeSession(state_to=...)`) and view with `armrt view --udp HOST:PORT`. Packets are decoded by
+    `armrt.realtime` (`decode_packet` + `State.from_packet`); this module defines no format of its own.
+    State packets carry time, q and GHstab but no activations, so the activation panel stays empty."""
+
+    def __init__(self, host: str = "0.0.0.0", port: int = 9870, model: str = "das2"):
+        try:
+            from . import realtime
+        except ImportError as exc:
+            raise RuntimeError("the UDP source needs armrt.realtime (the armrt-rt packet codec), which is "
+                               "not available in this build") from exc
+        if hasattr(realtime, "decode_packet") and hasattr(realtime, "State"):
+            def decode(data: bytes):
+                return realtime.State.from_packet(realtime.decode_packet(data))
+        elif hasattr(realtime, "decode_state"):
+            decode = realtime.decode_state
+        else:
+            raise RuntimeError("armrt.realtime has no state-packet decoder (decode_packet + State.from_packet)")
+        import socket
+        self._decode = decode
+        self.model = model
+        from . import _core
+        self.element_names = [e["name"] for e in _core.model_info(model)["elements"]]
+        self._sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        self._sock.bind((host, int(port)))
+        self.port = self._sock.getsockname()[1]
+        self._sock.settimeout(0.2)
+        self._frame: Frame | None = None
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+        self.packets = 0
+        self.bad_packets = 0
+
+    def _run(self) -> None:
+        while not self._stop.is_set():
+            try:
+                data, _ = self._sock.recvfrom(65536)
+            except OSError:
+                continue
+            try:
+                s = self._decode(data)
+                get = s.get if isinstance(s, dict) else (lambda k, d=None: getattr(s, k, d))
+                act = get("activation")
+                self._frame = Frame(time=float(get("time", 0.0)), q=np.asarray(get("q"), dtype=float)[:5],
+                                    activation=None if act is None else np.asarray(act, dtype=float),
+                                    gh_stab=float(get("gh_stab", float("nan"))))
+                self.packets += 1
+            except Exception:
+                self.bad_packets += 1
+
+    def start(self) -> None:
+        if self._thread is None:
+            self._thread = threading.Thread(target=self._run, name="armrt-udp", daemon=True)
+            self._thread.start()
+
+    def latest(self) -> Frame | None:
+        return self._frame
+
+    def close(self) -> None:
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(timeout=1.0)
+        self._sock.close()
+
+
+def stab_colour(gh_stab: float) -> tuple[int, int, int]:
+    """Green while GHstab <= 1 (force inside the glenoid rim), red above."""
+    return STAB_BAD if (np.isfinite(gh_stab) and gh_stab > 1.0) else STAB_OK
+
+
+def activation_colours(a: np.ndarray) -> np.ndarray:
+    """(k, 3) uint8: grey at 0 to red at 1."""
+    a = np.clip(np.asarray(a, dtype=float), 0, 1)[:, None]
+    return ((1 - a) * np.array([170, 170, 170]) + a * np.array([220, 20, 20])).astype(np.uint8)
+
+
+def _polyline_segments(p: np.ndarray) -> np.ndarray:
+    return np.stack([p[:-1], p[1:]], axis=1)
+
+
+class Viewer:
+    """The viser scene and the update loop; `serve()` is the one-call entry point."""
+
+    def __init__(self, source, host: str = "127.0.0.1", port: int = 8080, fps: float = 30.0,
+                 lines_of_action: bool = True, verbose: bool = True):
+        import viser
+        self.source = source
+        self.geom = ArmGeometry(source.model)
+        self.fps = float(fps)
+        self.server = viser.ViserServer(host=host, port=port, verbose=False)
+        self.host, self.port = host, self.server.get_port()
+        self.url = f"http://{'localhost' if host in ('0.0.0.0', '127.0.0.1') else host}:{self.port}"
+        self.frames_drawn = 0
+        self.last_frame: Frame | None = None
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+        self._lines_of_action = lines_of_action
+        names = list(source.element_names)
+        info = self.geom.info
+        self._muscles = [(m, np.array(ix)) for m, ix in info["muscles"]] if names == [
+            e["name"] for e in info["elements"]] else []
+        self._build_scene()
+        if verbose:
+            print(f"armrt view: {self.url}  (Ctrl-C to stop)", flush=True)
+
+    # -------------------------------------------------------------- scene
+    def _build_scene(self) -> None:
+        sc, g = self.server.scene, self.geom
+        sc.set_up_direction("+y")
+        sc.configure_environment_map(hdri=None)   # the default HDRI would be fetched from the internet
+        sc.add_light_ambient("/lights/ambient", intensity=1.2)
+        sc.add_light_directional("/lights/key", intensity=1.5, position=(0.5, 1.0, -1.0))
+        static = g.static()
+        segs = np.concatenate([_polyline_segments(p) for p in static.values()])
+        sc.add_line_segments("/thorax/girdle", segs.astype(np.float32), STATIC_COLOUR, thickness=0.006)
+        sc.add_icosphere("/thorax/ij", radius=0.01, color=STATIC_COLOUR, position=(0.0, 0.0, 0.0))
+        rest = g.points(g.rest)
+        self._head_radius = 0.024
+        if g.model_json is not None:
+            glen = np.asarray(g.model_json["glenoid"]["glenoid_centre"]) - g.gh_centre_scapula
+            self._head_radius = float(np.linalg.norm(glen))   # humeral head touches the glenoid
+        self._bones = sc.add_line_segments("/arm/bones", self._bone_segments(rest), self._bone_colours(),
+                                           thickness=0.016)
+        self._head = sc.add_icosphere("/arm/humeral_head", radius=self._head_radius, color=STAB_OK,
+                                      position=tuple(rest[0]))
+        self._joints = {n: sc.add_icosphere(f"/arm/{n}", radius=0.014, color=(230, 230, 230), position=tuple(rest[i]))
+                        for i, n in enumerate(POINTS) if n in ("elbow", "wrist", "hand")}
+        if self._lines_of_action:
+            seg, self._loa_idx = g.gh_lines_of_action(g.rest)
+            self._loa = sc.add_line_segments("/arm/gh_lines_of_action", seg.astype(np.float32),
+                                             np.repeat(activation_colours(np.zeros(len(seg)))[:, None], 2, axis=1),
+                                             thickness=0.002)
+        gui = self.server.gui
+        gui.configure_theme(control_width="medium")
+        self._status = gui.add_markdown("starting...")
+        self._stab_bar = gui.add_progress_bar(0.0, color="green")
+        self._bars = gui.add_html(self._activation_html(None))
+
+        @self.server.on_client_connect
+        def _(client) -> None:
+            # Anterior view from the subject's front right, framing girdle and arm.
+            centre = np.array([0.12, -0.22, 0.0])
+            client.camera.up_direction = (0.0, 1.0, 0.0)
+            client.camera.position = tuple(centre + np.array([0.35, 0.15, -0.95]))
+            client.camera.look_at = tuple(centre)
+
+    def _bone_segments(self, pts: np.ndarray) -> np.ndarray:
+        return ArmGeometry.segments(pts).astype(np.float32)
+
+    @staticmethod
+    def _bone_colours() -> np.ndarray:
+        return np.repeat(np.array(list(BONE_COLOURS.values()), dtype=np.uint8)[:, None], 2, axis=1)
+
+    def _activation_html(self, act: np.ndarray | None) -> str:
+        rows = []
+        for m, ix in self._muscles:
+            a = 0.0 if act is None else float(np.mean(act[ix]))
+            w = int(round(100 * min(max(a, 0.0), 1.0)))
+            rows.append(f'<div style="display:flex;align-items:center;font:11px monospace;height:13px">'
+                        f'<span style="width:70px">{m}</span><span style="flex:1;background:#eee;height:9px">'
+                        f'<span style="display:block;width:{w}%;height:9px;background:#d33"></span></span>'
+                        f'<span style="width:34px;text-align:right">{a:.2f}</span></div>')
+        return '<div><b style="font:12px sans-serif">muscle activation (mean of elements)</b>' + "".join(rows) + "</div>"
+
+    # -------------------------------------------------------------- updates
+    def draw(self, f: Frame) -> None:
+        pts = self.geom.points(f.q)
+        colour = stab_colour(f.gh_stab)
+        with self.server.atomic():
+            self._bones.points = self._bone_segments(pts)
+            self._head.position = tuple(pts[0])
+            self._head.color = colour
+            for i, n in enumerate(POINTS):
+                if n in self._joints:
+                    self._joints[n].position = tuple(pts[i])
+            if self._lines_of_action and f.activation is not None:
+                seg, idx = self.geom.gh_lines_of_action(f.q)
+                if len(idx) == len(self._loa_idx):
+                    self._loa.points = seg.astype(np.float32)
+                    self._loa.colors = np.repeat(activation_colours(f.activation[idx])[:, None], 2, axis=1)
+            stab = f"{f.gh_stab:.2f}" if np.isfinite(f.gh_stab) else "n/a"
+            flag = " **above 1: force outside the glenoid rim**" if colour == STAB_BAD else ""
+            self._status.content = (f"**t = {f.time:7.2f} s**  \nGHstab = {stab}{flag}  \n"
+                                    f"q (deg) = {np.array2string(np.degrees(f.q), precision=0, separator=', ')}")
+            self._stab_bar.value = float(np.clip(50 * f.gh_stab, 0, 100)) if np.isfinite(f.gh_stab) else 0.0
+            self._stab_bar.color = "red" if colour == STAB_BAD else "green"
+            if f.activation is not None and self._muscles and self.frames_drawn % 3 == 0:
+                self._bars.content = self._activation_html(f.activation)
+        self.frames_drawn += 1
+
+    def _loop(self) -> None:
+        period = 1.0 / self.fps
+        next_t = time.perf_counter()
+        while not self._stop.is_set():
+            f = self.source.latest()
+            if f is not None and f is not self.last_frame:
+                self.draw(f)
+                self.last_frame = f
+            next_t += period
+            delay = next_t - time.perf_counter()
+            if delay > 0:
+                self._stop.wait(delay)
+            else:
+                next_t = time.perf_counter()
+
+    def start(self) -> "Viewer":
+        self.source.start()
+        self._thread = threading.Thread(target=self._loop, name="armrt-view", daemon=True)
+        self._thread.start()
+        return self
+
+    def stop(self) -> None:
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(timeout=2.0)
+        self.source.close()
+        self.server.stop()
+
+
+def serve(source=None, host: str = "127.0.0.1", port: int = 8080, fps: float = 30.0,
+          lines_of_action: bool = True, block: bool = True, duration: float | None = None) -> Viewer:
+    """Serves the live view of `source` (default: the demo SimulationSource) at http://host:port.
+    block=True runs until Ctrl-C (or `duration` seconds) and then stops; block=False returns the running
+    Viewer (call .stop())."""
+    viewer = Viewer(source if source is not None else SimulationSource(), host=host, port=port, fps=fps,
+                    lines_of_action=lines_of_action).start()
+    if not block:
+        return viewer
+    try:
+        t_end = None if duration is None else time.monotonic() + duration
+        while t_end is None or time.monotonic() < t_end:
+            time.sleep(0.2)
+    except KeyboardInterrupt:
+        pass
+    finally:
+        viewer.stop()
+    return viewer
+
+
+# ------------------------------------------------------------------ command line
+def _cmd_view(args) -> int:
+    if args.result:
+        source = ResultSource(args.result, speed=args.speed)
+    elif args.udp:
+        host, _, port = args.udp.rpartition(":")
+        source = UdpSource(host or "0.0.0.0", int(port), model=args.model)
+    else:
+        source = SimulationSource(model=args.model, integrator=args.integrator, dt=args.dt, speed=args.speed)
+    serve(source, host=args.host, port=args.port, fps=args.fps, lines_of_action=not args.no_lines,
+          duration=args.duration)
+    return 0
+
+
+def _cmd_animate(args) -> int:
+    from .animate import animate
+    out = animate(args.result, args.out, fps=args.fps, speed=args.speed, dpi=args.dpi,
+                  lines_of_action=not args.no_lines)
+    print(f"wrote {out}")
+    return 0
+
+
+def _cmd_export(args) -> int:
+    from .arm import Result
+    from .opensim_io import write_activation_sto, write_mot
+    res = Result.load(args.result)
+    if not (args.mot or args.sto):
+        raise SystemExit("armrt export: give --mot FILE and/or --sto FILE")
+    if args.mot:
+        print(f"wrote {write_mot(res, args.mot, model_file=args.model_file)}")
+    if args.sto:
+        print(f"wrote {write_activation_sto(res, args.sto, model_file=args.model_file, state_paths=args.state_paths)}")
+    return 0
+
+
+def add_cli(subparsers) -> None:
+    """Registers `view`, `animate` and `export` on an argparse subparsers object (each sets func)."""
+    p = subparsers.add_parser("view", help="live 3D view in the browser (demo simulation, a saved result, or UDP)")
+    src = p.add_mutually_exclusive_group()
+    src.add_argument("--result", help="replay a saved result (.npz)")
+    src.add_argument("--udp", metavar="HOST:PORT", help="listen to the armrt-rt state stream")
+    p.add_argument("--model", default="das2")
+    p.add_argument("--integrator", default="rk4", choices=["euler", "rk4", "cvode"])
+    p.add_argument("--dt", type=float, default=1e-3)
+    p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per wall-clock second")
+    p.add_argument("--host", default="127.0.0.1")
+    p.add_argument("--port", type=int, default=8080)
+    p.add_argument("--fps", type=float, default=30.0)
+    p.add_argument("--duration", type=float, default=None, help="stop after this many seconds")
+    p.add_argument("--no-lines", action="store_true", help="hide the GH lines of action")
+    p.set_defaults(func=_cmd_view)
+
+    p = subparsers.add_parser("animate", help="render a saved result to .mp4 (ffmpeg) or .gif")
+    p.add_argument("result", help="saved result (.npz)")
+    p.add_argument("-o", "--out", default="arm.gif", help="output .mp4 or .gif")
+    p.add_argument("--fps", type=int, default=30)
+    p.add_argument("--speed", type=float, default=1.0)
+    p.add_argument("--dpi", type=int, default=80)
+    p.add_argument("--no-lines", action="store_true", help="hide the GH lines of action")
+    p.set_defaults(func=_cmd_animate)
+
+    p = subparsers.add_parser("export", help="OpenSim files: joint angles (.mot) and activations (.sto)")
+    p.add_argument("result", help="saved result (.npz)")
+    p.add_argument("--mot", help="joint angles, OpenSim motion file")
+    p.add_argument("--sto", help="activations, OpenSim storage file")
+    p.add_argument("--state-paths", action="store_true", help="name .sto columns /forceset/<muscle>/activation")
+    p.add_argument("--model-file", help="models/<name>.json (default: found beside the package)")
+    p.set_defaults(func=_cmd_export)

@@ -1,0 +1,251 @@
+"""Live view (issue 7, parts 1 and 4): geometry, data sources, the served page in headless Chromium."""
+import base64
+import json
+import os
+import shutil
+import socket
+import subprocess
+import time
+import urllib.request
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+armrt = pytest.importorskip("armrt", reason="armrt is not built/installed (./run.sh setup)")
+from armrt.geometry import POINTS, ArmGeometry  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def geom():
+    return ArmGeometry("das2")
+
+
+# ---------------------------------------------------------------- geometry (no browser)
+def test_points_follow_the_engine(geom, arm):
+    rng = np.random.default_rng(1)
+    lo, hi = arm.dof_ranges.T
+    for _ in range(5):
+        q = rng.uniform(lo, hi)
+        pts = geom.points(q)
+        R, p = arm._sim.body_poses(q)
+        np.testing.assert_allclose(pts[POINTS.index("elbow")], geom.to_thorax(p[1]), atol=1e-12)
+        np.testing.assert_allclose(pts[POINTS.index("wrist")], geom.to_thorax(p[3]), atol=1e-12)
+        arm.reset(q=q)
+        np.testing.assert_allclose(pts[POINTS.index("hand")], arm.hand_position, atol=1e-9)
+
+
+def test_segment_lengths_are_the_models(geom):
+    L = geom.segment_lengths()
+    bodies = {b["name"]: b for b in geom.model_json["bodies"]} if geom.model_json else None
+    if bodies:
+        assert L["humerus"] == pytest.approx(np.linalg.norm(np.subtract(bodies["ulna"]["joint"]["location_in_parent"],
+                                                                        [0, 0, 0])), abs=1e-9)
+        assert L["hand"] == pytest.approx(np.linalg.norm(geom.model_json["hand_point"]["point"]), abs=1e-9)
+        axis = np.asarray(bodies["radius"]["joint"]["axes"][0])
+        assert abs(np.dot(geom.ps_axis_in_ulna, axis)) == pytest.approx(1.0, abs=1e-9)
+    # Rigid: lengths do not change with pose.
+    for q in (geom.rest, geom.rest + 0.3):
+        seg = ArmGeometry.segments(geom.points(q))
+        np.testing.assert_allclose(np.linalg.norm(seg[:, 1] - seg[:, 0], axis=1),
+                                   [L[s] for s in ("humerus", "ulna", "radius", "hand")], atol=1e-12)
+    # The distal ulna stays next to the wrist through pronation-supination.
+    for ps in (0.1, 1.5, 2.7):
+        q = geom.rest.copy()
+        q[4] = ps
+        pts = geom.points(q)
+        assert np.linalg.norm(pts[POINTS.index("ulna_distal")] - pts[POINTS.index("wrist")]) < 0.04
+
+
+def test_static_girdle(geom):
+    st = geom.static()
+    assert {"clavicle_r", "scapula_r", "midline"} <= set(st)
+    np.testing.assert_allclose(st["clavicle_r"][1], geom.info["scapula_origin_in_thorax"])
+    gh = geom.to_thorax(geom.gh_centre_scapula)
+    assert gh[0] > 0.1 and abs(gh[1]) < 0.1          # right shoulder, near IJ height
+    seg, idx = geom.gh_lines_of_action(geom.rest)
+    assert len(idx) == sum(e["crosses_gh"] for e in geom.info["elements"])
+    np.testing.assert_allclose(np.linalg.norm(seg[:, 1] - seg[:, 0], axis=1), 0.06, atol=1e-9)
+
+
+# ---------------------------------------------------------------- sources and server (no browser)
+def test_result_source_replays(tmp_path, arm):
+    from armrt.view import ResultSource
+    arm.reset()
+    res = arm.simulate({"elbow_flexors": 0.3}, duration=0.2, record_every=10)
+    res.save(tmp_path / "r.npz")
+    src = ResultSource(tmp_path / "r.npz", speed=1.0)
+    src.start()
+    f = src.latest()
+    assert f.q.shape == (5,) and f.activation.shape == (arm.n_elements,)
+    time.sleep(0.1)
+    assert src.latest().time > f.time
+
+
+def test_udp_source_decodes_state_packets(geom):
+    realtime = pytest.importorskip("armrt.realtime", reason="armrt.realtime (the armrt-rt codec) is not built")
+    from armrt.view import UdpSource
+    src = UdpSource("127.0.0.1", 0)
+    src.start()
+    try:
+        q = geom.rest + 0.1
+        values = np.concatenate([[1.25], q, np.zeros(5), np.zeros(3), [1.7, -1]])
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as tx:
+            tx.sendto(b"not a packet", ("127.0.0.1", src.port))
+            tx.sendto(realtime.encode_packet(realtime.STATE, 7, values), ("127.0.0.1", src.port))
+            deadline = time.monotonic() + 5
+            while src.latest() is None and time.monotonic() < deadline:
+                time.sleep(0.02)
+        f = src.latest()
+        assert f is not None, "no state decoded"
+        assert f.time == 1.25 and f.gh_stab == 1.7 and f.activation is None
+        np.testing.assert_allclose(f.q, q)
+        assert src.bad_packets == 1
+    finally:
+        src.close()
+
+
+def test_udp_source_with_the_runner():
+    realtime = pytest.importorskip("armrt.realtime", reason="armrt.realtime is not built")
+    try:
+        from armrt import _rt  # noqa: F401
+    except ImportError:
+        pytest.skip("the real-time loop bindings (armrt._rt) are not built")
+    from armrt.view import UdpSource
+    src = UdpSource("127.0.0.1", 0)
+    src.start()
+    try:
+        with realtime.RealtimeSession(state_to=f"127.0.0.1:{src.port}", state_rate_hz=100, duration=1.0):
+            deadline = time.monotonic() + 5
+            while src.packets < 20 and time.monotonic() < deadline:
+                time.sleep(0.05)
+        assert src.packets >= 20 and src.latest().q.shape == (5,)
+    finally:
+        src.close()
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture
+def viewer():
+    pytest.importorskip("viser", reason="viser is not installed (pip install viser)")
+    from armrt.view import SimulationSource, serve
+    v = serve(SimulationSource(), host="127.0.0.1", port=_free_port(), fps=30, block=False)
+    yield v
+    v.stop()
+
+
+def test_server_draws_30_fps(viewer):
+    with urllib.request.urlopen(viewer.url, timeout=10) as r:
+        assert b"<html" in r.read(2000).lower()
+    time.sleep(0.5)
+    n0, t0 = viewer.frames_drawn, time.perf_counter()
+    time.sleep(2.0)
+    rate = (viewer.frames_drawn - n0) / (time.perf_counter() - t0)
+    assert rate >= 27, f"viewer drew {rate:.1f} frames/s"
+    assert viewer.source.restarts == 0
+
+
+# ---------------------------------------------------------------- the page in headless Chromium
+def _chromium() -> str | None:
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        if shutil.which(name):
+            return shutil.which(name)
+    return None
+
+
+class _Page:
+    """A Chromium tab driven over the DevTools protocol (websocket-client)."""
+
+    def __init__(self, ws_url: str):
+        import websocket
+        self.ws = websocket.create_connection(ws_url, timeout=30, suppress_origin=True)
+        self.n = 0
+
+    def call(self, method: str, **params):
+        self.n += 1
+        self.ws.send(json.dumps({"id": self.n, "method": method, "params": params}))
+        while True:
+            msg = json.loads(self.ws.recv())
+            if msg.get("id") == self.n:
+                if "error" in msg:
+                    raise RuntimeError(f"{method}: {msg['error']}")
+                return msg["result"]
+
+    def eval(self, js: str):
+        return self.call("Runtime.evaluate", expression=js, returnByValue=True)["result"].get("value")
+
+    def screenshot(self) -> np.ndarray:
+        from PIL import Image
+        import io
+        png = base64.b64decode(self.call("Page.captureScreenshot", format="png")["data"])
+        return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")), png
+
+
+def _arm_mask(img: np.ndarray) -> np.ndarray:
+    """Saturated (coloured) pixels of the 3D view: the bones (orange, blue, magenta) and the humeral head;
+    the girdle is grey, the background white. Crops away the GUI panel, the notification and the axes."""
+    h, w, _ = img.shape
+    region = img[int(0.22 * h):int(0.9 * h), int(0.08 * w):int(0.64 * w)].astype(int)
+    sat = region.max(axis=2) - region.min(axis=2)
+    return sat > 80
+
+
+@pytest.mark.skipif(_chromium() is None, reason="chromium is not installed (Debian package 'chromium')")
+def test_live_page_in_headless_chromium(viewer, tmp_path):
+    pytest.importorskip("websocket", reason="websocket-client is not installed (pip install websocket-client)")
+    pytest.importorskip("PIL", reason="Pillow is not installed")
+    port = _free_port()
+    profile = tmp_path / "profile"
+    cmd = [_chromium(), "--headless=new", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+           "--no-first-run", "--disable-extensions", "--window-size=1000,700", f"--remote-debugging-port={port}",
+           "--remote-allow-origins=*", f"--user-data-dir={profile}", viewer.url]
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    out_dir = Path(os.environ.get("ARMRT_SCREENSHOT_DIR", tmp_path))
+    out_dir.mkdir(parents=True, exist_ok=True)
+    try:
+        deadline = time.monotonic() + 20
+        ws_url = None
+        while ws_url is None:
+            assert time.monotonic() < deadline, "chromium did not open its DevTools endpoint"
+            try:
+                with urllib.request.urlopen(f"http://127.0.0.1:{port}/json/list", timeout=2) as r:
+                    ws_url = next((t["webSocketDebuggerUrl"] for t in json.load(r) if t.get("type") == "page"), None)
+            except OSError:
+                pass
+            time.sleep(0.2)
+        page = _Page(ws_url)
+        deadline = time.monotonic() + 30
+        while not page.eval("!!document.querySelector('canvas') && document.body.innerText.includes('GHstab')"):
+            assert time.monotonic() < deadline, "the page never showed the scene and the GHstab panel"
+            time.sleep(0.3)
+        time.sleep(1.5)   # first frames rendered
+        text0 = page.eval("document.body.innerText")
+        img0, png0 = page.screenshot()
+        time.sleep(0.8)
+        text1 = page.eval("document.body.innerText")
+        img1, png1 = page.screenshot()
+        (out_dir / "view_0.png").write_bytes(png0)
+        (out_dir / "view_1.png").write_bytes(png1)
+    finally:
+        proc.terminate()
+        try:
+            proc.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+    # The panel shows live values: the time advanced between the two screenshots, activations listed.
+    t = [float(s.split("t =")[1].split("s")[0]) for s in (text0, text1)]
+    assert t[1] > t[0], (t, "the page did not update")
+    assert "GHstab" in text1 and "bicb" in text1
+    # The arm is drawn: coloured bone pixels, including the hand's magenta.
+    m0, m1 = _arm_mask(img0), _arm_mask(img1)
+    assert m0.sum() > 500 and m1.sum() > 500, (m0.sum(), m1.sum())
+    magenta = (img0[..., 0] > 150) & (img0[..., 2] > 150) & (img0[..., 1] < 90)
+    assert magenta.sum() > 30
+    # ... and it moves: its pixels differ between the frames.
+    changed = (m0 ^ m1).sum()
+    assert changed > 100, f"only {changed} arm pixels changed between frames"
