@@ -1,0 +1,154 @@
+// pybind11 bindings of the real-time loop (cpp/rt/rt_loop.h): armrt.realtime.RealtimeSession wraps
+// them. The loop runs on its own C++ thread (SCHED_FIFO when permitted) and never touches Python;
+// blocking calls release the GIL.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <time.h>
+
+#include <string>
+#include <vector>
+
+#include "packet.h"
+#include "rt_loop.h"
+
+namespace py = pybind11;
+using namespace armrt::rt;
+
+namespace {
+
+py::dict pct(const Percentiles& p) {
+  py::dict d;
+  d["min"] = p.min;
+  d["median"] = p.median;
+  d["p99"] = p.p99;
+  d["p999"] = p.p999;
+  d["max"] = p.max;
+  d["mean"] = p.mean;
+  d["count"] = p.count;
+  return d;
+}
+
+py::dict stats_dict(const RtLoop& loop) {
+  const RtStats s = loop.stats();
+  py::dict d;
+  d["rate_hz"] = s.rate_hz;
+  d["dt"] = s.dt;
+  d["integrator"] = s.integrator;
+  d["cycles"] = s.cycles;
+  d["recorded"] = s.recorded;
+  d["overruns"] = s.overruns;
+  d["missed_deadlines"] = s.missed_deadlines;
+  d["elapsed_s"] = s.elapsed_s;
+  d["sim_time"] = s.sim_time;
+  d["scheduler"] = s.scheduler;
+  d["priority"] = s.priority;
+  d["memory_locked"] = s.memory_locked;
+  d["cpu"] = s.cpu;
+  d["rt_note"] = s.rt_note;
+  d["stop_reason"] = s.stop_reason;
+  d["error"] = s.error;
+  d["tet_ns"] = pct(s.tet);
+  d["cycle_ns"] = pct(s.cycle);
+  d["latency_ns"] = pct(s.latency);
+  const PacketCounters& k = s.packets;
+  py::dict p;
+  p["received"] = k.received;
+  p["applied"] = k.applied;
+  p["dropped"] = k.dropped();
+  p["bad_magic"] = k.bad_magic;
+  p["bad_version"] = k.bad_version;
+  p["bad_size"] = k.bad_size;
+  p["bad_type"] = k.bad_type;
+  p["bad_count"] = k.bad_count;
+  p["non_finite"] = k.non_finite;
+  p["stale"] = k.stale;
+  p["out_of_order"] = k.out_of_order;
+  p["clipped"] = k.clipped;
+  p["timeouts"] = k.timeouts;
+  p["state_sent"] = k.state_sent;
+  p["send_errors"] = k.send_errors;
+  d["packets"] = p;
+  return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_rt, m) {
+  m.doc() = "armrt real-time loop (C++ thread, SCHED_FIFO when permitted) with UDP I/O";
+  m.attr("MAGIC") = py::bytes("ARMR");
+  m.attr("VERSION") = static_cast<int>(kVersion);
+  m.attr("HEADER_SIZE") = kHeaderSize;
+  m.attr("MAX_VALUES") = kMaxValues;
+
+  py::class_<RtLoop>(m, "RtLoop")
+      .def(py::init([](const std::string& model, const std::string& integrator, double rate_hz, double dt,
+                       std::vector<double> q0, double duration, bool realtime, int priority, bool lock_memory,
+                       bool require_rt, int cpu, double busy_wait_us, std::size_t record_capacity,
+                       const std::string& listen, const std::string& state_to, double state_rate_hz,
+                       bool send_forces, double input_timeout, std::vector<std::string> channels) {
+             RtConfig c;
+             c.model = model;
+             c.integrator = integrator;
+             c.rate_hz = rate_hz;
+             c.dt = dt;
+             c.q0 = std::move(q0);
+             c.duration = duration;
+             c.realtime = realtime;
+             c.priority = priority;
+             c.lock_memory = lock_memory;
+             c.require_rt = require_rt;
+             c.cpu = cpu;
+             c.busy_wait_us = busy_wait_us;
+             c.record_capacity = record_capacity;
+             c.listen = listen;
+             c.state_to = state_to;
+             c.state_rate_hz = state_rate_hz;
+             c.send_forces = send_forces;
+             c.input_timeout = input_timeout;
+             c.channels = std::move(channels);
+             return std::make_unique<RtLoop>(c);
+           }),
+           py::arg("model") = "das2", py::arg("integrator") = "rk4", py::arg("rate_hz") = 1000.0,
+           py::arg("dt") = 0.0, py::arg("q0") = std::vector<double>{}, py::arg("duration") = 0.0,
+           py::arg("realtime") = true, py::arg("priority") = 80, py::arg("lock_memory") = false,
+           py::arg("require_rt") = false, py::arg("cpu") = -1, py::arg("busy_wait_us") = 0.0,
+           py::arg("record_capacity") = 0, py::arg("listen") = "", py::arg("state_to") = "",
+           py::arg("state_rate_hz") = 100.0, py::arg("send_forces") = false, py::arg("input_timeout") = 0.1,
+           py::arg("channels") = std::vector<std::string>{})
+      .def("start", [](RtLoop& l) {
+        py::gil_scoped_release release;
+        l.start();
+      })
+      .def("request_stop", &RtLoop::request_stop)
+      .def("stop", [](RtLoop& l) {
+        l.request_stop();
+        py::gil_scoped_release release;
+        l.join();
+      })
+      // Waits up to timeout s (negative: forever) for the loop to end (duration, divergence); True if it has.
+      .def("wait", [](RtLoop& l, double timeout) {
+        {
+          py::gil_scoped_release release;
+          timespec t0;
+          clock_gettime(CLOCK_MONOTONIC, &t0);
+          while (!l.finished()) {
+            timespec now;
+            clock_gettime(CLOCK_MONOTONIC, &now);
+            const double el = (now.tv_sec - t0.tv_sec) + 1e-9 * (now.tv_nsec - t0.tv_nsec);
+            if (timeout >= 0 && el >= timeout) break;
+            timespec ts{0, 2000000};
+            nanosleep(&ts, nullptr);
+          }
+          if (l.finished()) l.join();
+        }
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        return l.finished();
+      }, py::arg("timeout") = -1.0)
+      .def_property_readonly("running", &RtLoop::running)
+      .def_property_readonly("finished", &RtLoop::finished)
+      .def_property_readonly("port", &RtLoop::bound_port)
+      .def_property_readonly("dt", [](const RtLoop& l) { return l.config().dt; })
+      .def("stats", &stats_dict)
+      .def("stats_json", &RtLoop::stats_json);
+}
