@@ -46,11 +46,11 @@ bool check_state(const Model& m, Data& d) {
   return true;
 }
 
-bool step(const Model& m, Data& d, Integrator integrator, double dt) {
+bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record) {
   const double t0 = now_ns();
   const int ns = state_size(m);
   double* x = d.x.data();
-  forward(m, d, x, d.k1.data(), true);
+  forward(m, d, x, d.k1.data(), record);
   if (integrator == Integrator::kEuler) {
     for (int k = 0; k < ns; ++k) x[k] += dt * d.k1[k];
   } else {

@@ -102,14 +102,16 @@ PYBIND11_MODULE(_core, mod) {
   mod.def("model_info", [](const std::string& name) { return model_info(require_model(name)); });
 
   py::class_<Simulator>(mod, "Simulator")
-      .def(py::init([](const std::string& model, const std::string& integrator, double dt) {
-             return std::make_unique<Simulator>(require_model(model), parse_integrator(integrator), dt);
+      .def(py::init([](const std::string& model, const std::string& integrator, double dt, int substeps) {
+             return std::make_unique<Simulator>(require_model(model), parse_integrator(integrator), dt, substeps);
            }),
-           py::arg("model"), py::arg("integrator"), py::arg("dt"))
+           py::arg("model"), py::arg("integrator"), py::arg("dt"), py::arg("substeps") = 1)
+      .def_property_readonly("substeps", [](const Simulator& s) { return s.substeps; })
       .def_property_readonly("num_elements", [](const Simulator& s) { return s.model.num_elements; })
       .def_property_readonly("dt", [](const Simulator& s) { return s.dt; })
       .def_property_readonly("integrator", [](const Simulator& s) { return integrator_name(s.integrator); })
-      .def("set_integrator", [](Simulator& s, const std::string& name, double dt) { s.set_integrator(parse_integrator(name), dt); })
+      .def("set_integrator", [](Simulator& s, const std::string& name, double dt, int substeps) { s.set_integrator(parse_integrator(name), dt, substeps); },
+           py::arg("integrator"), py::arg("dt"), py::arg("substeps") = 1)
       .def_property("time", [](const Simulator& s) { return s.data.time; }, [](Simulator& s, double t) { s.data.time = t; })
       // Zero-copy views of the state and inputs.
       .def_property_readonly("state", [](py::object self) {

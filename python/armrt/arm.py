@@ -11,6 +11,8 @@ import numpy as np
 from . import _core
 
 INTEGRATORS = ("euler", "rk4", "cvode")
+# Largest integration step used by default (s); CVODE chooses its own.
+DEFAULT_MAX_STEP = {"euler": 1e-4, "rk4": 2.5e-4, "cvode": float("inf")}
 
 
 class SimulationError(RuntimeError):
@@ -48,7 +50,8 @@ class Result:
     dof_names: list = field(default_factory=list)
     element_names: list = field(default_factory=list)
     integrator: str = ""
-    dt: float = 0.0
+    dt: float = 0.0             # control step (s)
+    substeps: int = 1           # integration steps per control step
     model: str = ""
 
     ARRAYS = ("time", "q", "qdot", "lce", "activation", "excitation", "muscle_force", "muscle_length",
@@ -62,7 +65,7 @@ class Result:
         """Saves to a compressed .npz (load with Result.load)."""
         np.savez_compressed(path, **{k: getattr(self, k) for k in self.ARRAYS},
                             dof_names=np.array(self.dof_names), element_names=np.array(self.element_names),
-                            integrator=self.integrator, dt=self.dt, model=self.model)
+                            integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model)
 
     @classmethod
     def load(cls, path) -> "Result":
@@ -72,7 +75,8 @@ class Result:
                 raise ValueError(f"{path}: not an armrt result, missing arrays {missing}")
             return cls(**{k: z[k] for k in cls.ARRAYS}, dof_names=[str(s) for s in z["dof_names"]],
                        element_names=[str(s) for s in z["element_names"]], integrator=str(z["integrator"]),
-                       dt=float(z["dt"]), model=str(z["model"]))
+                       dt=float(z["dt"]), substeps=int(z["substeps"]) if "substeps" in z.files else 1,
+                       model=str(z["model"]))
 
 
 class Arm:
@@ -83,13 +87,22 @@ class Arm:
     result = arm.simulate(lambda t: {"elbow_flexors": 0.2 if t > 1 else 0.0}, duration=3.0)
     """
 
-    def __init__(self, model: str = "das2", integrator: str = "rk4", dt: float = 1e-3):
+    def __init__(self, model: str = "das2", integrator: str = "rk4", dt: float = 1e-3, substeps: int | None = None):
+        """dt is the control step (inputs held, outputs reported, TET measured per dt); fixed-step
+        integrators take `substeps` steps of dt / substeps inside it. Default: enough substeps for a
+        step of at most 0.25 ms (RK4) or 0.1 ms (Euler), which the solver study (docs/experiments.md)
+        found accurate on the paper's tasks; one RK4 step of 1 ms is not stable for every input
+        because the model's short-tendon elements are stiff at low activation."""
         if integrator not in INTEGRATORS:
             raise ValueError(f"unknown integrator {integrator!r}; expected one of {INTEGRATORS}")
         dt = float(dt)
         if not (np.isfinite(dt) and dt > 0):
             raise ValueError(f"dt must be a positive number of seconds, got {dt}")
-        self._sim = _core.Simulator(model, integrator, dt)
+        if substeps is None:
+            substeps = max(1, int(np.ceil(dt / DEFAULT_MAX_STEP[integrator] - 1e-9)))
+        if int(substeps) != substeps or substeps < 1:
+            raise ValueError(f"substeps must be a positive integer, got {substeps!r}")
+        self._sim = _core.Simulator(model, integrator, dt, int(substeps))
         info = _core.model_info(model)
         self.model_name = info["name"]
         self.info = info
@@ -227,7 +240,13 @@ class Arm:
 
     @property
     def dt(self) -> float:
+        """Control step (s)."""
         return self._sim.dt
+
+    @property
+    def substeps(self) -> int:
+        """Integration steps per control step (1 for CVODE, which picks its own)."""
+        return self._sim.substeps
 
     def reset(self, q=None, qdot=None, activation=None, time: float = 0.0) -> None:
         """Back to a state: q (5, rad; default the rest posture), qdot (default 0), activations (n,
@@ -307,7 +326,7 @@ class Arm:
             raise SimulationError(f"{exc}; call reset() to continue") from None
         raw.pop("steps")
         return Result(**raw, dof_names=list(self.dof_names), element_names=list(self.element_names),
-                      integrator=self.integrator, dt=self.dt, model=self.model_name)
+                      integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model_name)
 
     # ------------------------------------------------------------------ outputs
     def outputs(self) -> dict:

@@ -32,10 +32,10 @@ void gh_stability(const ModelDef& def, const double* force, double* theta, doubl
 void passive_joint_torque(const ModelDef& def, const double* q, const double* qd, double* tau);
 
 // ---- integrate.cc
-// Advances d by one step of dt with the fixed-step integrator; the outputs of d describe the state
-// at the start of the step. Returns false (and sets d.status) if the state became non-finite or
-// a joint moved faster than m.max_joint_speed.
-bool step(const Model& m, Data& d, Integrator integrator, double dt);
+// Advances d by one step of dt with the fixed-step integrator; with record, the outputs of d describe
+// the state at the start of the step. Returns false (and sets d.status) if the state became
+// non-finite or a joint moved faster than m.max_joint_speed. Adds the step's wall time to d.tet.
+bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record = true);
 bool check_state(const Model& m, Data& d);
 const char* state_name(const Model& m, int index, char* buf, int buflen);
 

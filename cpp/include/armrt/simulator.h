@@ -19,9 +19,13 @@ std::string model_names();
 Integrator parse_integrator(const std::string& name);  // "euler", "rk4", "cvode"; throws std::invalid_argument
 const char* integrator_name(Integrator integrator);
 
+// dt is the control step: inputs are held and outputs reported once per dt. Fixed-step integrators
+// take `substeps` steps of dt / substeps inside it (the model's short-tendon elements are too stiff
+// for one RK4 step of 1 ms at low activation; see docs/experiments.md). data.tet holds the wall time
+// of whole control steps: the task execution time that must stay below dt in real time.
 class Simulator {
  public:
-  Simulator(const ModelDef& def, Integrator integrator, double dt);
+  Simulator(const ModelDef& def, Integrator integrator, double dt, int substeps = 1);
 
   // Joint angles (5, rad; nullptr: rest posture), velocities (nullptr: zero) and activations
   // (nullptr: zero); contractile elements start in static equilibrium at those activations.
@@ -32,12 +36,13 @@ class Simulator {
   void evaluate_outputs();
   // Describes data.status for an error message: which state, when.
   std::string error_message() const;
-  void set_integrator(Integrator integrator, double dt);
+  void set_integrator(Integrator integrator, double dt, int substeps = 1);
 
   Model model;
   Data data;
   Integrator integrator;
   double dt;
+  int substeps = 1;
 
  private:
   std::unique_ptr<CvodeIntegrator> cvode_;
