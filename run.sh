@@ -2,6 +2,7 @@
 # One entry point that also does all set-up on a fresh Debian machine (root, or sudo available):
 #   ./run.sh experiments   the paper's experiments on the default model (the main job)
 #   ./run.sh test          every test: C++ (ctest) and Python (pytest)
+#   ./run.sh bench         benchmarks against OpenSim and MuJoCo/MyoSuite (bench/results/)
 #   ./run.sh setup         only install Debian and pip packages and build armrt
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -40,5 +41,12 @@ case "${1:-}" in
   setup) setup ;;
   test) setup; run_tests ;;
   experiments) setup; shift; "$PY" -m armrt.cli experiments "$@" ;;
-  *) echo "usage: ./run.sh experiments | test | setup" >&2; exit 2 ;;
+  bench)
+    setup
+    "$PY" -m pip install -q --disable-pip-version-check mujoco myo-sim
+    "$PY" -m pip install -q --disable-pip-version-check --no-deps myosuite
+    cmake -S . -B build/bench -G Ninja -DARMRT_BUILD_TESTS=OFF >/dev/null
+    cmake --build build/bench -j2 --target armrt_bench armrt_bench_scaling
+    "$PY" -m bench all ;;
+  *) echo "usage: ./run.sh experiments | test | bench | setup" >&2; exit 2 ;;
 esac
