@@ -30,8 +30,9 @@ length. A pose is marked invalid for an element when, for some DOF it crosses,
 ``|ma|`` over the sample (robust 99.5th percentile so that the jumps do not set it themselves).
 Such poses are excluded from fitting and scoring, and counted.
 
-Sampling runs in worker processes (each loads its own model; OpenSim objects cannot be pickled)
-and the result is cached in an ``.npz`` whose name is a hash of every input that changes it.
+Sampling runs in "spawn" worker processes (each loads its own model; OpenSim objects cannot be
+pickled); the workers only import this module, and a process that is itself a multiprocessing child
+samples serially, so importing a caller from a worker cannot respawn pools. The result is cached in an ``.npz`` whose name is a hash of every input that changes it.
 """
 from __future__ import annotations
 
@@ -199,6 +200,10 @@ def sample_poses(osim_path, girdle, elements, poses, processes=2):
     poses = np.asarray(poses, float)
     n_chunks = max(1, min(len(poses), 8 * processes))
     chunks = np.array_split(poses, n_chunks)
+    # Never start a pool from inside a worker (a spawned child that re-imports a caller's module
+    # must not spawn again): sample serially there.
+    if mp.parent_process() is not None:
+        processes = 1
     if processes > 1:
         with mp.get_context("spawn").Pool(processes, _init_worker, (args,)) as pool:
             parts = pool.map(_run_chunk, chunks)

@@ -139,11 +139,21 @@ def write_report(model, stats, n_poses, seed, md_path, fig_dir, osim_path):
             f"{k} {stats[k]['moment_arm_max_err_m'] * 1e3:.1f} mm / {stats[k]['criterion_m'] * 1e3:.1f} mm"
             for k in worst[:8]) + ".",
     ]
+    n_len = sum(s["n_terms"] for s in stats.values())
+    n_loa = sum(3 * s["direction_n_terms"] for s in stats.values() if "direction_n_terms" in s)
+    lines.append(f"- Polynomial size: {n_len} length terms (all elements), {n_loa} line-of-action "
+                 f"terms (x, y, z components of the GH-crossing elements).")
     if gh:
         rms = np.sqrt(np.mean([s["direction_rms_deg"] ** 2 for s in gh]))
         lines.append(f"- GH line of action ({len(gh)} elements): overall RMS {rms:.2f} deg, "
                      f"worst element max {max(s['direction_max_deg'] for s in gh):.1f} deg, "
                      f"worst element 99th percentile {max(s['direction_p99_deg'] for s in gh):.1f} deg.")
+    lines += ["", "Known limits of the polynomial model (see `codegen/rom.py`): inside the range of motion",
+              "OpenSim's anterior scapular deltoid fibres (deltscap1, deltscap2) flip over the humeral",
+              "head during elevation (the moment arm about GHz changes sign, by ~50 mm, within ~0.07 rad",
+              "near GHz 1.05-1.25), infraspinatus 6 steps by ~20 mm near GHz 1.15, and infraspinatus 4-6",
+              "and pronator teres 1 have wrap-engagement regions; a smooth polynomial cannot follow these",
+              "and those elements carry most of the element-poses over the criterion."]
     lines += ["", f"![error ratio]({rel(fig_dir / 'path_error_ratio.png')})", "",
               f"![sweeps]({rel(fig_dir / 'path_moment_arm_sweeps.png')})", "",
               "## Per element", "",

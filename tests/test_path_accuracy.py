@@ -13,13 +13,23 @@ REFERENCE = ROOT / ".." / "shared" / "reference"
 MODEL = ROOT / "models" / "das2.json"
 
 N_POSES = 256
-# Bounds of the current fits (docs/path_accuracy.md: 59-62 of 102 elements meet the criterion at
-# every pose; the deltoid/subscapularis sphere-wrap kinks, infraspinatus 4-6 and teres minor miss
-# it on 3% of element-poses). They guard against regressions; they are not the paper's criterion.
-MAX_OVER_FRACTION = 0.04   # element-poses over the criterion / scored element-poses
-MAX_ERROR_RATIO = 11.0     # worst single moment-arm error / that element's criterion
-LOA_P99_DEG = 25.0         # per element, 99th percentile line-of-action angle error
-LOA_RMS_DEG = 6.0          # per element RMS
+# Bounds of the current fits. Achieved on this sample (seed 987, 256 poses): 92 of 102 elements
+# meet the criterion at every pose (docs/path_accuracy.md, 1024 poses: 93), 0.62% of
+# element-poses over it, worst error 7.5 x criterion (deltscap2, whose path flips over the humeral
+# head near GHz 1.05-1.25), line of action worst element p99 17.4 deg / RMS 5.9 deg (deltscap2),
+# overall RMS 2.05 deg; infraspinatus 4/5 lose up to 15% of the poses to wrap-jump exclusion at
+# high elevation. The bounds guard against regressions (about 1.3-1.5x the achieved values, 2
+# elements of slack); the paper's criterion itself is the per-element pass.
+MIN_PASSING = 90           # elements meeting the criterion at every scored pose
+MAX_OVER_FRACTION = 0.0093 # element-poses over the criterion / scored element-poses
+MAX_ERROR_RATIO = 10.0     # worst single moment-arm error / that element's criterion
+LOA_P99_DEG = 22.0         # per element, 99th percentile line-of-action angle error
+LOA_RMS_DEG = 7.5          # per element RMS
+LOA_RMS_ALL_DEG = 2.6      # RMS over all GH-crossing elements
+MIN_SCORED_FRACTION = 0.8  # per element, poses not excluded as wrap jumps
+# Size of the polynomials (the real-time engine evaluates every path 4x per RK4 step).
+MAX_LENGTH_TERMS = 1480    # achieved 1408
+MAX_LOA_TERMS = 1000       # achieved 912 (x, y, z components counted separately)
 
 
 def test_fit_length_recovers_known_polynomial():
@@ -55,6 +65,22 @@ def test_monomial_derivatives_match_finite_difference():
         np.testing.assert_allclose(dP[j], fd, rtol=1e-6, atol=1e-6)
 
 
+@pytest.mark.skipif(not MODEL.exists(), reason=f"{MODEL} absent (run python -m codegen.import_das3)")
+def test_model_path_polynomial_sizes():
+    import json
+    els = json.loads(MODEL.read_text())["elements"]
+    assert len(els) == 102
+    n_len = sum(len(e["length_poly"]["coefs"]) for e in els)
+    n_loa = sum(3 * len(e["gh_direction"]["x"]["coefs"]) for e in els if e.get("gh_direction"))
+    assert n_len <= MAX_LENGTH_TERMS, n_len
+    assert n_loa <= MAX_LOA_TERMS, n_loa
+    for e in els:
+        assert len(e["length_poly"]["coefs"]) <= max(fp.EXT_TERMS.values()), e["name"]
+        if e.get("gh_direction"):
+            assert len(e["gh_direction"]["x"]["coefs"]) <= fp.DIR_MAX_TERMS, e["name"]
+            assert max(sum(x) for x in e["gh_direction"]["x"]["exponents"]) <= fp.DIR_MAX_DEGREE
+
+
 def _skip_reason():
     if importlib.util.find_spec("opensim") is None:
         return "opensim is not importable"
@@ -73,6 +99,8 @@ def test_model_paths_match_fresh_opensim_sample():
     stats, _, _ = report_paths.evaluate_model(model, str(REFERENCE / "das3" / "das3.osim"),
                                               N_POSES, seed=987)
     assert len(stats) == 102
+    n_pass = sum(s["meets_criterion"] for s in stats.values())
+    assert n_pass >= MIN_PASSING, f"only {n_pass} elements meet the criterion"
     n_over = sum(s["n_samples_over_criterion"] for s in stats.values())
     n_tot = sum(s["n_samples"] for s in stats.values())
     assert n_over <= MAX_OVER_FRACTION * n_tot, f"{n_over} of {n_tot} element-poses over criterion"
@@ -80,7 +108,10 @@ def test_model_paths_match_fresh_opensim_sample():
     worst = max(ratio, key=ratio.get)
     assert ratio[worst] < MAX_ERROR_RATIO, f"{worst}: max error {ratio[worst]:.2f} x criterion"
     for k, s in stats.items():
-        assert s["n_samples"] >= 0.9 * N_POSES, f"{k}: too many wrap-jump exclusions"
+        assert s["n_samples"] >= MIN_SCORED_FRACTION * N_POSES, f"{k}: too many wrap-jump exclusions"
         if "direction_rms_deg" in s:
             assert s["direction_p99_deg"] < LOA_P99_DEG, k
             assert s["direction_rms_deg"] < LOA_RMS_DEG, k
+    gh = [s["direction_rms_deg"] for s in stats.values() if "direction_rms_deg" in s]
+    assert len(gh) == 67
+    assert np.sqrt(np.mean(np.square(gh))) < LOA_RMS_ALL_DEG

@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/das2.json --out cpp/generated`
-// from the model file das2.json (sha256 ec92251b8a91a713a4ad540cee2e3b5a770c526c2d74919f8394002d2da5939c).
+// from the model file das2.json (sha256 973b99849a1cad41d71742fa7ae6c48046a52e88e4b91a74e1b104b72a56dc57).
 // Change the model file or the generator and regenerate instead.
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/das2.json --out cpp/generated`
-// from the model file das2.json (sha256 ec92251b8a91a713a4ad540cee2e3b5a770c526c2d74919f8394002d2da5939c).
+// from the model file das2.json (sha256 973b99849a1cad41d71742fa7ae6c48046a52e88e4b91a74e1b104b72a56dc57).
 // Change the model file or the generator and regenerate instead.
 
 #include "das2.h"
@@ -10,9 +10,9 @@ namespace armrt::generated::das2 {
 namespace {
 
 const DofParams kDofs[5] = {
-    {"GHy", "GH_y", -2.9670999999999998, 3.0543, 0.43419629725225145},
-    {"GHz", "GH_z", -0.52359999999999995, 1.4661, 0.49827547507556114},
-    {"GHyy", "GH_yy", -3.0891999999999999, 3.1240999999999999, 0.27301239366601388},
+    {"GHy", "GH_y", -0.10000000000000001, 1.0, 0.43419629725225145},
+    {"GHz", "GH_z", 0.25, 1.4661, 0.49827547507556114},
+    {"GHyy", "GH_yy", -0.25, 0.80000000000000004, 0.27301239366601388},
     {"ELx", "EL_x", 0.087266460000000004, 2.44346095, 0.65690320659830481},
     {"PSy", "PS_y", 0.087266460000000004, 2.7925268000000001, 1.4214063526017877},
 };
@@ -194,7 +194,7 @@ const GroupDef kGroups[9] = {
 
 const ModelDef kModel = {
     "das2",
-    "ec92251b8a91a713a4ad540cee2e3b5a770c526c2d74919f8394002d2da5939c",
+    "973b99849a1cad41d71742fa7ae6c48046a52e88e4b91a74e1b104b72a56dc57",
     5,
     102,
     kDofs,
