@@ -221,12 +221,13 @@ def test_runner_packet_fuzzing_keeps_rate(tmp_path):
 
 
 def test_runner_divergence_stops_cleanly():
-    p, port = start_runner("--state-rate", "100")
+    # One RK4 step per 1 ms cycle (no substeps): full co-contraction makes it diverge.
+    p, port = start_runner("--state-rate", "100", "--dt", "0.001")
     with rt.UdpClient(port, mapping="groups") as c:
         t_end = time.monotonic() + 5
         last = None
         while p.poll() is None and time.monotonic() < t_end:
-            c.send(np.ones(9))  # full co-contraction: RK4 at 1 ms diverges
+            c.send(np.ones(9))
             st = c.recv_state(timeout=0.02)
             last = st or last
         rc = p.wait(timeout=10)
