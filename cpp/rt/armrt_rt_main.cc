@@ -30,7 +30,7 @@ const char* kUsage =
     "  --rate HZ            loop rate (default 1000)\n"
     "  --integrator NAME    rk4 (default) or euler\n"
     "  --dt S               largest integration step; each cycle takes ceil(1/rate / dt) substeps\n"
-    "                       (default 0.00025 for rk4, 0.0001 for euler)\n"
+    "                       (default 0.00017 for rk4, 0.0001 for euler)\n"
     "  --model NAME         compiled-in model (default das2)\n"
     "  --q0 A,B,C,D,E       initial joint angles, rad (default: rest posture)\n"
     "  --duration S         run for S seconds (default 0: until SIGINT/SIGTERM)\n"

@@ -26,7 +26,7 @@ struct RtConfig {
   std::string model = "das2";
   std::string integrator = "rk4";
   double rate_hz = 1000.0;     // loop rate
-  double dt = 0;               // largest integration step (s); each 1/rate cycle takes ceil(period/dt) substeps; 0: 0.25 ms (rk4), 0.1 ms (euler)
+  double dt = 0;               // largest integration step (s); each 1/rate cycle takes ceil(period/dt) substeps; 0: 0.17 ms (rk4), 0.1 ms (euler)
   std::vector<double> q0;      // initial joint angles (5, rad); empty: rest posture
   double duration = 0;         // s; 0: until stop() / a signal
   // Real-time set-up.

@@ -12,7 +12,9 @@ from . import _core
 
 INTEGRATORS = ("euler", "rk4", "cvode")
 # Largest integration step used by default (s); CVODE chooses its own.
-DEFAULT_MAX_STEP = {"euler": 1e-4, "rk4": 2.5e-4, "cvode": float("inf")}
+# RK4: 6 substeps per 1 ms; the solver study found 0.2 ms the largest accurate step on the paper's
+# tasks (0.25 ms goes unstable in pronation near the end of its range during co-contraction).
+DEFAULT_MAX_STEP = {"euler": 1e-4, "rk4": 1.7e-4, "cvode": float("inf")}
 
 
 class SimulationError(RuntimeError):
@@ -90,8 +92,8 @@ class Arm:
     def __init__(self, model: str = "das2", integrator: str = "rk4", dt: float = 1e-3, substeps: int | None = None):
         """dt is the control step (inputs held, outputs reported, TET measured per dt); fixed-step
         integrators take `substeps` steps of dt / substeps inside it. Default: enough substeps for a
-        step of at most 0.25 ms (RK4) or 0.1 ms (Euler), which the solver study (docs/experiments.md)
-        found accurate on the paper's tasks; one RK4 step of 1 ms is not stable for every input
+        step of at most 0.17 ms (RK4: 6 per 1 ms) or 0.1 ms (Euler), inside what the solver study
+        (docs/experiments.md) found accurate on the paper's tasks; one RK4 step of 1 ms is not stable for every input
         because the model's short-tendon elements are stiff at low activation."""
         if integrator not in INTEGRATORS:
             raise ValueError(f"unknown integrator {integrator!r}; expected one of {INTEGRATORS}")
