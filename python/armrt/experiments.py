@@ -354,10 +354,12 @@ def tune_cuff_boost(baseline: dict[str, float], deltoid: list[str], level: float
             return CuffBoost(best["x"].round(4).tolist(), best["w"], scan, evals[0])
         pattern, scale_lo = best["x"], 0.0
     scale = bisect(lambda c: worst(c * pattern), scale_lo, 1.0, target, increasing=False, iterations=6)
-    boost = np.minimum(1.0, (scale + 0.01) * pattern).round(4)
-    w = worst(boost)
-    if w >= GH_LIMIT:
-        boost, w = pattern.round(4), worst(pattern)
+    # worst() need not be monotonic in the scale: take the first candidate inside the target.
+    for c in (scale, scale + 0.02, 1.0):
+        boost = np.minimum(1.0, c * pattern).round(4)
+        w = worst(boost)
+        if w < target:
+            break
     return CuffBoost(boost.tolist(), w, scan, evals[0])
 
 
