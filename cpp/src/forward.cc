@@ -43,6 +43,28 @@ void gh_stability(const ModelDef& def, const double* f, double* theta, double* p
   *stab = rt * rt + rp * rp;
 }
 
+void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
+                     const double* moment_arm, const double* act, const double* lce, double* act_dot,
+                     double* lce_dot, double* force, double* tau) {
+  const int n = m.num_elements;
+  const MuscleArrays& mc = m.muscles;
+  const double b = m.fibre_damping;
+#pragma omp simd
+  for (int i = 0; i < n; ++i) {
+    double u = excitation[i];
+    u = u < 0.0 ? 0.0 : (u > mc.max_activation[i] ? mc.max_activation[i] : u);
+    act_dot[i] = (mc.c1[i] * u + mc.c2[i]) * (u - act[i]);
+    muscle_kernel(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
+                  mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], mc.damping_slope[i], b,
+                  muscle_length[i], lce[i], act[i], &force[i], &lce_dot[i]);
+  }
+  for (int j = 0; j < kNumDofs; ++j) tau[j] = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double* r = moment_arm + i * kNumDofs;
+    for (int j = 0; j < kNumDofs; ++j) tau[j] += r[j] * force[i];
+  }
+}
+
 void forward(const Model& m, Data& d, const double* x, double* xdot, bool record) {
   const ModelDef& def = *m.def;
   const int n = m.num_elements;
@@ -54,29 +76,10 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
   double R[kMaxElements * kNumDofs];
   def.muscle_paths(q, L, R);
 
-  // Muscles: activation dynamics and CE velocity, a vectorised loop over all elements.
-  const MuscleArrays& mc = m.muscles;
-  const double b = m.fibre_damping;
-  const double* act = x + ia;
-  const double* lce = x + kLce;
-  double* act_dot = xdot + ia;
-  double* lce_dot = xdot + kLce;
   double force[kMaxElements];
-#pragma omp simd
-  for (int i = 0; i < n; ++i) {
-    double u = d.excitation[i];
-    u = u < 0.0 ? 0.0 : (u > mc.max_activation[i] ? mc.max_activation[i] : u);
-    act_dot[i] = (mc.c1[i] * u + mc.c2[i]) * (u - act[i]);
-    muscle_kernel(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
-                  mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], mc.damping_slope[i], b, L[i], lce[i],
-                  act[i], &force[i], &lce_dot[i]);
-  }
-  // Generalised muscle forces R^T F.
-  double tau[kNumDofs] = {0, 0, 0, 0, 0};
-  for (int i = 0; i < n; ++i) {
-    const double* r = R + i * kNumDofs;
-    for (int j = 0; j < kNumDofs; ++j) tau[j] += r[j] * force[i];
-  }
+  double tau[kNumDofs];
+  const double* lce_dot = xdot + kLce;
+  muscle_dynamics(m, d.excitation.data(), L, R, x + ia, x + kLce, xdot + ia, xdot + kLce, force, tau);
   if (record) {
     std::copy(force, force + n, d.muscle_force.begin());
     std::copy(lce_dot, lce_dot + n, d.fibre_velocity.begin());

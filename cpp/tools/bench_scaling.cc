@@ -28,8 +28,8 @@
 #include <string>
 #include <vector>
 
+#include "armrt/clock.h"
 #include "armrt/engine.h"
-#include "armrt/muscle_kernel.h"
 #include "armrt/simulator.h"
 
 #ifdef ARMRT_SCALING_NS
@@ -41,12 +41,6 @@
 using namespace armrt;
 
 namespace {
-
-inline double now_ns() {
-  timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<double>(ts.tv_sec) * 1e9 + static_cast<double>(ts.tv_nsec);
-}
 
 struct Item {
   std::string name;
@@ -200,27 +194,11 @@ int main(int argc, char** argv) {
     double L[kMaxElements], R[kMaxElements * kNumDofs];
     def->muscle_paths(x->data(), L, R);
     const int ia = act_offset(m);
-    // The muscle loop of forward(), verbatim (activation dynamics + Hill kernel), over n elements.
+    // The muscle stage of forward() (activation dynamics + Hill kernel + R^T F), over n elements.
     auto loop = [&] {
-      const MuscleArrays& mc = m.muscles;
-      const double bd = m.fibre_damping;
-      const double* act = x->data() + ia;
-      const double* lce = x->data() + kLce;
-      double* act_dot = xdot->data() + ia;
-      double* lce_dot = xdot->data() + kLce;
-      double force[kMaxElements];
-#pragma omp simd
-      for (int i = 0; i < n; ++i) {
-        double u = d.excitation[i];
-        u = u < 0.0 ? 0.0 : (u > mc.max_activation[i] ? mc.max_activation[i] : u);
-        act_dot[i] = (mc.c1[i] * u + mc.c2[i]) * (u - act[i]);
-        muscle_kernel(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
-                      mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], mc.damping_slope[i], bd, L[i], lce[i],
-                      act[i], &force[i], &lce_dot[i]);
-      }
-      double tau[kNumDofs] = {0, 0, 0, 0, 0};
-      for (int i = 0; i < n; ++i)
-        for (int j = 0; j < kNumDofs; ++j) tau[j] += R[i * kNumDofs + j] * force[i];
+      double force[kMaxElements], tau[kNumDofs];
+      muscle_dynamics(m, d.excitation.data(), L, R, x->data() + ia, x->data() + kLce, xdot->data() + ia,
+                      xdot->data() + kLce, force, tau);
       sink = tau[0] + tau[3];
     };
     items.push_back(time_it("muscle_loop", n, reps, loop));

@@ -26,6 +26,11 @@ double muscle_equilibrium_lce(const ElementConstants& e, double fibre_damping, d
 // Evaluates dx/dt at state x into xdot. With record = true also fills the outputs of d (forces,
 // moment arms, qdd, hand position, GH force and stability).
 void forward(const Model& m, Data& d, const double* x, double* xdot, bool record);
+// The muscle stage of forward(): activation dynamics and CE velocity of every element (a vectorised
+// loop), their tendon forces (N) and the generalised muscle forces tau = R^T F (N m).
+void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
+                     const double* moment_arm, const double* act, const double* lce, double* act_dot,
+                     double* lce_dot, double* force, double* tau);
 // GH stability of a force of the humeral head on the glenoid (scapula frame).
 void gh_stability(const ModelDef& def, const double* force, double* theta, double* phi, double* stab);
 // Passive joint moments (N m) at q, qd.
