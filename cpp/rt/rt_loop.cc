@@ -15,15 +15,11 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "armrt/clock.h"
+
 namespace armrt::rt {
 
 namespace {
-
-inline std::int64_t now_ns() {
-  timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
-}
 
 inline timespec to_timespec(std::int64_t ns) {
   timespec ts;

@@ -3,18 +3,10 @@
 #include <cstdio>
 #include <ctime>
 
+#include "armrt/clock.h"
 #include "armrt/engine.h"
 
 namespace armrt {
-namespace {
-
-inline double now_ns() {
-  timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<double>(ts.tv_sec) * 1e9 + static_cast<double>(ts.tv_nsec);
-}
-
-}  // namespace
 
 const char* state_name(const Model& m, int index, char* buf, int buflen) {
   const int n = m.num_elements;
@@ -47,7 +39,7 @@ bool check_state(const Model& m, Data& d) {
 }
 
 bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record) {
-  const double t0 = now_ns();
+  const std::int64_t t0 = now_ns();
   const int ns = state_size(m);
   double* x = d.x.data();
   forward(m, d, x, d.k1.data(), record);
@@ -65,7 +57,7 @@ bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record
     for (int k = 0; k < ns; ++k) x[k] += h6 * (d.k1[k] + 2.0 * (d.k2[k] + d.k3[k]) + d.k4[k]);
   }
   d.time += dt;
-  d.tet.add(now_ns() - t0);
+  d.tet.add(static_cast<double>(now_ns() - t0));
   return check_state(m, d);
 }
 

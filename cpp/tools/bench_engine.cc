@@ -23,18 +23,13 @@
 #include <vector>
 
 #include "armrt/cvode.h"
+#include "armrt/clock.h"
 #include "armrt/engine.h"
 #include "armrt/simulator.h"
 
 using namespace armrt;
 
 namespace {
-
-inline double now_ns() {
-  timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<double>(ts.tv_sec) * 1e9 + static_cast<double>(ts.tv_nsec);
-}
 
 struct Stats {
   std::string name;
