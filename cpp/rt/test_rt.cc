@@ -160,6 +160,15 @@ void on_sigsys(int, siginfo_t* si, void* ctx) {
   uc->uc_mcontext.gregs[REG_RAX] = -ENOSYS;
 }
 
+// Trapped system calls return -ENOSYS and are counted instead of killing the test.
+void install_sigsys_handler() {
+  struct sigaction sa {};
+  sa.sa_sigaction = on_sigsys;
+  sa.sa_flags = SA_SIGINFO;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGSYS, &sa, nullptr);
+}
+
 struct SeccompRun {
   RtLoop* loop;
   int n;
@@ -250,11 +259,7 @@ TEST_CASE("the counting hooks are in effect") {
 }
 
 TEST_CASE("the seccomp trap is in effect") {
-  struct sigaction sa {};
-  sa.sa_sigaction = on_sigsys;
-  sa.sa_flags = SA_SIGINFO;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGSYS, &sa, nullptr);
+  install_sigsys_handler();
   const int before = g_trapped.load();
   SeccompRun run{nullptr, 0};
   pthread_t th;
@@ -270,11 +275,7 @@ TEST_CASE("the seccomp trap is in effect") {
 }
 
 TEST_CASE("hot loop: no system call besides clock_nanosleep, clock_gettime, recvfrom, sendto (seccomp)") {
-  struct sigaction sa {};
-  sa.sa_sigaction = on_sigsys;
-  sa.sa_flags = SA_SIGINFO;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGSYS, &sa, nullptr);
+  install_sigsys_handler();
   RtLoop loop(test_config());
   loop.prepare_thread();
   Flood flood(loop.bound_port(), 102);
