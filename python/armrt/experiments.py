@@ -369,16 +369,22 @@ STEP_GRID = (2.5e-5, 5e-5, 1e-4, 2e-4, 2.5e-4, 5e-4, 1e-3, 2e-3)
 ACCURACY_DEG = 1.0
 
 
-def solver_study(tasks: list[Sequence], progress: Progress | None = None, step_grid=STEP_GRID) -> dict:
+def cvode_references(tasks: list[Sequence]) -> dict:
+    """The CVODE run of each task (by name): the accuracy reference of the solver study and Fig. 4."""
+    return {seq.name: run_sequence(seq, "cvode", 1e-3)[1] for seq in tasks}
+
+
+def solver_study(tasks: list[Sequence], progress: Progress | None = None, step_grid=STEP_GRID,
+                 refs: dict | None = None) -> dict:
     """Largest stable step of Euler and RK4 over the tasks, and their TET at that step.
 
     Stable (our criterion, documented in docs/experiments.md): the whole task completes (no state
     becomes non-finite, no joint exceeds 100 rad/s) and every joint angle stays within 1 deg of the
     CVODE reference (BDF, rtol 1e-8) at every millisecond. A step that only avoids blowing up while
-    chattering the stiff muscle states by degrees is not counted as stable."""
-    refs = {}
-    for seq in tasks:
-        _, refs[seq.name] = run_sequence(seq, "cvode", 1e-3)
+    chattering the stiff muscle states by degrees is not counted as stable.
+
+    refs: cvode_references(tasks), computed here when not given."""
+    refs = refs if refs is not None else cvode_references(tasks)
     if progress:
         progress.step("CVODE references")
     table = {}
@@ -446,13 +452,13 @@ def _plot_sequence(res, arm: Arm, groups: dict[str, list[str]], path: Path, titl
     plt.close(fig)
 
 
-def _plot_solvers(tasks, study, path: Path):
+def _plot_solvers(tasks, study, ref, path: Path):
+    """ref: the CVODE run of tasks[0]."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     seq = tasks[0]
     fig, ax = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
-    _, ref = run_sequence(seq, "cvode", 1e-3)
     for integ, style in (("euler", "-"), ("rk4", "--")):
         dt = study[integ]["largest_stable_dt"]
         if dt is None:
@@ -532,9 +538,10 @@ def run_all(out_dir="results", quick: bool = False, progress: bool = True) -> in
     tasks = [seq1, seq2, seq3]
     if quick:
         tasks = [replace(s, duration=min(s.duration, 6.0)) for s in tasks]
-    study = solver_study(tasks, prog, STEP_GRID[3:] if quick else STEP_GRID)
+    refs = cvode_references(tasks)
+    study = solver_study(tasks, prog, STEP_GRID[3:] if quick else STEP_GRID, refs)
     summary["solvers"] = study
-    _plot_solvers(tasks, study, out / "fig4.png")
+    _plot_solvers(tasks, study, refs[tasks[0].name], out / "fig4.png")
     prog.step("Fig. 4")
 
     (out / "results.json").write_text(json.dumps(summary, indent=1, default=float) + "\n")
