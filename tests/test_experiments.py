@@ -61,7 +61,7 @@ def test_deltoid_without_and_with_cuff(baseline):
     assert "deltscap1" not in deltoid  # the spinal (posterior) part depresses the hanging arm
     level = ex.tune_deltoid(baseline.levels, deltoid, q0)
     assert 0.0 < level < 1.0
-    _, fig2 = ex.run_sequence(ex.deltoid_sequence("fig2", baseline.levels, deltoid, level, 0.0, q0), record_every=10)
+    _, fig2 = ex.run_sequence(ex.deltoid_sequence("fig2", baseline.levels, deltoid, level, 0.0, q0), record_every=1)
     th2 = np.degrees(fig2.thorax_humerus)
     # The humerus elevates to the tuned mid-range angle, and with only the baseline cuff the GH
     # force leaves the glenoid.
@@ -71,10 +71,10 @@ def test_deltoid_without_and_with_cuff(baseline):
                                min_elevation_deg=ex.plateau_elevation(fig2) - 5.0)
     assert len(tuned.boost) == 4 and 0.0 < max(tuned.boost) <= 1.0 and min(tuned.boost) >= 0.0
     _, fig3 = ex.run_sequence(ex.deltoid_sequence("fig3", baseline.levels, deltoid, level, tuned.boost, q0),
-                              record_every=10)
+                              record_every=1)
     th3 = np.degrees(fig3.thorax_humerus)
     assert fig3.gh_stab.max() < ex.GH_LIMIT
-    assert abs(fig3.gh_stab.max() - tuned.gh_stab_max) < 1e-9 or tuned.gh_stab_max > fig3.gh_stab.max()
+    assert abs(fig3.gh_stab.max() - tuned.gh_stab_max) < 1e-9
     # The cuff's own abduction moment: the humerus elevates at least as far as without it.
     assert th3[:, 1].max() > th3[0, 1] + 10.0
     assert th3[:, 1].max() >= th2[:, 1].max() - 5.0

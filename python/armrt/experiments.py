@@ -320,7 +320,8 @@ def tune_cuff_boost(baseline: dict[str, float], deltoid: list[str], level: float
     def worst(boost):
         evals[0] += 1
         seq = deltoid_sequence("fig3", baseline, deltoid, level, np.clip(boost, 0.0, 1.0), q0)
-        _, res = run_sequence(seq, record_every=10)
+        # Every control step: GHstab has ~10 ms spikes when the deltoid comes on.
+        _, res = run_sequence(seq, record_every=1)
         shortfall = min_elevation_deg - plateau_elevation(res)
         return float(res.gh_stab.max()) + (1.0 + shortfall / 10.0 if shortfall > 0 else 0.0)
 
@@ -354,12 +355,15 @@ def tune_cuff_boost(baseline: dict[str, float], deltoid: list[str], level: float
             return CuffBoost(best["x"].round(4).tolist(), best["w"], scan, evals[0])
         pattern, scale_lo = best["x"], 0.0
     scale = bisect(lambda c: worst(c * pattern), scale_lo, 1.0, target, increasing=False, iterations=6)
-    # worst() need not be monotonic in the scale: take the first candidate inside the target.
-    for c in (scale, scale + 0.02, 1.0):
+    # worst() need not be monotonic in the scale: take the first candidate inside the target, else
+    # the pattern itself, which was evaluated inside it.
+    for c in (scale, scale + 0.02):
         boost = np.minimum(1.0, c * pattern).round(4)
         w = worst(boost)
         if w < target:
             break
+    else:
+        boost, w = pattern, worst(pattern)
     return CuffBoost(boost.tolist(), w, scan, evals[0])
 
 
