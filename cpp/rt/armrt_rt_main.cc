@@ -28,7 +28,7 @@ void on_signal(int) {
 const char* kUsage =
     "usage: armrt-rt [options]\n"
     "  --rate HZ            loop rate (default 1000)\n"
-    "  --integrator NAME    rk4 (default) or euler\n"
+    "  --integrator NAME    ros2 (default: linearly implicit, one step per 1 ms), rk4 or euler\n"
     "  --dt S               largest integration step; each cycle takes ceil(1/rate / dt) substeps\n"
     "                       (default 0.00017 for rk4, 0.0001 for euler)\n"
     "  --model NAME         compiled-in model (default das2)\n"

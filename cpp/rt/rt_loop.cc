@@ -64,14 +64,13 @@ RtLoop::RtLoop(const RtConfig& config) : cfg_(config) {
   const ModelDef* def = find_model(cfg_.model);
   if (!def) throw std::invalid_argument("unknown model '" + cfg_.model + "' (compiled-in models: " + model_names() + ")");
   const Integrator integ = parse_integrator(cfg_.integrator);
-  if (integ == Integrator::kCvode)
-    throw std::invalid_argument("cvode is not a real-time integrator (it allocates and its step time is unbounded); use rk4 or euler");
+  if (!is_fixed_cost(integ))
+    throw std::invalid_argument(std::string(integrator_name(integ)) +
+                                " is not a real-time integrator (its step time is not bounded); use ros2, rk4 or euler");
   if (!(cfg_.rate_hz > 0 && cfg_.rate_hz <= 100000)) throw std::invalid_argument("rate must be in (0, 100000] Hz");
   // Each cycle advances the simulation by one period (real time); the integrator takes as many
-  // substeps of at most dt as that needs. Default dt: 0.17 ms for RK4 (6 per 1 ms), 0.1 ms for Euler,
-  // inside the steps the solver study found accurate on the paper's tasks (one 1 ms RK4 step is not stable for every
-  // input: the short-tendon elements are stiff at low activation).
-  if (cfg_.dt <= 0) cfg_.dt = integ == Integrator::kRk4 ? 1.7e-4 : 1e-4;
+  // substeps of at most dt as that needs. Default dt: default_max_step() (ROS2: one 1 ms step per cycle).
+  if (cfg_.dt <= 0) cfg_.dt = default_max_step(integ);
   const double period_s = 1.0 / cfg_.rate_hz;
   const int substeps = std::max(1, static_cast<int>(std::ceil(period_s / cfg_.dt - 1e-9)));
   cfg_.dt = period_s / substeps;

@@ -24,9 +24,9 @@ namespace armrt::rt {
 struct RtConfig {
   // Model and integrator.
   std::string model = "das2";
-  std::string integrator = "rk4";
+  std::string integrator = "ros2";
   double rate_hz = 1000.0;     // loop rate
-  double dt = 0;               // largest integration step (s); each 1/rate cycle takes ceil(period/dt) substeps; 0: 0.17 ms (rk4), 0.1 ms (euler)
+  double dt = 0;               // largest integration step (s); each 1/rate cycle takes ceil(period/dt) substeps; 0: default_max_step() (ros2 1 ms, rk4 0.17 ms, euler 0.1 ms)
   std::vector<double> q0;      // initial joint angles (5, rad); empty: rest posture
   double duration = 0;         // s; 0: until stop() / a signal
   // Real-time set-up.

@@ -30,6 +30,15 @@ void passive_joint_torque(const ModelDef& def, const double* q, const double* qd
   }
 }
 
+void passive_joint_stiffness(const ModelDef& def, const double* q, double* dtau_dq, double* dtau_dqd) {
+  for (int j = 0; j < kNumDofs; ++j) {
+    const DofParams& dof = def.dofs[j];
+    const double over = q[j] > dof.range_max ? q[j] - dof.range_max : (q[j] < dof.range_min ? dof.range_min - q[j] : 0.0);
+    dtau_dq[j] = -def.passive_stiffness_inside - 2.0 * def.passive_stiffness_outside * over;
+    dtau_dqd[j] = -def.passive_damping;
+  }
+}
+
 void gh_stability(const ModelDef& def, const double* f, double* theta, double* phi, double* stab) {
   double fn = 0, fmaj = 0, fmin = 0;
   for (int k = 0; k < 3; ++k) {
@@ -45,18 +54,40 @@ void gh_stability(const ModelDef& def, const double* f, double* theta, double* p
 
 void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
                      const double* moment_arm, const double* act, const double* lce, double* act_dot,
-                     double* lce_dot, double* force, double* tau) {
+                     double* lce_dot, double* force, double* tau, StepJacobian* jac) {
   const int n = m.num_elements;
   const MuscleArrays& mc = m.muscles;
   const double b = m.fibre_damping;
+  if (!jac) {
 #pragma omp simd
-  for (int i = 0; i < n; ++i) {
-    double u = excitation[i];
-    u = u < 0.0 ? 0.0 : (u > mc.max_activation[i] ? mc.max_activation[i] : u);
-    act_dot[i] = (mc.c1[i] * u + mc.c2[i]) * (u - act[i]);
-    muscle_kernel(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
-                  mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], mc.damping_slope[i], b,
-                  muscle_length[i], lce[i], act[i], &force[i], &lce_dot[i]);
+    for (int i = 0; i < n; ++i) {
+      double u = excitation[i];
+      u = u < 0.0 ? 0.0 : (u > mc.max_activation[i] ? mc.max_activation[i] : u);
+      act_dot[i] = (mc.c1[i] * u + mc.c2[i]) * (u - act[i]);
+      muscle_kernel(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
+                    mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], mc.damping_slope[i], b,
+                    muscle_length[i], lce[i], act[i], &force[i], &lce_dot[i]);
+    }
+  } else {
+    // The same loop with the kernel's derivatives (one pass: the Jacobian costs no second sweep).
+#pragma omp simd
+    for (int i = 0; i < n; ++i) {
+      double u = excitation[i];
+      u = u < 0.0 ? 0.0 : (u > mc.max_activation[i] ? mc.max_activation[i] : u);
+      const double rate = mc.c1[i] * u + mc.c2[i];
+      act_dot[i] = rate * (u - act[i]);
+      jac->act_rate[i] = rate;
+      MuscleDerivatives der;
+      muscle_kernel_derivatives(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i],
+                                mc.vmax[i], mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i],
+                                mc.damping_slope[i], b, muscle_length[i], lce[i], act[i], &force[i], &lce_dot[i],
+                                &der);
+      jac->dforce_dL[i] = der.dforce_dL;
+      jac->dforce_dlce[i] = der.dforce_dlce;
+      jac->dvel_dL[i] = der.dvel_dL;
+      jac->dvel_dlce[i] = der.dvel_dlce;
+      jac->dvel_da[i] = der.dvel_da;
+    }
   }
   for (int j = 0; j < kNumDofs; ++j) tau[j] = 0.0;
   for (int i = 0; i < n; ++i) {
@@ -65,7 +96,7 @@ void muscle_dynamics(const Model& m, const double* excitation, const double* mus
   }
 }
 
-void forward(const Model& m, Data& d, const double* x, double* xdot, bool record) {
+void forward(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac) {
   const ModelDef& def = *m.def;
   const int n = m.num_elements;
   const int ia = act_offset(m);
@@ -73,13 +104,14 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
   const double* qd = x + kQd;
 
   double L[kMaxElements];
-  double R[kMaxElements * kNumDofs];
+  double R_local[kMaxElements * kNumDofs];
+  double* R = jac ? jac->moment_arm.data() : R_local;  // the Jacobian keeps the moment arms
   def.muscle_paths(q, L, R);
 
   double force[kMaxElements];
   double tau[kNumDofs];
   const double* lce_dot = xdot + kLce;
-  muscle_dynamics(m, d.excitation.data(), L, R, x + ia, x + kLce, xdot + ia, xdot + kLce, force, tau);
+  muscle_dynamics(m, d.excitation.data(), L, R, x + ia, x + kLce, xdot + ia, xdot + kLce, force, tau, jac);
   if (record) {
     std::copy(force, force + n, d.muscle_force.begin());
     std::copy(lce_dot, lce_dot + n, d.fibre_velocity.begin());
@@ -87,6 +119,7 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
 
   double tau_passive[kNumDofs];
   passive_joint_torque(def, q, qd, tau_passive);
+  if (jac) passive_joint_stiffness(def, q, jac->dtau_passive_dq.data(), jac->dtau_passive_dqd.data());
 
   // External hand load, given in the thorax frame; the Jacobians are in the scapula frame.
   const double* Rs = def.scapula_rotation_in_thorax;  // columns = scapula axes in thorax
@@ -107,6 +140,7 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
   Mat5 M;
   Vec5 rhs;
   def.dynamics(q, qd, m.gravity_scapula.data(), M.data(), rhs.data());
+  if (jac) std::copy(M.data(), M.data() + kNumDofs * kNumDofs, jac->mass_matrix.begin());
   for (int j = 0; j < kNumDofs; ++j) rhs[j] += tau[j] + tau_passive[j] + tau_ext[j];
   const Vec5 qdd = M.llt().solve(rhs);
   for (int j = 0; j < kNumDofs; ++j) {

@@ -1,4 +1,5 @@
-// Fixed-step explicit integrators. TET (task execution time) is the wall time of one whole step.
+// Fixed-step integrators: explicit Euler and RK4 (the paper's), and the linearly implicit ROS2
+// (rosenbrock.cc). TET (task execution time) is the wall time of one whole step.
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -42,19 +43,29 @@ bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record
   const std::int64_t t0 = now_ns();
   const int ns = state_size(m);
   double* x = d.x.data();
-  forward(m, d, x, d.k1.data(), record);
-  if (integrator == Integrator::kEuler) {
-    for (int k = 0; k < ns; ++k) x[k] += dt * d.k1[k];
-  } else {
-    double* xt = d.xtmp.data();
-    for (int k = 0; k < ns; ++k) xt[k] = x[k] + 0.5 * dt * d.k1[k];
-    forward(m, d, xt, d.k2.data(), false);
-    for (int k = 0; k < ns; ++k) xt[k] = x[k] + 0.5 * dt * d.k2[k];
-    forward(m, d, xt, d.k3.data(), false);
-    for (int k = 0; k < ns; ++k) xt[k] = x[k] + dt * d.k3[k];
-    forward(m, d, xt, d.k4.data(), false);
-    const double h6 = dt / 6.0;
-    for (int k = 0; k < ns; ++k) x[k] += h6 * (d.k1[k] + 2.0 * (d.k2[k] + d.k3[k]) + d.k4[k]);
+  switch (integrator) {
+    case Integrator::kRos2:
+      step_ros2(m, d, dt, record);
+      break;
+    case Integrator::kRos2Adaptive:
+      step_ros2_adaptive(m, d, dt, record);
+      break;
+    case Integrator::kEuler:
+      forward(m, d, x, d.k1.data(), record);
+      for (int k = 0; k < ns; ++k) x[k] += dt * d.k1[k];
+      break;
+    default: {  // RK4 (CVODE is driven by Simulator, never by step())
+      forward(m, d, x, d.k1.data(), record);
+      double* xt = d.xtmp.data();
+      for (int k = 0; k < ns; ++k) xt[k] = x[k] + 0.5 * dt * d.k1[k];
+      forward(m, d, xt, d.k2.data(), false);
+      for (int k = 0; k < ns; ++k) xt[k] = x[k] + 0.5 * dt * d.k2[k];
+      forward(m, d, xt, d.k3.data(), false);
+      for (int k = 0; k < ns; ++k) xt[k] = x[k] + dt * d.k3[k];
+      forward(m, d, xt, d.k4.data(), false);
+      const double h6 = dt / 6.0;
+      for (int k = 0; k < ns; ++k) x[k] += h6 * (d.k1[k] + 2.0 * (d.k2[k] + d.k3[k]) + d.k4[k]);
+    }
   }
   d.time += dt;
   d.tet.add(static_cast<double>(now_ns() - t0));

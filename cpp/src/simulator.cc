@@ -1,6 +1,9 @@
 #include "armrt/simulator.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <ctime>
 #include <stdexcept>
 
@@ -19,7 +22,10 @@ Integrator parse_integrator(const std::string& name) {
   if (name == "euler") return Integrator::kEuler;
   if (name == "rk4") return Integrator::kRk4;
   if (name == "cvode") return Integrator::kCvode;
-  throw std::invalid_argument("unknown integrator '" + name + "' (expected euler, rk4 or cvode)");
+  if (name == "ros2") return Integrator::kRos2;
+  if (name == "ros2_adaptive") return Integrator::kRos2Adaptive;
+  throw std::invalid_argument("unknown integrator '" + name +
+                              "' (expected ros2, ros2_adaptive, euler, rk4 or cvode)");
 }
 
 const char* integrator_name(Integrator integrator) {
@@ -27,8 +33,30 @@ const char* integrator_name(Integrator integrator) {
     case Integrator::kEuler: return "euler";
     case Integrator::kRk4: return "rk4";
     case Integrator::kCvode: return "cvode";
+    case Integrator::kRos2: return "ros2";
+    case Integrator::kRos2Adaptive: return "ros2_adaptive";
   }
   return "?";
+}
+
+double default_max_step(Integrator integrator) {
+  switch (integrator) {
+    case Integrator::kRos2: return 1e-3;
+    case Integrator::kRos2Adaptive: return 2e-3;
+    case Integrator::kRk4: return 1.7e-4;
+    case Integrator::kEuler: return 1e-4;
+    case Integrator::kCvode: break;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+int default_substeps(Integrator integrator, double dt) {
+  const double h = default_max_step(integrator);
+  return std::isinf(h) ? 1 : std::max(1, static_cast<int>(std::ceil(dt / h - 1e-9)));
+}
+
+bool is_fixed_cost(Integrator integrator) {
+  return integrator != Integrator::kCvode && integrator != Integrator::kRos2Adaptive;
 }
 
 Simulator::Simulator(const ModelDef& def, Integrator integ, double step, int n_sub) : integrator(integ), dt(step) {
@@ -69,10 +97,10 @@ void Simulator::reset(const double* q, const double* qd, const double* activatio
   if (cvode_) cvode_->reinit();
 }
 
-bool Simulator::step() {
+bool Simulator::step(bool record) {
   if (data.status != Status::kOk) return false;
   if (cvode_) return cvode_->advance(dt);
-  if (substeps == 1) return armrt::step(model, data, integrator, dt);
+  if (substeps == 1) return armrt::step(model, data, integrator, dt, record);
   // One TET entry per control step: time the substeps together, not each one.
   const TetStats tet = data.tet;
   timespec t0, t1;
@@ -80,7 +108,7 @@ bool Simulator::step() {
   const double h = dt / substeps;
   const double t_start = data.time;
   bool ok = true;
-  for (int k = 0; k < substeps && ok; ++k) ok = armrt::step(model, data, integrator, h, k == 0);
+  for (int k = 0; k < substeps && ok; ++k) ok = armrt::step(model, data, integrator, h, record && k == 0);
   if (ok) data.time = t_start + dt;  // no drift from adding dt / substeps repeatedly
   clock_gettime(CLOCK_MONOTONIC, &t1);
   data.tet = tet;

@@ -100,6 +100,10 @@ PYBIND11_MODULE(_core, mod) {
   mod.doc() = "armrt engine bindings (use armrt.Arm)";
   mod.attr("NUM_DOFS") = kNumDofs;
   mod.def("model_info", [](const std::string& name) { return model_info(require_model(name)); });
+  mod.def("default_max_step", [](const std::string& integrator) { return default_max_step(parse_integrator(integrator)); },
+          "Largest integration step (s) the integrator takes by default inside a control step (inf: CVODE).");
+  mod.def("default_substeps", [](const std::string& integrator, double dt) { return default_substeps(parse_integrator(integrator), dt); },
+          "Integration steps per control step dt (s) by default.");
 
   py::class_<Simulator>(mod, "Simulator")
       .def(py::init([](const std::string& model, const std::string& integrator, double dt, int substeps) {
@@ -135,7 +139,8 @@ PYBIND11_MODULE(_core, mod) {
       .def("step", [](Simulator& s, long n) {
         {
           py::gil_scoped_release release;
-          for (long k = 0; k < n; ++k) if (!s.step()) break;
+          // Outputs only for the last step (they describe its start state, as with record in simulate).
+          for (long k = 0; k < n; ++k) if (!s.step(k + 1 == n)) break;
         }
         raise_if_failed(s);
       }, py::arg("n") = 1)
@@ -235,7 +240,7 @@ PYBIND11_MODULE(_core, mod) {
             for (int i = 0; i < n; ++i) s.data.excitation[i] = uk[i];
             const auto x0 = s.data.x;
             const double t0 = s.data.time;
-            if (!s.step()) break;
+            if (!s.step(k % record_every == 0)) break;
             ++steps_done;
             if (k % record_every == 0) {
               const auto x1 = s.data.x;

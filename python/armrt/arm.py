@@ -10,11 +10,13 @@ import numpy as np
 
 from . import _core
 
-INTEGRATORS = ("euler", "rk4", "cvode")
-# Largest integration step used by default (s); CVODE chooses its own.
-# RK4: 6 substeps per 1 ms; the solver study found 0.2 ms the largest accurate step on the paper's
-# tasks (0.25 ms goes unstable in pronation near the end of its range during co-contraction).
-DEFAULT_MAX_STEP = {"euler": 1e-4, "rk4": 1.7e-4, "cvode": float("inf")}
+INTEGRATORS = ("ros2", "ros2_adaptive", "euler", "rk4", "cvode")
+DEFAULT_INTEGRATOR = "ros2"
+# Largest integration step used by default (s), from the engine (simulator.cc default_max_step):
+# ROS2 (linearly implicit, docs/engine.md) one step per 1 ms control step; ros2_adaptive up to 2 ms, a
+# step whose error estimate is too large redone as two halves (offline use: its cost is not fixed);
+# RK4 6 substeps per 1 ms and Euler 0.1 ms (the paper's explicit solvers); CVODE picks its own (inf).
+DEFAULT_MAX_STEP = {name: _core.default_max_step(name) for name in INTEGRATORS}
 
 
 class SimulationError(RuntimeError):
@@ -84,24 +86,31 @@ class Result:
 class Arm:
     """One simulated arm: the paper's fixed-scapula, 5-DOF, 102-element model.
 
-    arm = Arm(model="das2", integrator="rk4", dt=1e-3)
+    arm = Arm(model="das2", integrator="ros2", dt=1e-3)
     arm.set_excitation({"rotator_cuff": 0.05, "bicb": 0.3})
     result = arm.simulate(lambda t: {"elbow_flexors": 0.2 if t > 1 else 0.0}, duration=3.0)
     """
 
-    def __init__(self, model: str = "das2", integrator: str = "rk4", dt: float = 1e-3, substeps: int | None = None):
-        """dt is the control step (inputs held, outputs reported, TET measured per dt); fixed-step
-        integrators take `substeps` steps of dt / substeps inside it. Default: enough substeps for a
-        step of at most 0.17 ms (RK4: 6 per 1 ms) or 0.1 ms (Euler), inside what the solver study
-        (docs/experiments.md) found accurate on the paper's tasks; one RK4 step of 1 ms is not stable for every input
-        because the model's short-tendon elements are stiff at low activation."""
+    def __init__(self, model: str = "das2", integrator: str = DEFAULT_INTEGRATOR, dt: float = 1e-3,
+                 substeps: int | None = None):
+        """dt is the control step (s: inputs held, outputs reported, TET measured per dt); fixed-step
+        integrators take `substeps` steps of dt / substeps inside it. Default integrator: "ros2", the
+        linearly implicit ROS2 with one step per 1 ms control step, within 0.1 deg of CVODE on the
+        paper's tasks (docs/engine.md). Default substeps: enough for a step of at most
+        DEFAULT_MAX_STEP[integrator] (ROS2 1 ms, ros2_adaptive 2 ms, RK4 0.17 ms, Euler 0.1 ms): one
+        explicit RK4 step of 1 ms is not stable because the model's short-tendon elements are stiff at
+        low activation. "ros2_adaptive" redoes a step as two halves when its error estimate is too
+        large: for offline runs at dt = 2 ms, not for hard real time.
+
+        Raises ValueError for an unknown integrator, a non-positive or non-finite dt, or substeps
+        that is not a positive integer."""
         if integrator not in INTEGRATORS:
             raise ValueError(f"unknown integrator {integrator!r}; expected one of {INTEGRATORS}")
         dt = float(dt)
         if not (np.isfinite(dt) and dt > 0):
             raise ValueError(f"dt must be a positive number of seconds, got {dt}")
         if substeps is None:
-            substeps = max(1, int(np.ceil(dt / DEFAULT_MAX_STEP[integrator] - 1e-9)))
+            substeps = _core.default_substeps(integrator, dt)
         if int(substeps) != substeps or substeps < 1:
             raise ValueError(f"substeps must be a positive integer, got {substeps!r}")
         self._sim = _core.Simulator(model, integrator, dt, int(substeps))

@@ -6,6 +6,8 @@ import sys
 
 import numpy as np
 
+from .arm import DEFAULT_INTEGRATOR, INTEGRATORS
+
 
 def _parse_assignments(items: list[str]) -> dict[str, float]:
     out = {}
@@ -63,7 +65,8 @@ def main(argv=None) -> int:
     p = sub.add_parser("simulate", help="run with constant excitations, e.g. elbow_flexors=0.3 rotator_cuff=0.05")
     p.add_argument("excitation", nargs="*", help="NAME=VALUE (element, muscle or group)")
     p.add_argument("--model", default="das2")
-    p.add_argument("--integrator", default="rk4", choices=["euler", "rk4", "cvode"])
+    p.add_argument("--integrator", default=DEFAULT_INTEGRATOR, choices=INTEGRATORS,
+                   help="integration method (default: %(default)s, one linearly implicit step per 1 ms)")
     p.add_argument("--dt", type=float, default=1e-3)
     p.add_argument("--duration", type=float, default=2.0)
     p.add_argument("--q", type=float, nargs=5, metavar="DEG", help="initial joint angles (deg)")

@@ -21,10 +21,13 @@ FLEXORS = ("bicl", "bicb", "brachialis", "brachiorad")
 EXTENSORS = ("triclong", "tricmed", "triclat")
 PRONATORS = ("pronteres", "pronquad")
 
-# Figures use a 1 ms control step with the default RK4 substeps (6 x 0.17 ms), which match CVODE to a
-# few thousandths of a degree on these tasks, so they show the model, not integration error.
+# Figures use a 1 ms control step with the default integrator (ROS2, one linearly implicit step per
+# 1 ms), which matches CVODE to a few hundredths of a degree on these tasks (docs/engine.md), so they
+# show the model, not integration error.
 DT = 1e-3
-INTEGRATOR = "rk4"
+INTEGRATOR = "ros2"
+# Fig. 4 / Table IV: the paper's explicit solvers and the linearly implicit default.
+SOLVERS = ("euler", "rk4", "ros2")
 GH_LIMIT = 0.5          # Table III: GHstab < 0.5, a safety factor of two
 AXIAL_TOLERANCE = math.radians(10.0)  # "no excessive internal or external rotation"
 
@@ -380,7 +383,7 @@ def cvode_references(tasks: list[Sequence]) -> dict:
 
 def solver_study(tasks: list[Sequence], progress: Progress | None = None, step_grid=STEP_GRID,
                  refs: dict | None = None) -> dict:
-    """Largest stable step of Euler and RK4 over the tasks, and their TET at that step.
+    """Largest stable step of each of SOLVERS (Euler, RK4, ROS2) over the tasks, and their TET at that step.
 
     Stable (our criterion, documented in docs/experiments.md): the whole task completes (no state
     becomes non-finite, no joint exceeds 100 rad/s) and every joint angle stays within 1 deg of the
@@ -392,7 +395,7 @@ def solver_study(tasks: list[Sequence], progress: Progress | None = None, step_g
     if progress:
         progress.step("CVODE references")
     table = {}
-    for integ in ("euler", "rk4"):
+    for integ in SOLVERS:
         rows = []
         for dt in step_grid:
             row = {"dt": dt, "stable": True, "max_error_deg": 0.0, "tet_mean_us": [], "tet_max_us": []}
@@ -463,7 +466,7 @@ def _plot_solvers(tasks, study, ref, path: Path):
     import matplotlib.pyplot as plt
     seq = tasks[0]
     fig, ax = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
-    for integ, style in (("euler", "-"), ("rk4", "--")):
+    for integ, style in (("euler", "-"), ("rk4", "--"), ("ros2", "-.")):
         dt = study[integ]["largest_stable_dt"]
         if dt is None:
             continue
@@ -593,7 +596,7 @@ def report(s: dict) -> str:
     lines += ["## Table IV: solvers", "",
               "Stable: the three tasks complete and every joint angle stays within 1 deg of CVODE.", "",
               "| solver | largest stable step | TET mean | TET max | max error vs CVODE |", "|---|---|---|---|---|"]
-    for integ in ("euler", "rk4"):
+    for integ in SOLVERS:
         st = s["solvers"][integ]
         dt = st["largest_stable_dt"]
         row = next((r for r in st["rows"] if r["dt"] == dt), None)
@@ -603,7 +606,7 @@ def report(s: dict) -> str:
             lines.append(f"| {integ} | {dt * 1e3:g} ms | {row['tet_mean_us']:.2f} us | {row['tet_max_us']:.1f} us | "
                          f"{row['max_error_deg']:.3f} deg |")
     lines += ["", "All steps tried:", "", "| solver | dt | stable | max error (deg) | TET mean (us) | note |", "|---|---|---|---|---|---|"]
-    for integ in ("euler", "rk4"):
+    for integ in SOLVERS:
         for r in s["solvers"][integ]["rows"]:
             tm = f"{r['tet_mean_us']:.2f}" if r["tet_mean_us"] else ""
             lines.append(f"| {integ} | {r['dt'] * 1e3:g} ms | {'yes' if r['stable'] else 'no'} | {r['max_error_deg']:.3f} | {tm} | {r.get('failure', '')} |")

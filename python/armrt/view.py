@@ -62,9 +62,9 @@ class SimulationSource:
     A diverged simulation restarts from the rest posture."""
 
     def __init__(self, arm=None, excitation: Callable | dict | None = None, model: str = "das2",
-                 integrator: str = "rk4", dt: float = 1e-3, speed: float = 1.0, chunk: float = 0.01):
-        from .arm import Arm
-        self.arm = arm if arm is not None else Arm(model=model, integrator=integrator, dt=dt)
+                 integrator: str | None = None, dt: float = 1e-3, speed: float = 1.0, chunk: float = 0.01):
+        from .arm import DEFAULT_INTEGRATOR, Arm
+        self.arm = arm if arm is not None else Arm(model=model, integrator=integrator or DEFAULT_INTEGRATOR, dt=dt)
         self.model = self.arm.model_name
         self.element_names = list(self.arm.element_names)
         self.excitation = demo_excitation if excitation is None else excitation
@@ -425,12 +425,14 @@ def _cmd_export(args) -> int:
 
 def add_cli(subparsers) -> None:
     """Registers `view`, `animate` and `export` on an argparse subparsers object (each sets func)."""
+    from .arm import DEFAULT_INTEGRATOR, INTEGRATORS
     p = subparsers.add_parser("view", help="live 3D view in the browser (demo simulation, a saved result, or UDP)")
     src = p.add_mutually_exclusive_group()
     src.add_argument("--result", help="replay a saved result (.npz)")
     src.add_argument("--udp", metavar="HOST:PORT", help="listen to the armrt-rt state stream")
     p.add_argument("--model", default="das2")
-    p.add_argument("--integrator", default="rk4", choices=["euler", "rk4", "cvode"])
+    p.add_argument("--integrator", default=DEFAULT_INTEGRATOR, choices=INTEGRATORS,
+                   help="integration method (default: %(default)s, one linearly implicit step per 1 ms)")
     p.add_argument("--dt", type=float, default=1e-3)
     p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per wall-clock second")
     p.add_argument("--host", default="127.0.0.1")

@@ -32,6 +32,35 @@ struct TetStats {
   }
 };
 
+// The structured ("arrow") Jacobian of forward() at one state, filled by forward(..., jac) and
+// factored by rosenbrock.cc (docs/engine.md): per-element derivatives of the muscle kernel, the moment
+// arms and mass matrix at that state, and the passive joint stiffness and damping. Moment-arm
+// derivatives, gravity, Coriolis and dM/dq are left out (docs/engine.md says why).
+struct StepJacobian {
+  // Filled by forward() with a non-null jac.
+  std::array<double, kMaxElements> dforce_dL{};    // N/m, tendon force vs muscle-tendon length
+  std::array<double, kMaxElements> dforce_dlce{};  // N/m, tendon force vs CE length
+  std::array<double, kMaxElements> dvel_dL{};      // 1/s, CE velocity vs muscle-tendon length
+  std::array<double, kMaxElements> dvel_dlce{};    // 1/s, CE velocity vs CE length
+  std::array<double, kMaxElements> dvel_da{};      // m/s, CE velocity vs activation
+  std::array<double, kMaxElements> act_rate{};     // 1/s, -d(activation rate)/d(activation) = c1 u + c2
+  std::array<double, kMaxElements * kNumDofs> moment_arm{};  // m, [element][dof]
+  std::array<double, kNumDofs * kNumDofs> mass_matrix{};     // kg m^2, row-major
+  std::array<double, kNumDofs> dtau_passive_dq{};   // N m/rad, diagonal
+  std::array<double, kNumDofs> dtau_passive_dqd{};  // N m s/rad, diagonal
+
+  // Factorisation of I - h gamma J for one h gamma (rosenbrock.cc).
+  double hg = 0;                                    // s, h * gamma it was built for
+  std::array<double, kMaxElements> inv_act{};       // 1 / (1 + hg act_rate)
+  std::array<double, kMaxElements> inv_lce{};       // 1 / (1 - hg dvel_dlce)
+  std::array<double, kMaxElements> lce_from_q{};    // hg dvel_dL / (1 - hg dvel_dlce), m/m
+  std::array<double, kMaxElements> series_stiffness{};  // N/m, dforce_dL + dforce_dlce * lce_from_q
+  std::array<double, kNumDofs * kNumDofs> schur_lu{};   // LU of the 5x5 Schur complement, row-major
+  std::array<int, kNumDofs> schur_perm{};               // its row permutation
+  std::array<double, kNumDofs * kNumDofs> stiffness{};  // N m/rad, K_eff = diag(dtau_passive_dq) - R^T diag(series_stiffness) R
+  std::array<double, kMaxElements> tmp{};               // scratch of one solve
+};
+
 enum class Status { kOk = 0, kNonFinite = 1, kTooFast = 2, kCvodeFailed = 3 };
 
 struct Data {
@@ -63,9 +92,11 @@ struct Data {
   double bad_time = 0;
 
   TetStats tet;
+  std::int64_t halved_steps = 0;  // ROS2 steps redone as two halves (Integrator::kRos2Adaptive)
 
   // Integrator workspace.
   StateVec k1{}, k2{}, k3{}, k4{}, xtmp{};
+  StepJacobian jac;  // linearly implicit steps (rosenbrock.cc)
 };
 
 void data_reset(const Model& m, Data& d, const double* q /* 5 or nullptr: rest posture */);

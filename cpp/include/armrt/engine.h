@@ -1,7 +1,8 @@
 // The simulation stages, one per file under cpp/src/:
 //   muscle.cc        Hill-type muscle element: tendon force and contractile-element velocity
 //   forward.cc       state derivative: paths, muscles, joint torques, M(q) qdd = tau + b, GH stability
-//   integrate.cc     fixed-step Euler and RK4, with TET measured every step
+//   integrate.cc     fixed-step Euler, RK4 and ROS2, with TET measured every step
+//   rosenbrock.cc    the linearly implicit ROS2 step: structured Jacobian, Schur-complement solve
 //   cvode.cc         SUNDIALS CVODE (BDF), the accurate reference
 //   kinematics.cc    outputs derived from q: thorax-humerus angles
 #pragma once
@@ -24,17 +25,20 @@ double muscle_equilibrium_lce(const ElementConstants& e, double fibre_damping, d
 
 // ---- forward.cc
 // Evaluates dx/dt at state x into xdot. With record = true also fills the outputs of d (forces,
-// moment arms, qdd, hand position, GH force and stability).
-void forward(const Model& m, Data& d, const double* x, double* xdot, bool record);
+// moment arms, qdd, hand position, GH force and stability); with a non-null jac also the parts of the
+// structured Jacobian at x (data.h StepJacobian), in the same pass over the elements.
+void forward(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac = nullptr);
 // The muscle stage of forward(): activation dynamics and CE velocity of every element (a vectorised
 // loop), their tendon forces (N) and the generalised muscle forces tau = R^T F (N m).
 void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
                      const double* moment_arm, const double* act, const double* lce, double* act_dot,
-                     double* lce_dot, double* force, double* tau);
+                     double* lce_dot, double* force, double* tau, StepJacobian* jac = nullptr);
 // GH stability of a force of the humeral head on the glenoid (scapula frame).
 void gh_stability(const ModelDef& def, const double* force, double* theta, double* phi, double* stab);
 // Passive joint moments (N m) at q, qd.
 void passive_joint_torque(const ModelDef& def, const double* q, const double* qd, double* tau);
+// Their derivatives (diagonal): d tau / dq (N m/rad) and d tau / dqd (N m s/rad).
+void passive_joint_stiffness(const ModelDef& def, const double* q, double* dtau_dq, double* dtau_dqd);
 
 // ---- integrate.cc
 // Advances d by one step of dt with the fixed-step integrator; with record, the outputs of d describe
@@ -43,6 +47,18 @@ void passive_joint_torque(const ModelDef& def, const double* q, const double* qd
 bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record = true);
 bool check_state(const Model& m, Data& d);
 const char* state_name(const Model& m, int index, char* buf, int buflen);
+
+// ---- rosenbrock.cc
+// Factors I - hg J for the structured Jacobian in jac (filled by forward(..., &jac)); hg = h gamma (s).
+void jacobian_factor(const Model& m, StepJacobian& jac, double hg);
+// Solves (I - hg J) k = r for state-sized vectors r and k (distinct arrays).
+void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* k);
+// One ROS2 step of h (s) from d.x (no TET, no state check: step() adds both).
+void step_ros2(const Model& m, Data& d, double h, bool record);
+// One ROS2 step of h, redone as two steps of h/2 when the embedded error estimate exceeds the
+// tolerances (kRos2AdaptiveTol*). Returns the number of steps taken (1 or 2). Not for hard real time:
+// a halved step costs about three normal ones.
+int step_ros2_adaptive(const Model& m, Data& d, double h, bool record);
 
 // ---- kinematics.cc
 // Thorax-humerus angles (rad): plane of elevation, elevation, axial rotation (Y-Z-Y sequence in the

@@ -22,8 +22,14 @@ inline constexpr double kLinearStiffness = 10.0;   // N/m in SEE and PEE: keeps 
 inline constexpr double kFibreDamping = 10.0;      // N/(m/s), parallel to the contractile element
 inline constexpr double kLowActivation = 0.02;     // below it the damper adds the CE damping that is lost
 
-// Integrator choices.
-enum class Integrator { kEuler = 0, kRk4 = 1, kCvode = 2 };
+// Integrator choices: the paper's explicit Euler and RK4, CVODE (BDF) as the accuracy reference, and the
+// linearly implicit ROS2 (rosenbrock.cc), fixed-step or with one level of step halving (offline only).
+enum class Integrator { kEuler = 0, kRk4 = 1, kCvode = 2, kRos2 = 3, kRos2Adaptive = 4 };
+
+// Error tolerances of the ROS2 step-halving mode (rosenbrock.cc): joint angles (rad) and CE lengths
+// (x lceopt) of the embedded error estimate.
+inline constexpr double kRos2AdaptiveTolQ = 1e-5;
+inline constexpr double kRos2AdaptiveTolLce = 1e-3;
 
 struct ElementConstants {
   double fmax;          // N, after strength scaling

@@ -42,43 +42,107 @@ inline double exp_nonpositive(double x) {
   return p * scale;
 }
 
+// Derivatives of one element's outputs with respect to its inputs (muscle_kernel_derivatives). Tendon
+// force T (N) and CE velocity v (m/s) as functions of the muscle-tendon length L (m), the CE length lce
+// (m) and the activation a; T does not depend on a.
+struct MuscleDerivatives {
+  double dforce_dL;     // N/m
+  double dforce_dlce;   // N/m
+  double dvel_dL;       // 1/s
+  double dvel_dlce;     // 1/s
+  double dvel_da;       // m/s
+};
+
 // Inputs: constants of one element, the fixed damper b0 (N s/m), muscle-tendon length L (m), CE
-// length lce (m), activation a. Outputs: tendon force (N) and CE velocity (m/s, lengthening positive).
-inline void muscle_kernel(double fmax, double inv_lceopt, double lslack, double thickness, double min_lce,
-                          double vmax, double k_see, double k_pee, double pee_slack, double ecc_c,
-                          double damping_slope, double b0, double L, double lce, double a, double* force,
-                          double* velocity) {
-  lce = lce > min_lce ? lce : min_lce;
-  const double s = thickness / lce;
+// length lce (m), activation a. Outputs: tendon force (N), CE velocity (m/s, lengthening positive) and
+// their derivatives (used by the linearly implicit integrator's Jacobian, rosenbrock.cc).
+//
+// The velocity solves F0 g(v) + b v = F (muscle.cc), so its derivatives follow from implicit
+// differentiation of that relation, not of the root formula:
+//   (F0 g'(v) + b) dv = dF - (g(v) + v db/dF0) dF0.
+// Where the formula has kinks the derivative is one-sided (the value of the branch taken):
+//   - lce at its geometric floor min_lce: derivatives with respect to lce are 0 (floor side);
+//   - the damping floor's fade-out at F0 = 0.02 fmax (db/dF0 jumps from -damping_slope/fmax to 0);
+//   - the slack points of tendon and PEE are C1 (quadratic plus linear), so the first derivatives are
+//     continuous there; the concentric/eccentric switch at v = 0 is C1 too (g and g' match).
+inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lslack, double thickness,
+                                      double min_lce, double vmax, double k_see, double k_pee, double pee_slack,
+                                      double ecc_c, double damping_slope, double b0, double L, double lce,
+                                      double a, double* force, double* velocity, MuscleDerivatives* der) {
+  const bool above_floor = lce > min_lce;
+  lce = above_floor ? lce : min_lce;
+  const double inv_lce = 1.0 / lce;
+  const double s = thickness * inv_lce;  // sin(pennation)
   const double cos_pen = std::sqrt(1.0 - s * s);
+  const double inv_cos = 1.0 / cos_pen;
   const double see_stretch = L - lce * cos_pen - lslack;
   const double see_pos = see_stretch > 0 ? see_stretch : 0.0;
   const double f_see = kLinearStiffness * see_stretch + k_see * see_pos * see_pos;
   const double pee_stretch = lce - pee_slack;
   const double pee_pos = pee_stretch > 0 ? pee_stretch : 0.0;
   const double f_pee = kLinearStiffness * pee_stretch + k_pee * pee_pos * pee_pos;
-  const double F = f_see / cos_pen - f_pee;  // what the CE and damper must carry along the fibres
+  const double F = f_see * inv_cos - f_pee;  // what the CE and damper must carry along the fibres
   const double xfl = (lce * inv_lceopt - 1.0) * (1.0 / kForceLengthWidth);
-  const double F0 = a * fmax * exp_nonpositive(-xfl * xfl);
+  const double fl = exp_nonpositive(-xfl * xfl);
+  const double afl = a * fl;  // F0 / fmax
+  const double F0 = fmax * afl;
   // Damping floor (muscle.cc): the CE's own damping at v = 0 is F0 (1+A)/(A vmax) = F0 damping_slope/fmax.
-  const double missing_damping = damping_slope * (kLowActivation - F0 / fmax);
-  const double b = b0 + (missing_damping > 0 ? missing_damping : 0.0);
+  const double missing_damping = damping_slope * (kLowActivation - afl);
+  const bool floor_active = missing_damping > 0;
+  const double b = b0 + (floor_active ? missing_damping : 0.0);
 
-  // Concentric (F <= F0): (b/A) v^2 - beta v - gamma = 0, root <= 0.
-  const double alpha_c = b * (1.0 / kHillA);
-  const double beta_c = F0 + b * vmax + F * (1.0 / kHillA);
-  const double gamma_c = (F0 - F) * vmax;
-  const double disc_c = std::sqrt(beta_c * beta_c + 4.0 * alpha_c * (gamma_c > 0 ? gamma_c : 0.0));
-  const double v_c = beta_c > 0 ? -2.0 * (gamma_c > 0 ? gamma_c : 0.0) / (beta_c + disc_c)
-                                : (beta_c - disc_c) / (2.0 * alpha_c);
-  // Eccentric (F > F0): b v^2 + beta v - gamma = 0, root > 0.
-  const double beta_e = kEccentricFmax * F0 + b * ecc_c - F;
-  const double gamma_e = (F - F0) * ecc_c;
-  const double disc_e = std::sqrt(beta_e * beta_e + 4.0 * b * (gamma_e > 0 ? gamma_e : 0.0));
-  const double v_e = beta_e > 0 ? 2.0 * (gamma_e > 0 ? gamma_e : 0.0) / (beta_e + disc_e)
-                                : (disc_e - beta_e) / (2.0 * b);
-  *velocity = F <= F0 ? v_c : v_e;
+  // Concentric (F <= F0): (b/A) u^2 + beta_c u - gamma_c = 0 with v = -u; eccentric (F > F0):
+  // b u^2 + beta_e u - gamma_e = 0 with v = u. One quadratic with the branch's coefficients, its
+  // non-negative root u taken in the form that does not cancel.
+  const bool eccentric = F > F0;
+  const double alpha = eccentric ? b : b * (1.0 / kHillA);
+  const double beta = eccentric ? kEccentricFmax * F0 + b * ecc_c - F : F0 + b * vmax + F * (1.0 / kHillA);
+  const double gamma_raw = eccentric ? (F - F0) * ecc_c : (F0 - F) * vmax;
+  const double gamma = gamma_raw > 0 ? gamma_raw : 0.0;
+  const double disc = std::sqrt(beta * beta + 4.0 * alpha * gamma);
+  const double num = beta > 0 ? 2.0 * gamma : disc - beta;
+  const double den = beta > 0 ? beta + disc : 2.0 * alpha;
+  const double u = num / den;
+  const double v = eccentric ? u : -u;
+  *velocity = v;
   *force = f_see;
+
+  // Derivatives (dead code, removed by the compiler, where the caller drops them: muscle_kernel).
+  const double dfsee = kLinearStiffness + 2.0 * k_see * see_pos;  // d f_see / d see_stretch
+  const double dfpee = kLinearStiffness + 2.0 * k_pee * pee_pos;
+  // d(lce cos)/dlce = 1/cos; d(1/cos)/dlce = -s^2 / (lce cos^3).
+  const double dF_dL = dfsee * inv_cos;
+  const double dF_dlce = -inv_cos * inv_cos * (dfsee + f_see * s * s * inv_lce * inv_cos) - dfpee;
+  const double dfl_dlce = -2.0 * xfl * fl * inv_lceopt * (1.0 / kForceLengthWidth);
+  const double dF0_dlce = fmax * a * dfl_dlce;
+  const double dF0_da = fmax * fl;
+  // g(v) and g'(v) of the branch taken (muscle.cc): concentric (vmax + v)/(vmax - v/A),
+  // eccentric (gmax v + c)/(v + c).
+  const double g_den = eccentric ? v + ecc_c : vmax - v * (1.0 / kHillA);
+  const double g_num = eccentric ? kEccentricFmax * v + ecc_c : vmax + v;
+  const double g_slope_num = eccentric ? (kEccentricFmax - 1.0) * ecc_c : vmax * (1.0 + 1.0 / kHillA);
+  const double inv_g_den = 1.0 / g_den;
+  const double g = g_num * inv_g_den;
+  const double dg_dv = g_slope_num * inv_g_den * inv_g_den;
+  const double db_dF0 = floor_active ? -damping_slope / fmax : 0.0;
+  const double inv_D = 1.0 / (F0 * dg_dv + b);
+  const double via_F0 = g + v * db_dF0;
+  const double on_floor = above_floor ? 1.0 : 0.0;
+  der->dforce_dL = dfsee;
+  der->dforce_dlce = -dfsee * inv_cos * on_floor;
+  der->dvel_dL = dF_dL * inv_D;
+  der->dvel_dlce = (dF_dlce - via_F0 * dF0_dlce) * inv_D * on_floor;
+  der->dvel_da = -via_F0 * dF0_da * inv_D;
+}
+
+// The same element without derivatives: what forward() evaluates at every RK4 stage.
+inline void muscle_kernel(double fmax, double inv_lceopt, double lslack, double thickness, double min_lce,
+                          double vmax, double k_see, double k_pee, double pee_slack, double ecc_c,
+                          double damping_slope, double b0, double L, double lce, double a, double* force,
+                          double* velocity) {
+  MuscleDerivatives unused;
+  muscle_kernel_derivatives(fmax, inv_lceopt, lslack, thickness, min_lce, vmax, k_see, k_pee, pee_slack, ecc_c,
+                            damping_slope, b0, L, lce, a, force, velocity, &unused);
 }
 
 }  // namespace armrt

@@ -1,0 +1,193 @@
+// Linearly implicit (Rosenbrock) steps: ROS2 (Verwer, Spee, Blom & Hundsdorfer 1999, SIAM J. Sci.
+// Comput. 20(4), eq. 2.5, gamma = 1 + 1/sqrt(2)), L-stable, second order with any approximate Jacobian
+// (W-method), one Jacobian and two derivative evaluations per step:
+//   (I - h gamma J) k1 = f(x_n)
+//   (I - h gamma J) k2 = f(x_n + h k1) - 2 k1
+//   x_{n+1} = x_n + h (3/2 k1 + 1/2 k2)
+// J is the structured ("arrow") Jacobian of data.h StepJacobian. The linear systems are never formed
+// as a 214 x 214 matrix: the activation rows are scalar, each CE-length row is scalar once the joint
+// part is known, and what remains is a 5 x 5 Schur complement in the joint-velocity part (docs/engine.md
+// derives it). Cost per step: fixed, two passes over the elements, one 5 x 5 LU; no iteration, no heap.
+#include <algorithm>
+#include <cmath>
+
+#include "armrt/engine.h"
+
+namespace armrt {
+
+namespace {
+
+// In-place LU with partial pivoting of a row-major 5 x 5 matrix. The pivot choice depends on the values,
+// the work does not.
+void lu_factor5(double* a, int* perm) {
+  constexpr int n = kNumDofs;
+  for (int i = 0; i < n; ++i) perm[i] = i;
+  for (int k = 0; k < n; ++k) {
+    int p = k;
+    for (int i = k + 1; i < n; ++i)
+      if (std::fabs(a[i * n + k]) > std::fabs(a[p * n + k])) p = i;
+    if (p != k) {
+      for (int j = 0; j < n; ++j) std::swap(a[k * n + j], a[p * n + j]);
+      std::swap(perm[k], perm[p]);
+    }
+    const double inv = 1.0 / a[k * n + k];
+    for (int i = k + 1; i < n; ++i) {
+      const double l = a[i * n + k] * inv;
+      a[i * n + k] = l;
+      for (int j = k + 1; j < n; ++j) a[i * n + j] -= l * a[k * n + j];
+    }
+  }
+}
+
+void lu_solve5(const double* lu, const int* perm, const double* b, double* x) {
+  constexpr int n = kNumDofs;
+  double y[n];
+  for (int i = 0; i < n; ++i) {
+    double s = b[perm[i]];
+    for (int j = 0; j < i; ++j) s -= lu[i * n + j] * y[j];
+    y[i] = s;
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    double s = y[i];
+    for (int j = i + 1; j < n; ++j) s -= lu[i * n + j] * x[j];
+    x[i] = s / lu[i * n + i];
+  }
+}
+
+}  // namespace
+
+void jacobian_factor(const Model& m, StepJacobian& jac, double hg) {
+  const int n = m.num_elements;
+  jac.hg = hg;
+  const double* R = jac.moment_arm.data();
+#pragma omp simd
+  for (int i = 0; i < n; ++i) {
+    jac.inv_act[i] = 1.0 / (1.0 + hg * jac.act_rate[i]);
+    jac.inv_lce[i] = 1.0 / (1.0 - hg * jac.dvel_dlce[i]);
+    jac.lce_from_q[i] = hg * jac.dvel_dL[i] * jac.inv_lce[i];
+    jac.series_stiffness[i] = jac.dforce_dL[i] + jac.dforce_dlce[i] * jac.lce_from_q[i];
+  }
+  // K_eff = diag(dtau_passive/dq) - R^T diag(series_stiffness) R (symmetric: build the upper half).
+  double K[kNumDofs * kNumDofs] = {};
+  for (int i = 0; i < n; ++i) {
+    const double* r = R + i * kNumDofs;
+    const double c = jac.series_stiffness[i];
+    for (int a = 0; a < kNumDofs; ++a)
+      for (int b = a; b < kNumDofs; ++b) K[a * kNumDofs + b] -= c * r[a] * r[b];
+  }
+  for (int a = 0; a < kNumDofs; ++a) {
+    K[a * kNumDofs + a] += jac.dtau_passive_dq[a];
+    for (int b = 0; b < a; ++b) K[a * kNumDofs + b] = K[b * kNumDofs + a];
+  }
+  std::copy(K, K + kNumDofs * kNumDofs, jac.stiffness.begin());
+  // Schur complement S = M - hg diag(dtau_passive/dqd) - hg^2 K_eff.
+  double* S = jac.schur_lu.data();
+  for (int a = 0; a < kNumDofs; ++a)
+    for (int b = 0; b < kNumDofs; ++b)
+      S[a * kNumDofs + b] = jac.mass_matrix[a * kNumDofs + b] - hg * hg * K[a * kNumDofs + b] -
+                            (a == b ? hg * jac.dtau_passive_dqd[a] : 0.0);
+  lu_factor5(S, jac.schur_perm.data());
+}
+
+void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* k) {
+  const int n = m.num_elements;
+  const int ia = act_offset(m);
+  const double hg = jac.hg;
+  const double* R = jac.moment_arm.data();
+  const double* rq = r + kQ;
+  const double* rqd = r + kQd;
+  // Activation rows, then the CE-length rows' part that does not depend on k_q (kept in tmp).
+  double* p = jac.tmp.data();
+#pragma omp simd
+  for (int i = 0; i < n; ++i) {
+    const double ka = r[ia + i] * jac.inv_act[i];
+    k[ia + i] = ka;
+    p[i] = jac.inv_lce[i] * (r[kLce + i] + hg * jac.dvel_da[i] * ka);
+  }
+  // Schur right-hand side: M r_qd + hg R^T (dforce_dlce p) + hg K_eff r_q.
+  double rhs[kNumDofs];
+  for (int a = 0; a < kNumDofs; ++a) {
+    double s = 0;
+    for (int b = 0; b < kNumDofs; ++b)
+      s += jac.mass_matrix[a * kNumDofs + b] * rqd[b] + hg * jac.stiffness[a * kNumDofs + b] * rq[b];
+    rhs[a] = s;
+  }
+  for (int i = 0; i < n; ++i) {
+    const double f = hg * jac.dforce_dlce[i] * p[i];
+    const double* ri = R + i * kNumDofs;
+    for (int a = 0; a < kNumDofs; ++a) rhs[a] += ri[a] * f;
+  }
+  double kqd[kNumDofs];
+  lu_solve5(jac.schur_lu.data(), jac.schur_perm.data(), rhs, kqd);
+  double kq[kNumDofs];
+  for (int a = 0; a < kNumDofs; ++a) {
+    kq[a] = rq[a] + hg * kqd[a];
+    k[kQ + a] = kq[a];
+    k[kQd + a] = kqd[a];
+  }
+  for (int i = 0; i < n; ++i) {
+    const double* ri = R + i * kNumDofs;
+    double rk = 0;
+    for (int a = 0; a < kNumDofs; ++a) rk += ri[a] * kq[a];
+    k[kLce + i] = p[i] - jac.lce_from_q[i] * rk;
+  }
+}
+
+namespace {
+
+constexpr double kRos2Gamma = 1.7071067811865475;  // 1 + 1/sqrt(2)
+
+// One ROS2 step of h from d.x; leaves the two stage vectors in d.k2 (k1) and d.k4 (k2), x untouched.
+void ros2_stages(const Model& m, Data& d, double h, bool record) {
+  const int ns = state_size(m);
+  const double* x = d.x.data();
+  forward(m, d, x, d.k1.data(), record, &d.jac);
+  jacobian_factor(m, d.jac, kRos2Gamma * h);
+  jacobian_solve(m, d.jac, d.k1.data(), d.k2.data());
+  double* xt = d.xtmp.data();
+  for (int k = 0; k < ns; ++k) xt[k] = x[k] + h * d.k2[k];
+  forward(m, d, xt, d.k3.data(), false);
+  for (int k = 0; k < ns; ++k) d.k3[k] -= 2.0 * d.k2[k];
+  jacobian_solve(m, d.jac, d.k3.data(), d.k4.data());
+}
+
+void ros2_update(const Model& m, Data& d, double h) {
+  const int ns = state_size(m);
+  for (int k = 0; k < ns; ++k) d.x[k] += h * (1.5 * d.k2[k] + 0.5 * d.k4[k]);
+}
+
+}  // namespace
+
+void step_ros2(const Model& m, Data& d, double h, bool record) {
+  ros2_stages(m, d, h, record);
+  ros2_update(m, d, h);
+}
+
+// The embedded first-order solution is x_n + h k1 (linearly implicit Euler); their difference
+// h/2 (k1 + k2) estimates the local error. Scaled by kRos2AdaptiveTolQ (rad) on the joint angles and
+// kRos2AdaptiveTolLce (x lceopt) on the CE lengths, where the stiff slack-to-taut events show first.
+double ros2_error_estimate(const Model& m, const Data& d, double h) {
+  double err = 0;
+  for (int j = 0; j < kNumDofs; ++j)
+    err = std::max(err, std::fabs(0.5 * h * (d.k2[kQ + j] + d.k4[kQ + j])) / kRos2AdaptiveTolQ);
+  const MuscleArrays& mc = m.muscles;
+  for (int i = 0; i < m.num_elements; ++i)
+    err = std::max(err, std::fabs(0.5 * h * (d.k2[kLce + i] + d.k4[kLce + i])) * mc.inv_lceopt[i] /
+                            kRos2AdaptiveTolLce);
+  return err;
+}
+
+int step_ros2_adaptive(const Model& m, Data& d, double h, bool record) {
+  ros2_stages(m, d, h, record);
+  if (ros2_error_estimate(m, d, h) <= 1.0) {
+    ros2_update(m, d, h);
+    return 1;
+  }
+  // Rejected: redo as two halves, accepted without a further check (fixed worst case, ~3 steps' work).
+  step_ros2(m, d, 0.5 * h, false);
+  step_ros2(m, d, 0.5 * h, false);
+  ++d.halved_steps;
+  return 2;
+}
+
+}  // namespace armrt
