@@ -49,10 +49,11 @@ TEST_CASE("the counting operator new is in effect") {
   CHECK(after == before + 1);
 }
 
-TEST_CASE("no heap allocation during 1000 steps (euler, rk4)") {
-  for (Integrator integ : {Integrator::kEuler, Integrator::kRk4}) {
+TEST_CASE("no heap allocation during 1000 steps (euler, rk4, ros2, ros2_adaptive)") {
+  for (Integrator integ : {Integrator::kEuler, Integrator::kRk4, Integrator::kRos2, Integrator::kRos2Adaptive}) {
     CAPTURE(integrator_name(integ));
-    auto sim = std::make_unique<Simulator>(armrt_test::das2(), integ, integ == Integrator::kEuler ? 1e-4 : 2.5e-4);
+    const double dt = integ == Integrator::kEuler ? 1e-4 : integ == Integrator::kRk4 ? 2.5e-4 : default_max_step(integ);
+    auto sim = std::make_unique<Simulator>(armrt_test::das2(), integ, dt);
     // (RK4 at 2.5e-4 s: stable for this stimulation; the cost per step does not depend on dt.)
     armrt_test::set_group_excitation(*sim, "elbow_flexors", 0.3);
     armrt_test::set_group_excitation(*sim, "rotator_cuff", 0.05);

@@ -1,0 +1,278 @@
+// The linearly implicit step (rosenbrock.cc): the muscle kernel's derivatives against finite
+// differences (kinks included), the structured Jacobian's exact blocks against finite differences of
+// forward(), and the Schur-complement solve against a dense LU of the same 214 x 214 matrix.
+#include <doctest/doctest.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <string>
+
+#include "armrt/engine.h"
+#include "armrt/muscle_kernel.h"
+#include "armrt/simulator.h"
+#include "test_util.h"
+
+using namespace armrt;
+using armrt_test::das2;
+
+namespace {
+
+struct KernelOut {
+  double force, velocity;
+  MuscleDerivatives der;
+};
+
+KernelOut kernel(const ElementConstants& e, double b0, double L, double lce, double a) {
+  KernelOut o;
+  muscle_kernel_derivatives(e.fmax, e.inv_lceopt, e.lslack, e.thickness, e.min_lce, e.vmax, e.k_see, e.k_pee,
+                            e.pee_slack, e.ecc_c, e.damping_slope, b0, L, lce, a, &o.force, &o.velocity, &o.der);
+  return o;
+}
+
+// Checks an analytic derivative against finite differences of f with step h. Away from kinks the
+// central difference must match. Within h of a kink the analytic value must match the one-sided
+// difference of the side it belongs to: forward or backward (at the C1 slack points of tendon and
+// PEE both sides agree to first order but the second derivative jumps, so only one side is accurate).
+// Returns true if the central difference did not match (a kink within h).
+template <class F>
+bool check_derivative(F f, double x, double h, double analytic, double scale, const char* what) {
+  const double f0 = f(x), fp = f(x + h), fm = f(x - h);
+  const double fwd = (fp - f0) / h, bwd = (f0 - fm) / h, central = (fp - fm) / (2 * h);
+  const double tol = 1e-5 * scale + 1e-6 * std::fabs(analytic);
+  const std::string name = what;
+  CAPTURE(name);
+  CAPTURE(x);
+  CAPTURE(analytic);
+  CAPTURE(central);
+  CAPTURE(fwd);
+  CAPTURE(bwd);
+  if (std::fabs(analytic - central) <= tol + 2e-3 * std::fabs(central)) return false;
+  const double side_tol = tol + 2e-3 * std::fabs(analytic);
+  CHECK((std::fabs(analytic - fwd) <= side_tol || std::fabs(analytic - bwd) <= side_tol));
+  return true;
+}
+
+// All five derivatives of one element at (L, lce, a).
+int check_element(const ElementConstants& e, double b0, double L, double lce, double a) {
+  const KernelOut o = kernel(e, b0, L, lce, a);
+  const double hL = 1e-8 * e.lslack + 1e-10, hl = 1e-8 * e.lceopt;
+  const double fscale = e.fmax / e.lceopt, vscale = e.vmax / e.lceopt;
+  int kinks = 0;
+  kinks += check_derivative([&](double x) { return kernel(e, b0, x, lce, a).force; }, L, hL, o.der.dforce_dL, fscale, "dforce_dL");
+  kinks += check_derivative([&](double x) { return kernel(e, b0, L, x, a).force; }, lce, hl, o.der.dforce_dlce, fscale, "dforce_dlce");
+  kinks += check_derivative([&](double x) { return kernel(e, b0, x, lce, a).velocity; }, L, hL, o.der.dvel_dL, vscale, "dvel_dL");
+  kinks += check_derivative([&](double x) { return kernel(e, b0, L, x, a).velocity; }, lce, hl, o.der.dvel_dlce, vscale, "dvel_dlce");
+  if (a > 1e-6)
+    kinks += check_derivative([&](double x) { return kernel(e, b0, L, lce, x).velocity; }, a, 1e-7, o.der.dvel_da, e.vmax, "dvel_da");
+  return kinks;
+}
+
+}  // namespace
+
+TEST_SUITE("rosenbrock") {
+
+TEST_CASE("muscle kernel derivatives match finite differences at random states (every element)") {
+  Model m;
+  model_init(m, das2());
+  std::mt19937_64 rng(12345);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  int samples = 0, kinks = 0;
+  for (int i = 0; i < m.num_elements; ++i) {
+    const ElementConstants& e = m.element[i];
+    const std::string element = m.def->elements[i].name;
+    CAPTURE(element);
+    for (int k = 0; k < 40; ++k) {
+      const double lce = e.lceopt * (0.55 + 1.0 * U(rng));
+      const double cos_pen = std::sqrt(1.0 - std::pow(e.thickness / lce, 2));
+      // Tendon from 2% slack to 6% strain (beyond Fmax); activation 0..1 (a quarter of them 0).
+      const double strain = -0.02 + 0.08 * U(rng);
+      const double L = lce * cos_pen + e.lslack * (1.0 + strain);
+      const double a = k % 4 == 0 ? 0.0 : U(rng);
+      kinks += check_element(e, m.fibre_damping, L, lce, a);
+      ++samples;
+    }
+  }
+  MESSAGE(samples << " random states, " << kinks << " derivatives within a finite-difference step of a kink");
+  CHECK(samples == 40 * m.num_elements);
+  CHECK(kinks < samples / 20);  // kinks are rare at random states: the central check covers the bulk
+}
+
+TEST_CASE("muscle kernel derivatives at the kinks: slack tendon, concentric/eccentric switch, damping floor, lce floor") {
+  Model m;
+  model_init(m, das2());
+  const double b0 = m.fibre_damping;
+  for (const char* name : {"termaj1", "bicl", "supinator2", "deltscap5", "pronquad3"}) {
+    const int i = armrt_test::element_index(das2(), name);
+    REQUIRE(i >= 0);
+    const ElementConstants& e = m.element[i];
+    const std::string element = name;
+    CAPTURE(element);
+    const double lce = e.lceopt;
+    const double cos_pen = std::sqrt(1.0 - std::pow(e.thickness / lce, 2));
+    const double L_slack = lce * cos_pen + e.lslack;  // tendon exactly at its slack length
+    // Tendon slack point (C1: the quadratic term starts with zero slope): at it (one-sided) and on
+    // both sides, 100 finite-difference steps away (central).
+    for (double d : {-1e-6, 0.0, 1e-6}) check_element(e, b0, L_slack + d * e.lslack, lce, 0.3);
+    // The concentric/eccentric switch is at v = 0: the equilibrium CE length (both sides of it).
+    for (double a : {0.0, 0.01, 0.2, 1.0}) {
+      const double L = L_slack + 0.02 * e.lslack;
+      const double lce_eq = muscle_equilibrium_lce(e, b0, L, a);
+      CHECK(std::fabs(kernel(e, b0, L, lce_eq, a).velocity) < 1e-6 * e.vmax);
+      for (double d : {-1e-6, 0.0, 1e-6}) check_element(e, b0, L, lce_eq + d * e.lceopt, a);
+    }
+    // Damping floor fading out at F0 = 0.02 fmax: a = 0.02 / f(lce) at lce = lceopt.
+    check_element(e, b0, L_slack + 0.01 * e.lslack, lce, kLowActivation);
+    // At the lce floor: derivatives with respect to lce are those of the clamped side (zero).
+    const KernelOut o = kernel(e, b0, L_slack, 0.5 * e.min_lce, 0.3);
+    CHECK(o.der.dforce_dlce == 0.0);
+    CHECK(o.der.dvel_dlce == 0.0);
+  }
+}
+
+namespace {
+
+// A stimulated, moving state: 300 ms of ROS2 at 1 ms with flexors, cuff and deltoid on, a hand load.
+std::unique_ptr<Simulator> moving_state() {
+  auto sim = std::make_unique<Simulator>(das2(), Integrator::kRos2, 1e-3);
+  armrt_test::set_group_excitation(*sim, "elbow_flexors", 0.4);
+  armrt_test::set_group_excitation(*sim, "rotator_cuff", 0.1);
+  armrt_test::set_group_excitation(*sim, "deltoid", 0.2);
+  sim->data.hand_force = {0.0, -10.0, 0.0};
+  for (int k = 0; k < 300; ++k) REQUIRE(sim->step());
+  return sim;
+}
+
+}  // namespace
+
+TEST_CASE("the structured Jacobian's exact blocks match finite differences of forward()") {
+  auto sim = moving_state();
+  const Model& m = sim->model;
+  Data& d = sim->data;
+  const int n = m.num_elements, ia = act_offset(m);
+  StateVec x = d.x, f0{}, fp{}, fm{};
+  forward(m, d, x.data(), f0.data(), false, &d.jac);
+  const StepJacobian& J = d.jac;
+  Eigen::Matrix<double, kNumDofs, kNumDofs, Eigen::RowMajor> M;
+  for (int k = 0; k < kNumDofs * kNumDofs; ++k) M.data()[k] = J.mass_matrix[k];
+  const auto Minv = M.inverse().eval();
+  auto fd = [&](int col, double h, int row) {
+    StateVec xp = x, xm = x;
+    xp[col] += h;
+    xm[col] -= h;
+    StepJacobian scratch;
+    forward(m, d, xp.data(), fp.data(), false);
+    forward(m, d, xm.data(), fm.data(), false);
+    return (fp[row] - fm[row]) / (2 * h);
+  };
+  int checked = 0;
+  for (int i = 0; i < n; i += 7) {
+    const std::string element = m.def->elements[i].name;
+    CAPTURE(element);
+    const double h = 1e-8 * m.element[i].lceopt;
+    // d lce'/d lce (the stiff diagonal), d lce'/d a, d a'/d a: exact in J.
+    CHECK(fd(kLce + i, h, kLce + i) == doctest::Approx(J.dvel_dlce[i]).epsilon(1e-4).scale(1.0));
+    CHECK(fd(ia + i, 1e-7, kLce + i) == doctest::Approx(J.dvel_da[i]).epsilon(1e-4).scale(1e-3));
+    CHECK(fd(ia + i, 1e-7, ia + i) == doctest::Approx(-J.act_rate[i]).epsilon(1e-6));
+    // d lce_i'/d q_j = -dvel_dL R_ij: exact (lce' depends on q only through L).
+    for (int j = 0; j < kNumDofs; ++j)
+      CHECK(fd(kQ + j, 1e-7, kLce + i) ==
+            doctest::Approx(-J.dvel_dL[i] * J.moment_arm[i * kNumDofs + j]).epsilon(1e-4).scale(1e-2));
+    // d qdd/d lce_i = M^-1 R^T e_i dforce_dlce: exact.
+    for (int j = 0; j < kNumDofs; ++j) {
+      double expected = 0;
+      for (int b = 0; b < kNumDofs; ++b) expected += Minv(j, b) * J.moment_arm[i * kNumDofs + b] * J.dforce_dlce[i];
+      CHECK(fd(kLce + i, h, kQd + j) == doctest::Approx(expected).epsilon(1e-4).scale(1e-2));
+    }
+    ++checked;
+  }
+  CHECK(checked >= 14);
+  // The mechanical block is approximate (no dR/dq, gravity, Coriolis, dM/dq): its muscle and passive
+  // stiffness must still carry the bulk of d qdd/d q at this stimulated state.
+  Eigen::Matrix<double, kNumDofs, kNumDofs> Kfd, Kj;
+  for (int c = 0; c < kNumDofs; ++c)
+    for (int r = 0; r < kNumDofs; ++r) Kfd(r, c) = fd(kQ + c, 1e-7, kQd + r);
+  Eigen::Matrix<double, kNumDofs, kNumDofs> K = Eigen::Matrix<double, kNumDofs, kNumDofs>::Zero();
+  for (int i = 0; i < n; ++i)
+    for (int a = 0; a < kNumDofs; ++a)
+      for (int b = 0; b < kNumDofs; ++b)
+        K(a, b) -= J.dforce_dL[i] * J.moment_arm[i * kNumDofs + a] * J.moment_arm[i * kNumDofs + b];
+  for (int a = 0; a < kNumDofs; ++a) K(a, a) += J.dtau_passive_dq[a];
+  Kj = Minv * K;
+  const double rel = (Kj - Kfd).norm() / Kfd.norm();
+  MESSAGE("d qdd/dq: relative difference of the approximate block from finite differences " << rel);
+  CHECK(rel < 0.05);
+}
+
+TEST_CASE("the Schur-complement solve equals a dense LU of I - h gamma J") {
+  auto sim = moving_state();
+  const Model& m = sim->model;
+  Data& d = sim->data;
+  const int n = m.num_elements, ia = act_offset(m), ns = state_size(m);
+  StateVec f{};
+  forward(m, d, d.x.data(), f.data(), false, &d.jac);
+  const double hg = 1.7071067811865475e-3;
+  jacobian_factor(m, d.jac, hg);
+  const StepJacobian& J = d.jac;
+  // The same J written out densely (test only: the engine never forms it).
+  Eigen::MatrixXd Jd = Eigen::MatrixXd::Zero(ns, ns);
+  Eigen::Matrix<double, kNumDofs, kNumDofs, Eigen::RowMajor> M;
+  for (int k = 0; k < kNumDofs * kNumDofs; ++k) M.data()[k] = J.mass_matrix[k];
+  const Eigen::MatrixXd Minv = M.inverse();
+  Eigen::MatrixXd R(n, kNumDofs);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < kNumDofs; ++j) R(i, j) = J.moment_arm[i * kNumDofs + j];
+  Eigen::MatrixXd Kq = -R.transpose() * Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(J.dforce_dL.data(), n)).asDiagonal() * R;
+  for (int j = 0; j < kNumDofs; ++j) Kq(j, j) += J.dtau_passive_dq[j];
+  for (int j = 0; j < kNumDofs; ++j) Jd(kQ + j, kQd + j) = 1.0;
+  Jd.block(kQd, kQ, kNumDofs, kNumDofs) = Minv * Kq;
+  Jd.block(kQd, kQd, kNumDofs, kNumDofs) = Minv * Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(J.dtau_passive_dqd.data(), kNumDofs)).asDiagonal();
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < kNumDofs; ++j) {
+      Jd(kQd + j, kLce + i) = (Minv.row(j) * R.row(i).transpose())(0) * J.dforce_dlce[i];
+      Jd(kLce + i, kQ + j) = -J.dvel_dL[i] * R(i, j);
+    }
+    Jd(kLce + i, kLce + i) = J.dvel_dlce[i];
+    Jd(kLce + i, ia + i) = J.dvel_da[i];
+    Jd(ia + i, ia + i) = -J.act_rate[i];
+  }
+  const Eigen::MatrixXd A = Eigen::MatrixXd::Identity(ns, ns) - hg * Jd;
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> N(0.0, 1.0);
+  for (int trial = 0; trial < 5; ++trial) {
+    Eigen::VectorXd r(ns);
+    for (int k = 0; k < ns; ++k) r[k] = trial == 0 ? f[k] : N(rng);
+    StateVec k_schur{};
+    jacobian_solve(m, d.jac, r.data(), k_schur.data());
+    const Eigen::VectorXd k_dense = A.partialPivLu().solve(r);
+    const Eigen::VectorXd ks = Eigen::Map<const Eigen::VectorXd>(k_schur.data(), ns);
+    CAPTURE(trial);
+    CHECK((ks - k_dense).norm() <= 1e-9 * k_dense.norm());
+    CHECK((A * ks - r).norm() <= 1e-9 * r.norm());
+  }
+}
+
+TEST_CASE("ros2_adaptive: a rejected 2 ms step is redone from its start as two ROS2 steps of 1 ms") {
+  Simulator a(das2(), Integrator::kRos2Adaptive, 2e-3);
+  armrt_test::set_group_excitation(a, "elbow_flexors", 1.0);
+  armrt_test::set_group_excitation(a, "deltoid", 1.0);
+  int halved_at = -1;
+  for (int k = 0; k < 1000 && halved_at < 0; ++k) {
+    auto before = std::make_unique<Data>(a.data);
+    const std::int64_t h0 = a.data.halved_steps;
+    REQUIRE_MESSAGE(a.step(), a.error_message());
+    if (a.data.halved_steps == h0) continue;
+    halved_at = k;
+    // The same start state, two plain half steps: identical to the rejected-and-redone step.
+    step_ros2(a.model, *before, 1e-3, false);
+    step_ros2(a.model, *before, 1e-3, false);
+    for (int s = 0; s < state_size(a.model); ++s) CHECK(before->x[s] == a.data.x[s]);
+  }
+  MESSAGE("first halved step at step " << halved_at << "; total halved " << a.data.halved_steps);
+  CHECK(halved_at >= 0);
+}
+
+}  // TEST_SUITE
