@@ -95,9 +95,12 @@ def emit_function(signature: str, inputs: list, outputs: list, trig_of: list | N
                 any_used = True
         if not any_used:
             lines.append(f"  (void){arr};")
-    for s, code, _ in trig_lines:
-        if s in used:
-            lines.append(f"  const double {s.name} = {code};")
+    # sin and cos of one angle together, by the engine's library-free sin_cos (armrt/fast_math.h).
+    for k in range(0, len(trig_lines), 2):
+        (s, _, sym), (c, _, _) = trig_lines[k], trig_lines[k + 1]
+        if s in used or c in used:
+            lines.append(f"  double {s.name}, {c.name};")
+            lines.append(f"  armrt::sin_cos({sym.name}, &{s.name}, &{c.name});")
     for sym, e in temps:
         lines.append(f"  const double {sym.name} = {cexpr(e)};")
     i = 0

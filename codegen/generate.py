@@ -327,20 +327,60 @@ def paths_source(model: dict, ns: str) -> str:
     body = [f"  L[{i}] = {_sum(t, mono)};" for i, t in enumerate(lengths)]
     out.append("void muscle_lengths(const double* q, double* L) {\n" + "\n".join(mono.preamble() + body) + "\n}\n")
 
-    # muscle_paths: lengths and moment arms -dL/dq
-    mono = _Monomials()
-    body = []
-    for i, (t, e) in enumerate(zip(lengths, els)):
-        body.append(f"  L[{i}] = {_sum(t, mono)};")
+    # muscle_paths: lengths and moment arms -dL/dq in one pass. Each monomial m carries the vector
+    # G(m) = [-dm/dq0, ..., -dm/dq4, m, 0, 0]; every term of a length polynomial adds c G(m) (one 8-wide
+    # multiply-add gives a length and its five moment arms), instead of one scalar polynomial per
+    # moment arm. G is built along a tree of monomials, each from its parent m' = m / q_j by the
+    # product rule: G(q_j m') = q_j G(m') - m' E_j (E_j: unit vector of lane j), two vector operations.
+    # The same polynomials summed in another order: results differ by rounding only.
+    for i, e in enumerate(els):
         crossed = {dof_index[d] for d in e["dofs"]}
-        for j in range(NDOF):
-            g = [(-c, m) for c, m in _gradient(t, j)]
-            if j not in crossed and g:
-                raise ValueError(f"element {e['name']}: length depends on {model['dofs'][j]['name']}, "
+        for c, m in lengths[i]:
+            bad = [j for j in range(NDOF) if m[j] and j not in crossed and c != 0.0]
+            if bad:
+                raise ValueError(f"element {e['name']}: length depends on {model['dofs'][bad[0]]['name']}, "
                                  f"which it does not cross")
-            body.append(f"  moment_arm[{i * NDOF + j}] = {_sum(g, mono)};")
+    used = sorted({m for t in lengths for c, m in t if c != 0.0 and any(m)}, key=lambda m: (sum(m), m))
+    tree: dict[tuple, tuple[int, tuple]] = {}  # monomial -> (dof j, parent m / q_j)
+    pending = list(used)
+    while pending:
+        m = pending.pop()
+        if m in tree or not any(m):
+            continue
+        j = max(k for k in range(NDOF) if m[k])
+        parent = tuple(p - (k == j) for k, p in enumerate(m))
+        tree[m] = (j, parent)
+        pending.append(parent)
+    order = sorted(tree, key=lambda m: (sum(m), m))
+    gname = {(0,) * NDOF: "g_one"}
+    pname = {(0,) * NDOF: "1.0"}
+    for k, m in enumerate(order):
+        gname[m], pname[m] = f"g{k}", f"p{k}"
+    lines = ["  const v8d g_one = {" + ", ".join(["0.0"] * NDOF + ["1.0", "0.0", "0.0"]) + "};"]
+    for j in range(NDOF):
+        lines.append(f"  const v8d e{j} = {{" + ", ".join("1.0" if k == j else "0.0" for k in range(8)) + "};")
+    qs = set()
+    parents = {tree[m][1] for m in order}
+    for m in order:
+        j, parent = tree[m]
+        qs.add(j)
+        if m in parents:  # the scalar monomial is only needed by its children
+            lines.append(f"  const double {pname[m]} = " + (f"q{j}*{pname[parent]};" if any(parent) else f"q{j};"))
+        if any(parent):
+            lines.append(f"  const v8d {gname[m]} = q{j}*{gname[parent]} - {pname[parent]}*e{j};")
+        else:
+            lines.append(f"  const v8d {gname[m]} = q{j}*g_one - e{j};")
+    body = []
+    for i, t in enumerate(lengths):
+        parts = [f"{cxx.fmt(c)}*{gname[m]}" for c, m in t if c != 0.0]
+        # Two interleaved partial sums halve the chain of dependent multiply-adds per element.
+        halves = [" + ".join(parts[0::2]) or "0.0*g_one", " + ".join(parts[1::2]) or "0.0*g_one"]
+        expr = f"({halves[0]}) + ({halves[1]})"
+        body.append(f"  {{ const v8d a = {expr};")
+        body.append(f"    std::memcpy(moment_arm + {i * NDOF}, &a, {NDOF} * sizeof(double)); L[{i}] = a[{NDOF}]; }}")
+    head = [f"  const double q{j} = q[{j}];" for j in sorted(qs)] or ["  (void)q;"]
     out.append("void muscle_paths(const double* q, double* L, double* moment_arm) {\n"
-               + "\n".join(mono.preamble() + body) + "\n}\n")
+               + "\n".join(head + lines + body) + "\n}\n")
 
     # gh_directions
     mono = _Monomials()
@@ -360,8 +400,10 @@ def paths_source(model: dict, ns: str) -> str:
         body.append("  }")
     out.append("void gh_directions(const double* q, double* d) {\n" + "\n".join(mono.preamble() + body) + "\n}\n")
 
-    return ("#include <cmath>\n\n#include \"" + ns + ".h\"\n\n"
-            f"namespace armrt::generated::{ns} {{\n\n" + "\n".join(out) + f"\n}}  // namespace armrt::generated::{ns}\n")
+    return ("#include <cmath>\n#include <cstring>\n\n#include \"" + ns + ".h\"\n\n"
+            f"namespace armrt::generated::{ns} {{\n\n"
+            "// Eight doubles, one SIMD register with AVX-512 (two with AVX2): a length and its moment arms.\n"
+            "using v8d = double __attribute__((vector_size(64)));\n\n" + "\n".join(out) + f"\n}}  // namespace armrt::generated::{ns}\n")
 
 
 def dynamics_source(model: dict, ns: str) -> tuple[str, dict]:
@@ -394,7 +436,7 @@ def dynamics_source(model: dict, ns: str) -> tuple[str, dict]:
     ps = [x for p in ex.body_origins for x in p]
     fn("body_poses", "void body_poses(const double* q, double* R, double* p)", [("q", q)], [("R", Rs), ("p", ps)])
 
-    src = ("#include <cmath>\n\n#include \"" + ns + ".h\"\n\n"
+    src = ("#include <cmath>\n\n#include \"armrt/fast_math.h\"\n#include \"" + ns + ".h\"\n\n"
            f"namespace armrt::generated::{ns} {{\n\n" + "\n".join(fns) + f"\n}}  // namespace armrt::generated::{ns}\n")
     return src, stats
 

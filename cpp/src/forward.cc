@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "armrt/engine.h"
@@ -27,6 +26,36 @@ void passive_joint_torque(const ModelDef& def, const double* q, const double* qd
       t += def.passive_stiffness_outside * under * under;
     }
     tau[j] = t;
+  }
+}
+
+void solve_spd(const double* A, const double* b, double* x) {
+  // Cholesky A = L L^T, row-major, fixed size: no pivoting needed for a mass matrix.
+  constexpr int n = kNumDofs;
+  double Lc[n * n] = {};
+  double inv_diag[n];
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j <= i; ++j) {
+      double sum = A[i * n + j];
+      for (int k = 0; k < j; ++k) sum -= Lc[i * n + k] * Lc[j * n + k];
+      if (i == j) {
+        Lc[i * n + i] = std::sqrt(sum);
+        inv_diag[i] = 1.0 / Lc[i * n + i];
+      } else {
+        Lc[i * n + j] = sum * inv_diag[j];
+      }
+    }
+  }
+  double y[n];
+  for (int i = 0; i < n; ++i) {
+    double sum = b[i];
+    for (int k = 0; k < i; ++k) sum -= Lc[i * n + k] * y[k];
+    y[i] = sum * inv_diag[i];
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    double sum = y[i];
+    for (int k = i + 1; k < n; ++k) sum -= Lc[k * n + i] * x[k];
+    x[i] = sum * inv_diag[i];
   }
 }
 
@@ -89,11 +118,19 @@ void muscle_dynamics(const Model& m, const double* excitation, const double* mus
       jac->dvel_da[i] = der.dvel_da;
     }
   }
-  for (int j = 0; j < kNumDofs; ++j) tau[j] = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const double* r = moment_arm + i * kNumDofs;
-    for (int j = 0; j < kNumDofs; ++j) tau[j] += r[j] * force[i];
-  }
+  generalised_force(moment_arm, force, n, tau);
+}
+
+void generalised_force(const double* moment_arm, const double* force, int n, double* tau) {
+  // Four independent partial sums per DOF: one running sum would chain n multiply-adds back to back.
+  double acc[4][kNumDofs] = {};
+  int i = 0;
+  for (; i + 4 <= n; i += 4)
+    for (int k = 0; k < 4; ++k)
+      for (int j = 0; j < kNumDofs; ++j) acc[k][j] += moment_arm[(i + k) * kNumDofs + j] * force[i + k];
+  for (; i < n; ++i)
+    for (int j = 0; j < kNumDofs; ++j) acc[0][j] += moment_arm[i * kNumDofs + j] * force[i];
+  for (int j = 0; j < kNumDofs; ++j) tau[j] = (acc[0][j] + acc[1][j]) + (acc[2][j] + acc[3][j]);
 }
 
 void forward(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac) {
@@ -103,9 +140,10 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
   const double* q = x + kQ;
   const double* qd = x + kQd;
 
-  double L[kMaxElements];
+  double L_local[kMaxElements];
   double R_local[kMaxElements * kNumDofs];
-  double* R = jac ? jac->moment_arm.data() : R_local;  // the Jacobian keeps the moment arms
+  double* L = jac ? jac->muscle_length.data() : L_local;  // the Jacobian keeps the path geometry
+  double* R = jac ? jac->moment_arm.data() : R_local;
   def.muscle_paths(q, L, R);
 
   double force[kMaxElements];
@@ -142,7 +180,8 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
   def.dynamics(q, qd, m.gravity_scapula.data(), M.data(), rhs.data());
   if (jac) std::copy(M.data(), M.data() + kNumDofs * kNumDofs, jac->mass_matrix.begin());
   for (int j = 0; j < kNumDofs; ++j) rhs[j] += tau[j] + tau_passive[j] + tau_ext[j];
-  const Vec5 qdd = M.llt().solve(rhs);
+  Vec5 qdd;
+  solve_spd(M.data(), rhs.data(), qdd.data());
   for (int j = 0; j < kNumDofs; ++j) {
     xdot[kQ + j] = qd[j];
     xdot[kQd + j] = qdd[j];

@@ -370,6 +370,39 @@ def tune_cuff_boost(baseline: dict[str, float], deltoid: list[str], level: float
     return CuffBoost(boost.tolist(), w, scan, evals[0])
 
 
+# ----------------------------------------------------------------------------- the three tasks
+
+@dataclass
+class PaperTasks:
+    baseline: Baseline
+    fig1_levels: Fig1Levels
+    deltoid: list[str]
+    deltoid_level: float
+    cuff_boost: CuffBoost
+    sequences: list[Sequence]   # Fig. 1, Fig. 2, Fig. 3
+
+
+def paper_tasks(arm: Arm | None = None, progress: Progress | None = None) -> PaperTasks:
+    """The paper's three stimulation tasks with their levels tuned on this model (Table III baseline,
+    Fig. 1 levels, deltoid level, Fig. 3 cuff boost), simulated with the default integrator."""
+    arm = arm or new_arm()
+    base = find_baseline(arm, progress)
+    q0 = base.settled.q
+    levels = tune_fig1(base.levels, q0=q0)
+    if progress:
+        progress.step("tuning Fig. 1 levels")
+    seq1 = fig1_sequence(base.levels, levels.flex, levels.ext, levels.pron, q0)
+    deltoid = middle_anterior_deltoid(arm)
+    delt_level = tune_deltoid(base.levels, deltoid, q0)
+    seq2 = deltoid_sequence("fig2", base.levels, deltoid, delt_level, 0.0, q0)
+    _, res2 = run_sequence(seq2)
+    tuned = tune_cuff_boost(base.levels, deltoid, delt_level, q0, min_elevation_deg=plateau_elevation(res2) - 5.0)
+    seq3 = deltoid_sequence("fig3", base.levels, deltoid, delt_level, tuned.boost, q0)
+    if progress:
+        progress.step("tuning the deltoid and cuff levels")
+    return PaperTasks(base, levels, deltoid, delt_level, tuned, [seq1, seq2, seq3])
+
+
 # ----------------------------------------------------------------------------- Fig. 4 / Table IV
 
 STEP_GRID = (2.5e-5, 5e-5, 1e-4, 2e-4, 2.5e-4, 5e-4, 1e-3, 2e-3)
@@ -491,21 +524,19 @@ def run_all(out_dir="results", quick: bool = False, progress: bool = True) -> in
     """Regenerates every figure and table of the paper's results section into out_dir."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    prog = Progress(total=10, enabled=progress)
+    prog = Progress(total=13, enabled=progress)
     arm = new_arm()
     summary: dict = {"dt": DT, "integrator": INTEGRATOR}
 
-    base = find_baseline(arm, prog)
+    pt = paper_tasks(arm, prog)
+    base, levels, deltoid, delt_level, tuned = pt.baseline, pt.fig1_levels, pt.deltoid, pt.deltoid_level, pt.cuff_boost
+    seq1, seq2, seq3 = pt.sequences
     summary["baseline"] = {"levels": base.levels, "gh_stab": base.settled.gh_stab_tail,
                            "gh_stab_passive": base.passive.gh_stab_tail,
                            "posture_deg": np.degrees(base.settled.q).round(2).tolist(),
                            "axial_rotation_deg": math.degrees(base.settled.axial),
                            "evaluations": base.evaluations}
 
-    q0 = base.settled.q
-    levels = tune_fig1(base.levels, q0=q0)
-    prog.step("tuning Fig. 1 levels")
-    seq1 = fig1_sequence(base.levels, levels.flex, levels.ext, levels.pron, q0)
     arm1, res1 = run_sequence(seq1)
     _plot_sequence(res1, arm1, {"flexors": list(FLEXORS), "triceps": list(EXTENSORS), "pronators": list(PRONATORS),
                                 "rotator cuff": list(CUFF)}, out / "fig1.png", "Fig. 1: elbow and forearm", gh=False)
@@ -519,9 +550,6 @@ def run_all(out_dir="results", quick: bool = False, progress: bool = True) -> in
                        "gh_stab_max_time": float(res1.time[np.argmax(res1.gh_stab)])}
     prog.step("Fig. 1")
 
-    deltoid = middle_anterior_deltoid(arm)
-    delt_level = tune_deltoid(base.levels, deltoid, q0)
-    seq2 = deltoid_sequence("fig2", base.levels, deltoid, delt_level, 0.0, q0)
     arm2, res2 = run_sequence(seq2)
     _plot_sequence(res2, arm2, {"middle+anterior deltoid": deltoid, "rotator cuff": list(CUFF)}, out / "fig2.png",
                    "Fig. 2: deltoid with baseline rotator cuff", gh=True)
@@ -531,9 +559,7 @@ def run_all(out_dir="results", quick: bool = False, progress: bool = True) -> in
                        "plane_at_max": float(th2[np.argmax(th2[:, 1]), 0])}
     prog.step("Fig. 2")
 
-    tuned = tune_cuff_boost(base.levels, deltoid, delt_level, q0, min_elevation_deg=plateau_elevation(res2) - 5.0)
     boost = dict(zip(CUFF, tuned.boost))
-    seq3 = deltoid_sequence("fig3", base.levels, deltoid, delt_level, tuned.boost, q0)
     arm3, res3 = run_sequence(seq3)
     _plot_sequence(res3, arm3, {"middle+anterior deltoid": deltoid, "rotator cuff": list(CUFF)}, out / "fig3.png",
                    "Fig. 3: deltoid with increased rotator cuff", gh=True)

@@ -44,6 +44,7 @@ struct StepJacobian {
   std::array<double, kMaxElements> dvel_dlce{};    // 1/s, CE velocity vs CE length
   std::array<double, kMaxElements> dvel_da{};      // m/s, CE velocity vs activation
   std::array<double, kMaxElements> act_rate{};     // 1/s, -d(activation rate)/d(activation) = c1 u + c2
+  std::array<double, kMaxElements> muscle_length{};          // m
   std::array<double, kMaxElements * kNumDofs> moment_arm{};  // m, [element][dof]
   std::array<double, kNumDofs * kNumDofs> mass_matrix{};     // kg m^2, row-major
   std::array<double, kNumDofs> dtau_passive_dq{};   // N m/rad, diagonal
@@ -93,6 +94,7 @@ struct Data {
 
   TetStats tet;
   std::int64_t halved_steps = 0;  // ROS2 steps redone as two halves (Integrator::kRos2Adaptive)
+  std::int64_t limited_fibre_steps = 0;  // ROS2: element-steps whose CE mode was stiffened (rosenbrock.cc)
 
   // Integrator workspace.
   StateVec k1{}, k2{}, k3{}, k4{}, xtmp{};

@@ -33,6 +33,10 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
 void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
                      const double* moment_arm, const double* act, const double* lce, double* act_dot,
                      double* lce_dot, double* force, double* tau, StepJacobian* jac = nullptr);
+// Solves A x = b for a symmetric positive definite 5 x 5 A (row-major), e.g. M(q) qdd = tau.
+void solve_spd(const double* A, const double* b, double* x);
+// Generalised forces tau = R^T F (N m) of n element forces F (N) with moment arms R (n x 5, m).
+void generalised_force(const double* moment_arm, const double* force, int n, double* tau);
 // GH stability of a force of the humeral head on the glenoid (scapula frame).
 void gh_stability(const ModelDef& def, const double* force, double* theta, double* phi, double* stab);
 // Passive joint moments (N m) at q, qd.
@@ -53,6 +57,9 @@ const char* state_name(const Model& m, int index, char* buf, int buflen);
 void jacobian_factor(const Model& m, StepJacobian& jac, double hg);
 // Solves (I - hg J) k = r for state-sized vectors r and k (distinct arrays).
 void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* k);
+// For every element whose CE would run through its operating point within a ROS2 step of h (s) (a
+// slack tendon engaging), stiffens d.jac's CE mode so that the step stops there (rosenbrock.cc).
+void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const double* xdot, double h);
 // One ROS2 step of h (s) from d.x (no TET, no state check: step() adds both).
 void step_ros2(const Model& m, Data& d, double h, bool record);
 // One ROS2 step of h, redone as two steps of h/2 when the embedded error estimate exceeds the

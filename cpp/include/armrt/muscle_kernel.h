@@ -4,43 +4,11 @@
 #pragma once
 
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 
+#include "armrt/fast_math.h"
 #include "armrt/model.h"
 
 namespace armrt {
-
-// exp(x) for x <= 0 without branches or library calls (vectorisable): Cody-Waite reduction to
-// |r| <= ln2/2 and a degree-12 Taylor polynomial; relative error below 1e-15 (tests check it).
-// Rounding uses the 1.5 * 2^52 trick (valid without -ffast-math) so it vectorises on plain SSE2.
-inline double exp_nonpositive(double x) {
-  x = x < -700.0 ? -700.0 : x;
-  constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52
-  constexpr std::int64_t kRoundBits = 0x4338000000000000;
-  const double y = x * 1.4426950408889634 + kRound;
-  const double n = y - kRound;
-  std::int64_t ybits;
-  std::memcpy(&ybits, &y, sizeof ybits);
-  const double r = (x - n * 0.6931471803691238) - n * 1.9082149292705877e-10;
-  double p = 1.0 / 479001600.0;
-  p = p * r + 1.0 / 39916800.0;
-  p = p * r + 1.0 / 3628800.0;
-  p = p * r + 1.0 / 362880.0;
-  p = p * r + 1.0 / 40320.0;
-  p = p * r + 1.0 / 5040.0;
-  p = p * r + 1.0 / 720.0;
-  p = p * r + 1.0 / 120.0;
-  p = p * r + 1.0 / 24.0;
-  p = p * r + 1.0 / 6.0;
-  p = p * r + 0.5;
-  p = p * r + 1.0;
-  p = p * r + 1.0;
-  const std::int64_t bits = (ybits - kRoundBits + 1023) << 52;
-  double scale;
-  std::memcpy(&scale, &bits, sizeof scale);
-  return p * scale;
-}
 
 // Derivatives of one element's outputs with respect to its inputs (muscle_kernel_derivatives). Tendon
 // force T (N) and CE velocity v (m/s) as functions of the muscle-tendon length L (m), the CE length lce
@@ -71,11 +39,12 @@ inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lsl
                                       double a, double* force, double* velocity, MuscleDerivatives* der) {
   const bool above_floor = lce > min_lce;
   lce = above_floor ? lce : min_lce;
-  const double inv_lce = 1.0 / lce;
-  const double s = thickness * inv_lce;  // sin(pennation)
-  const double cos_pen = std::sqrt(1.0 - s * s);
-  const double inv_cos = 1.0 / cos_pen;
-  const double see_stretch = L - lce * cos_pen - lslack;
+  // Fibre length projected on the tendon, lce cos(pennation) = sqrt(lce^2 - thickness^2): one square
+  // root and one division give it and 1/cos(pennation) (division and square root dominate the loop).
+  const double lce_along = std::sqrt(lce * lce - thickness * thickness);
+  const double inv_lce_along = 1.0 / lce_along;
+  const double inv_cos = lce * inv_lce_along;
+  const double see_stretch = L - lce_along - lslack;
   const double see_pos = see_stretch > 0 ? see_stretch : 0.0;
   const double f_see = kLinearStiffness * see_stretch + k_see * see_pos * see_pos;
   const double pee_stretch = lce - pee_slack;
@@ -112,7 +81,9 @@ inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lsl
   const double dfpee = kLinearStiffness + 2.0 * k_pee * pee_pos;
   // d(lce cos)/dlce = 1/cos; d(1/cos)/dlce = -s^2 / (lce cos^3).
   const double dF_dL = dfsee * inv_cos;
-  const double dF_dlce = -inv_cos * inv_cos * (dfsee + f_see * s * s * inv_lce * inv_cos) - dfpee;
+  const double inv_lce = 1.0 / lce;
+  const double sin2_over_lce_cos = thickness * thickness * inv_lce * inv_lce * inv_lce_along;  // s^2 / (lce cos)
+  const double dF_dlce = -inv_cos * inv_cos * (dfsee + f_see * sin2_over_lce_cos) - dfpee;
   const double dfl_dlce = -2.0 * xfl * fl * inv_lceopt * (1.0 / kForceLengthWidth);
   const double dF0_dlce = fmax * a * dfl_dlce;
   const double dF0_da = fmax * fl;
