@@ -272,6 +272,7 @@ void RtLoop::end_session(bool released) {
   previous_owner_ = owner_;
   had_owner_ = true;
   have_seq_ = false;
+  notify_previous_ = true;  // the ex-owner gets one last state packet, flagged timed out, and no more
   session_id_ = next_session_id(session_rng_);  // no packet of the ended session is accepted again
 }
 
@@ -384,7 +385,7 @@ void RtLoop::receive_packets(double now_s) {
 }
 
 void RtLoop::send_state() {
-  if (sock_ < 0 || (subscribers_.empty() && !have_owner_)) return;
+  if (sock_ < 0 || (subscribers_.empty() && !have_owner_ && !notify_previous_)) return;
   Data& d = sim_->data;
   if (d.status == Status::kOk) sim_->evaluate_outputs();  // outputs at the current state
   std::uint8_t* b = tx_buf_.data();
@@ -418,6 +419,12 @@ void RtLoop::send_state() {
     owner_is_subscriber = owner_is_subscriber || (have_owner_ && same_source(to, owner_));
   }
   if (have_owner_ && !owner_is_subscriber) send_to(b, len, owner_);
+  if (notify_previous_) {
+    bool subscribed = false;
+    for (const auto& to : subscribers_) subscribed = subscribed || same_source(to, previous_owner_);
+    if (!subscribed && !(have_owner_ && same_source(owner_, previous_owner_))) send_to(b, len, previous_owner_);
+    notify_previous_ = false;
+  }
   ++pk_.state_sent;
   overrun_since_state_ = false;
 }

@@ -188,7 +188,7 @@ class RtLoop {
   std::uint32_t session_id_ = 0;        // current (offered or owned) session id, never 0
   bool have_owner_ = false;
   sockaddr_in owner_{}, previous_owner_{};
-  bool had_owner_ = false;
+  bool had_owner_ = false, notify_previous_ = false;
   bool have_seq_ = false;
   std::uint32_t last_seq_ = 0;
   double last_valid_s_ = -1;            // loop time of the owner's last applied excitation
