@@ -491,52 +491,188 @@ def _pylsl():
         pytest.skip(f"pylsl/liblsl cannot load: {type(e).__name__}: {e}")
 
 
+def _exc_outlet(pylsl, name, source_id, labels, rate=100):
+    info = pylsl.StreamInfo(name, "Excitation", len(labels), rate, pylsl.cf_double64, source_id)
+    chans = info.desc().append_child("channels")
+    for lab in labels:
+        chans.append_child("channel").append_child_value("label", lab)
+    return pylsl.StreamOutlet(info)
+
+
+def _run_bridge(bridge):
+    stop = threading.Event()
+    errors = []
+
+    def loop():
+        try:
+            bridge.run(stop)
+        except Exception as e:  # noqa: BLE001 (handed to the test)
+            errors.append(e)
+    th = threading.Thread(target=loop, daemon=True)
+    th.start()
+    return stop, th, errors
+
+
 def test_lsl_bridge_loopback():
     pylsl = _pylsl()
-    from armrt.lsl_bridge import LslBridge, STATE_LABELS
+    from armrt.lsl_bridge import LslBridge, STATE_LABELS, channel_labels
     source = f"armrt-test-{os.getpid()}"
-    bridge = LslBridge(runner_port=0, mapping="groups", source_id=source, excitation_name=f"exc-{source}")
+    bridge = LslBridge(runner_port=0, mapping="groups", source_id=source, excitation_name=f"exc-{source}",
+                       state_rate_hz=200)
     with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, state_to=f"127.0.0.1:{bridge.state_port}") as s:
         bridge.runner_address = ("127.0.0.1", s.port)
-        stop = threading.Event()
-        th = threading.Thread(target=bridge.run, args=(stop,), daemon=True)
-        th.start()
+        stop, th, errors = _run_bridge(bridge)
         try:
-            info = pylsl.StreamInfo(f"exc-{source}", "Excitation", len(bridge.mapping.names), 100,
-                                    pylsl.cf_double64, f"{source}-controller")
-            outlet = pylsl.StreamOutlet(info)
+            # The controller's channels in another order than the mapping's: matched by label.
+            labels = list(reversed(bridge.mapping.names))
+            outlet = _exc_outlet(pylsl, f"exc-{source}", f"{source}-controller", labels)
             found = pylsl.resolve_byprop("source_id", f"{source}-state", timeout=10)
             assert found, "state stream not found on loopback"
             inlet = pylsl.StreamInlet(found[0])
             full = inlet.info(timeout=5)
-            ch = full.desc().child("channels").child("channel")
-            labels, units = [], []
-            while not ch.empty():
-                labels.append(ch.child_value("label"))
-                units.append(ch.child_value("unit"))
-                ch = ch.next_sibling()
-            assert labels == STATE_LABELS
-            assert units[labels.index("ELx")] == "rad" and units[0] == "s"
-            ef = bridge.mapping.names.index("elbow_flexors")
-            u = np.zeros(len(bridge.mapping.names))
-            u[ef] = 0.15
+            labels_out = channel_labels(full)
+            assert labels_out == STATE_LABELS and labels_out[-2:] == ["lag", "overrun"]
+            u = np.zeros(len(labels))
+            u[labels.index("elbow_flexors")] = 0.15
             el0 = None
             t_end = time.monotonic() + 4
             el = None
-            while time.monotonic() < t_end:
+            while time.monotonic() < t_end and not errors:
                 outlet.push_sample(u.tolist())
                 samples, _ = inlet.pull_chunk(timeout=0.05)
                 if samples:
-                    el = samples[-1][labels.index("ELx")]
+                    el = samples[-1][labels_out.index("ELx")]
                     if el0 is None:
                         el0 = el
                 time.sleep(0.01)
+            assert not errors, errors
             assert el0 is not None and el is not None, "no state samples over LSL"
             assert bridge.forwarded > 10, "no excitation samples forwarded from LSL"
+            ef = bridge.mapping.names.index("elbow_flexors")
+            assert bridge.last_values[ef] == 0.15 and bridge.last_values.sum() == pytest.approx(0.15)
             # Elbow flexors at 0.15 flex the elbow beyond 60 deg; unexcited it hangs near 13 deg.
             assert np.degrees(el) > 60, (np.degrees(el0), np.degrees(el), bridge.forwarded)
+            assert [w for w in bridge.warnings if "overran" not in w] == [], bridge.warnings
         finally:
             stop.set()
             th.join(timeout=5)
+            bridge.close()
         st = s.stop()
-    assert st["packets"]["applied"] > 10
+    assert st["packets"]["applied"] > 10 and st["packets"]["sessions"] == 1
+
+
+def test_lsl_bridge_unknown_labels_are_an_error_naming_them():
+    pylsl = _pylsl()
+    from armrt.lsl_bridge import LslBridge
+    source = f"armrt-test-lab-{os.getpid()}"
+    bridge = LslBridge(runner_port=9, mapping="groups", source_id=source, excitation_source_id=f"{source}-ctl")
+    try:
+        _outlet = _exc_outlet(pylsl, "anything", f"{source}-ctl", ["elbow_flexors", "bicep_typo"])  # noqa: F841
+        t_end = time.monotonic() + 10
+        with pytest.raises(ValueError, match="bicep_typo"):
+            while time.monotonic() < t_end:
+                bridge.step()
+    finally:
+        bridge.close()
+
+
+def test_lsl_bridge_pins_the_excitation_stream_by_source_id():
+    pylsl = _pylsl()
+    from armrt.lsl_bridge import LslBridge
+    source = f"armrt-test-pin-{os.getpid()}"
+    bridge = LslBridge(runner_port=0, mapping="groups", source_id=source, excitation_name=f"exc-{source}",
+                       excitation_source_id=f"{source}-right")
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=100, state_to=f"127.0.0.1:{bridge.state_port}") as s:
+        bridge.runner_address = ("127.0.0.1", s.port)
+        names = list(bridge.mapping.names)
+        wrong = _exc_outlet(pylsl, f"exc-{source}", f"{source}-wrong", names)  # same name, other source
+        right = _exc_outlet(pylsl, f"exc-{source}", f"{source}-right", names)
+        stop, th, errors = _run_bridge(bridge)
+        try:
+            t_end = time.monotonic() + 8
+            while time.monotonic() < t_end and bridge.forwarded < 5 and not errors:
+                wrong.push_sample([0.9] * len(names))
+                right.push_sample([0.01] * len(names))
+                time.sleep(0.01)
+        finally:
+            stop.set()
+            th.join(timeout=5)
+            bridge.close()
+    assert not errors and bridge.forwarded >= 5
+    np.testing.assert_allclose(bridge.last_values, 0.01)
+
+
+def test_lsl_bridge_refuses_undeliverable_rate_and_unfilled_forces():
+    pylsl = _pylsl()  # noqa: F841
+    from armrt.lsl_bridge import LslBridge, check_state_rate
+    with pytest.raises(ValueError, match="333.333 and 250"):
+        check_state_rate(300, 1000)
+    assert check_state_rate(250, 1000) == 4
+    with pytest.raises(ValueError, match="300"):
+        LslBridge(runner_port=9, state_rate_hz=300)
+    source = f"armrt-test-forces-{os.getpid()}"
+    bridge = LslBridge(runner_port=0, mapping="groups", source_id=source, forces=True,
+                       excitation_source_id=f"{source}-none")
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=100, state_to=f"127.0.0.1:{bridge.state_port}") as s:
+        bridge.runner_address = ("127.0.0.1", s.port)
+        try:
+            t_end = time.monotonic() + 5
+            with pytest.raises(RuntimeError, match="--forces"):
+                while time.monotonic() < t_end:
+                    bridge.step()
+        finally:
+            bridge.close()
+
+
+def test_lsl_bridge_warns_once_per_fault():
+    _pylsl()
+    from armrt.lsl_bridge import LslBridge
+    source = f"armrt-test-warn-{os.getpid()}"
+    bridge = LslBridge(runner_port=0, mapping="groups", source_id=source, excitation_source_id=f"{source}-none")
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, state_to=f"127.0.0.1:{bridge.state_port}") as s:
+        bridge.runner_address = ("127.0.0.1", s.port)
+        junk = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        try:
+            for _ in range(50):
+                junk.sendto(b"not a packet", ("127.0.0.1", bridge.state_port))
+                bridge.step()
+            # The runner sends state at 200 Hz, the bridge declared 100 Hz: one rate warning.
+            t_end = time.monotonic() + 0.5
+            while time.monotonic() < t_end:
+                bridge.step()
+        finally:
+            junk.close()
+            bridge.close()
+    assert bridge.bad >= 50 and bridge.published > 10
+    w = [x for x in bridge.warnings if "overran" not in x]  # an overrun on a busy machine is a fault of its own
+    assert len(w) == 2 and w[0].startswith("dropped") and w[1].startswith("the runner sends state every 5.000 ms"), w
+
+
+def test_lsl_bridge_never_blocks_on_resolving(monkeypatch):
+    """Looking for a controller happens on a ContinuousResolver thread: step() never calls a blocking
+    resolve (the old bridge published state in 200 ms lumps while it resolved), and every state
+    packet is published as it arrives."""
+    pylsl = _pylsl()
+
+    def blocking(*a, **k):
+        raise AssertionError("blocking LSL resolve called")
+    for name in ("resolve_byprop", "resolve_stream", "resolve_streams", "resolve_bypred"):
+        if hasattr(pylsl, name):
+            monkeypatch.setattr(pylsl, name, blocking)
+    from armrt.lsl_bridge import LslBridge
+    source = f"armrt-test-burst-{os.getpid()}"
+    bridge = LslBridge(runner_port=0, mapping="groups", source_id=source, excitation_source_id=f"{source}-absent",
+                       state_rate_hz=200)
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, duration=0.5,
+                            state_to=f"127.0.0.1:{bridge.state_port}") as s:
+        bridge.runner_address = ("127.0.0.1", s.port)
+        try:
+            while not s.finished:
+                bridge.step()
+            for _ in range(20):
+                bridge.step()
+        finally:
+            bridge.close()
+        sent = s.stats()["packets"]["state_sent"]
+    assert bridge.inlet is None and bridge.forwarded == 0
+    assert bridge.published == sent and sent >= 90
