@@ -3,7 +3,8 @@ the PyPI package, nothing is downloaded at run time).
 
     armrt view                       # a demo simulation, http://localhost:8080
     armrt view --result run.npz      # replay a saved result
-    armrt view --udp 0.0.0.0:9870    # the armrt-rt state stream (needs armrt.realtime)
+    armrt view --udp :9870           # the armrt-rt state stream on loopback (armrt-rt --state-to 127.0.0.1:9870
+                                     # --excitations); bind another address explicitly, e.g. --udp 10.0.0.5:9870
 
     from armrt.view import serve, SimulationSource
     serve(SimulationSource(excitation=lambda t: {"elbow_flexors": 0.3}))
@@ -30,6 +31,12 @@ STATIC_COLOUR = (120, 120, 120)
 STAB_OK, STAB_BAD = (40, 180, 60), (230, 30, 30)
 
 
+DOF_LABELS = {  # the model's coordinates (docs/conventions.md) with the names a lab uses
+    "GHy": "plane of elevation", "GHz": "elevation", "GHyy": "axial rotation", "ELx": "elbow flexion",
+    "PSy": "pronation-supination"}
+STAB_WINDOW_S = 10.0   # GHstab plot: the last seconds
+
+
 @dataclass
 class Frame:
     """One state to draw."""
@@ -37,6 +44,10 @@ class Frame:
     q: np.ndarray                      # (5,) rad
     activation: np.ndarray | None      # (n,) or None
     gh_stab: float = float("nan")
+    lag: float | None = None           # s behind wall time (real-time runner only)
+    overrun: bool = False              # the runner overran since its previous state packet
+    timed_out: bool = False            # the runner has no controller (excitation zero)
+    kind: str = "activation"           # what `activation` holds: "activation" or "excitation received"
 
 
 class Source(Protocol):
@@ -149,26 +160,23 @@ class ResultSource:
 
 
 class UdpSource:
-    """The armrt-rt UDP state stream (docs/realtime.md): run the runner with `--state-to HOST:PORT` (or
-    `RealtimeSession(state_to=...)`) and view with `armrt view --udp HOST:PORT`. Packets are decoded by
-    `armrt.realtime` (`decode_packet` + `State.from_packet`); this module defines no format of its own.
-    State packets carry time, q and GHstab but no activations, so the activation panel stays empty."""
+    """The armrt-rt UDP state stream (docs/realtime.md): run the runner with `--state-to HOST:PORT
+    --excitations` (or `RealtimeSession(state_to=..., send_excitation=True)`) and view with
+    `armrt view --udp :PORT`. Binds loopback unless another address is named (`HOST:PORT`, parsed as
+    the runner does). Packets are decoded by `armrt.realtime`; with `key` (the runner's shared key)
+    only signed packets are drawn. The activation panel shows the excitations the runner applied
+    (present with --excitations); lag and the overrun flag come with every packet."""
 
-    def __init__(self, host: str = "0.0.0.0", port: int = 9870, model: str = "das2"):
+    def __init__(self, host: str = "127.0.0.1", port: int = 9870, model: str = "das2", key: bytes | None = None):
         try:
             from . import realtime
         except ImportError as exc:
             raise RuntimeError("the UDP source needs armrt.realtime (the armrt-rt packet codec), which is "
                                "not available in this build") from exc
-        if hasattr(realtime, "decode_packet") and hasattr(realtime, "State"):
-            def decode(data: bytes):
-                return realtime.State.from_packet(realtime.decode_packet(data))
-        elif hasattr(realtime, "decode_state"):
-            decode = realtime.decode_state
-        else:
-            raise RuntimeError("armrt.realtime has no state-packet decoder (decode_packet + State.from_packet)")
         import socket
-        self._decode = decode
+        host, port = realtime.parse_endpoint(f"{host}:{int(port)}")
+        self._realtime = realtime
+        self._key = key
         self.model = model
         from . import _core
         self.element_names = [e["name"] for e in _core.model_info(model)["elements"]]
@@ -183,22 +191,20 @@ class UdpSource:
         self.bad_packets = 0
 
     def _run(self) -> None:
+        rt = self._realtime
         while not self._stop.is_set():
             try:
                 data, _ = self._sock.recvfrom(65536)
             except OSError:
                 continue
             try:
-                s = self._decode(data)
-                get = s.get if isinstance(s, dict) else (lambda k, d=None: getattr(s, k, d))
-                act = get("activation")
-                self._frame = Frame(time=float(get("time", 0.0)), q=np.asarray(get("q"), dtype=float)[:5],
-                                    activation=None if act is None else np.asarray(act, dtype=float),
-                                    gh_stab=float(get("gh_stab", float("nan"))))
+                s = rt.State.from_packet(rt.decode_packet(data, self._key))
+                self._frame = Frame(time=s.time, q=np.asarray(s.q, dtype=float), activation=s.excitation,
+                                    gh_stab=s.gh_stab, lag=s.lag, overrun=s.overrun, timed_out=s.timed_out,
+                                    kind="excitation received")
                 self.packets += 1
             except Exception:
                 self.bad_packets += 1
-
     def start(self) -> None:
         if self._thread is None:
             self._thread = threading.Thread(target=self._run, name="armrt-udp", daemon=True)
@@ -225,6 +231,31 @@ def activation_colours(a: np.ndarray) -> np.ndarray:
     return ((1 - a) * np.array([170, 170, 170]) + a * np.array([220, 20, 20])).astype(np.uint8)
 
 
+def stab_plot_svg(t: np.ndarray, gh: np.ndarray, window: float = STAB_WINDOW_S, width: int = 260,
+                  height: int = 96) -> str:
+    """GHstab over the last `window` s as an inline SVG, with the 1 (rim: dislocation) and 0.5 lines."""
+    t, gh = np.asarray(t, dtype=float), np.asarray(gh, dtype=float)
+    ok = np.isfinite(gh)
+    t, gh = t[ok], gh[ok]
+    top = max(1.5, float(np.max(gh)) * 1.1) if gh.size else 1.5
+    x0, x1, y0, y1 = 26, width - 4, 6, height - 16
+
+    def y(v):
+        return y1 - (y1 - y0) * np.clip(v, 0, top) / top
+    parts = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+             f'style="background:#fafafa;font:10px sans-serif" data-armrt="gh-stab-plot">']
+    for level, colour, dash in ((1.0, "#d22", ""), (0.5, "#e90", ' stroke-dasharray="4 3"')):
+        parts.append(f'<line x1="{x0}" x2="{x1}" y1="{y(level):.1f}" y2="{y(level):.1f}" stroke="{colour}"{dash}/>'
+                     f'<text x="2" y="{y(level) + 3:.1f}" fill="{colour}">{level:g}</text>')
+    if t.size >= 2:
+        tx = x1 - (x1 - x0) * np.clip((t[-1] - t) / window, 0, 1)
+        pts = " ".join(f"{a:.1f},{b:.1f}" for a, b in zip(tx, y(gh)))
+        parts.append(f'<polyline points="{pts}" fill="none" stroke="#246" stroke-width="1.5"/>')
+    parts.append(f'<text x="{x0}" y="{height - 3}" fill="#555">GHstab, last {window:g} s (1: force at the '
+                 f'glenoid rim)</text></svg>')
+    return "".join(parts)
+
+
 def _polyline_segments(p: np.ndarray) -> np.ndarray:
     return np.stack([p[:-1], p[1:]], axis=1)
 
@@ -243,6 +274,8 @@ class Viewer:
         self.url = f"http://{'localhost' if host in ('0.0.0.0', '127.0.0.1') else host}:{self.port}"
         self.frames_drawn = 0
         self.last_frame: Frame | None = None
+        import collections
+        self._stab_history: collections.deque = collections.deque(maxlen=int(self.fps * STAB_WINDOW_S * 2) + 10)
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
         self._lines_of_action = lines_of_action
@@ -285,14 +318,17 @@ class Viewer:
         gui.configure_theme(control_width="medium")
         self._status = gui.add_markdown("starting...")
         self._stab_bar = gui.add_progress_bar(0.0, color="green")
+        self._stab_plot = gui.add_html(stab_plot_svg([], []))
+        self._angles = gui.add_html(self._angles_html(None))
         self._bars = gui.add_html(self._activation_html(None))
 
         @self.server.on_client_connect
         def _(client) -> None:
-            # Anterior view from the subject's front right, framing girdle and arm.
-            centre = np.array([0.12, -0.22, 0.0])
+            # Anterior view from the subject's front right, framing the shoulder and the arm at rest
+            # (shoulder to hand about 0.6 m) so that they fill most of the view's height.
+            centre = np.array([0.13, -0.27, 0.0])
             client.camera.up_direction = (0.0, 1.0, 0.0)
-            client.camera.position = tuple(centre + np.array([0.35, 0.15, -0.95]))
+            client.camera.position = tuple(centre + np.array([0.2, 0.08, -0.55]))
             client.camera.look_at = tuple(centre)
 
     def _bone_segments(self, pts: np.ndarray) -> np.ndarray:
@@ -302,7 +338,16 @@ class Viewer:
     def _bone_colours() -> np.ndarray:
         return np.repeat(np.array(list(BONE_COLOURS.values()), dtype=np.uint8)[:, None], 2, axis=1)
 
-    def _activation_html(self, act: np.ndarray | None) -> str:
+    def _angles_html(self, q: np.ndarray | None) -> str:
+        rows = []
+        for k, name in enumerate(self.geom.dof_names):
+            v = "" if q is None else f"{np.degrees(q[k]):7.1f}&deg;"
+            rows.append(f'<tr><td>{DOF_LABELS.get(name, name)}</td><td style="color:#777">{name}</td>'
+                        f'<td style="text-align:right">{v}</td></tr>')
+        return ('<div style="font:11px monospace"><b style="font:12px sans-serif">joint angles</b>'
+                '<table style="border-spacing:6px 0">' + "".join(rows) + "</table></div>")
+
+    def _activation_html(self, act: np.ndarray | None, kind: str = "activation", note: str = "") -> str:
         rows = []
         for m, ix in self._muscles:
             a = 0.0 if act is None else float(np.mean(act[ix]))
@@ -311,7 +356,10 @@ class Viewer:
                         f'<span style="width:70px">{m}</span><span style="flex:1;background:#eee;height:9px">'
                         f'<span style="display:block;width:{w}%;height:9px;background:#d33"></span></span>'
                         f'<span style="width:34px;text-align:right">{a:.2f}</span></div>')
-        return '<div><b style="font:12px sans-serif">muscle activation (mean of elements)</b>' + "".join(rows) + "</div>"
+        head = f'<b style="font:12px sans-serif">muscle {kind} (mean of elements)</b>'
+        if note:
+            head += f'<div style="font:11px sans-serif;color:#a50">{note}</div>'
+        return "<div>" + head + "".join(rows) + "</div>"
 
     # -------------------------------------------------------------- updates
     def draw(self, f: Frame) -> None:
@@ -331,12 +379,25 @@ class Viewer:
                     self._loa.colors = np.repeat(activation_colours(f.activation[idx])[:, None], 2, axis=1)
             stab = f"{f.gh_stab:.2f}" if np.isfinite(f.gh_stab) else "n/a"
             flag = " **above 1: force outside the glenoid rim**" if colour == STAB_BAD else ""
-            self._status.content = (f"**t = {f.time:7.2f} s**  \nGHstab = {stab}{flag}  \n"
-                                    f"q (deg) = {np.array2string(np.degrees(f.q), precision=0, separator=', ')}")
+            rt_line = ""
+            if f.lag is not None:
+                rt_line = f"  \nlag behind wall time {f.lag * 1e3:.0f} ms" + (
+                    "  \n**OVERRUN** (the runner missed a deadline)" if f.overrun else "") + (
+                    "  \nno controller: excitation zero" if f.timed_out else "")
+            self._status.content = f"**t = {f.time:7.2f} s**  \nGHstab = {stab}{flag}{rt_line}"
             self._stab_bar.value = float(np.clip(50 * f.gh_stab, 0, 100)) if np.isfinite(f.gh_stab) else 0.0
             self._stab_bar.color = "red" if colour == STAB_BAD else "green"
-            if f.activation is not None and self._muscles and self.frames_drawn % 3 == 0:
-                self._bars.content = self._activation_html(f.activation)
+            self._stab_history.append((f.time, f.gh_stab))
+            if self.frames_drawn % 3 == 0:
+                h = np.array(self._stab_history)
+                recent = h[h[:, 0] >= h[-1, 0] - STAB_WINDOW_S]
+                self._stab_plot.content = stab_plot_svg(recent[:, 0], recent[:, 1])
+                self._angles.content = self._angles_html(f.q)
+                if self._muscles:
+                    note = ""
+                    if f.activation is None and f.kind == "excitation received":
+                        note = "state packets carry no excitations: start armrt-rt with --excitations"
+                    self._bars.content = self._activation_html(f.activation, f.kind, note)
         self.frames_drawn += 1
 
     def _loop(self) -> None:
@@ -393,8 +454,9 @@ def _cmd_view(args) -> int:
     if args.result:
         source = ResultSource(args.result, speed=args.speed)
     elif args.udp:
-        host, _, port = args.udp.rpartition(":")
-        source = UdpSource(host or "0.0.0.0", int(port), model=args.model)
+        from .realtime import parse_endpoint, read_key_file
+        host, port = parse_endpoint(args.udp)
+        source = UdpSource(host, port, model=args.model, key=read_key_file(args.key_file) if args.key_file else None)
     else:
         source = SimulationSource(model=args.model, integrator=args.integrator, dt=args.dt, speed=args.speed)
     serve(source, host=args.host, port=args.port, fps=args.fps, lines_of_action=not args.no_lines,
@@ -429,7 +491,8 @@ def add_cli(subparsers) -> None:
     p = subparsers.add_parser("view", help="live 3D view in the browser (demo simulation, a saved result, or UDP)")
     src = p.add_mutually_exclusive_group()
     src.add_argument("--result", help="replay a saved result (.npz)")
-    src.add_argument("--udp", metavar="HOST:PORT", help="listen to the armrt-rt state stream")
+    src.add_argument("--udp", metavar="HOST:PORT", help="listen to the armrt-rt state stream (':PORT': loopback)")
+    p.add_argument("--key-file", help="the runner's --key-file (draw only signed state packets)")
     p.add_argument("--model", default="das2")
     p.add_argument("--integrator", default=DEFAULT_INTEGRATOR, choices=INTEGRATORS,
                    help="integration method (default: %(default)s, one linearly implicit step per 1 ms)")
