@@ -5,7 +5,8 @@ Starts armrt-rt at 1 kHz, a legitimate controller (armrt.realtime.UdpClient, gro
 on its own socket, sending datagrams drawn from a pool: random bytes, bit flips of valid packets,
 valid-looking excitations with the real session id (a local attacker who sniffs it) and sequence
 numbers ahead of the controller's, NaN / inf values, version 1 packets, unknown types, lying length
-fields, hellos, releases, signed packets with a wrong key. Stops after --packets datagrams or
+fields, hellos, releases, signed packets with a wrong key; and the controller itself sends junk that
+can never be applied (random bytes, NaN, version 1, lying lengths, wrong session ids). Stops after --packets datagrams or
 --duration s, whichever first, then prints and writes (--json) the runner's counters and timing and
 what the controller saw: every excitation it sent should be applied, in one session.
 
@@ -29,14 +30,17 @@ from pathlib import Path
 import numpy as np
 
 
+OWNER_SAFE_KINDS = (0, 3, 4, 6, 10)  # junk the runner can never apply, whatever its seq and session
+
+
 def fuzz_pool(rng: np.random.Generator, session: int, n: int = 2048, n_elements: int = 102,
-              n_groups: int = 9) -> list[bytes]:
+              n_groups: int = 9, kinds=tuple(range(11))) -> list[bytes]:
     """n datagrams of the kinds listed in the module docstring (session: the sniffed session id)."""
     from armrt import realtime as rt
     good = rt.encode_packet(rt.EXC_ELEMENTS, 1, np.full(n_elements, 0.02), session=session)
     out = []
     for _ in range(n):
-        kind = int(rng.integers(11))
+        kind = int(rng.choice(kinds))
         seq = int(rng.integers(0, 2**32))
         if kind == 0:
             data = rng.bytes(int(rng.integers(0, 1500)))
@@ -94,6 +98,8 @@ def _controller(port: int, key, stop: threading.Event, counts: dict, ready: thre
     from armrt import realtime as rt
     with rt.UdpClient(port, mapping="groups", key=key) as c:
         counts["session"] = c.join(timeout=2.0)
+        # A controller with bugs: from the owner's own socket, junk that must be decoded and refused.
+        junk = fuzz_pool(np.random.default_rng(7), c.session, n=1024, kinds=OWNER_SAFE_KINDS)
         ready.set()
         t_next = time.monotonic()
         k = 0
@@ -106,6 +112,9 @@ def _controller(port: int, key, stop: threading.Event, counts: dict, ready: thre
                 counts["last_el"] = float(st.q[3])
             c.send({"elbow_flexors": 0.05 + 0.05 * np.sin(2 * np.pi * 0.5 * k * 0.005), "rotator_cuff": 0.03})
             counts["sent"] += 1
+            for j in range(4):
+                c.send_raw(junk[(4 * k + j) % len(junk)])
+            counts["owner_junk"] += 4
             if c.session != counts["session"]:
                 counts["session_changes"] += 1
                 counts["session"] = c.session
@@ -139,7 +148,7 @@ def run(packets: int = 1_000_000, duration: float = 120.0, senders: int = 2, use
             if "listening on udp port" in line:
                 port = int(line.split()[-1])
         stop, ready = threading.Event(), threading.Event()
-        counts = {"sent": 0, "states": 0, "session": 0, "session_changes": 0, "last_el": 0.0}
+        counts = {"sent": 0, "states": 0, "session": 0, "session_changes": 0, "last_el": 0.0, "owner_junk": 0}
         th = threading.Thread(target=_controller, args=(port, key, stop, counts, ready), daemon=True)
         th.start()
         if not ready.wait(5.0):
@@ -185,8 +194,9 @@ def main(argv=None) -> int:
           f"{k['bad_session']}, bad_auth {k['bad_auth']}), sessions {k['sessions']}, owner changes "
           f"{k['owner_changes']}, timeouts {k['timeouts']}, rx budget hits {k['rx_budget_hits']}")
     print(f"controller: sent {c['sent']}, applied {k['applied']} ({100 * k['applied'] / max(1, c['sent']):.2f} %), "
-          f"states {c['states']}, session changes {c['session_changes']}, elbow {np.degrees(c['last_el']):.1f} deg")
-    print(f"timing: {st['cycles']} cycles in {st['elapsed_s']:.1f} s, overruns {st['overruns']}, lag {st['lag_s']} s, "
+          f"states {c['states']}, session changes {c['session_changes']}, junk from its own socket {c['owner_junk']} "
+          f"(non_finite {k['non_finite']}), elbow {np.degrees(c['last_el']):.1f} deg")
+    print(f"timing: {st['cycles']} cycles in {st['elapsed_s']:.1f} s, overruns {st['overruns']}, lag {st['lag_s']:.3f} s, "
           f"{st['scheduler']}; cycle p99 {st['cycle_ns']['p99'] / 1e3:.1f} us, max {st['cycle_ns']['max'] / 1e3:.1f} us; "
           f"latency p99 {st['latency_ns']['p99'] / 1e3:.1f} us, max {st['latency_ns']['max'] / 1e3:.1f} us")
     print(f"runner exit status {r['returncode']}")

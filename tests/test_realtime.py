@@ -207,6 +207,9 @@ def test_runner_fuzzing_with_a_legitimate_controller():
     assert r["returncode"] == 0, r["stderr"]
     assert r["fuzz"]["datagrams"] >= 1000
     assert k["received"] > 1000 and k["foreign"] > 1000
+    # The owner's own junk is decoded and refused for its reason.
+    assert c["owner_junk"] > 0 and k["bad_magic"] > 0 and k["bad_version"] > 0 and k["bad_size"] > 0
+    assert k["non_finite"] > 0 and k["bad_session"] > 0
     # One session, never taken over, every excitation of the owner applied but those in flight at the end.
     assert k["sessions"] == 1 and k["owner_changes"] == 1 and k["timeouts"] == 0
     assert k["releases"] <= 1  # the controller's own, when it closes

@@ -175,6 +175,8 @@ RtLoop::RtLoop(const RtConfig& config) : cfg_(config) {
     if (sock_ < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
     if (!cfg_.listen.empty()) {
       sockaddr_in a = parse_endpoint(cfg_.listen);
+      const int one = 1;
+      ::setsockopt(sock_, SOL_SOCKET, SO_REUSEPORT, &one, sizeof one);  // the owner's socket joins it
       if (::bind(sock_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) {
         const std::string msg = std::string("bind ") + cfg_.listen + ": " + std::strerror(errno);
         ::close(sock_);
@@ -183,6 +185,23 @@ RtLoop::RtLoop(const RtConfig& config) : cfg_(config) {
       socklen_t len = sizeof a;
       ::getsockname(sock_, reinterpret_cast<sockaddr*>(&a), &len);
       bound_port_ = ntohs(a.sin_port);
+      // A receive buffer that holds a period of a flood, so the owner's packets are not dropped by the
+      // kernel between two cycles (beyond net.core.rmem_max only with CAP_NET_ADMIN: FORCE first).
+      const int rcvbuf = 4 << 20;
+      if (::setsockopt(sock_, SOL_SOCKET, SO_RCVBUFFORCE, &rcvbuf, sizeof rcvbuf) != 0)
+        ::setsockopt(sock_, SOL_SOCKET, SO_RCVBUF, &rcvbuf, sizeof rcvbuf);
+      bound_addr_ = a;
+      if (bound_addr_.sin_addr.s_addr == htonl(INADDR_ANY)) bound_addr_.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+      owner_sock_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+      if (owner_sock_ < 0 || ::setsockopt(owner_sock_, SOL_SOCKET, SO_REUSEPORT, &one, sizeof one) != 0 ||
+          ::bind(owner_sock_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 ||
+          ::connect(owner_sock_, reinterpret_cast<sockaddr*>(&bound_addr_), sizeof bound_addr_) != 0) {
+        // Still correct without it (one queue for everyone), only less robust against floods.
+        warnings_.push_back(std::string("no separate queue for the session's owner (") + std::strerror(errno) +
+                            "): a flood from others can crowd the owner's packets out of the socket buffer");
+        if (owner_sock_ >= 0) ::close(owner_sock_);
+        owner_sock_ = -1;
+      }
       if (!is_loopback(a) && !key_.enabled())
         warnings_.push_back("listening on " + to_string(a) +
                             " (not loopback) without a shared key: any host that can reach it can ask for the "
@@ -197,6 +216,7 @@ RtLoop::~RtLoop() {
     join();
   }
   if (sock_ >= 0) ::close(sock_);
+  if (owner_sock_ >= 0) ::close(owner_sock_);
 }
 
 void RtLoop::prepare_thread() {
@@ -273,6 +293,7 @@ void RtLoop::end_session(bool released) {
   had_owner_ = true;
   have_seq_ = false;
   notify_previous_ = true;  // the ex-owner gets one last state packet, flagged timed out, and no more
+  isolate_owner(nullptr);
   session_id_ = next_session_id(session_rng_);  // no packet of the ended session is accepted again
 }
 
@@ -337,6 +358,7 @@ void RtLoop::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in&
   if (!have_owner_) {  // the first valid packet with the offered id claims the session
     have_owner_ = true;
     owner_ = from;
+    isolate_owner(&owner_);
     ++pk_.sessions;
     if (!had_owner_ || !same_source(from, previous_owner_)) ++pk_.owner_changes;
   }
@@ -349,37 +371,51 @@ void RtLoop::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in&
   ++pk_.applied;
 }
 
+void RtLoop::isolate_owner(const sockaddr_in* owner) {
+  if (owner_sock_ < 0) return;
+  // One connect() per session start or end (not per cycle).
+  const sockaddr_in& to = owner ? *owner : bound_addr_;
+  ::connect(owner_sock_, reinterpret_cast<const sockaddr*>(&to), sizeof to);
+}
+
+// Reads fd in batches until it is empty or the budget is spent; true if the budget ran out.
+bool RtLoop::drain(int fd, double now_s, std::int64_t budget_end) {
+  auto* msgs = reinterpret_cast<mmsghdr*>(rx_hdr_storage_.data());
+  auto* iov = reinterpret_cast<iovec*>(rx_hdr_storage_.data() + kBatch * sizeof(mmsghdr));
+  const std::size_t slot = kMaxPacket + 64;
+  for (;;) {
+    for (int i = 0; i < kBatch; ++i) {
+      iov[i].iov_base = rx_buf_.data() + i * slot;
+      iov[i].iov_len = slot;
+      msgs[i].msg_hdr = msghdr{};
+      msgs[i].msg_hdr.msg_name = &rx_from_[i];
+      msgs[i].msg_hdr.msg_namelen = sizeof(sockaddr_in);
+      msgs[i].msg_hdr.msg_iov = &iov[i];
+      msgs[i].msg_hdr.msg_iovlen = 1;
+      msgs[i].msg_len = 0;
+    }
+    const int got = ::recvmmsg(fd, msgs, kBatch, MSG_DONTWAIT, nullptr);
+    if (got <= 0) return false;  // EAGAIN: empty (other errors: try again next cycle)
+    for (int i = 0; i < got; ++i) {
+      ++pk_.received;
+      long len = static_cast<long>(msgs[i].msg_len);
+      if (msgs[i].msg_hdr.msg_flags & MSG_TRUNC) len = kMaxPacket + 1;  // larger than any packet
+      handle_datagram(rx_buf_.data() + i * slot, len, rx_from_[i], now_s);
+    }
+    if (got < kBatch) return false;
+    if (now_ns() >= budget_end) return true;
+  }
+}
+
 void RtLoop::receive_packets(double now_s) {
   offered_this_cycle_ = false;
   if (sock_ >= 0 && !cfg_.listen.empty()) {
-    auto* msgs = reinterpret_cast<mmsghdr*>(rx_hdr_storage_.data());
-    auto* iov = reinterpret_cast<iovec*>(rx_hdr_storage_.data() + kBatch * sizeof(mmsghdr));
-    const std::size_t slot = kMaxPacket + 64;
+    // The owner's queue first (others cannot fill it), then everything else until empty or the
+    // budget is spent, so junk from others cannot queue up in front of the owner's packets.
     const std::int64_t budget_end = now_ns() + static_cast<std::int64_t>(cfg_.rx_budget_us * 1e3);
-    // Drain the socket in batches until it is empty or the budget is spent, so junk from others
-    // cannot queue up in front of the owner's packets.
-    for (;;) {
-      for (int i = 0; i < kBatch; ++i) {
-        iov[i].iov_base = rx_buf_.data() + i * slot;
-        iov[i].iov_len = slot;
-        msgs[i].msg_hdr = msghdr{};
-        msgs[i].msg_hdr.msg_name = &rx_from_[i];
-        msgs[i].msg_hdr.msg_namelen = sizeof(sockaddr_in);
-        msgs[i].msg_hdr.msg_iov = &iov[i];
-        msgs[i].msg_hdr.msg_iovlen = 1;
-        msgs[i].msg_len = 0;
-      }
-      const int got = ::recvmmsg(sock_, msgs, kBatch, MSG_DONTWAIT, nullptr);
-      if (got <= 0) break;  // EAGAIN: empty (other errors: try again next cycle)
-      for (int i = 0; i < got; ++i) {
-        ++pk_.received;
-        long len = static_cast<long>(msgs[i].msg_len);
-        if (msgs[i].msg_hdr.msg_flags & MSG_TRUNC) len = kMaxPacket + 1;  // larger than any packet
-        handle_datagram(rx_buf_.data() + i * slot, len, rx_from_[i], now_s);
-      }
-      if (got < kBatch) break;
-      if (now_ns() >= budget_end) { ++pk_.rx_budget_hits; break; }
-    }
+    bool hit = owner_sock_ >= 0 && drain(owner_sock_, now_s, budget_end);
+    hit = drain(sock_, now_s, budget_end) || hit;
+    if (hit) ++pk_.rx_budget_hits;
   }
   if (have_owner_ && now_s - last_valid_s_ > cfg_.input_timeout) end_session(false);
 }

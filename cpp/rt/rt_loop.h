@@ -173,6 +173,13 @@ class RtLoop {
   // UDP.
   static constexpr int kBatch = 32;     // datagrams per recvmmsg
   int sock_ = -1;
+  // The owner's own queue: a second socket on the same port (SO_REUSEPORT), connect()ed to the owner
+  // while a session lasts, so the kernel delivers the owner's datagrams there and a flood from others
+  // fills only sock_'s queue. Between sessions it is connected to sock_'s own address (silent).
+  int owner_sock_ = -1;
+  sockaddr_in bound_addr_{};
+  bool drain(int fd, double now_s, std::int64_t budget_end);
+  void isolate_owner(const sockaddr_in* owner);
   int bound_port_ = 0;
   std::vector<sockaddr_in> subscribers_;
   std::vector<SourceFilter> allow_;
