@@ -82,6 +82,56 @@ def test_result_source_replays(tmp_path, arm):
     assert src.latest().time > f.time
 
 
+def test_result_source_pause_and_seek(tmp_path, arm):
+    from armrt.view import ResultSource
+    arm.reset()
+    res = arm.simulate({"elbow_flexors": 0.3}, duration=0.3, record_every=5)
+    src = ResultSource(res)
+    src.start()
+    src.set_paused(True)
+    src.seek(0.2)
+    f0 = src.latest()
+    time.sleep(0.1)
+    f1 = src.latest()
+    assert f0.time == f1.time == pytest.approx(0.2, abs=0.006)
+    src.set_paused(False)
+    time.sleep(0.05)
+    assert src.latest().time != f1.time
+
+
+def test_viewer_offline_controls(arm):
+    pytest.importorskip("viser", reason="viser is not installed (pip install viser)")
+    from armrt.view import ResultSource, SimulationSource, serve
+    arm.reset()
+    res = arm.simulate({"elbow_flexors": 0.3}, duration=0.3, record_every=5)
+    v = serve(ResultSource(res), host="127.0.0.1", port=_free_port(), block=False)
+    try:
+        v.controls["time"].value = 0.1          # scrubbing holds the frame there
+        assert v.controls["pause"].value and v.source.paused
+        assert v.source.latest().time == pytest.approx(0.1, abs=0.006)
+    finally:
+        v.stop()
+    v = serve(SimulationSource(), host="127.0.0.1", port=_free_port(), block=False)
+    try:
+        ef = arm.indices("elbow_flexors")
+        v.controls["manual"].value = True
+        v.controls["excitation:elbow_flexors"].value = 0.4
+        assert (v.source.manual[ef] == 0.4).all() and v.source.manual.sum() == pytest.approx(0.4 * len(ef))
+        deadline = time.monotonic() + 5
+        while not np.allclose(v.source.arm.excitation[ef], 0.4) and time.monotonic() < deadline:
+            time.sleep(0.02)
+        np.testing.assert_allclose(v.source.arm.excitation[ef], 0.4)
+        v.controls["pause"].value = True
+        time.sleep(0.1)
+        t0 = v.source.latest().time
+        time.sleep(0.2)
+        assert v.source.latest().time == t0
+        v.controls["manual"].value = False
+        assert v.source.manual is None
+    finally:
+        v.stop()
+
+
 def test_udp_source_decodes_state_packets(geom):
     realtime = pytest.importorskip("armrt.realtime", reason="armrt.realtime (the armrt-rt codec) is not built")
     from armrt.view import UdpSource
@@ -283,6 +333,7 @@ def test_live_page_in_headless_chromium(viewer, tmp_path):
     t = [float(s.split("t =")[1].split("s")[0]) for s in (text0, text1)]
     assert t[1] > t[0], (t, "the page did not update")
     assert "GHstab" in text1 and "bicb" in text1
+    assert "pause" in text1 and "excitation (manual)" in text1 and "elbow flexion" in text1
     # The arm is drawn: coloured bone pixels, including the hand's magenta.
     m0, m1 = _arm_mask(img0), _arm_mask(img1)
     assert m0.sum() > 500 and m1.sum() > 500, (m0.sum(), m1.sum())

@@ -70,7 +70,8 @@ class SimulationSource:
     """An `armrt.Arm` stepped in a background thread, paced to wall-clock time x `speed`.
 
     excitation: f(t) -> anything `Arm.set_excitation` takes, or a constant; default demo_excitation.
-    A diverged simulation restarts from the rest posture."""
+    `set_manual({group: value})` overrides it (the viewer's excitation sliders; None: back to it);
+    `set_paused(True)` holds the simulation. A diverged simulation restarts from the rest posture."""
 
     def __init__(self, arm=None, excitation: Callable | dict | None = None, model: str = "das2",
                  integrator: str | None = None, dt: float = 1e-3, speed: float = 1.0, chunk: float = 0.01):
@@ -86,6 +87,27 @@ class SimulationSource:
         self._thread: threading.Thread | None = None
         self.restarts = 0
         self.error: BaseException | None = None
+        self.manual: np.ndarray | None = None   # (n_elements,) held excitation, or None
+        self._paused = threading.Event()
+
+    @property
+    def paused(self) -> bool:
+        return self._paused.is_set()
+
+    def set_paused(self, paused: bool) -> None:
+        (self._paused.set if paused else self._paused.clear)()
+
+    def set_manual(self, excitation: dict | None) -> None:
+        """Excitations by group/muscle/element name held constant (None: back to the `excitation` source).
+        An element in several named groups takes the largest of their values, as in the runner."""
+        if excitation is None:
+            self.manual = None
+            return
+        u = np.zeros(len(self.element_names))
+        for name, v in excitation.items():
+            ix = self.arm.indices(name)
+            u[ix] = np.maximum(u[ix], float(v))
+        self.manual = u
 
     def _snapshot(self) -> Frame:
         return Frame(time=self.arm.time, q=self.arm.q.copy(), activation=self.arm.activation.copy(),
@@ -96,7 +118,14 @@ class SimulationSource:
         try:
             t_wall0, t_sim0 = time.perf_counter(), self.arm.time
             while not self._stop.is_set():
-                u = self.excitation(self.arm.time) if callable(self.excitation) else self.excitation
+                if self._paused.is_set():
+                    self._stop.wait(0.02)
+                    t_wall0, t_sim0 = time.perf_counter(), self.arm.time   # no catching up after a pause
+                    continue
+                if self.manual is not None:
+                    u = self.manual
+                else:
+                    u = self.excitation(self.arm.time) if callable(self.excitation) else self.excitation
                 self.arm.set_excitation(u)
                 try:
                     self.arm.step(self.steps_per_chunk)
@@ -129,7 +158,8 @@ class SimulationSource:
 
 
 class ResultSource:
-    """A saved `Result` replayed in real time x `speed`, looping."""
+    """A saved `Result` replayed in real time x `speed`, looping; `set_paused`, `seek(t)` (the viewer's
+    pause box and time slider)."""
 
     def __init__(self, result, speed: float = 1.0, loop: bool = True):
         if isinstance(result, (str, bytes)) or hasattr(result, "__fspath__"):
@@ -139,18 +169,40 @@ class ResultSource:
         self.model = result.model or "das2"
         self.element_names = list(result.element_names)
         self.speed, self.loop = float(speed), loop
-        self._t0 = None
+        self._t0 = None          # wall time at which playback (re)started
+        self._pos0 = 0.0         # playback position (s after the first sample) at _t0
+        self.paused = False
+
+    @property
+    def span(self) -> tuple[float, float]:
+        return float(self.result.time[0]), float(self.result.time[-1])
 
     def start(self) -> None:
         self._t0 = time.perf_counter()
+
+    def _position(self) -> float:
+        span = self.span[1] - self.span[0]
+        pos = self._pos0 if self.paused else self._pos0 + (time.perf_counter() - self._t0) * self.speed
+        return pos % span if self.loop and span > 0 else min(pos, span)
+
+    def set_paused(self, paused: bool) -> None:
+        if self._t0 is None:
+            self.start()
+        self._pos0, self._t0 = self._position(), time.perf_counter()
+        self.paused = bool(paused)
+
+    def seek(self, t: float) -> None:
+        """Shows the sample at time t (s, the result's clock); playback continues from there unless paused."""
+        if self._t0 is None:
+            self.start()
+        lo, hi = self.span
+        self._pos0, self._t0 = float(np.clip(t, lo, hi)) - lo, time.perf_counter()
 
     def latest(self) -> Frame | None:
         r = self.result
         if self._t0 is None or len(r.time) == 0:
             return None
-        span = float(r.time[-1] - r.time[0])
-        t = (time.perf_counter() - self._t0) * self.speed
-        t = (t % span if self.loop and span > 0 else min(t, span)) + float(r.time[0])
+        t = self._position() + float(r.time[0])
         k = int(np.clip(np.searchsorted(r.time, t, side="right") - 1, 0, len(r.time) - 1))
         return Frame(time=float(r.time[k]), q=np.asarray(r.q[k]), activation=np.asarray(r.activation[k]),
                      gh_stab=float(r.gh_stab[k]))
@@ -318,6 +370,8 @@ class Viewer:
         gui.configure_theme(control_width="medium")
         self._status = gui.add_markdown("starting...")
         self._stab_bar = gui.add_progress_bar(0.0, color="green")
+        self.controls: dict = {}
+        self._add_controls(gui)
         self._stab_plot = gui.add_html(stab_plot_svg([], []))
         self._angles = gui.add_html(self._angles_html(None))
         self._bars = gui.add_html(self._activation_html(None))
@@ -330,6 +384,39 @@ class Viewer:
             client.camera.up_direction = (0.0, 1.0, 0.0)
             client.camera.position = tuple(centre + np.array([0.2, 0.08, -0.55]))
             client.camera.look_at = tuple(centre)
+
+    def _add_controls(self, gui) -> None:
+        """Offline sources: pause; a time slider for a saved result; excitation sliders per group for a
+        simulation. (The real-time runner is driven by its controller, not from the page.)"""
+        src = self.source
+        if hasattr(src, "set_paused"):
+            pause = gui.add_checkbox("pause", initial_value=False)
+            pause.on_update(lambda _: src.set_paused(pause.value))
+            self.controls["pause"] = pause
+        if hasattr(src, "seek"):
+            lo, hi = src.span
+            scrub = gui.add_slider("time (s)", min=lo, max=max(hi, lo + 1e-3), step=max((hi - lo) / 1000, 1e-4),
+                                   initial_value=lo)
+
+            def _seek(_) -> None:
+                src.seek(scrub.value)
+                if "pause" in self.controls and not self.controls["pause"].value:
+                    self.controls["pause"].value = True   # scrubbing holds the frame
+            scrub.on_update(_seek)
+            self.controls["time"] = scrub
+        if hasattr(src, "set_manual"):
+            with gui.add_folder("excitation (manual)", expand_by_default=False):
+                manual = gui.add_checkbox("use sliders", initial_value=False)
+                sliders = {g: gui.add_slider(g, min=0.0, max=1.0, step=0.01, initial_value=0.0)
+                           for g, _ in self.geom.info["groups"]}
+
+            def _apply(_) -> None:
+                src.set_manual({g: h.value for g, h in sliders.items()} if manual.value else None)
+            manual.on_update(_apply)
+            for h in sliders.values():
+                h.on_update(_apply)
+            self.controls["manual"] = manual
+            self.controls.update({f"excitation:{g}": h for g, h in sliders.items()})
 
     def _bone_segments(self, pts: np.ndarray) -> np.ndarray:
         return ArmGeometry.segments(pts).astype(np.float32)
