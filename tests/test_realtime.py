@@ -381,6 +381,22 @@ def test_ownership_counters_release_and_no_state_after_timeout():
     assert k["sessions"] == 3 and k["owner_changes"] == 3 and k["releases"] >= 1
 
 
+def test_one_packet_does_not_bring_the_state_stream_back_for_good():
+    """The measured fault: after the safety timeout, one 96-byte packet brought back 100 state packets/s
+    indefinitely. Now a packet that claims the session gets state only while its session lasts."""
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=100, input_timeout=0.1) as s, \
+            rt.UdpClient(s.port, mapping="groups") as c:
+        c.send({"rotator_cuff": 0.03})             # hello, offer, one excitation: a session of one packet
+        time.sleep(0.5)
+        got = []
+        while (st := c.recv_state(timeout=0.0)) is not None:
+            got.append(st)
+        # At most the timeout's worth (0.1 s at 100 Hz, plus the last one flagged "no session").
+        assert 1 <= len(got) <= 13 and got[-1].timed_out, len(got)
+        assert c.recv_state(timeout=0.3) is None
+        assert s.stats()["packets"]["timeouts"] == 1
+
+
 def test_captured_packet_is_not_replayed_after_a_timeout():
     with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=0.1) as s, \
             rt.UdpClient(s.port, mapping="groups") as c:
