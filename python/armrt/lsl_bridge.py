@@ -220,15 +220,16 @@ class LslBridge:
                 except TimeoutError as e:
                     self.warn("no-session", f"the runner gives this bridge no session: {e}")
         bad0 = self.client.bad_packets + self.client.foreign_packets
-        while self.client._pump(0.0 if self.client._states else 0.002):  # the bridge's pace: <= 2 ms idle
-            pass
+        if self.client.poll(0.002):  # the bridge's pace: at most 2 ms idle, then drain without waiting
+            while self.client.poll(0.0):
+                pass
         bad = self.client.bad_packets + self.client.foreign_packets - bad0
         if bad:
             self.bad += bad
             self.warn("bad-packets", "dropped datagrams on the state port that are not the runner's valid "
                                      "state packets (counted in .bad)")
-        while self.client._states:
-            self._publish(self.client._states.popleft())
+        for st in self.client.take_states():
+            self._publish(st)
 
     def _publish(self, st: State) -> None:
         if self.forces and st.muscle_force is None:

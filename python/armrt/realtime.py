@@ -345,6 +345,19 @@ class UdpClient:
             self.bad_packets += 1
         return True
 
+    def poll(self, timeout: float | None = 0.0) -> bool:
+        """Reads one datagram if one comes within timeout s (offers update .session, state packets are
+        queued for recv_state / take_states); True if one was read."""
+        return self._pump(timeout)
+
+    def take_states(self) -> list[State]:
+        """The state packets read so far and not yet returned, oldest first."""
+        out = list(self._states)
+        self._states.clear()
+        if out:
+            self.last_state = out[-1]
+        return out
+
     def join(self, timeout: float = 1.0) -> int:
         """Asks the runner for its session id and waits for the offer; returns it. TimeoutError if
         none comes (the runner is not there, another controller owns the session, --allow or the key
