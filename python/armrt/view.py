@@ -542,8 +542,12 @@ def _cmd_view(args) -> int:
         source = ResultSource(args.result, speed=args.speed)
     elif args.udp:
         from .realtime import parse_endpoint, read_key_file
-        host, port = parse_endpoint(args.udp)
-        source = UdpSource(host, port, model=args.model, key=read_key_file(args.key_file) if args.key_file else None)
+        try:
+            host, port = parse_endpoint(args.udp)
+            key = read_key_file(args.key_file) if args.key_file else None
+        except (ValueError, OSError) as e:
+            raise SystemExit(f"armrt view: {e}") from None
+        source = UdpSource(host, port, model=args.model, key=key)
     else:
         source = SimulationSource(model=args.model, integrator=args.integrator, dt=args.dt, speed=args.speed)
     serve(source, host=args.host, port=args.port, fps=args.fps, lines_of_action=not args.no_lines,
