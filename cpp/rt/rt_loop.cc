@@ -175,6 +175,18 @@ RtLoop::RtLoop(const RtConfig& config) : cfg_(config) {
     if (sock_ < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
     if (!cfg_.listen.empty()) {
       sockaddr_in a = parse_endpoint(cfg_.listen);
+      if (a.sin_port != 0) {
+        // SO_REUSEPORT below would let a second runner share a fixed port (and half the packets):
+        // a plain bind first fails as it always did if anything holds the port.
+        const int probe = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+        const bool taken = probe >= 0 && ::bind(probe, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0;
+        const int err = errno;
+        if (probe >= 0) ::close(probe);
+        if (taken) {
+          ::close(sock_);
+          throw std::runtime_error("bind " + cfg_.listen + ": " + std::strerror(err));
+        }
+      }
       const int one = 1;
       ::setsockopt(sock_, SOL_SOCKET, SO_REUSEPORT, &one, sizeof one);  // the owner's socket joins it
       if (::bind(sock_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) {

@@ -469,6 +469,13 @@ TEST_CASE("sessions: a second controller cannot take over, gets no state; releas
   CHECK(::recv(b.s, buf, sizeof buf, MSG_DONTWAIT) < 0);
 }
 
+TEST_CASE("a second runner cannot share a fixed port") {
+  RtConfig c = test_config();
+  RtLoop first(c);
+  c.listen = "127.0.0.1:" + std::to_string(first.bound_port());
+  CHECK_THROWS_WITH_AS(RtLoop{c}, doctest::Contains("in use"), std::runtime_error);
+}
+
 TEST_CASE("sessions: --allow and --state-to subscribers") {
   RtConfig c = test_config();
   c.state_rate_hz = 1000;
