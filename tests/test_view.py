@@ -82,6 +82,56 @@ def test_result_source_replays(tmp_path, arm):
     assert src.latest().time > f.time
 
 
+def test_result_source_pause_and_seek(tmp_path, arm):
+    from armrt.view import ResultSource
+    arm.reset()
+    res = arm.simulate({"elbow_flexors": 0.3}, duration=0.3, record_every=5)
+    src = ResultSource(res)
+    src.start()
+    src.set_paused(True)
+    src.seek(0.2)
+    f0 = src.latest()
+    time.sleep(0.1)
+    f1 = src.latest()
+    assert f0.time == f1.time == pytest.approx(0.2, abs=0.006)
+    src.set_paused(False)
+    time.sleep(0.05)
+    assert src.latest().time != f1.time
+
+
+def test_viewer_offline_controls(arm):
+    pytest.importorskip("viser", reason="viser is not installed (pip install viser)")
+    from armrt.view import ResultSource, SimulationSource, serve
+    arm.reset()
+    res = arm.simulate({"elbow_flexors": 0.3}, duration=0.3, record_every=5)
+    v = serve(ResultSource(res), host="127.0.0.1", port=_free_port(), block=False)
+    try:
+        v.controls["time"].value = 0.1          # scrubbing holds the frame there
+        assert v.controls["pause"].value and v.source.paused
+        assert v.source.latest().time == pytest.approx(0.1, abs=0.006)
+    finally:
+        v.stop()
+    v = serve(SimulationSource(), host="127.0.0.1", port=_free_port(), block=False)
+    try:
+        ef = arm.indices("elbow_flexors")
+        v.controls["manual"].value = True
+        v.controls["excitation:elbow_flexors"].value = 0.4
+        assert (v.source.manual[ef] == 0.4).all() and v.source.manual.sum() == pytest.approx(0.4 * len(ef))
+        deadline = time.monotonic() + 5
+        while not np.allclose(v.source.arm.excitation[ef], 0.4) and time.monotonic() < deadline:
+            time.sleep(0.02)
+        np.testing.assert_allclose(v.source.arm.excitation[ef], 0.4)
+        v.controls["pause"].value = True
+        time.sleep(0.1)
+        t0 = v.source.latest().time
+        time.sleep(0.2)
+        assert v.source.latest().time == t0
+        v.controls["manual"].value = False
+        assert v.source.manual is None
+    finally:
+        v.stop()
+
+
 def test_udp_source_decodes_state_packets(geom):
     realtime = pytest.importorskip("armrt.realtime", reason="armrt.realtime (the armrt-rt codec) is not built")
     from armrt.view import UdpSource
@@ -89,20 +139,51 @@ def test_udp_source_decodes_state_packets(geom):
     src.start()
     try:
         q = geom.rest + 0.1
-        values = np.concatenate([[1.25], q, np.zeros(5), np.zeros(3), [1.7, -1]])
+        exc = np.linspace(0, 1, len(src.element_names))
+        values = np.concatenate([[1.25], q, np.zeros(5), np.zeros(3), [1.7, -1, 0.004, 2], exc])
+        assert len(values) == realtime.STATE_FIXED_VALUES + len(exc)
         with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as tx:
             tx.sendto(b"not a packet", ("127.0.0.1", src.port))
-            tx.sendto(realtime.encode_packet(realtime.STATE, 7, values), ("127.0.0.1", src.port))
+            tx.sendto(realtime.encode_packet(realtime.STATE, 7, values, flags=realtime.FLAG_EXCITATION |
+                                             realtime.FLAG_OVERRUN), ("127.0.0.1", src.port))
             deadline = time.monotonic() + 5
             while src.latest() is None and time.monotonic() < deadline:
                 time.sleep(0.02)
         f = src.latest()
         assert f is not None, "no state decoded"
-        assert f.time == 1.25 and f.gh_stab == 1.7 and f.activation is None
+        assert f.time == 1.25 and f.gh_stab == 1.7 and f.lag == 0.004 and f.overrun
+        assert f.kind == "excitation received"
+        np.testing.assert_allclose(f.activation, exc)
         np.testing.assert_allclose(f.q, q)
         assert src.bad_packets == 1
     finally:
         src.close()
+
+
+def test_udp_source_binds_loopback_by_default():
+    pytest.importorskip("armrt.realtime", reason="armrt.realtime is not built")
+    from armrt.view import UdpSource
+    src = UdpSource(port=0)
+    try:
+        assert src._sock.getsockname()[0] == "127.0.0.1"
+    finally:
+        src.close()
+    src = UdpSource("", 0)          # ":PORT" on the command line
+    try:
+        assert src._sock.getsockname()[0] == "127.0.0.1"
+    finally:
+        src.close()
+
+
+def test_stab_plot_has_the_reference_lines():
+    from armrt.view import stab_plot_svg
+    t = np.linspace(0, 20, 200)
+    svg = stab_plot_svg(t, 0.7 + 0.2 * np.sin(t))
+    assert svg.count("<line") == 2 and ">1</text>" in svg and ">0.5</text>" in svg
+    pts = svg.split('points="')[1].split('"')[0].split()
+    assert len(pts) == 200
+    xs = np.array([float(p.split(",")[0]) for p in pts])
+    assert (xs[t < 10] == xs.min()).all()   # older than the window: pinned at the left edge
 
 
 def test_udp_source_with_the_runner():
@@ -115,11 +196,13 @@ def test_udp_source_with_the_runner():
     src = UdpSource("127.0.0.1", 0)
     src.start()
     try:
-        with realtime.RealtimeSession(state_to=f"127.0.0.1:{src.port}", state_rate_hz=100, duration=1.0):
+        with realtime.RealtimeSession(state_to=f"127.0.0.1:{src.port}", state_rate_hz=100, duration=1.0,
+                                      send_excitation=True):
             deadline = time.monotonic() + 5
             while src.packets < 20 and time.monotonic() < deadline:
                 time.sleep(0.05)
         assert src.packets >= 20 and src.latest().q.shape == (5,)
+        assert src.latest().activation.shape == (len(src.element_names),) and src.latest().lag is not None
     finally:
         src.close()
 
@@ -195,18 +278,20 @@ def _arm_mask(img: np.ndarray) -> np.ndarray:
     return sat > 80
 
 
-@pytest.mark.skipif(_chromium() is None, reason="chromium is not installed (Debian package 'chromium')")
-def test_live_page_in_headless_chromium(viewer, tmp_path):
+import contextlib  # noqa: E402
+
+
+@contextlib.contextmanager
+def _chromium_page(url: str, tmp_path):
+    """A headless Chromium showing url, driven over DevTools; yields a _Page."""
     pytest.importorskip("websocket", reason="websocket-client is not installed (pip install websocket-client)")
     pytest.importorskip("PIL", reason="Pillow is not installed")
     port = _free_port()
     profile = tmp_path / "profile"
     cmd = [_chromium(), "--headless=new", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
            "--no-first-run", "--disable-extensions", "--window-size=1000,700", f"--remote-debugging-port={port}",
-           "--remote-allow-origins=*", f"--user-data-dir={profile}", viewer.url]
+           "--remote-allow-origins=*", f"--user-data-dir={profile}", url]
     proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    out_dir = Path(os.environ.get("ARMRT_SCREENSHOT_DIR", tmp_path))
-    out_dir.mkdir(parents=True, exist_ok=True)
     try:
         deadline = time.monotonic() + 20
         ws_url = None
@@ -218,7 +303,20 @@ def test_live_page_in_headless_chromium(viewer, tmp_path):
             except OSError:
                 pass
             time.sleep(0.2)
-        page = _Page(ws_url)
+        yield _Page(ws_url)
+    finally:
+        proc.terminate()
+        try:
+            proc.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+
+
+@pytest.mark.skipif(_chromium() is None, reason="chromium is not installed (Debian package 'chromium')")
+def test_live_page_in_headless_chromium(viewer, tmp_path):
+    out_dir = Path(os.environ.get("ARMRT_SCREENSHOT_DIR", tmp_path))
+    out_dir.mkdir(parents=True, exist_ok=True)
+    with _chromium_page(viewer.url, tmp_path) as page:
         deadline = time.monotonic() + 30
         while not page.eval("!!document.querySelector('canvas') && document.body.innerText.includes('GHstab')"):
             assert time.monotonic() < deadline, "the page never showed the scene and the GHstab panel"
@@ -231,16 +329,11 @@ def test_live_page_in_headless_chromium(viewer, tmp_path):
         img1, png1 = page.screenshot()
         (out_dir / "view_0.png").write_bytes(png0)
         (out_dir / "view_1.png").write_bytes(png1)
-    finally:
-        proc.terminate()
-        try:
-            proc.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            proc.kill()
     # The panel shows live values: the time advanced between the two screenshots, activations listed.
     t = [float(s.split("t =")[1].split("s")[0]) for s in (text0, text1)]
     assert t[1] > t[0], (t, "the page did not update")
     assert "GHstab" in text1 and "bicb" in text1
+    assert "pause" in text1 and "excitation (manual)" in text1 and "elbow flexion" in text1
     # The arm is drawn: coloured bone pixels, including the hand's magenta.
     m0, m1 = _arm_mask(img0), _arm_mask(img1)
     assert m0.sum() > 500 and m1.sum() > 500, (m0.sum(), m1.sum())
@@ -249,3 +342,78 @@ def test_live_page_in_headless_chromium(viewer, tmp_path):
     # ... and it moves: its pixels differ between the frames.
     changed = (m0 ^ m1).sum()
     assert changed > 100, f"only {changed} arm pixels changed between frames"
+
+
+def _panel_value(text: str, name: str) -> float:
+    """The number after a muscle's name in the activation panel's text."""
+    lines = [ln for ln in text.splitlines() if ln.strip()]
+    k = next(i for i, ln in enumerate(lines) if ln.strip() == name or ln.strip().startswith(name + " "))
+    for ln in lines[k:k + 3]:
+        for tok in ln.split():
+            try:
+                return float(tok)
+            except ValueError:
+                pass
+    raise AssertionError(f"no value for {name} in the panel: {lines[k:k + 3]}")
+
+
+@pytest.mark.skipif(_chromium() is None, reason="chromium is not installed (Debian package 'chromium')")
+def test_realtime_page_in_headless_chromium(tmp_path):
+    """A lab's view of the runner: excitations received, GHstab plot with the 1 and 0.5 lines, labelled
+    joint angles in degrees, lag visible, the arm framed large, moving when an excitation is sent."""
+    pytest.importorskip("viser", reason="viser is not installed (pip install viser)")
+    realtime = pytest.importorskip("armrt.realtime", reason="armrt.realtime is not built")
+    import threading
+    from armrt.view import UdpSource, serve
+    src = UdpSource(port=0)
+    v = serve(src, host="127.0.0.1", port=_free_port(), fps=30, block=False)
+    out_dir = Path(os.environ.get("ARMRT_SCREENSHOT_DIR", tmp_path))
+    out_dir.mkdir(parents=True, exist_ok=True)
+    stop = threading.Event()
+    level = {"elbow_flexors": 0.0}
+    try:
+        with realtime.RealtimeSession(listen="127.0.0.1:0", state_to=f"127.0.0.1:{src.port}", state_rate_hz=100,
+                                      send_excitation=True, input_timeout=0.5, realtime=False) as s, \
+                realtime.UdpClient(s.port, mapping="groups") as c:
+            def control():
+                while not stop.is_set():
+                    c.send({"rotator_cuff": 0.03, **level})
+                    c.latest_state(timeout=0.02)
+                    time.sleep(0.01)
+            th = threading.Thread(target=control, daemon=True)
+            th.start()
+            with _chromium_page(v.url, tmp_path) as page:
+                deadline = time.monotonic() + 30
+                while not page.eval("!!document.querySelector('canvas') && "
+                                    "document.body.innerText.includes('excitation received')"):
+                    assert time.monotonic() < deadline, "the page never showed the received excitations"
+                    time.sleep(0.3)
+                time.sleep(1.5)
+                text0 = page.eval("document.body.innerText")
+                img0, png0 = page.screenshot()
+                level["elbow_flexors"] = 0.3        # the controller flexes the elbow
+                time.sleep(2.0)
+                text1 = page.eval("document.body.innerText")
+                img1, png1 = page.screenshot()
+                plot = page.eval("(() => { const s = document.querySelector('svg[data-armrt=gh-stab-plot]');"
+                                 " return s ? [s.querySelectorAll('line').length, "
+                                 "s.querySelectorAll('polyline').length, s.textContent] : null })()")
+            stop.set()
+            th.join(timeout=2)
+        (out_dir / "view_rt_0.png").write_bytes(png0)
+        (out_dir / "view_rt_1.png").write_bytes(png1)
+    finally:
+        stop.set()
+        v.stop()
+    assert _panel_value(text0, "bicb") == 0.0
+    assert _panel_value(text1, "bicb") > 0.2, text1       # the excitation sent is shown
+    for label in ("plane of elevation", "elevation", "axial rotation", "elbow flexion", "pronation-supination",
+                  "lag behind wall time"):
+        assert label in text1, label
+    assert "\u00b0" in text1                              # degrees
+    assert plot is not None and plot[0] == 2 and plot[1] == 1 and "0.5" in plot[2], plot
+    # The arm is framed at a useful size and it moved.
+    m0, m1 = _arm_mask(img0), _arm_mask(img1)
+    rows = np.where(m1.any(axis=1))[0]
+    assert rows.size and (rows[-1] - rows[0]) > 0.3 * img1.shape[0], "the arm fills too little of the view"
+    assert (m0 ^ m1).sum() > 300

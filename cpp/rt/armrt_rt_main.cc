@@ -4,14 +4,17 @@
 #include <signal.h>
 #include <time.h>
 
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "hmac.h"
 #include "rt_loop.h"
 
 using armrt::rt::RtConfig;
@@ -25,91 +28,96 @@ void on_signal(int) {
   if (g_loop) g_loop->request_stop_signal();
 }
 
-const char* kUsage =
-    "usage: armrt-rt [options]\n"
-    "  --rate HZ            loop rate (default 1000)\n"
-    "  --integrator NAME    ros2 (default: linearly implicit, one step per 1 ms), rk4 or euler\n"
-    "  --dt S               largest integration step; each cycle takes ceil(1/rate / dt) substeps\n"
-    "                       (default 0.00017 for rk4, 0.0001 for euler)\n"
-    "  --model NAME         compiled-in model (default das2)\n"
-    "  --q0 A,B,C,D,E       initial joint angles, rad (default: rest posture)\n"
-    "  --duration S         run for S seconds (default 0: until SIGINT/SIGTERM)\n"
-    "  --priority P         SCHED_FIFO priority 1..99 (default 80)\n"
-    "  --no-rt              normal scheduling on purpose (no SCHED_FIFO)\n"
-    "  --no-mlock           do not mlockall\n"
-    "  --require-rt         exit with status 3 if SCHED_FIFO or mlockall is not available\n"
-    "  --cpu N              pin the loop thread to CPU N\n"
-    "  --busy-wait US       wake US microseconds early and spin to the deadline\n"
-    "  --listen HOST:PORT   UDP excitation input (port 0: any free port, printed)\n"
-    "  --state-to HOST:PORT state packets to this address (default: the last valid controller)\n"
-    "  --state-rate HZ      state packets per second (default 100; 0: none)\n"
-    "  --forces             append the muscle forces to state packets\n"
-    "  --timeout S          input silence after which the excitation falls to zero (default 0.1)\n"
-    "  --channels A,B,...   names (element, muscle or group) of the channel mapping (packet type 4)\n"
-    "  --records N          per-cycle records kept (default: duration * rate, or 10 min)\n"
-    "  --json PATH          write the statistics as JSON\n"
-    "  --quiet              print only the summary\n";
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) if (!item.empty()) out.push_back(item);
-  return out;
-}
-
-double to_double(const std::string& opt, const std::string& v) {
-  char* end = nullptr;
-  const double x = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0') throw std::invalid_argument(opt + ": '" + v + "' is not a number");
-  return x;
-}
-
 void print_pct(const char* name, const armrt::rt::Percentiles& p) {
   std::printf("  %-8s min %8.1f  median %8.1f  p99 %8.1f  p99.9 %8.1f  max %9.1f  us\n", name, p.min / 1e3,
               p.median / 1e3, p.p99 / 1e3, p.p999 / 1e3, p.max / 1e3);
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] != b[j - 1] ? 1 : 0)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// "unknown option --stat-rate; did you mean --state-rate?"
+std::string unknown_option_message(const CLI::App& app, const std::string& arg) {
+  const std::string given = arg.substr(0, arg.find('='));
+  std::string best;
+  std::size_t best_d = 1000;
+  for (const CLI::Option* o : app.get_options()) {
+    for (const std::string& n : o->get_lnames()) {
+      const std::size_t d = edit_distance(given, "--" + n);
+      if (d < best_d) { best_d = d; best = "--" + n; }
+    }
+  }
+  std::string msg = "unknown option or argument '" + arg + "'";
+  if (!best.empty() && best_d <= std::max<std::size_t>(3, given.size() / 3)) msg += "; did you mean " + best + "?";
+  return msg;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   RtConfig cfg;
-  std::string json_path;
-  bool quiet = false;
+  std::string json_path, key_file;
+  bool quiet = false, no_rt = false, no_mlock = false;
+  CLI::App app{"armrt-rt: runs the arm model at a fixed rate on a SCHED_FIFO thread, with UDP excitation input "
+               "and state output (docs/realtime.md). Prints TET / wake-up latency percentiles and overruns on exit."};
+  app.allow_extras(true);  // unknown options are reported below with the closest known one
+  app.add_option("--rate", cfg.rate_hz, "loop rate, Hz, 1..10000")->capture_default_str();
+  app.add_option("--integrator", cfg.integrator, "ros2 (linearly implicit, one step per 1 ms), rk4 or euler "
+                                                 "(armrt::parse_integrator; not cvode)")->capture_default_str();
+  app.add_option("--dt", cfg.dt, "largest integration step, s (<= 1/rate); each cycle takes ceil(1/rate / dt) substeps "
+                                  "(default: ros2 0.001, rk4 0.00017, euler 0.0001)");
+  app.add_option("--model", cfg.model, "compiled-in model")->capture_default_str();
+  app.add_option("--q0", cfg.q0, "initial joint angles, rad (5 values, comma-separated; default: rest posture)")
+      ->delimiter(',')->expected(5);
+  app.add_option("--duration", cfg.duration, "run for S seconds (0: until SIGINT/SIGTERM)")->capture_default_str();
+  app.add_option("--priority", cfg.priority, "SCHED_FIFO priority 1..99")->capture_default_str();
+  app.add_flag("--no-rt", no_rt, "normal scheduling on purpose (no SCHED_FIFO)");
+  app.add_flag("--no-mlock", no_mlock, "do not mlockall");
+  app.add_flag("--require-rt", cfg.require_rt, "exit with status 3 if SCHED_FIFO or mlockall is not available");
+  app.add_option("--cpu", cfg.cpu, "pin the loop thread to CPU N");
+  app.add_option("--busy-wait", cfg.busy_wait_us, "wake US microseconds early and spin to the deadline");
+  app.add_option("--max-lag", cfg.max_lag, "stop (state flagged stopped + error) once simulated time lags wall time "
+                                           "by more than S seconds (0: never)")->capture_default_str();
+  app.add_option("--listen", cfg.listen, "UDP excitation input HOST:PORT (port 0: any free port, printed)");
+  app.add_option("--state-to", cfg.state_to, "subscriber HOST:PORT that always gets state packets (repeatable); "
+                                             "the session's owner gets them too")->take_all();
+  app.add_option("--allow", cfg.allow, "only HOST or HOST:PORT may own the session (repeatable)")->take_all();
+  app.add_option("--key-file", key_file, "shared key (>= 16 bytes) for HMAC-SHA256 on every packet");
+  app.add_option("--state-rate", cfg.state_rate_hz, "state packets per second, rate / an integer (0: none)")->capture_default_str();
+  app.add_flag("--forces", cfg.send_forces, "append the muscle forces to state packets");
+  app.add_flag("--excitations", cfg.send_excitation, "append the applied element excitations to state packets");
+  app.add_option("--timeout", cfg.input_timeout, "s of input silence after which the session ends and the excitation "
+                                                 "falls to zero (2 periods .. 10 s)")->capture_default_str();
+  app.add_option("--channels", cfg.channels, "names (element, muscle or group) of the channel mapping (packet type 4)")
+      ->delimiter(',');
+  app.add_option("--rx-budget", cfg.rx_budget_us, "receive work per cycle, us (default: min(150, period / 4))");
+  app.add_option("--json", json_path, "write the statistics as JSON");
+  app.add_flag("--quiet", quiet, "print only the summary");
   try {
-    for (int k = 1; k < argc; ++k) {
-      const std::string a = argv[k];
-      auto next = [&]() -> std::string {
-        if (k + 1 >= argc) throw std::invalid_argument(a + " needs a value");
-        return argv[++k];
-      };
-      if (a == "-h" || a == "--help") { std::fputs(kUsage, stdout); return 0; }
-      else if (a == "--rate") cfg.rate_hz = to_double(a, next());
-      else if (a == "--integrator") cfg.integrator = next();
-      else if (a == "--dt") cfg.dt = to_double(a, next());
-      else if (a == "--model") cfg.model = next();
-      else if (a == "--q0") { cfg.q0.clear(); for (auto& s : split(next())) cfg.q0.push_back(to_double(a, s)); }
-      else if (a == "--duration") cfg.duration = to_double(a, next());
-      else if (a == "--priority") cfg.priority = static_cast<int>(to_double(a, next()));
-      else if (a == "--no-rt") cfg.realtime = false;
-      else if (a == "--no-mlock") cfg.lock_memory = false;
-      else if (a == "--require-rt") cfg.require_rt = true;
-      else if (a == "--cpu") cfg.cpu = static_cast<int>(to_double(a, next()));
-      else if (a == "--busy-wait") cfg.busy_wait_us = to_double(a, next());
-      else if (a == "--listen") cfg.listen = next();
-      else if (a == "--state-to") cfg.state_to = next();
-      else if (a == "--state-rate") cfg.state_rate_hz = to_double(a, next());
-      else if (a == "--forces") cfg.send_forces = true;
-      else if (a == "--timeout") cfg.input_timeout = to_double(a, next());
-      else if (a == "--channels") cfg.channels = split(next());
-      else if (a == "--records") cfg.record_capacity = static_cast<std::size_t>(to_double(a, next()));
-      else if (a == "--json") json_path = next();
-      else if (a == "--quiet") quiet = true;
-      else throw std::invalid_argument("unknown option " + a);
-    }
+    app.parse(argc, argv);
+    if (!app.remaining().empty()) throw std::invalid_argument(unknown_option_message(app, app.remaining().front()));
+    cfg.realtime = !no_rt;
+    cfg.lock_memory = !no_mlock;
     if (cfg.require_rt && !cfg.realtime) throw std::invalid_argument("--require-rt and --no-rt contradict each other");
+    if (!key_file.empty()) cfg.key = armrt::rt::read_key_file(key_file);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    std::fprintf(stderr, "armrt-rt: %s (armrt-rt --help)\n", e.what());
+    return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "armrt-rt: %s\n%s", e.what(), kUsage);
+    std::fprintf(stderr, "armrt-rt: %s (armrt-rt --help)\n", e.what());
     return 2;
   }
 
@@ -120,6 +128,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "armrt-rt: %s\n", e.what());
     return 2;
   }
+  for (const auto& w : loop->stats().warnings) std::fprintf(stderr, "armrt-rt: warning: %s\n", w.c_str());
   g_loop = loop.get();
   struct sigaction sa {};
   sa.sa_handler = on_signal;
@@ -162,16 +171,18 @@ int main(int argc, char** argv) {
               static_cast<long long>(st.cycles), st.scheduler.c_str(), st.priority,
               st.memory_locked ? "locked" : "not locked");
   const auto& k = st.packets;
-  std::printf("  packets: received %llu, applied %llu, dropped %llu, timeouts %llu, state sent %llu\n",
+  std::printf("  packets: received %llu, applied %llu, dropped %llu (foreign %llu), sessions %llu, owner changes %llu, "
+              "timeouts %llu, state sent %llu; lag %.3f s\n",
               (unsigned long long)k.received, (unsigned long long)k.applied, (unsigned long long)k.dropped(),
-              (unsigned long long)k.timeouts, (unsigned long long)k.state_sent);
+              (unsigned long long)k.foreign, (unsigned long long)k.sessions, (unsigned long long)k.owner_changes,
+              (unsigned long long)k.timeouts, (unsigned long long)k.state_sent, st.lag_s);
   std::fflush(stdout);
   if (!json_path.empty()) {
     std::ofstream f(json_path);
     f << loop->stats_json();
     if (!f) std::fprintf(stderr, "armrt-rt: could not write %s\n", json_path.c_str());
   }
-  if (st.stop_reason == "diverged") {
+  if (st.stop_reason == "diverged" || st.stop_reason == "lag") {
     std::fprintf(stderr, "armrt-rt: %s\n", st.error.c_str());
     return 1;
   }

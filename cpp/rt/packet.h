@@ -1,16 +1,19 @@
-// The armrt real-time UDP packet format, version 1 (specification: docs/realtime.md). All fields are
-// little-endian; values are IEEE-754 float64.
+// The armrt real-time UDP packet format, version 2 (specification: docs/realtime.md). This header is
+// the only definition of the layout: armrt._rt exports it to Python (armrt.realtime reads offsets,
+// sizes, types, flags and the state value names from there). All fields are little-endian; values
+// are IEEE-754 float64.
 //
 //   offset size  field
 //   0      4     magic    "ARMR" (0x41 0x52 0x4D 0x52)
-//   4      2     version  1
+//   4      2     version  2
 //   6      2     type     PacketType
 //   8      4     seq      sender's sequence number (wraps modulo 2^32)
-//   12     4     length   total packet length in bytes, = 24 + 8 * count
+//   12     4     length   total packet length in bytes, = 24 + 8 * count (+ 32 with kFlagAuth)
 //   16     2     count    number of float64 values that follow
 //   18     2     flags    PacketFlags
-//   20     4     reserved 0
+//   20     4     session  the runner's session id (0: none known yet)
 //   24     8*count values
+//   24+8*count 32 tag     HMAC-SHA256(key, bytes [0, 24 + 8 * count)), only with kFlagAuth
 #pragma once
 
 #include <cstdint>
@@ -19,29 +22,56 @@
 namespace armrt::rt {
 
 inline constexpr std::uint8_t kMagic[4] = {'A', 'R', 'M', 'R'};
-inline constexpr std::uint16_t kVersion = 1;
+inline constexpr std::uint16_t kVersion = 2;
 inline constexpr int kHeaderSize = 24;
 inline constexpr int kMaxValues = 512;
-inline constexpr int kMaxPacket = kHeaderSize + 8 * kMaxValues;
+inline constexpr int kTagSize = 32;  // HMAC-SHA256
+inline constexpr int kMaxPacket = kHeaderSize + 8 * kMaxValues + kTagSize;
+
+// Field offsets and sizes (exported to Python as armrt._rt.LAYOUT).
+struct FieldDef { const char* name; int offset, size; };
+inline constexpr FieldDef kHeaderFields[] = {
+    {"magic", 0, 4}, {"version", 4, 2}, {"type", 6, 2}, {"seq", 8, 4},
+    {"length", 12, 4}, {"count", 16, 2}, {"flags", 18, 2}, {"session", 20, 4}};
 
 enum PacketType : std::uint16_t {
-  kExcitationElements = 1,  // count = number of elements (102): one excitation per element
-  kExcitationMuscles = 2,   // count = number of muscles (22), in the model's muscle order
+  kExcitationElements = 1,  // count = number of elements of the model: one excitation per element
+  kExcitationMuscles = 2,   // count = number of muscles, in the model's muscle order
   kExcitationGroups = 3,    // count = number of groups, in the model's group order
   kExcitationChannels = 4,  // count = number of configured channels (--channels), each a name
-  kState = 16,              // runner -> controller: see state layout below
+  kRelease = 5,             // controller -> runner, count 0: the owner ends its session
+  kHello = 6,               // controller -> runner, count 0: asks for a session id (answered by kOffer)
+  kState = 16,              // runner -> controller / subscribers: see the state layout below
+  kOffer = 17,              // runner -> controller, count 0: the session id to put in excitation packets
 };
 
 enum PacketFlags : std::uint16_t {
-  kFlagForces = 1,    // state: the muscle forces follow the fixed part
-  kFlagStopped = 2,   // state: the loop has stopped (last packet); diverged if kFlagError too
-  kFlagError = 4,     // state: the simulation diverged
-  kFlagTimedOut = 8,  // state: input silence, excitation is zero
+  kFlagForces = 1,      // state: the muscle forces follow the fixed part
+  kFlagStopped = 2,     // state: the loop has stopped (last packet); diverged if kFlagError too
+  kFlagError = 4,       // state: the simulation diverged (or lagged beyond --max-lag)
+  kFlagTimedOut = 8,    // state: no session (input silence or released): excitation is zero
+  kFlagAuth = 16,       // any: a 32-byte HMAC-SHA256 tag follows the values
+  kFlagOverrun = 32,    // state: at least one cycle overran since the previous state packet
+  kFlagExcitation = 64, // state: the applied element excitations follow (after the forces, if any)
 };
 
-// State payload (values): time, q[5], qdot[5], hand_position[3] (thorax frame, m), gh_stab,
-// last applied excitation seq (as a float64; -1 if none), then muscle_force[n] if kFlagForces.
-inline constexpr int kStateFixedValues = 1 + 5 + 5 + 3 + 1 + 1;
+// State payload (values): the fixed part below, then muscle_force[n_elements] if kFlagForces, then
+// excitation[n_elements] if kFlagExcitation.
+inline constexpr const char* kStateFields[] = {
+    "time",                                   // s, simulated
+    "q0", "q1", "q2", "q3", "q4",             // rad (GHy GHz GHyy ELx PSy)
+    "qd0", "qd1", "qd2", "qd3", "qd4",        // rad/s
+    "hand_x", "hand_y", "hand_z",             // m, thorax frame
+    "gh_stab",                                // 1
+    "last_seq",                               // last applied excitation seq (-1: none in this session)
+    "lag",                                    // s, simulated time behind the wall-clock schedule
+    "overruns",                               // overrun cycles since the start
+};
+inline constexpr int kStateFixedValues = sizeof kStateFields / sizeof kStateFields[0];
+enum StateIndex : int {
+  kStTime = 0, kStQ = 1, kStQd = 6, kStHand = 11, kStGhStab = 14, kStLastSeq = 15, kStLag = 16, kStOverruns = 17,
+};
+static_assert(kStOverruns + 1 == kStateFixedValues, "state layout and field names disagree");
 
 inline void put_u16(std::uint8_t* p, std::uint16_t v) { p[0] = v & 0xff; p[1] = v >> 8; }
 inline void put_u32(std::uint8_t* p, std::uint32_t v) {
@@ -67,21 +97,23 @@ inline double get_f64(const std::uint8_t* p) {
 
 struct Header {
   std::uint16_t version = kVersion, type = 0, count = 0, flags = 0;
-  std::uint32_t seq = 0, length = 0;
+  std::uint32_t seq = 0, length = 0, session = 0;
 };
 
-// Writes header + values into buf (at least kHeaderSize + 8 * count bytes); returns the length.
+// Writes header + values into buf (at least kHeaderSize + 8 * count (+ kTagSize) bytes); returns the
+// length. With kFlagAuth in flags the length field counts the tag, which the caller appends at
+// kHeaderSize + 8 * count (HmacKey::sign).
 inline int encode(std::uint8_t* buf, std::uint16_t type, std::uint32_t seq, std::uint16_t flags,
-                  const double* values, int count) {
+                  const double* values, int count, std::uint32_t session = 0) {
   std::memcpy(buf, kMagic, 4);
   put_u16(buf + 4, kVersion);
   put_u16(buf + 6, type);
   put_u32(buf + 8, seq);
-  const int length = kHeaderSize + 8 * count;
+  const int length = kHeaderSize + 8 * count + ((flags & kFlagAuth) ? kTagSize : 0);
   put_u32(buf + 12, static_cast<std::uint32_t>(length));
   put_u16(buf + 16, static_cast<std::uint16_t>(count));
   put_u16(buf + 18, flags);
-  put_u32(buf + 20, 0);
+  put_u32(buf + 20, session);
   for (int k = 0; k < count; ++k) put_f64(buf + kHeaderSize + 8 * k, values[k]);
   return length;
 }
@@ -89,7 +121,7 @@ inline int encode(std::uint8_t* buf, std::uint16_t type, std::uint32_t seq, std:
 enum class DecodeError { kOk, kBadMagic, kBadVersion, kBadSize };
 
 // Checks the header of a received datagram of n bytes (magic, version, length field = n = 24 + 8
-// count, count <= kMaxValues) and reads it into h.
+// count (+ 32 with kFlagAuth), count <= kMaxValues) and reads it into h.
 inline DecodeError decode_header(const std::uint8_t* buf, long n, Header& h) {
   if (n < 4 || std::memcmp(buf, kMagic, 4) != 0) return DecodeError::kBadMagic;
   if (n < 6) return DecodeError::kBadSize;
@@ -101,8 +133,10 @@ inline DecodeError decode_header(const std::uint8_t* buf, long n, Header& h) {
   h.length = get_u32(buf + 12);
   h.count = get_u16(buf + 16);
   h.flags = get_u16(buf + 18);
+  h.session = get_u32(buf + 20);
+  const long tag = (h.flags & kFlagAuth) ? kTagSize : 0;
   if (h.count > kMaxValues || h.length != static_cast<std::uint32_t>(n) ||
-      static_cast<long>(kHeaderSize) + 8L * h.count != n)
+      static_cast<long>(kHeaderSize) + 8L * h.count + tag != n)
     return DecodeError::kBadSize;
   return DecodeError::kOk;
 }

@@ -1,8 +1,10 @@
 // Tests of the real-time loop: the packet codec; the hot loop (RtLoop::run_cycles) makes no heap
 // allocation, takes no pthread mutex and makes no system call besides clock_nanosleep, clock_gettime,
-// recvfrom and sendto while a sender floods it with valid and malformed packets (counting operator
+// recvmmsg and sendto while a sender floods it with valid and malformed packets (counting operator
 // new, an interposed pthread_mutex_lock and a seccomp filter that traps every other system call);
-// packet validation, hold, timeout to zero; clean stop on divergence.
+// packet validation, hold, timeout to zero; sessions (ownership, takeover, replay, release), HMAC,
+// flood from another source, lag and overrun flag; argument checks; fixed-memory percentiles; clean
+// stop on divergence.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
@@ -29,6 +31,8 @@
 #include <thread>
 #include <vector>
 
+#include "histogram.h"
+#include "hmac.h"
 #include "packet.h"
 #include "rt_loop.h"
 
@@ -96,13 +100,47 @@ void send_raw(int s, int port, const std::uint8_t* b, int n) {
   ::sendto(s, b, n, 0, reinterpret_cast<const sockaddr*>(&to), sizeof to);
 }
 
-void send_exc(int s, int port, std::uint16_t type, std::uint32_t seq, const std::vector<double>& v) {
+void send_exc(int s, int port, std::uint16_t type, std::uint32_t seq, const std::vector<double>& v,
+              std::uint32_t session = 0, const HmacKey* key = nullptr) {
   std::uint8_t b[kMaxPacket];
-  const int n = encode(b, type, seq, 0, v.data(), static_cast<int>(v.size()));
+  const std::uint16_t flags = key ? kFlagAuth : 0;
+  const int n = encode(b, type, seq, flags, v.data(), static_cast<int>(v.size()), session);
+  if (key) key->sign(b, n - kTagSize, b + n - kTagSize);
   send_raw(s, port, b, n);
 }
 
-// A sender that floods the loop with valid and malformed packets until stopped.
+// The session id in the newest offer or state packet waiting on s (0 if none); non-blocking.
+std::uint32_t poll_session(int s, std::uint32_t current = 0) {
+  std::uint8_t b[kMaxPacket];
+  for (;;) {
+    const long n = ::recv(s, b, sizeof b, MSG_DONTWAIT);
+    if (n < 0) return current;
+    Header h;
+    if (decode_header(b, n, h) == DecodeError::kOk && (h.type == kOffer || h.type == kState)) current = h.session;
+  }
+}
+
+// A controller on its own socket, driving a loop run synchronously by the test.
+struct Controller {
+  int s = udp_socket();
+  int port;
+  std::uint32_t session = 0, seq = 0;
+  const HmacKey* key = nullptr;
+  explicit Controller(int runner_port, const HmacKey* k = nullptr) : port(runner_port), key(k) {}
+  ~Controller() { ::close(s); }
+  // Hello -> one loop cycle -> offer.
+  void join(RtLoop& loop) {
+    send_exc(s, port, kHello, ++seq, {}, 0, key);
+    usleep(2000);
+    loop.run_cycles(1);
+    usleep(1000);
+    session = poll_session(s, session);
+  }
+  void send(std::uint16_t type, const std::vector<double>& v) { send_exc(s, port, type, ++seq, v, session, key); }
+};
+
+// A controller that floods the loop with valid and malformed packets until stopped, after asking for
+// the session.
 struct Flood {
   std::atomic<bool> stop{false};
   std::thread th;
@@ -112,19 +150,21 @@ struct Flood {
       std::vector<double> good(n_el, 0.02), nan(n_el, 0.1);
       nan[3] = std::numeric_limits<double>::quiet_NaN();
       std::uint8_t b[kMaxPacket];
-      std::uint32_t seq = 1;
+      std::uint32_t seq = 1, session = 0;
       unsigned rnd = 12345;
       while (!stop.load()) {
-        send_exc(s, port, kExcitationElements, seq++, good);
-        send_exc(s, port, kExcitationElements, seq - 1, good);       // duplicate
-        send_exc(s, port, kExcitationElements, seq++, nan);          // NaN
-        int n = encode(b, kExcitationElements, seq++, 0, good.data(), n_el);
+        session = poll_session(s, session);
+        if (session == 0) send_exc(s, port, kHello, seq++, {});
+        send_exc(s, port, kExcitationElements, seq++, good, session);
+        send_exc(s, port, kExcitationElements, seq - 1, good, session);       // duplicate
+        send_exc(s, port, kExcitationElements, seq++, nan, session);          // NaN
+        int n = encode(b, kExcitationElements, seq++, 0, good.data(), n_el, session);
         b[0] = 'X';
-        send_raw(s, port, b, n);                                     // bad magic
-        n = encode(b, kExcitationMuscles, seq++, 0, good.data(), 5);  // wrong count
+        send_raw(s, port, b, n);                                             // bad magic
+        n = encode(b, kExcitationMuscles, seq++, 0, good.data(), 5, session);  // wrong count
         send_raw(s, port, b, n);
         for (int k = 0; k < 64; ++k) { rnd = rnd * 1103515245u + 12345u; b[k] = static_cast<std::uint8_t>(rnd >> 16); }
-        send_raw(s, port, b, 1 + static_cast<int>(rnd % 64));        // garbage
+        send_raw(s, port, b, 1 + static_cast<int>(rnd % 64));                // garbage
         std::this_thread::sleep_for(std::chrono::microseconds(700));
       }
       ::close(s);
@@ -177,7 +217,7 @@ struct SeccompRun {
 
 void* seccomp_thread(void* arg) {
   auto* r = static_cast<SeccompRun*>(arg);
-  const int allowed[] = {SYS_clock_nanosleep, SYS_clock_gettime, SYS_recvfrom, SYS_sendto, SYS_rt_sigreturn, SYS_exit};
+  const int allowed[] = {SYS_clock_nanosleep, SYS_clock_gettime, SYS_recvmmsg, SYS_sendto, SYS_rt_sigreturn, SYS_exit};
   const int na = sizeof allowed / sizeof allowed[0];
   std::vector<sock_filter> f;
   f.push_back(BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(seccomp_data, arch)));
@@ -215,9 +255,9 @@ TEST_CASE("packet codec: round trip and header checks") {
   CHECK(get_f64(b + kHeaderSize + 8) == 0.5);
   CHECK(decode_header(b, n - 1, h) == DecodeError::kBadSize);
   CHECK(decode_header(b, 3, h) == DecodeError::kBadMagic);
-  b[4] = 2;
+  b[4] = 1;  // version 1 (before sessions) is refused
   CHECK(decode_header(b, n, h) == DecodeError::kBadVersion);
-  b[4] = 1;
+  b[4] = 2;
   b[0] = 'a';
   CHECK(decode_header(b, n, h) == DecodeError::kBadMagic);
 }
@@ -274,7 +314,7 @@ TEST_CASE("the seccomp trap is in effect") {
   g_trapped.store(before);
 }
 
-TEST_CASE("hot loop: no system call besides clock_nanosleep, clock_gettime, recvfrom, sendto (seccomp)") {
+TEST_CASE("hot loop: no system call besides clock_nanosleep, clock_gettime, recvmmsg, sendto (seccomp)") {
   install_sigsys_handler();
   RtLoop loop(test_config());
   loop.prepare_thread();
@@ -302,22 +342,30 @@ TEST_CASE("packets: mappings, sequence numbers, hold and timeout to zero") {
   c.state_rate_hz = 0;
   RtLoop loop(c);
   const int port = loop.bound_port();
-  const int s = udp_socket();
+  Controller ctl(port);
+  const int s = ctl.s;
   auto& u = loop.simulator().data.excitation;
   const int n_el = loop.simulator().model.num_elements;
   const auto* def = loop.simulator().model.def;
   auto settle = [&] { usleep(3000); loop.run_cycles(2); };
 
-  send_exc(s, port, kExcitationElements, 10, std::vector<double>(n_el, 0.3));
+  send_exc(s, port, kExcitationElements, 10, std::vector<double>(n_el, 0.3));  // no session id: refused
+  settle();
+  CHECK(u[0] == 0.0);
+  CHECK(loop.stats().packets.bad_session == 1);
+  ctl.join(loop);
+  REQUIRE(ctl.session != 0);
+  const std::uint32_t sid = ctl.session;
+  send_exc(s, port, kExcitationElements, 10, std::vector<double>(n_el, 0.3), sid);
   settle();
   CHECK(u[0] == doctest::Approx(0.3));
-  send_exc(s, port, kExcitationElements, 9, std::vector<double>(n_el, 0.9));  // out of order
-  send_exc(s, port, kExcitationElements, 10, std::vector<double>(n_el, 0.9));  // duplicate
+  send_exc(s, port, kExcitationElements, 9, std::vector<double>(n_el, 0.9), sid);  // out of order
+  send_exc(s, port, kExcitationElements, 10, std::vector<double>(n_el, 0.9), sid);  // duplicate
   std::vector<double> bad(n_el, 0.9);
   bad[7] = std::numeric_limits<double>::infinity();
-  send_exc(s, port, kExcitationElements, 11, bad);
-  send_exc(s, port, kExcitationElements, 12, std::vector<double>(n_el - 1, 0.9));  // wrong count
-  send_exc(s, port, 99, 13, std::vector<double>(n_el, 0.9));                     // unknown type
+  send_exc(s, port, kExcitationElements, 11, bad, sid);
+  send_exc(s, port, kExcitationElements, 12, std::vector<double>(n_el - 1, 0.9), sid);  // wrong count
+  send_exc(s, port, 99, 13, std::vector<double>(n_el, 0.9), sid);                     // unknown type
   settle();
   CHECK(u[0] == doctest::Approx(0.3));  // held
   RtStats st = loop.stats();
@@ -326,9 +374,10 @@ TEST_CASE("packets: mappings, sequence numbers, hold and timeout to zero") {
   CHECK(st.packets.non_finite == 1);
   CHECK(st.packets.bad_count == 1);
   CHECK(st.packets.bad_type == 1);
+  CHECK(st.packets.sessions == 1);
 
   // Channels: {elbow_flexors, rotator_cuff}; values outside [0, 1] are clipped.
-  send_exc(s, port, kExcitationChannels, 20, {0.4, 1.7});
+  send_exc(s, port, kExcitationChannels, 20, {0.4, 1.7}, sid);
   settle();
   int ef = -1;
   for (int g = 0; g < def->num_groups; ++g) if (std::strcmp(def->groups[g].name, "elbow_flexors") == 0) ef = g;
@@ -338,40 +387,349 @@ TEST_CASE("packets: mappings, sequence numbers, hold and timeout to zero") {
   // Muscles: one value per muscle.
   std::vector<double> mv(def->num_muscles, 0.0);
   mv[0] = 0.6;
-  send_exc(s, port, kExcitationMuscles, 21, mv);
+  send_exc(s, port, kExcitationMuscles, 21, mv, sid);
   settle();
   CHECK(u[def->muscles[0].elements[0]] == doctest::Approx(0.6));
   CHECK(u[def->muscles[1].elements[0]] == 0.0);
 
-  // Silence longer than the timeout: the excitation falls to zero, then a restarted controller
-  // (sequence from 0) is accepted.
+  // Silence longer than the timeout: the excitation falls to zero and the session ends; its packets
+  // (a replay of the last one, or any other) are never applied again; the controller asks again.
   loop.run_cycles(80);
   CHECK(u[def->muscles[0].elements[0]] == 0.0);
   CHECK(loop.stats().packets.timeouts == 1);
-  send_exc(s, port, kExcitationGroups, 0, std::vector<double>(def->num_groups, 0.05));
+  send_exc(s, port, kExcitationMuscles, 21, mv, sid);  // replay
+  send_exc(s, port, kExcitationMuscles, 22, mv, sid);  // old session, newer seq
+  settle();
+  CHECK(u[def->muscles[0].elements[0]] == 0.0);
+  CHECK(loop.stats().packets.bad_session == 3);
+  ctl.join(loop);
+  CHECK(ctl.session != sid);
+  send_exc(s, port, kExcitationGroups, 0, std::vector<double>(def->num_groups, 0.05), ctl.session);  // seq starts over
   settle();
   CHECK(u[def->groups[0].elements[0]] == doctest::Approx(0.05));
-  ::close(s);
+  CHECK(loop.stats().packets.sessions == 2);
+  CHECK(loop.stats().packets.owner_changes == 1);  // the same controller again
+}
+
+TEST_CASE("sessions: a second controller cannot take over, gets no state; release hands over") {
+  RtConfig c = test_config();
+  c.state_rate_hz = 1000;
+  c.send_forces = false;
+  RtLoop loop(c);
+  const int port = loop.bound_port();
+  auto& u = loop.simulator().data.excitation;
+  const int n_el = loop.simulator().model.num_elements;
+  Controller a(port), b(port);
+  a.join(loop);
+  a.send(kExcitationElements, std::vector<double>(n_el, 0.1));
+  usleep(2000);
+  loop.run_cycles(2);
+  CHECK(u[0] == doctest::Approx(0.1));
+  // The intruder knows the session id (it asked, or sniffed it) and numbers far ahead.
+  b.join(loop);
+  CHECK(b.session == 0);  // no offer to a non-owner while the session is owned
+  b.session = a.session;
+  b.seq = a.seq + 1000;
+  for (int k = 0; k < 60; ++k) b.send(kExcitationElements, std::vector<double>(n_el, 0.9));
+  usleep(3000);
+  loop.run_cycles(3);
+  CHECK(u[0] == doctest::Approx(0.1));
+  RtStats st = loop.stats();
+  CHECK(st.packets.foreign >= 61);
+  a.send(kExcitationElements, std::vector<double>(n_el, 0.2));  // the owner is not "out of order"
+  usleep(2000);
+  loop.run_cycles(2);
+  CHECK(u[0] == doctest::Approx(0.2));
+  CHECK(loop.stats().packets.out_of_order == 0);
+  std::uint8_t buf[kMaxPacket];
+  CHECK(::recv(b.s, buf, sizeof buf, MSG_DONTWAIT) < 0);  // no state to the intruder
+  CHECK(::recv(a.s, buf, sizeof buf, MSG_DONTWAIT) > 0);  // the owner gets it
+  // The owner releases: zero excitation at once, then another controller may own the session.
+  send_exc(a.s, port, kRelease, ++a.seq, {}, a.session);
+  usleep(2000);
+  loop.run_cycles(1);
+  CHECK(u[0] == 0.0);
+  CHECK(loop.stats().packets.releases == 1);
+  b.session = 0;
+  b.join(loop);
+  REQUIRE(b.session != 0);
+  CHECK(b.session != a.session);
+  b.send(kExcitationElements, std::vector<double>(n_el, 0.3));
+  usleep(2000);
+  loop.run_cycles(2);
+  CHECK(u[0] == doctest::Approx(0.3));
+  st = loop.stats();
+  CHECK(st.packets.sessions == 2);
+  CHECK(st.packets.owner_changes == 2);
+  // After the owner's timeout no state goes to it any more.
+  loop.run_cycles(80);
+  CHECK(loop.stats().packets.timeouts == 1);
+  while (::recv(b.s, buf, sizeof buf, MSG_DONTWAIT) > 0) {}
+  loop.run_cycles(20);
+  CHECK(::recv(b.s, buf, sizeof buf, MSG_DONTWAIT) < 0);
+}
+
+TEST_CASE("a second runner cannot share a fixed port") {
+  RtConfig c = test_config();
+  RtLoop first(c);
+  c.listen = "127.0.0.1:" + std::to_string(first.bound_port());
+  CHECK_THROWS_WITH_AS(RtLoop{c}, doctest::Contains("in use"), std::runtime_error);
+}
+
+TEST_CASE("sessions: --allow and --state-to subscribers") {
+  RtConfig c = test_config();
+  c.state_rate_hz = 1000;
+  const int sub = udp_socket();
+  sockaddr_in sa{};
+  socklen_t len = sizeof sa;
+  ::getsockname(sub, reinterpret_cast<sockaddr*>(&sa), &len);
+  c.state_to = {"127.0.0.1:" + std::to_string(ntohs(sa.sin_port))};
+  c.allow = {"127.0.0.2"};  // nobody on 127.0.0.1 may drive
+  RtLoop loop(c);
+  Controller a(loop.bound_port());
+  a.join(loop);
+  CHECK(a.session == 0);
+  loop.run_cycles(5);
+  CHECK(loop.stats().packets.not_allowed == 1);
+  std::uint8_t buf[kMaxPacket];
+  const long n = ::recv(sub, buf, sizeof buf, MSG_DONTWAIT);  // the subscriber gets state regardless
+  Header h;
+  REQUIRE(decode_header(buf, n, h) == DecodeError::kOk);
+  CHECK(h.type == kState);
+  CHECK((h.flags & kFlagTimedOut) != 0);
+  ::close(sub);
+  c.allow = {"127.0.0.1:1"};
+  RtLoop loop2(c);  // a port that is not the controller's
+  Controller a2(loop2.bound_port());
+  a2.join(loop2);
+  CHECK(a2.session == 0);
+  CHECK_THROWS_AS(parse_source("300.1.1.1"), std::invalid_argument);
+  CHECK_THROWS_AS(parse_endpoint("127.0.0.1:0", true), std::invalid_argument);
+  CHECK_THROWS_AS(parse_endpoint("127.0.0.1"), std::invalid_argument);
+}
+
+TEST_CASE("HMAC-SHA256: RFC 4231 test case 1, and keyed sessions refuse unsigned and forged packets") {
+  const HmacKey k(std::string(20, '\x0b'));
+  const std::string msg = "Hi There";
+  std::uint8_t tag[32];
+  k.sign(reinterpret_cast<const std::uint8_t*>(msg.data()), static_cast<long>(msg.size()), tag);
+  const std::uint8_t expected[32] = {0xb0, 0x34, 0x4c, 0x61, 0xd8, 0xdb, 0x38, 0x53, 0x5c, 0xa8, 0xaf,
+                                     0xce, 0xaf, 0x0b, 0xf1, 0x2b, 0x88, 0x1d, 0xc2, 0x00, 0xc9, 0x83,
+                                     0x3d, 0xa7, 0x26, 0xe9, 0x37, 0x6c, 0x2e, 0x32, 0xcf, 0xf7};
+  CHECK(std::memcmp(tag, expected, 32) == 0);
+  CHECK(k.verify(reinterpret_cast<const std::uint8_t*>(msg.data()), static_cast<long>(msg.size()), tag));
+  tag[5] ^= 1;
+  CHECK(!k.verify(reinterpret_cast<const std::uint8_t*>(msg.data()), static_cast<long>(msg.size()), tag));
+  CHECK_THROWS_AS(HmacKey("short"), std::invalid_argument);
+
+  RtConfig c = test_config();
+  c.state_rate_hz = 1000;
+  c.key = "0123456789abcdef-lab-key";
+  RtLoop loop(c);
+  const HmacKey key(c.key), wrong("another key of enough length");
+  auto& u = loop.simulator().data.excitation;
+  Controller plain(loop.bound_port()), forger(loop.bound_port(), &wrong), good(loop.bound_port(), &key);
+  plain.join(loop);
+  forger.join(loop);
+  CHECK(plain.session == 0);
+  CHECK(forger.session == 0);
+  CHECK(loop.stats().packets.bad_auth == 2);
+  good.join(loop);
+  REQUIRE(good.session != 0);
+  good.send(kExcitationElements, std::vector<double>(102, 0.25));
+  usleep(2000);
+  loop.run_cycles(3);
+  CHECK(u[0] == doctest::Approx(0.25));
+  // State packets are signed.
+  std::uint8_t buf[kMaxPacket];
+  const long n = ::recv(good.s, buf, sizeof buf, MSG_DONTWAIT);
+  Header h;
+  REQUIRE(decode_header(buf, n, h) == DecodeError::kOk);
+  CHECK(h.type == kState);
+  REQUIRE((h.flags & kFlagAuth) != 0);
+  CHECK(key.verify(buf, n - kTagSize, buf + n - kTagSize));
+
+  // Hot path with a key: still no allocation, no lock.
+  loop.run_cycles(2);
+  const long a0 = g_allocations.load(), m0 = g_mutex_locks.load();
+  for (int k2 = 0; k2 < 20; ++k2) {
+    good.send(kExcitationElements, std::vector<double>(102, 0.25));
+    forger.session = good.session;
+    forger.send(kExcitationElements, std::vector<double>(102, 0.25));
+    usleep(500);
+    t_counting = true;
+    loop.run_cycles(1);
+    t_counting = false;
+  }
+  CHECK(g_allocations.load() - a0 == 0);
+  CHECK(g_mutex_locks.load() - m0 == 0);
+}
+
+TEST_CASE("a flood from another source does not starve the owner") {
+  RtConfig c = test_config();
+  c.state_rate_hz = 100;
+  RtLoop loop(c);
+  const int port = loop.bound_port();
+  Controller a(port);
+  a.join(loop);
+  REQUIRE(a.session != 0);
+  std::atomic<bool> stop{false};
+  std::atomic<long> junk_sent{0};
+  std::thread junk([&] {  // as fast as one core allows: valid-looking packets with a guessed session
+    const int s = udp_socket();
+    std::vector<double> v(102, 0.9);
+    std::uint8_t b[kMaxPacket];
+    std::uint32_t seq = 1;
+    const sockaddr_in to = loopback(port);
+    while (!stop.load(std::memory_order_relaxed)) {
+      const int n = encode(b, kExcitationElements, seq++, 0, v.data(), 102, a.session);
+      if (::sendto(s, b, n, 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) == n) junk_sent.fetch_add(1);
+    }
+    ::close(s);
+  });
+  int sent = 0;
+  const std::uint64_t applied0 = loop.stats().packets.applied;
+  for (int k = 0; k < 400; ++k) {  // the owner sends one packet per cycle
+    a.send(kExcitationElements, std::vector<double>(102, 0.05 + 0.0001 * (k % 2)));
+    ++sent;
+    loop.run_cycles(1);
+  }
+  stop = true;
+  junk.join();
+  loop.run_cycles(5);
+  const RtStats st = loop.stats();
+  const double share = static_cast<double>(st.packets.applied - applied0) / sent;
+  MESSAGE("junk sent " << junk_sent.load() << ", foreign read " << st.packets.foreign << ", owner applied "
+          << st.packets.applied - applied0 << " of " << sent << ", budget hits " << st.packets.rx_budget_hits);
+  CHECK(st.packets.foreign > 1000);
+  CHECK(share >= 0.95);
+  CHECK(st.packets.timeouts == 0);
+  CHECK(loop.simulator().data.excitation[0] < 0.1);
 }
 
 TEST_CASE("state packets reach the controller and describe the arm") {
   RtConfig c = test_config();
   c.state_rate_hz = 1000;
+  c.send_excitation = true;
   RtLoop loop(c);
-  const int s = udp_socket();
-  send_exc(s, loop.bound_port(), kExcitationElements, 1, std::vector<double>(102, 0.0));
+  const int n_el = loop.simulator().model.num_elements;
+  Controller a(loop.bound_port());
+  a.join(loop);
+  a.send(kExcitationElements, std::vector<double>(n_el, 0.125));
+  usleep(2000);
   loop.run_cycles(5);
   std::uint8_t b[kMaxPacket];
-  const long n = ::recv(s, b, sizeof b, 0);
+  long n = -1;
+  for (long m; (m = ::recv(a.s, b, sizeof b, MSG_DONTWAIT)) > 0;) n = m;  // the newest
   Header h;
   REQUIRE(decode_header(b, n, h) == DecodeError::kOk);
   CHECK(h.type == kState);
-  CHECK(h.count == kStateFixedValues + 102);
+  CHECK(h.session == a.session);
+  CHECK(h.count == kStateFixedValues + 2 * n_el);
   CHECK((h.flags & kFlagForces) != 0);
-  const double t = get_f64(b + kHeaderSize);
-  CHECK(t > 0);
-  CHECK(get_f64(b + kHeaderSize + 8 * 15) == 1.0);  // last applied seq
-  ::close(s);
+  CHECK((h.flags & kFlagExcitation) != 0);
+  CHECK((h.flags & kFlagTimedOut) == 0);
+  CHECK(get_f64(b + kHeaderSize) > 0);
+  CHECK(get_f64(b + kHeaderSize + 8 * kStLastSeq) == static_cast<double>(a.seq));
+  CHECK(get_f64(b + kHeaderSize + 8 * kStLag) >= 0.0);
+  CHECK(get_f64(b + kHeaderSize + 8 * (kStateFixedValues + n_el)) == doctest::Approx(0.125));  // excitation
+}
+
+TEST_CASE("lag and overrun flag: skip and report, --max-lag stops") {
+  // A period far shorter than a step: every cycle overruns, deterministically.
+  std::uint8_t b[kMaxPacket];
+  RtConfig fast = test_config();
+  fast.rate_hz = 10000;          // 0.1 ms period, 500 substeps of 0.2 us
+  fast.dt = 2e-7;
+  fast.input_timeout = 10;
+  fast.state_rate_hz = 10000;
+  fast.max_lag = 0;
+  RtLoop over(fast);
+  Controller o(over.bound_port());
+  o.join(over);
+  o.send(kExcitationElements, std::vector<double>(102, 0.0));
+  usleep(1000);
+  over.run_cycles(30);
+  const RtStats st = over.stats();
+  REQUIRE(st.overruns > 0);
+  CHECK(st.lag_s == doctest::Approx(st.missed_deadlines * 1e-4));
+  bool flagged = false;
+  double lag = -1;
+  for (long n; (n = ::recv(o.s, b, sizeof b, MSG_DONTWAIT)) > 0;) {
+    Header h;
+    if (decode_header(b, n, h) != DecodeError::kOk || h.type != kState) continue;
+    flagged = flagged || (h.flags & kFlagOverrun);
+    lag = get_f64(b + kHeaderSize + 8 * kStLag);
+  }
+  CHECK(flagged);
+  CHECK(lag > 0);
+  // --max-lag: the loop stops with reason "lag" once the simulation is that far behind.
+  fast.max_lag = 0.001;
+  RtLoop capped(fast);
+  capped.run_cycles(5000);
+  const RtStats sc = capped.stats();
+  CHECK(sc.stop_reason == "lag");
+  CHECK(sc.cycles < 5000);
+  CHECK(sc.error.find("--max-lag") != std::string::npos);
+}
+
+TEST_CASE("arguments that cannot break the loop") {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  auto refuses = [](auto edit, const char* option) {
+    RtConfig c = test_config();
+    c.listen.clear();
+    edit(c);
+    try {
+      RtLoop loop(c);
+    } catch (const std::invalid_argument& e) {
+      CHECK_MESSAGE(std::string(e.what()).find(option) != std::string::npos, e.what());
+      return;
+    }
+    FAIL("accepted a bad " << option);
+  };
+  refuses([&](RtConfig& c) { c.input_timeout = inf; }, "--timeout");
+  refuses([&](RtConfig& c) { c.input_timeout = 0.0005; }, "--timeout");
+  refuses([&](RtConfig& c) { c.busy_wait_us = nan; }, "--busy-wait");
+  refuses([&](RtConfig& c) { c.dt = nan; }, "--dt");
+  refuses([&](RtConfig& c) { c.dt = 0.002; }, "--dt");
+  refuses([&](RtConfig& c) { c.duration = 0.0004; }, "--duration");
+  refuses([&](RtConfig& c) { c.duration = nan; }, "--duration");
+  refuses([&](RtConfig& c) { c.rate_hz = 1e5; }, "--rate");
+  refuses([&](RtConfig& c) { c.rate_hz = nan; }, "--rate");
+  refuses([&](RtConfig& c) { c.state_rate_hz = 300; }, "--state-rate");
+  refuses([&](RtConfig& c) { c.state_rate_hz = 2000; }, "--state-rate");
+  refuses([&](RtConfig& c) { c.max_lag = -1; }, "--max-lag");
+  refuses([&](RtConfig& c) { c.q0 = {0, 0, 0, nan, 0}; }, "--q0");
+  refuses([&](RtConfig& c) { c.key = "short"; }, "16 bytes");
+  // A day at 1 kHz needs no more memory than a second: the records are fixed-size histograms.
+  RtConfig day = test_config();
+  day.listen.clear();
+  day.duration = 86400;
+  CHECK_NOTHROW(RtLoop{day});
+  CHECK(sizeof(RtLoop) < 200000);
+}
+
+TEST_CASE("fixed-memory percentiles agree with exact ones within the bucket precision") {
+  LogHistogram h;
+  std::vector<std::int64_t> v;
+  unsigned r = 7;
+  for (int k = 0; k < 100000; ++k) {
+    r = r * 1103515245u + 12345u;
+    const std::int64_t x = 20000 + (r >> 8) % 200000 + ((k % 997 == 0) ? 3000000 : 0);
+    v.push_back(x);
+    h.record(x);
+  }
+  std::sort(v.begin(), v.end());
+  auto exact = [&](double q) { return static_cast<double>(v[static_cast<std::size_t>(std::ceil(q * v.size())) - 1]); };
+  for (double q : {0.5, 0.99, 0.999}) CHECK(h.quantile(q) == doctest::Approx(exact(q)).epsilon(1.0 / 64));
+  CHECK(h.min() == v.front());
+  CHECK(h.max() == v.back());
+  CHECK(h.count() == 100000);
+  for (std::int64_t x : {0L, 1L, 127L, 128L, 129L, 1000L, 123456789L, (1L << 40) - 1}) {
+    const int i = LogHistogram::index(x);
+    CHECK(LogHistogram::lower(i) <= static_cast<double>(x));
+    CHECK(static_cast<double>(x) < LogHistogram::lower(i) + LogHistogram::width(i));
+  }
 }
 
 TEST_CASE("divergence stops the loop cleanly with the message") {

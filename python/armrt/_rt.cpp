@@ -9,6 +9,9 @@
 #include <string>
 #include <vector>
 
+#include <arpa/inet.h>
+
+#include "endpoint.h"
 #include "packet.h"
 #include "rt_loop.h"
 
@@ -39,6 +42,10 @@ py::dict stats_dict(const RtLoop& loop) {
   d["recorded"] = s.recorded;
   d["overruns"] = s.overruns;
   d["missed_deadlines"] = s.missed_deadlines;
+  d["lag_s"] = s.lag_s;
+  d["resync"] = "skip";
+  d["warnings"] = s.warnings;
+  d["authenticated"] = loop.authenticated();
   d["elapsed_s"] = s.elapsed_s;
   d["sim_time"] = s.sim_time;
   d["scheduler"] = s.scheduler;
@@ -56,16 +63,26 @@ py::dict stats_dict(const RtLoop& loop) {
   p["received"] = k.received;
   p["applied"] = k.applied;
   p["dropped"] = k.dropped();
+  p["foreign"] = k.foreign;
+  p["not_allowed"] = k.not_allowed;
   p["bad_magic"] = k.bad_magic;
   p["bad_version"] = k.bad_version;
   p["bad_size"] = k.bad_size;
   p["bad_type"] = k.bad_type;
   p["bad_count"] = k.bad_count;
+  p["bad_auth"] = k.bad_auth;
+  p["bad_session"] = k.bad_session;
   p["non_finite"] = k.non_finite;
   p["stale"] = k.stale;
   p["out_of_order"] = k.out_of_order;
   p["clipped"] = k.clipped;
+  p["hellos"] = k.hellos;
+  p["offers"] = k.offers;
+  p["sessions"] = k.sessions;
+  p["owner_changes"] = k.owner_changes;
+  p["releases"] = k.releases;
   p["timeouts"] = k.timeouts;
+  p["rx_budget_hits"] = k.rx_budget_hits;
   p["state_sent"] = k.state_sent;
   p["send_errors"] = k.send_errors;
   d["packets"] = p;
@@ -76,17 +93,53 @@ py::dict stats_dict(const RtLoop& loop) {
 
 PYBIND11_MODULE(_rt, m) {
   m.doc() = "armrt real-time loop (C++ thread, SCHED_FIFO when permitted) with UDP I/O";
-  m.attr("MAGIC") = py::bytes("ARMR");
+  // The packet layout, defined once in cpp/rt/packet.h; armrt.realtime builds its codec from it.
+  m.attr("MAGIC") = py::bytes(reinterpret_cast<const char*>(kMagic), 4);
   m.attr("VERSION") = static_cast<int>(kVersion);
   m.attr("HEADER_SIZE") = kHeaderSize;
   m.attr("MAX_VALUES") = kMaxValues;
+  m.attr("TAG_SIZE") = kTagSize;
+  py::list fields;
+  for (const auto& f : kHeaderFields) fields.append(py::make_tuple(f.name, f.offset, f.size));
+  m.attr("HEADER_FIELDS") = fields;
+  py::dict types;
+  types["elements"] = static_cast<int>(kExcitationElements);
+  types["muscles"] = static_cast<int>(kExcitationMuscles);
+  types["groups"] = static_cast<int>(kExcitationGroups);
+  types["channels"] = static_cast<int>(kExcitationChannels);
+  types["release"] = static_cast<int>(kRelease);
+  types["hello"] = static_cast<int>(kHello);
+  types["state"] = static_cast<int>(kState);
+  types["offer"] = static_cast<int>(kOffer);
+  m.attr("TYPES") = types;
+  py::dict flags;
+  flags["forces"] = static_cast<int>(kFlagForces);
+  flags["stopped"] = static_cast<int>(kFlagStopped);
+  flags["error"] = static_cast<int>(kFlagError);
+  flags["timed_out"] = static_cast<int>(kFlagTimedOut);
+  flags["auth"] = static_cast<int>(kFlagAuth);
+  flags["overrun"] = static_cast<int>(kFlagOverrun);
+  flags["excitation"] = static_cast<int>(kFlagExcitation);
+  m.attr("FLAGS") = flags;
+  py::list state_fields;
+  for (const char* f : kStateFields) state_fields.append(f);
+  m.attr("STATE_FIELDS") = state_fields;
+  m.def("parse_endpoint", [](const std::string& s, bool require_port) {
+        const sockaddr_in a = parse_endpoint(s, require_port);
+        char b[INET_ADDRSTRLEN] = {};
+        inet_ntop(AF_INET, &a.sin_addr, b, sizeof b);
+        return py::make_tuple(std::string(b), static_cast<int>(ntohs(a.sin_port)));
+      }, py::arg("endpoint"), py::arg("require_port") = false,
+      "'host:port' -> (numeric IPv4 host, port) as the runner reads it (empty host or localhost: 127.0.0.1); "
+      "ValueError naming the problem");
 
   py::class_<RtLoop>(m, "RtLoop")
       .def(py::init([](const std::string& model, const std::string& integrator, double rate_hz, double dt,
                        std::vector<double> q0, double duration, bool realtime, int priority, bool lock_memory,
-                       bool require_rt, int cpu, double busy_wait_us, std::size_t record_capacity,
-                       const std::string& listen, const std::string& state_to, double state_rate_hz,
-                       bool send_forces, double input_timeout, std::vector<std::string> channels) {
+                       bool require_rt, int cpu, double busy_wait_us, double max_lag, const std::string& listen,
+                       std::vector<std::string> state_to, std::vector<std::string> allow, py::bytes key,
+                       double state_rate_hz, bool send_forces, bool send_excitation, double input_timeout,
+                       std::vector<std::string> channels, double rx_budget_us) {
              RtConfig c;
              c.model = model;
              c.integrator = integrator;
@@ -100,22 +153,28 @@ PYBIND11_MODULE(_rt, m) {
              c.require_rt = require_rt;
              c.cpu = cpu;
              c.busy_wait_us = busy_wait_us;
-             c.record_capacity = record_capacity;
+             c.max_lag = max_lag;
              c.listen = listen;
-             c.state_to = state_to;
+             c.state_to = std::move(state_to);
+             c.allow = std::move(allow);
+             c.key = std::string(key);
              c.state_rate_hz = state_rate_hz;
              c.send_forces = send_forces;
+             c.send_excitation = send_excitation;
              c.input_timeout = input_timeout;
              c.channels = std::move(channels);
+             c.rx_budget_us = rx_budget_us;
              return std::make_unique<RtLoop>(c);
            }),
-           py::arg("model") = "das2", py::arg("integrator") = "rk4", py::arg("rate_hz") = 1000.0,
+           py::arg("model") = "das2", py::arg("integrator") = RtConfig{}.integrator, py::arg("rate_hz") = 1000.0,
            py::arg("dt") = 0.0, py::arg("q0") = std::vector<double>{}, py::arg("duration") = 0.0,
            py::arg("realtime") = true, py::arg("priority") = 80, py::arg("lock_memory") = false,
            py::arg("require_rt") = false, py::arg("cpu") = -1, py::arg("busy_wait_us") = 0.0,
-           py::arg("record_capacity") = 0, py::arg("listen") = "", py::arg("state_to") = "",
-           py::arg("state_rate_hz") = 100.0, py::arg("send_forces") = false, py::arg("input_timeout") = 0.1,
-           py::arg("channels") = std::vector<std::string>{})
+           py::arg("max_lag") = 0.0, py::arg("listen") = "", py::arg("state_to") = std::vector<std::string>{},
+           py::arg("allow") = std::vector<std::string>{}, py::arg("key") = py::bytes(""),
+           py::arg("state_rate_hz") = 100.0, py::arg("send_forces") = false, py::arg("send_excitation") = false,
+           py::arg("input_timeout") = 0.1, py::arg("channels") = std::vector<std::string>{},
+           py::arg("rx_budget_us") = 0.0)
       .def("start", [](RtLoop& l) {
         py::gil_scoped_release release;
         l.start();
@@ -149,6 +208,7 @@ PYBIND11_MODULE(_rt, m) {
       .def_property_readonly("finished", &RtLoop::finished)
       .def_property_readonly("port", &RtLoop::bound_port)
       .def_property_readonly("dt", [](const RtLoop& l) { return l.config().dt; })
+      .def_property_readonly("n_elements", [](RtLoop& l) { return l.simulator().model.num_elements; })
       .def("stats", &stats_dict)
       .def("stats_json", &RtLoop::stats_json);
 }

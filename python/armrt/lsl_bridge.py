@@ -1,12 +1,19 @@
 """Lab Streaming Layer bridge: a process next to the real-time runner (docs/realtime.md).
 
 It publishes the runner's state packets as an LSL stream (channel labels, units and types in the
-stream description, a stable source_id) and forwards the samples of an LSL excitation stream to the
-runner as UDP excitation packets. It only forwards new samples: when the LSL controller goes silent
-the runner's input timeout sets the excitation to zero, as with a direct UDP controller.
+stream description, a stable source_id) and forwards the samples of one LSL excitation stream to the
+runner as UDP excitation packets, as the owner of the runner's session (armrt.realtime.UdpClient).
+It only forwards new samples: when the LSL controller goes silent the runner's input timeout sets
+the excitation to zero, as with a direct UDP controller.
 
     armrt-rt --listen 127.0.0.1:45100 --state-to 127.0.0.1:45101 &
-    python -m armrt.lsl_bridge --runner 127.0.0.1:45100 --state-port 45101 --mapping groups
+    python -m armrt.lsl_bridge --runner 127.0.0.1:45100 --state-port 45101 --mapping groups \\
+        --excitation-source-id my-controller
+
+The excitation stream is pinned by --excitation-source-id, or else by its name on this host only
+(--excitation-host to name another): never the first stream of that name anywhere on the network.
+Its channels are matched to the mapping's names by label (a label the mapping does not know is an
+error naming it). Looking for it happens on a separate thread, so the state stream never stalls.
 
 Needs pylsl (pip install pylsl; its wheel bundles liblsl).
 """
@@ -21,12 +28,14 @@ import time
 
 import numpy as np
 
-from .realtime import GroupMapping, PacketError, State, decode_packet, encode_packet
+from .realtime import GroupMapping, PacketError, State, UdpClient, decode_packet, parse_endpoint
 
 DOFS = ["GHy", "GHz", "GHyy", "ELx", "PSy"]
-STATE_LABELS = (["time"] + DOFS + [f"{d}_dot" for d in DOFS] + ["hand_x", "hand_y", "hand_z", "gh_stab"])
-STATE_UNITS = ["s"] + ["rad"] * 5 + ["rad/s"] * 5 + ["m"] * 3 + ["1"]
-STATE_TYPES = ["time"] + ["angle"] * 5 + ["angular_velocity"] * 5 + ["position"] * 3 + ["stability"]
+STATE_LABELS = (["time"] + DOFS + [f"{d}_dot" for d in DOFS] + ["hand_x", "hand_y", "hand_z", "gh_stab",
+                                                                   "lag", "overrun"])
+STATE_UNITS = ["s"] + ["rad"] * 5 + ["rad/s"] * 5 + ["m"] * 3 + ["1", "s", "1"]
+STATE_TYPES = (["time"] + ["angle"] * 5 + ["angular_velocity"] * 5 + ["position"] * 3 +
+               ["stability", "lag", "flag"])
 
 
 def _pylsl():
@@ -35,6 +44,20 @@ def _pylsl():
     except Exception as e:  # ImportError or RuntimeError (liblsl not loadable)
         raise RuntimeError(f"the LSL bridge needs pylsl with a loadable liblsl (pip install pylsl): {e}") from e
     return pylsl
+
+
+def check_state_rate(state_rate_hz: float, runner_rate_hz: float = 1000.0) -> int:
+    """Cycles between state packets for a nominal LSL rate; ValueError unless the runner delivers it
+    exactly (runner rate / an integer), naming the nearest rates that it does."""
+    if not (np.isfinite(state_rate_hz) and 0 < state_rate_hz <= runner_rate_hz):
+        raise ValueError(f"state rate {state_rate_hz} Hz must be in (0, {runner_rate_hz}] Hz")
+    ratio = runner_rate_hz / state_rate_hz
+    k = round(ratio)
+    if k < 1 or abs(ratio - k) > 1e-9 * ratio:
+        lo = max(1, int(np.floor(ratio)))
+        raise ValueError(f"state rate {state_rate_hz:g} Hz is not the runner's {runner_rate_hz:g} Hz / an integer; "
+                         f"the nearest are {runner_rate_hz / lo:g} and {runner_rate_hz / (lo + 1):g} Hz")
+    return k
 
 
 def state_stream_info(pylsl, name: str, source_id: str, rate_hz: float, forces: list[str] | None = None,
@@ -48,6 +71,8 @@ def state_stream_info(pylsl, name: str, source_id: str, rate_hz: float, forces: 
     desc = info.desc()
     desc.append_child_value("model", model)
     desc.append_child_value("frames", "q: DAS3 generalised coordinates; hand: thorax frame (docs/conventions.md)")
+    desc.append_child_value("resync", "skip: after an overrun the missed periods are not simulated; lag = "
+                                      "simulated time behind the wall-clock schedule")
     chans = desc.append_child("channels")
     for lab, unit, typ in zip(labels, units, types):
         c = chans.append_child("channel")
@@ -57,75 +82,173 @@ def state_stream_info(pylsl, name: str, source_id: str, rate_hz: float, forces: 
     return info
 
 
+def channel_labels(info) -> list[str]:
+    """Channel labels from a full StreamInfo (desc/channels/channel/label), [] if none."""
+    labels = []
+    ch = info.desc().child("channels").child("channel")
+    while not ch.empty():
+        labels.append(ch.child_value("label"))
+        ch = ch.next_sibling()
+    return labels
+
+
+def match_labels(labels: list[str], names: list[str], stream: str = "") -> np.ndarray:
+    """Index of each stream channel in the mapping's names; ValueError naming unknown, duplicate or
+    missing labels (a stream without labels cannot be matched)."""
+    where = f" of stream {stream!r}" if stream else ""
+    if not labels or all(not lab for lab in labels):
+        raise ValueError(f"the channels{where} have no labels; label them with the mapping's names ({names[:5]}...)")
+    unknown = [lab for lab in labels if lab not in names]
+    if unknown:
+        raise ValueError(f"unknown channel labels{where}: {unknown} (the mapping's names are {names})")
+    dup = sorted({lab for lab in labels if labels.count(lab) > 1})
+    if dup:
+        raise ValueError(f"duplicate channel labels{where}: {dup}")
+    pos = {n: k for k, n in enumerate(names)}
+    return np.array([pos[lab] for lab in labels], dtype=int)
+
+
 class LslBridge:
     """State packets (UDP, from the runner) -> LSL outlet; LSL excitation inlet -> UDP packets.
 
-    runner_port: the runner's --listen port (runner_address may be set later); state_port: where the
-    runner sends state (--state-to); 0 picks a free port (see .state_port). source_id is stable
-    (default "armrt-<model>"): the state stream is "<source_id>-state".
+    runner_port: the runner's --listen port (runner_address may be set later, before the first
+    excitation); state_port: where the runner sends state (--state-to); 0 picks a free port (see
+    .state_port). source_id is stable (default "armrt-<model>"): the state stream is "<source_id>-state".
+    excitation_source_id pins the excitation stream; without it, the stream named excitation_name on
+    excitation_host (default: this host). state_rate_hz must be runner_rate_hz / an integer (ValueError).
+    key: the runner's shared key, if any. Faults (bad packets, rate mismatch) are counted and warned
+    about once each (.warnings); a stream that cannot be matched, or a declared channel set the runner
+    does not fill (forces), raises from step() / run().
     """
 
     def __init__(self, runner_port: int, runner_host: str = "127.0.0.1", state_port: int = 0,
                  mapping: str = "groups", model: str = "das2", channels=None, source_id: str | None = None,
                  state_name: str = "armrt_state", excitation_name: str = "armrt_excitation",
-                 state_rate_hz: float = 100.0, forces: bool = False):
+                 state_rate_hz: float = 100.0, forces: bool = False, excitation_source_id: str | None = None,
+                 excitation_host: str | None = None, runner_rate_hz: float = 1000.0, key: bytes | None = None):
         self.pylsl = _pylsl()
-        self.runner_address = (runner_host, int(runner_port))
-        self.mapping = GroupMapping.from_model(mapping, model, channels)
-        self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-        self.sock.bind(("127.0.0.1" if runner_host in ("127.0.0.1", "localhost") else "", state_port))
-        self.sock.setblocking(False)
-        self.state_port = self.sock.getsockname()[1]
+        self.state_every = check_state_rate(state_rate_hz, runner_rate_hz)
+        self.state_period = self.state_every / runner_rate_hz
+        self.client = UdpClient(runner_port, runner_host, mapping, model, channels, bind_port=state_port, key=key)
+        self.mapping = self.client.mapping
+        self.state_port = self.client.local_port
         self.source_id = source_id or f"armrt-{model}"
         self.excitation_name = excitation_name
+        self.excitation_source_id = excitation_source_id
+        self.excitation_host = excitation_host or socket.gethostname()
+        self.forces = forces
         force_names = self.mapping.element_names if forces else None
         self.outlet = self.pylsl.StreamOutlet(
             state_stream_info(self.pylsl, state_name, f"{self.source_id}-state", state_rate_hz, force_names, model))
         self.inlet = None
-        self.seq = 0
+        self.channel_index: np.ndarray | None = None
+        self.last_values: np.ndarray | None = None   # the last forwarded excitation, in the mapping's order
         self.forwarded = 0
         self.published = 0
         self.bad = 0
+        self.warnings: list[str] = []
+        self._warned: set = set()
+        self._error: BaseException | None = None
+        self._last_time: float | None = None
+        self._stop = threading.Event()
+        self._connector = threading.Thread(target=self._connect, name="armrt-lsl-resolve", daemon=True)
+        self._connector.start()
 
-    def _connect_inlet(self) -> None:
-        found = self.pylsl.resolve_byprop("name", self.excitation_name, timeout=0.2)
-        if not found:
-            return
-        n = found[0].channel_count()
-        if n != len(self.mapping.names):
-            print(f"lsl_bridge: stream {self.excitation_name!r} has {n} channels; mapping {self.mapping.kind!r} "
-                  f"needs {len(self.mapping.names)}; ignored", file=sys.stderr)
-            return
-        self.inlet = self.pylsl.StreamInlet(found[0], max_buflen=1, recover=True)
+    @property
+    def runner_address(self):
+        return self.client.address
 
+    @runner_address.setter
+    def runner_address(self, addr) -> None:
+        self.client.address = parse_endpoint(f"{addr[0]}:{int(addr[1])}")
+
+    def warn(self, fault: str, message: str) -> None:
+        """Prints message once per fault (not once per cycle)."""
+        if fault not in self._warned:
+            self._warned.add(fault)
+            self.warnings.append(message)
+            print(f"lsl_bridge: {message}", file=sys.stderr, flush=True)
+
+    # ---------------------------------------------------------------- excitation stream (own thread)
+    def _candidates(self, results) -> list:
+        if self.excitation_source_id:
+            return [r for r in results if r.source_id() == self.excitation_source_id]
+        return [r for r in results if r.name() == self.excitation_name and r.hostname() == self.excitation_host]
+
+    def _connect(self) -> None:
+        pylsl = self.pylsl
+        try:
+            if self.excitation_source_id:
+                resolver = pylsl.ContinuousResolver(prop="source_id", value=self.excitation_source_id)
+            else:
+                resolver = pylsl.ContinuousResolver(prop="name", value=self.excitation_name)
+            while not self._stop.is_set():
+                found = self._candidates(resolver.results())
+                if len(found) > 1:
+                    who = [f"{f.name()}@{f.hostname()} ({f.source_id()})" for f in found]
+                    self.warn("ambiguous", f"{len(found)} excitation streams match, none used: {who}; "
+                                           "pin one with --excitation-source-id")
+                elif found:
+                    inlet = pylsl.StreamInlet(found[0], max_buflen=1, recover=True)
+                    full = inlet.info(timeout=5.0)
+                    self.channel_index = match_labels(channel_labels(full), list(self.mapping.names),
+                                                      f"{full.name()}@{full.hostname()}")
+                    self.inlet = inlet
+                    print(f"lsl_bridge: excitation stream {full.name()!r} ({full.source_id()}) on "
+                          f"{full.hostname()}: channels matched by label", file=sys.stderr, flush=True)
+                    return
+                self._stop.wait(0.1)
+        except BaseException as e:  # reported by step() on the bridge's own thread
+            self._error = e
+
+    # ---------------------------------------------------------------- one pass
     def step(self) -> None:
-        """One pass: forward pending excitation samples, publish pending state packets."""
-        if self.inlet is None:
-            self._connect_inlet()
+        """One pass: forward pending excitation samples, publish pending state packets. Raises the
+        stream-matching error of the resolver thread, and RuntimeError if the runner does not fill
+        the declared channels."""
+        if self._error is not None:
+            raise self._error
         if self.inlet is not None:
             samples, _ = self.inlet.pull_chunk(timeout=0.0)
             if samples:  # only the newest matters
-                self.seq = (self.seq + 1) & 0xFFFFFFFF
-                v = np.asarray(samples[-1], dtype=float)
-                self.sock.sendto(encode_packet(self.mapping.packet_type, self.seq, v), self.runner_address)
-                self.forwarded += 1
-        select.select([self.sock], [], [], 0.002)  # the pace of the bridge: at most 2 ms idle
-        while True:  # drain what is pending, without waiting
-            try:
-                data = self.sock.recv(65536)
-            except (BlockingIOError, InterruptedError):
-                break
-            try:
-                st = State.from_packet(decode_packet(data))
-            except PacketError:
-                self.bad += 1
-                continue
-            sample = [st.time, *st.q, *st.qdot, *st.hand_position, st.gh_stab]
-            if st.muscle_force is not None and self.outlet.channel_count > len(sample):
-                sample += list(st.muscle_force)
-            if len(sample) == self.outlet.channel_count:
-                self.outlet.push_sample(sample, self.pylsl.local_clock())
-                self.published += 1
+                v = np.zeros(len(self.mapping.names))
+                v[self.channel_index] = np.asarray(samples[-1], dtype=float)
+                self.last_values = v
+                try:
+                    self.client.send(v)
+                    self.forwarded += 1
+                except TimeoutError as e:
+                    self.warn("no-session", f"the runner gives this bridge no session: {e}")
+        bad0 = self.client.bad_packets + self.client.foreign_packets
+        if self.client.poll(0.002):  # the bridge's pace: at most 2 ms idle, then drain without waiting
+            while self.client.poll(0.0):
+                pass
+        bad = self.client.bad_packets + self.client.foreign_packets - bad0
+        if bad:
+            self.bad += bad
+            self.warn("bad-packets", "dropped datagrams on the state port that are not the runner's valid "
+                                     "state packets (counted in .bad)")
+        for st in self.client.take_states():
+            self._publish(st)
+
+    def _publish(self, st: State) -> None:
+        if self.forces and st.muscle_force is None:
+            raise RuntimeError("the state stream declares muscle forces but the runner sends none: start "
+                               "armrt-rt with --forces, or the bridge without --forces")
+        if self._last_time is not None and not st.stopped:
+            dt = st.time - self._last_time
+            if dt > 0 and abs(dt - self.state_period) > 1e-6:
+                self.warn("rate", f"the runner sends state every {dt * 1e3:.3f} ms of simulated time, the stream "
+                                  f"declares {1 / self.state_period:g} Hz: set armrt-rt --state-rate and "
+                                  "--rate here to the same value")
+        self._last_time = st.time
+        if st.overrun:
+            self.warn("overrun", f"the runner overran (lag {st.lag:.3f} s): see the lag and overrun channels")
+        sample = [st.time, *st.q, *st.qdot, *st.hand_position, st.gh_stab, st.lag, float(st.overrun)]
+        if self.forces:
+            sample += list(st.muscle_force)
+        self.outlet.push_sample(sample, self.pylsl.local_clock())
+        self.published += 1
 
     def run(self, stop: threading.Event | None = None, duration: float | None = None) -> None:
         t_end = None if duration is None else time.monotonic() + duration
@@ -133,7 +256,9 @@ class LslBridge:
             self.step()
 
     def close(self) -> None:
-        self.sock.close()
+        self._stop.set()
+        self._connector.join(timeout=1.0)
+        self.client.close()
 
 
 def main(argv=None) -> int:
@@ -145,25 +270,40 @@ def main(argv=None) -> int:
     ap.add_argument("--source-id", default=None)
     ap.add_argument("--state-name", default="armrt_state")
     ap.add_argument("--excitation-name", default="armrt_excitation")
-    ap.add_argument("--rate", type=float, default=100.0, help="nominal state rate (the runner's --state-rate)")
+    ap.add_argument("--excitation-source-id", default=None, help="pin the excitation stream by its source_id")
+    ap.add_argument("--excitation-host", default=None, help="host of the excitation stream (default: this one)")
+    ap.add_argument("--rate", type=float, default=100.0, help="state rate: the runner's --state-rate")
+    ap.add_argument("--runner-rate", type=float, default=1000.0, help="the runner's --rate")
     ap.add_argument("--forces", action="store_true", help="the runner sends forces (--forces)")
+    ap.add_argument("--key-file", default=None, help="the runner's --key-file")
     ap.add_argument("--duration", type=float, default=None)
     a = ap.parse_args(argv)
-    host, _, port = a.runner.rpartition(":")
-    bridge = LslBridge(int(port), host or "127.0.0.1", a.state_port, a.mapping,
-                       channels=[c for c in a.channels.split(",") if c], source_id=a.source_id,
-                       state_name=a.state_name, excitation_name=a.excitation_name, state_rate_hz=a.rate,
-                       forces=a.forces)
+    from .realtime import read_key_file
+    try:
+        host, port = parse_endpoint(a.runner, require_port=True)
+        bridge = LslBridge(port, host, a.state_port, a.mapping, channels=[c for c in a.channels.split(",") if c],
+                           source_id=a.source_id, state_name=a.state_name, excitation_name=a.excitation_name,
+                           state_rate_hz=a.rate, forces=a.forces, excitation_source_id=a.excitation_source_id,
+                           excitation_host=a.excitation_host, runner_rate_hz=a.runner_rate,
+                           key=read_key_file(a.key_file) if a.key_file else None)
+    except (ValueError, RuntimeError, OSError) as e:
+        print(f"lsl_bridge: {e}", file=sys.stderr)
+        return 2
+    pin = a.excitation_source_id or f"{a.excitation_name} on {bridge.excitation_host}"
     print(f"lsl_bridge: state stream {a.state_name!r} (source_id {bridge.source_id}-state), "
-          f"excitation stream {a.excitation_name!r} -> udp {a.runner}", flush=True)
+          f"excitation stream {pin} -> udp {a.runner}", flush=True)
+    rc = 0
     try:
         bridge.run(duration=a.duration)
     except KeyboardInterrupt:
         pass
+    except (ValueError, RuntimeError) as e:
+        print(f"lsl_bridge: {e}", file=sys.stderr)
+        rc = 2
     finally:
         bridge.close()
     print(f"lsl_bridge: forwarded {bridge.forwarded} excitation samples, published {bridge.published} states")
-    return 0
+    return rc
 
 
 if __name__ == "__main__":

@@ -12,42 +12,108 @@ or muscle / group / channel values through a named mapping) and receives state p
 """
 from __future__ import annotations
 
+import collections
+import hashlib
+import hmac
 import os
 import shutil
 import socket
 import struct
 import sys
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Mapping, Sequence
 
 import numpy as np
 
-# ---------------------------------------------------------------------------------------- packets
-MAGIC = b"ARMR"
-VERSION = 1
-HEADER = struct.Struct("<4sHHIIHHI")  # magic, version, type, seq, length, count, flags, reserved
-HEADER_SIZE = HEADER.size             # 24
-MAX_VALUES = 512
+from . import _rt
 
-EXC_ELEMENTS, EXC_MUSCLES, EXC_GROUPS, EXC_CHANNELS, STATE = 1, 2, 3, 4, 16
-FLAG_FORCES, FLAG_STOPPED, FLAG_ERROR, FLAG_TIMED_OUT = 1, 2, 4, 8
-STATE_FIXED_VALUES = 16  # time, q[5], qdot[5], hand[3], gh_stab, last applied seq
+# ---------------------------------------------------------------------------------------- packets
+# The layout is defined once, in cpp/rt/packet.h; armrt._rt exports it and the codec is built from it.
+MAGIC: bytes = _rt.MAGIC
+VERSION: int = _rt.VERSION
+HEADER_SIZE: int = _rt.HEADER_SIZE
+MAX_VALUES: int = _rt.MAX_VALUES
+TAG_SIZE: int = _rt.TAG_SIZE
+HEADER_FIELDS = [tuple(f) for f in _rt.HEADER_FIELDS]  # (name, offset, size)
+
+
+def _header_struct(fields) -> struct.Struct:
+    codes = {2: "H", 4: "I"}
+    fmt, pos = "<", 0
+    for name, offset, size in sorted(fields, key=lambda f: f[1]):
+        if offset != pos:
+            raise RuntimeError(f"armrt._rt header field {name} at offset {offset}, expected {pos}")
+        fmt += "4s" if name == "magic" else codes[size]
+        pos += size
+    if pos != HEADER_SIZE:
+        raise RuntimeError(f"armrt._rt header fields cover {pos} bytes, HEADER_SIZE is {HEADER_SIZE}")
+    return struct.Struct(fmt)
+
+
+HEADER = _header_struct(HEADER_FIELDS)
+_HEADER_NAMES = [f[0] for f in sorted(HEADER_FIELDS, key=lambda f: f[1])]
+TYPES: dict = dict(_rt.TYPES)
+FLAGS: dict = dict(_rt.FLAGS)
+EXC_ELEMENTS, EXC_MUSCLES, EXC_GROUPS, EXC_CHANNELS = (TYPES[k] for k in ("elements", "muscles", "groups", "channels"))
+RELEASE, HELLO, STATE, OFFER = (TYPES[k] for k in ("release", "hello", "state", "offer"))
+FLAG_FORCES, FLAG_STOPPED, FLAG_ERROR, FLAG_TIMED_OUT = (FLAGS[k] for k in ("forces", "stopped", "error", "timed_out"))
+FLAG_AUTH, FLAG_OVERRUN, FLAG_EXCITATION = (FLAGS[k] for k in ("auth", "overrun", "excitation"))
+STATE_FIELDS: list = list(_rt.STATE_FIELDS)
+STATE_FIXED_VALUES = len(STATE_FIELDS)
+_ST = {name: k for k, name in enumerate(STATE_FIELDS)}
 
 MAPPING_TYPES = {"elements": EXC_ELEMENTS, "muscles": EXC_MUSCLES, "groups": EXC_GROUPS, "channels": EXC_CHANNELS}
+
+
+def parse_endpoint(endpoint: str, require_port: bool = False) -> tuple[str, int]:
+    """'host:port' -> (numeric IPv4 host, port), exactly as armrt-rt reads it (an empty host or
+    'localhost' is 127.0.0.1, never "any"). Raises ValueError naming the problem."""
+    return tuple(_rt.parse_endpoint(str(endpoint), require_port))
+
+
+def read_key_file(path) -> bytes:
+    """The shared key in a file, as armrt-rt --key-file reads it (one trailing newline removed);
+    ValueError if shorter than 16 bytes."""
+    key = Path(path).read_bytes()
+    if key.endswith(b"\n"):
+        key = key[:-1]
+    if key.endswith(b"\r"):
+        key = key[:-1]
+    if len(key) < 16:
+        raise ValueError(f"the key in {str(path)!r} is shorter than 16 bytes")
+    return key
+
+
+def _key_bytes(key) -> bytes | None:
+    if key is None or key == b"" or key == "":
+        return None
+    k = key.encode() if isinstance(key, str) else bytes(key)
+    if len(k) < 16:
+        raise ValueError(f"the shared key must be at least 16 bytes (got {len(k)})")
+    return k
 
 
 class PacketError(ValueError):
     """A datagram that is not a valid armrt packet (the reason is in the message)."""
 
 
-def encode_packet(ptype: int, seq: int, values, flags: int = 0) -> bytes:
-    """Header + float64 values, little-endian (docs/realtime.md)."""
+def encode_packet(ptype: int, seq: int, values=(), flags: int = 0, session: int = 0, key: bytes | None = None) -> bytes:
+    """Header + float64 values, little-endian (docs/realtime.md); with key, the HMAC-SHA256 tag."""
     v = np.ascontiguousarray(values, dtype="<f8").ravel()
     if v.size > MAX_VALUES:
         raise ValueError(f"at most {MAX_VALUES} values per packet, got {v.size}")
-    length = HEADER_SIZE + 8 * v.size
-    return HEADER.pack(MAGIC, VERSION, ptype, seq & 0xFFFFFFFF, length, v.size, flags, 0) + v.tobytes()
+    key = _key_bytes(key)
+    if key is not None:
+        flags |= FLAG_AUTH
+    length = HEADER_SIZE + 8 * v.size + (TAG_SIZE if flags & FLAG_AUTH else 0)
+    fields = {"magic": MAGIC, "version": VERSION, "type": ptype, "seq": seq & 0xFFFFFFFF, "length": length,
+              "count": v.size, "flags": flags, "session": session & 0xFFFFFFFF}
+    body = HEADER.pack(*(fields[n] for n in _HEADER_NAMES)) + v.tobytes()
+    if key is not None:
+        body += hmac.new(key, body, hashlib.sha256).digest()
+    return body
 
 
 @dataclass
@@ -56,20 +122,30 @@ class Packet:
     seq: int
     flags: int
     values: np.ndarray
+    session: int = 0
 
 
-def decode_packet(data: bytes) -> Packet:
-    """Checks magic, version and lengths as the runner does; raises PacketError."""
+def decode_packet(data: bytes, key: bytes | None = None) -> Packet:
+    """Checks magic, version and lengths as the runner does, and with key the HMAC tag; raises PacketError."""
     if len(data) < 4 or data[:4] != MAGIC:
         raise PacketError("bad magic")
     if len(data) < HEADER_SIZE:
         raise PacketError(f"short packet ({len(data)} bytes)")
-    magic, version, ptype, seq, length, count, flags, _ = HEADER.unpack_from(data)
-    if version != VERSION:
-        raise PacketError(f"unsupported version {version} (this client speaks {VERSION})")
-    if length != len(data) or HEADER_SIZE + 8 * count != len(data) or count > MAX_VALUES:
-        raise PacketError(f"size mismatch: datagram {len(data)} bytes, length field {length}, count {count}")
-    return Packet(ptype, seq, flags, np.frombuffer(data, dtype="<f8", count=count, offset=HEADER_SIZE).copy())
+    h = dict(zip(_HEADER_NAMES, HEADER.unpack_from(data)))
+    if h["version"] != VERSION:
+        raise PacketError(f"unsupported version {h['version']} (this client speaks {VERSION})")
+    count, flags = h["count"], h["flags"]
+    tag = TAG_SIZE if flags & FLAG_AUTH else 0
+    if h["length"] != len(data) or HEADER_SIZE + 8 * count + tag != len(data) or count > MAX_VALUES:
+        raise PacketError(f"size mismatch: datagram {len(data)} bytes, length field {h['length']}, count {count}")
+    key = _key_bytes(key)
+    if key is not None:
+        if not tag:
+            raise PacketError("unsigned packet (a shared key is in use)")
+        if not hmac.compare_digest(hmac.new(key, data[:-TAG_SIZE], hashlib.sha256).digest(), data[-TAG_SIZE:]):
+            raise PacketError("bad HMAC tag (wrong key or forged packet)")
+    values = np.frombuffer(data, dtype="<f8", count=count, offset=HEADER_SIZE).copy()
+    return Packet(h["type"], h["seq"], flags, values, h["session"])
 
 
 @dataclass
@@ -82,9 +158,13 @@ class State:
     qdot: np.ndarray            # (5,) rad/s
     hand_position: np.ndarray   # (3,) m, thorax frame
     gh_stab: float
-    last_applied_seq: int       # sequence number of the last excitation applied (-1: none)
+    last_applied_seq: int       # sequence number of the last excitation applied in this session (-1: none)
     flags: int
-    muscle_force: np.ndarray | None = None  # (n,) N, if the runner sends forces
+    lag: float = 0.0            # s, simulated time behind the wall-clock schedule (skipped periods)
+    overruns: int = 0           # overrun cycles since the runner started
+    muscle_force: np.ndarray | None = None  # (n,) N, if the runner sends forces (--forces)
+    excitation: np.ndarray | None = None    # (n,) applied element excitations (--excitations)
+    session: int = 0
     received_at: float = 0.0    # time.monotonic() at reception
 
     @property
@@ -97,7 +177,13 @@ class State:
 
     @property
     def timed_out(self) -> bool:
+        """No session: the excitation is zero (silence, release, or never claimed)."""
         return bool(self.flags & FLAG_TIMED_OUT)
+
+    @property
+    def overrun(self) -> bool:
+        """At least one cycle overran since the previous state packet."""
+        return bool(self.flags & FLAG_OVERRUN)
 
     @classmethod
     def from_packet(cls, p: Packet) -> "State":
@@ -106,9 +192,17 @@ class State:
         v = p.values
         if v.size < STATE_FIXED_VALUES:
             raise PacketError(f"state packet with {v.size} values, expected at least {STATE_FIXED_VALUES}")
-        forces = v[STATE_FIXED_VALUES:].copy() if p.flags & FLAG_FORCES else None
-        return cls(p.seq, float(v[0]), v[1:6].copy(), v[6:11].copy(), v[11:14].copy(), float(v[14]),
-                   int(v[15]), p.flags, forces)
+        rest = v[STATE_FIXED_VALUES:]
+        n_blocks = bool(p.flags & FLAG_FORCES) + bool(p.flags & FLAG_EXCITATION)
+        if n_blocks and rest.size % n_blocks:
+            raise PacketError(f"state packet with {rest.size} trailing values for {n_blocks} blocks")
+        n = rest.size // n_blocks if n_blocks else 0
+        forces = rest[:n].copy() if p.flags & FLAG_FORCES else None
+        exc = rest[n_blocks * n - n:].copy() if p.flags & FLAG_EXCITATION else None
+        q0, qd0 = _ST["q0"], _ST["qd0"]
+        return cls(p.seq, float(v[_ST["time"]]), v[q0:q0 + 5].copy(), v[qd0:qd0 + 5].copy(),
+                   v[_ST["hand_x"]:_ST["hand_z"] + 1].copy(), float(v[_ST["gh_stab"]]), int(v[_ST["last_seq"]]),
+                   p.flags, float(v[_ST["lag"]]), int(v[_ST["overruns"]]), forces, exc, p.session)
 
 
 # ---------------------------------------------------------------------------------------- mappings
@@ -190,70 +284,152 @@ class GroupMapping:
 
 # ---------------------------------------------------------------------------------------- UDP client
 class UdpClient:
-    """A controller's end of the link: send excitations, receive state packets (non-blocking socket
-    with timeouts; never raises on a malformed incoming datagram, it is counted in .bad_packets)."""
+    """A controller's end of the link: owns a session of the runner, sends excitations, receives state.
+
+    port, host: the runner's --listen address. key: the runner's shared key (bytes, >= 16; see
+    read_key_file), or None. The first send() asks for the session (hello -> offer, join()); packets
+    carry the session id and, with a key, an HMAC-SHA256 tag. Incoming datagrams are accepted only
+    from the runner's address and, with a key, only with a valid tag: anything else is dropped and
+    counted (.foreign_packets, .bad_packets), never raised. When a session ends (silence longer than
+    the runner's --timeout) the runner offers a new id on the next packet, and the client adopts it
+    as soon as it reads the offer (recv_state / latest_state / join()).
+    """
 
     def __init__(self, port: int, host: str = "127.0.0.1", mapping: str | GroupMapping = "elements",
-                 model: str = "das2", channels: Sequence[str] | None = None, bind_port: int = 0):
-        self.address = (host, int(port))
+                 model: str = "das2", channels: Sequence[str] | None = None, bind_port: int = 0,
+                 key: bytes | str | None = None):
+        self.address = parse_endpoint(f"{host}:{int(port)}")
         self.mapping = mapping if isinstance(mapping, GroupMapping) else GroupMapping.from_model(mapping, model, channels)
+        self.key = _key_bytes(key)
         self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-        self.sock.bind(("127.0.0.1" if host in ("127.0.0.1", "localhost") else "", bind_port))
+        self.sock.bind(("127.0.0.1" if self.address[0].startswith("127.") else "", bind_port))
         self.sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 1 << 20)
         self.seq = 0
-        self.bad_packets = 0
+        self.session = 0
+        self.bad_packets = 0       # malformed, unsigned or wrongly signed datagrams
+        self.foreign_packets = 0   # datagrams from anyone but the runner
         self.last_state: State | None = None
+        self._states: collections.deque = collections.deque(maxlen=4096)
 
     @property
     def local_port(self) -> int:
         return self.sock.getsockname()[1]
 
+    def _next_seq(self) -> int:
+        self.seq = (self.seq + 1) & 0xFFFFFFFF
+        return self.seq
+
+    def _pump(self, timeout: float | None) -> bool:
+        """Reads one datagram (waiting up to timeout s; None: forever); True if one was read."""
+        self.sock.settimeout(timeout)
+        try:
+            data, src = self.sock.recvfrom(65536)
+        except (socket.timeout, BlockingIOError):
+            return False
+        if (src[0], src[1]) != self.address:
+            self.foreign_packets += 1
+            return True
+        try:
+            p = decode_packet(data, self.key)
+            if p.type == OFFER:
+                self.session = p.session
+            elif p.type == STATE:
+                st = State.from_packet(p)
+                st.received_at = time.monotonic()
+                if not st.timed_out:
+                    self.session = st.session
+                self._states.append(st)
+            else:
+                self.bad_packets += 1
+        except PacketError:
+            self.bad_packets += 1
+        return True
+
+    def poll(self, timeout: float | None = 0.0) -> bool:
+        """Reads one datagram if one comes within timeout s (offers update .session, state packets are
+        queued for recv_state / take_states); True if one was read."""
+        return self._pump(timeout)
+
+    def take_states(self) -> list[State]:
+        """The state packets read so far and not yet returned, oldest first."""
+        out = list(self._states)
+        self._states.clear()
+        if out:
+            self.last_state = out[-1]
+        return out
+
+    def join(self, timeout: float = 1.0) -> int:
+        """Asks the runner for its session id and waits for the offer; returns it. TimeoutError if
+        none comes (the runner is not there, another controller owns the session, --allow or the key
+        refuses this one)."""
+        self.session = 0
+        t_end = time.monotonic() + timeout
+        next_hello = 0.0
+        while self.session == 0:
+            now = time.monotonic()
+            if now >= t_end:
+                raise TimeoutError(f"no session offer from {self.address[0]}:{self.address[1]} within {timeout} s "
+                                   "(runner not listening, session owned by another controller, or refused by "
+                                   "--allow / the key)")
+            if now >= next_hello:
+                self.sock.sendto(encode_packet(HELLO, self._next_seq(), key=self.key), self.address)
+                next_hello = now + 0.05
+            self._pump(min(0.01, t_end - now))
+        return self.session
+
     def send(self, excitation, seq: int | None = None) -> int:
-        """Sends one excitation packet (array or dict through the mapping); returns its sequence number."""
+        """Sends one excitation packet (array or dict through the mapping); returns its sequence number.
+        Joins the session first if none is known (TimeoutError if that fails)."""
+        if self.session == 0:
+            self.join()
         if seq is None:
-            self.seq = (self.seq + 1) & 0xFFFFFFFF
-            seq = self.seq
-        self.sock.sendto(encode_packet(self.mapping.packet_type, seq, self.mapping.values(excitation)), self.address)
+            seq = self._next_seq()
+        data = encode_packet(self.mapping.packet_type, seq, self.mapping.values(excitation),
+                             session=self.session, key=self.key)
+        self.sock.sendto(data, self.address)
         return seq
 
     def send_raw(self, data: bytes) -> None:
         self.sock.sendto(data, self.address)
 
+    def release(self) -> None:
+        """Ends the session (the runner sets the excitation to zero at once and accepts a new owner)."""
+        if self.session:
+            self.sock.sendto(encode_packet(RELEASE, self._next_seq(), session=self.session, key=self.key), self.address)
+            self.session = 0
+
     def recv_state(self, timeout: float | None = 0.1) -> State | None:
-        """The next state packet (None after timeout s)."""
-        import time
-        self.sock.settimeout(timeout)
+        """The next state packet from the runner (None after timeout s)."""
         deadline = None if timeout is None else time.monotonic() + timeout
-        while True:
-            try:
-                data = self.sock.recv(65536)
-            except (socket.timeout, BlockingIOError):
-                return None
-            try:
-                st = State.from_packet(decode_packet(data))
-                st.received_at = time.monotonic()
-                self.last_state = st
-                return st
-            except PacketError:
-                self.bad_packets += 1
-                if deadline is not None:
-                    remaining = deadline - time.monotonic()
-                    if remaining <= 0:
-                        return None
-                    self.sock.settimeout(remaining)
+        while not self._states:
+            remaining = None if deadline is None else deadline - time.monotonic()
+            if remaining is not None and remaining <= 0:
+                self._pump(0.0)
+                if not self._states:
+                    return None
+                break
+            self._pump(remaining)
+        st = self._states.popleft()
+        self.last_state = st
+        return st
 
     def latest_state(self, timeout: float = 0.1) -> State | None:
         """Waits for a state packet, then drains the queue and returns the newest one."""
         st = self.recv_state(timeout)
         if st is None:
             return None
-        while True:
-            nxt = self.recv_state(0.0)
-            if nxt is None:
-                return st
-            st = nxt
+        while self._pump(0.0):
+            pass
+        while self._states:
+            st = self._states.popleft()
+        self.last_state = st
+        return st
 
     def close(self) -> None:
+        try:
+            self.release()
+        except OSError:
+            pass
         self.sock.close()
 
     def __enter__(self):
@@ -271,8 +447,9 @@ class RealtimeSession:
 
     Parameters are those of armrt-rt (docs/realtime.md): model, integrator, rate_hz, dt, q0, duration,
     realtime, priority, lock_memory (mlockall of the whole Python process; off by default), require_rt,
-    cpu, busy_wait_us, record_capacity, listen ("127.0.0.1:0" for an ephemeral port), state_to,
-    state_rate_hz, send_forces, input_timeout, channels.
+    cpu, busy_wait_us, max_lag, listen ("127.0.0.1:0" for an ephemeral port), state_to (one "host:port"
+    or a list), allow (list of "host[:port]"), key (bytes >= 16), state_rate_hz, send_forces,
+    send_excitation, input_timeout, channels, rx_budget_us. Bad values raise ValueError naming the option.
     """
 
     def __init__(self, **config):
@@ -283,6 +460,13 @@ class RealtimeSession:
             del config["q0"]
         if "channels" in config:
             config["channels"] = list(config["channels"] or [])
+        for name in ("state_to", "allow"):
+            if isinstance(config.get(name), str):
+                config[name] = [config[name]] if config[name] else []
+            elif name in config:
+                config[name] = list(config[name] or [])
+        if "key" in config:
+            config["key"] = _key_bytes(config["key"]) or b""
         self.config = dict(config)
         self._loop = _rt.RtLoop(**config)
         self._started = False

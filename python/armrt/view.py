@@ -3,7 +3,8 @@ the PyPI package, nothing is downloaded at run time).
 
     armrt view                       # a demo simulation, http://localhost:8080
     armrt view --result run.npz      # replay a saved result
-    armrt view --udp 0.0.0.0:9870    # the armrt-rt state stream (needs armrt.realtime)
+    armrt view --udp :9870           # the armrt-rt state stream on loopback (armrt-rt --state-to 127.0.0.1:9870
+                                     # --excitations); bind another address explicitly, e.g. --udp 10.0.0.5:9870
 
     from armrt.view import serve, SimulationSource
     serve(SimulationSource(excitation=lambda t: {"elbow_flexors": 0.3}))
@@ -30,6 +31,12 @@ STATIC_COLOUR = (120, 120, 120)
 STAB_OK, STAB_BAD = (40, 180, 60), (230, 30, 30)
 
 
+DOF_LABELS = {  # the model's coordinates (docs/conventions.md) with the names a lab uses
+    "GHy": "plane of elevation", "GHz": "elevation", "GHyy": "axial rotation", "ELx": "elbow flexion",
+    "PSy": "pronation-supination"}
+STAB_WINDOW_S = 10.0   # GHstab plot: the last seconds
+
+
 @dataclass
 class Frame:
     """One state to draw."""
@@ -37,6 +44,10 @@ class Frame:
     q: np.ndarray                      # (5,) rad
     activation: np.ndarray | None      # (n,) or None
     gh_stab: float = float("nan")
+    lag: float | None = None           # s behind wall time (real-time runner only)
+    overrun: bool = False              # the runner overran since its previous state packet
+    timed_out: bool = False            # the runner has no controller (excitation zero)
+    kind: str = "activation"           # what `activation` holds: "activation" or "excitation received"
 
 
 class Source(Protocol):
@@ -59,7 +70,8 @@ class SimulationSource:
     """An `armrt.Arm` stepped in a background thread, paced to wall-clock time x `speed`.
 
     excitation: f(t) -> anything `Arm.set_excitation` takes, or a constant; default demo_excitation.
-    A diverged simulation restarts from the rest posture."""
+    `set_manual({group: value})` overrides it (the viewer's excitation sliders; None: back to it);
+    `set_paused(True)` holds the simulation. A diverged simulation restarts from the rest posture."""
 
     def __init__(self, arm=None, excitation: Callable | dict | None = None, model: str = "das2",
                  integrator: str | None = None, dt: float = 1e-3, speed: float = 1.0, chunk: float = 0.01):
@@ -75,6 +87,27 @@ class SimulationSource:
         self._thread: threading.Thread | None = None
         self.restarts = 0
         self.error: BaseException | None = None
+        self.manual: np.ndarray | None = None   # (n_elements,) held excitation, or None
+        self._paused = threading.Event()
+
+    @property
+    def paused(self) -> bool:
+        return self._paused.is_set()
+
+    def set_paused(self, paused: bool) -> None:
+        (self._paused.set if paused else self._paused.clear)()
+
+    def set_manual(self, excitation: dict | None) -> None:
+        """Excitations by group/muscle/element name held constant (None: back to the `excitation` source).
+        An element in several named groups takes the largest of their values, as in the runner."""
+        if excitation is None:
+            self.manual = None
+            return
+        u = np.zeros(len(self.element_names))
+        for name, v in excitation.items():
+            ix = self.arm.indices(name)
+            u[ix] = np.maximum(u[ix], float(v))
+        self.manual = u
 
     def _snapshot(self) -> Frame:
         return Frame(time=self.arm.time, q=self.arm.q.copy(), activation=self.arm.activation.copy(),
@@ -85,7 +118,14 @@ class SimulationSource:
         try:
             t_wall0, t_sim0 = time.perf_counter(), self.arm.time
             while not self._stop.is_set():
-                u = self.excitation(self.arm.time) if callable(self.excitation) else self.excitation
+                if self._paused.is_set():
+                    self._stop.wait(0.02)
+                    t_wall0, t_sim0 = time.perf_counter(), self.arm.time   # no catching up after a pause
+                    continue
+                if self.manual is not None:
+                    u = self.manual
+                else:
+                    u = self.excitation(self.arm.time) if callable(self.excitation) else self.excitation
                 self.arm.set_excitation(u)
                 try:
                     self.arm.step(self.steps_per_chunk)
@@ -118,7 +158,8 @@ class SimulationSource:
 
 
 class ResultSource:
-    """A saved `Result` replayed in real time x `speed`, looping."""
+    """A saved `Result` replayed in real time x `speed`, looping; `set_paused`, `seek(t)` (the viewer's
+    pause box and time slider)."""
 
     def __init__(self, result, speed: float = 1.0, loop: bool = True):
         if isinstance(result, (str, bytes)) or hasattr(result, "__fspath__"):
@@ -128,18 +169,40 @@ class ResultSource:
         self.model = result.model or "das2"
         self.element_names = list(result.element_names)
         self.speed, self.loop = float(speed), loop
-        self._t0 = None
+        self._t0 = None          # wall time at which playback (re)started
+        self._pos0 = 0.0         # playback position (s after the first sample) at _t0
+        self.paused = False
+
+    @property
+    def span(self) -> tuple[float, float]:
+        return float(self.result.time[0]), float(self.result.time[-1])
 
     def start(self) -> None:
         self._t0 = time.perf_counter()
+
+    def _position(self) -> float:
+        span = self.span[1] - self.span[0]
+        pos = self._pos0 if self.paused else self._pos0 + (time.perf_counter() - self._t0) * self.speed
+        return pos % span if self.loop and span > 0 else min(pos, span)
+
+    def set_paused(self, paused: bool) -> None:
+        if self._t0 is None:
+            self.start()
+        self._pos0, self._t0 = self._position(), time.perf_counter()
+        self.paused = bool(paused)
+
+    def seek(self, t: float) -> None:
+        """Shows the sample at time t (s, the result's clock); playback continues from there unless paused."""
+        if self._t0 is None:
+            self.start()
+        lo, hi = self.span
+        self._pos0, self._t0 = float(np.clip(t, lo, hi)) - lo, time.perf_counter()
 
     def latest(self) -> Frame | None:
         r = self.result
         if self._t0 is None or len(r.time) == 0:
             return None
-        span = float(r.time[-1] - r.time[0])
-        t = (time.perf_counter() - self._t0) * self.speed
-        t = (t % span if self.loop and span > 0 else min(t, span)) + float(r.time[0])
+        t = self._position() + float(r.time[0])
         k = int(np.clip(np.searchsorted(r.time, t, side="right") - 1, 0, len(r.time) - 1))
         return Frame(time=float(r.time[k]), q=np.asarray(r.q[k]), activation=np.asarray(r.activation[k]),
                      gh_stab=float(r.gh_stab[k]))
@@ -149,26 +212,23 @@ class ResultSource:
 
 
 class UdpSource:
-    """The armrt-rt UDP state stream (docs/realtime.md): run the runner with `--state-to HOST:PORT` (or
-    `RealtimeSession(state_to=...)`) and view with `armrt view --udp HOST:PORT`. Packets are decoded by
-    `armrt.realtime` (`decode_packet` + `State.from_packet`); this module defines no format of its own.
-    State packets carry time, q and GHstab but no activations, so the activation panel stays empty."""
+    """The armrt-rt UDP state stream (docs/realtime.md): run the runner with `--state-to HOST:PORT
+    --excitations` (or `RealtimeSession(state_to=..., send_excitation=True)`) and view with
+    `armrt view --udp :PORT`. Binds loopback unless another address is named (`HOST:PORT`, parsed as
+    the runner does). Packets are decoded by `armrt.realtime`; with `key` (the runner's shared key)
+    only signed packets are drawn. The activation panel shows the excitations the runner applied
+    (present with --excitations); lag and the overrun flag come with every packet."""
 
-    def __init__(self, host: str = "0.0.0.0", port: int = 9870, model: str = "das2"):
+    def __init__(self, host: str = "127.0.0.1", port: int = 9870, model: str = "das2", key: bytes | None = None):
         try:
             from . import realtime
         except ImportError as exc:
             raise RuntimeError("the UDP source needs armrt.realtime (the armrt-rt packet codec), which is "
                                "not available in this build") from exc
-        if hasattr(realtime, "decode_packet") and hasattr(realtime, "State"):
-            def decode(data: bytes):
-                return realtime.State.from_packet(realtime.decode_packet(data))
-        elif hasattr(realtime, "decode_state"):
-            decode = realtime.decode_state
-        else:
-            raise RuntimeError("armrt.realtime has no state-packet decoder (decode_packet + State.from_packet)")
         import socket
-        self._decode = decode
+        host, port = realtime.parse_endpoint(f"{host}:{int(port)}")
+        self._realtime = realtime
+        self._key = key
         self.model = model
         from . import _core
         self.element_names = [e["name"] for e in _core.model_info(model)["elements"]]
@@ -183,22 +243,20 @@ class UdpSource:
         self.bad_packets = 0
 
     def _run(self) -> None:
+        rt = self._realtime
         while not self._stop.is_set():
             try:
                 data, _ = self._sock.recvfrom(65536)
             except OSError:
                 continue
             try:
-                s = self._decode(data)
-                get = s.get if isinstance(s, dict) else (lambda k, d=None: getattr(s, k, d))
-                act = get("activation")
-                self._frame = Frame(time=float(get("time", 0.0)), q=np.asarray(get("q"), dtype=float)[:5],
-                                    activation=None if act is None else np.asarray(act, dtype=float),
-                                    gh_stab=float(get("gh_stab", float("nan"))))
+                s = rt.State.from_packet(rt.decode_packet(data, self._key))
+                self._frame = Frame(time=s.time, q=np.asarray(s.q, dtype=float), activation=s.excitation,
+                                    gh_stab=s.gh_stab, lag=s.lag, overrun=s.overrun, timed_out=s.timed_out,
+                                    kind="excitation received")
                 self.packets += 1
             except Exception:
                 self.bad_packets += 1
-
     def start(self) -> None:
         if self._thread is None:
             self._thread = threading.Thread(target=self._run, name="armrt-udp", daemon=True)
@@ -225,6 +283,31 @@ def activation_colours(a: np.ndarray) -> np.ndarray:
     return ((1 - a) * np.array([170, 170, 170]) + a * np.array([220, 20, 20])).astype(np.uint8)
 
 
+def stab_plot_svg(t: np.ndarray, gh: np.ndarray, window: float = STAB_WINDOW_S, width: int = 260,
+                  height: int = 96) -> str:
+    """GHstab over the last `window` s as an inline SVG, with the 1 (rim: dislocation) and 0.5 lines."""
+    t, gh = np.asarray(t, dtype=float), np.asarray(gh, dtype=float)
+    ok = np.isfinite(gh)
+    t, gh = t[ok], gh[ok]
+    top = max(1.5, float(np.max(gh)) * 1.1) if gh.size else 1.5
+    x0, x1, y0, y1 = 26, width - 4, 6, height - 16
+
+    def y(v):
+        return y1 - (y1 - y0) * np.clip(v, 0, top) / top
+    parts = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+             f'style="background:#fafafa;font:10px sans-serif" data-armrt="gh-stab-plot">']
+    for level, colour, dash in ((1.0, "#d22", ""), (0.5, "#e90", ' stroke-dasharray="4 3"')):
+        parts.append(f'<line x1="{x0}" x2="{x1}" y1="{y(level):.1f}" y2="{y(level):.1f}" stroke="{colour}"{dash}/>'
+                     f'<text x="2" y="{y(level) + 3:.1f}" fill="{colour}">{level:g}</text>')
+    if t.size >= 2:
+        tx = x1 - (x1 - x0) * np.clip((t[-1] - t) / window, 0, 1)
+        pts = " ".join(f"{a:.1f},{b:.1f}" for a, b in zip(tx, y(gh)))
+        parts.append(f'<polyline points="{pts}" fill="none" stroke="#246" stroke-width="1.5"/>')
+    parts.append(f'<text x="{x0}" y="{height - 3}" fill="#555">GHstab, last {window:g} s (1: force at the '
+                 f'glenoid rim)</text></svg>')
+    return "".join(parts)
+
+
 def _polyline_segments(p: np.ndarray) -> np.ndarray:
     return np.stack([p[:-1], p[1:]], axis=1)
 
@@ -243,6 +326,8 @@ class Viewer:
         self.url = f"http://{'localhost' if host in ('0.0.0.0', '127.0.0.1') else host}:{self.port}"
         self.frames_drawn = 0
         self.last_frame: Frame | None = None
+        import collections
+        self._stab_history: collections.deque = collections.deque(maxlen=int(self.fps * STAB_WINDOW_S * 2) + 10)
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
         self._lines_of_action = lines_of_action
@@ -285,15 +370,53 @@ class Viewer:
         gui.configure_theme(control_width="medium")
         self._status = gui.add_markdown("starting...")
         self._stab_bar = gui.add_progress_bar(0.0, color="green")
+        self.controls: dict = {}
+        self._add_controls(gui)
+        self._stab_plot = gui.add_html(stab_plot_svg([], []))
+        self._angles = gui.add_html(self._angles_html(None))
         self._bars = gui.add_html(self._activation_html(None))
 
         @self.server.on_client_connect
         def _(client) -> None:
-            # Anterior view from the subject's front right, framing girdle and arm.
-            centre = np.array([0.12, -0.22, 0.0])
+            # Anterior view from the subject's front right, framing the shoulder and the arm at rest
+            # (shoulder to hand about 0.6 m) so that they fill most of the view's height.
+            centre = np.array([0.13, -0.27, 0.0])
             client.camera.up_direction = (0.0, 1.0, 0.0)
-            client.camera.position = tuple(centre + np.array([0.35, 0.15, -0.95]))
+            client.camera.position = tuple(centre + np.array([0.2, 0.08, -0.55]))
             client.camera.look_at = tuple(centre)
+
+    def _add_controls(self, gui) -> None:
+        """Offline sources: pause; a time slider for a saved result; excitation sliders per group for a
+        simulation. (The real-time runner is driven by its controller, not from the page.)"""
+        src = self.source
+        if hasattr(src, "set_paused"):
+            pause = gui.add_checkbox("pause", initial_value=False)
+            pause.on_update(lambda _: src.set_paused(pause.value))
+            self.controls["pause"] = pause
+        if hasattr(src, "seek"):
+            lo, hi = src.span
+            scrub = gui.add_slider("time (s)", min=lo, max=max(hi, lo + 1e-3), step=max((hi - lo) / 1000, 1e-4),
+                                   initial_value=lo)
+
+            def _seek(_) -> None:
+                src.seek(scrub.value)
+                if "pause" in self.controls and not self.controls["pause"].value:
+                    self.controls["pause"].value = True   # scrubbing holds the frame
+            scrub.on_update(_seek)
+            self.controls["time"] = scrub
+        if hasattr(src, "set_manual"):
+            with gui.add_folder("excitation (manual)", expand_by_default=False):
+                manual = gui.add_checkbox("use sliders", initial_value=False)
+                sliders = {g: gui.add_slider(g, min=0.0, max=1.0, step=0.01, initial_value=0.0)
+                           for g, _ in self.geom.info["groups"]}
+
+            def _apply(_) -> None:
+                src.set_manual({g: h.value for g, h in sliders.items()} if manual.value else None)
+            manual.on_update(_apply)
+            for h in sliders.values():
+                h.on_update(_apply)
+            self.controls["manual"] = manual
+            self.controls.update({f"excitation:{g}": h for g, h in sliders.items()})
 
     def _bone_segments(self, pts: np.ndarray) -> np.ndarray:
         return ArmGeometry.segments(pts).astype(np.float32)
@@ -302,7 +425,16 @@ class Viewer:
     def _bone_colours() -> np.ndarray:
         return np.repeat(np.array(list(BONE_COLOURS.values()), dtype=np.uint8)[:, None], 2, axis=1)
 
-    def _activation_html(self, act: np.ndarray | None) -> str:
+    def _angles_html(self, q: np.ndarray | None) -> str:
+        rows = []
+        for k, name in enumerate(self.geom.dof_names):
+            v = "" if q is None else f"{np.degrees(q[k]):7.1f}&deg;"
+            rows.append(f'<tr><td>{DOF_LABELS.get(name, name)}</td><td style="color:#777">{name}</td>'
+                        f'<td style="text-align:right">{v}</td></tr>')
+        return ('<div style="font:11px monospace"><b style="font:12px sans-serif">joint angles</b>'
+                '<table style="border-spacing:6px 0">' + "".join(rows) + "</table></div>")
+
+    def _activation_html(self, act: np.ndarray | None, kind: str = "activation", note: str = "") -> str:
         rows = []
         for m, ix in self._muscles:
             a = 0.0 if act is None else float(np.mean(act[ix]))
@@ -311,7 +443,10 @@ class Viewer:
                         f'<span style="width:70px">{m}</span><span style="flex:1;background:#eee;height:9px">'
                         f'<span style="display:block;width:{w}%;height:9px;background:#d33"></span></span>'
                         f'<span style="width:34px;text-align:right">{a:.2f}</span></div>')
-        return '<div><b style="font:12px sans-serif">muscle activation (mean of elements)</b>' + "".join(rows) + "</div>"
+        head = f'<b style="font:12px sans-serif">muscle {kind} (mean of elements)</b>'
+        if note:
+            head += f'<div style="font:11px sans-serif;color:#a50">{note}</div>'
+        return "<div>" + head + "".join(rows) + "</div>"
 
     # -------------------------------------------------------------- updates
     def draw(self, f: Frame) -> None:
@@ -331,12 +466,25 @@ class Viewer:
                     self._loa.colors = np.repeat(activation_colours(f.activation[idx])[:, None], 2, axis=1)
             stab = f"{f.gh_stab:.2f}" if np.isfinite(f.gh_stab) else "n/a"
             flag = " **above 1: force outside the glenoid rim**" if colour == STAB_BAD else ""
-            self._status.content = (f"**t = {f.time:7.2f} s**  \nGHstab = {stab}{flag}  \n"
-                                    f"q (deg) = {np.array2string(np.degrees(f.q), precision=0, separator=', ')}")
+            rt_line = ""
+            if f.lag is not None:
+                rt_line = f"  \nlag behind wall time {f.lag * 1e3:.0f} ms" + (
+                    "  \n**OVERRUN** (the runner missed a deadline)" if f.overrun else "") + (
+                    "  \nno controller: excitation zero" if f.timed_out else "")
+            self._status.content = f"**t = {f.time:7.2f} s**  \nGHstab = {stab}{flag}{rt_line}"
             self._stab_bar.value = float(np.clip(50 * f.gh_stab, 0, 100)) if np.isfinite(f.gh_stab) else 0.0
             self._stab_bar.color = "red" if colour == STAB_BAD else "green"
-            if f.activation is not None and self._muscles and self.frames_drawn % 3 == 0:
-                self._bars.content = self._activation_html(f.activation)
+            self._stab_history.append((f.time, f.gh_stab))
+            if self.frames_drawn % 3 == 0:
+                h = np.array(self._stab_history)
+                recent = h[h[:, 0] >= h[-1, 0] - STAB_WINDOW_S]
+                self._stab_plot.content = stab_plot_svg(recent[:, 0], recent[:, 1])
+                self._angles.content = self._angles_html(f.q)
+                if self._muscles:
+                    note = ""
+                    if f.activation is None and f.kind == "excitation received":
+                        note = "state packets carry no excitations: start armrt-rt with --excitations"
+                    self._bars.content = self._activation_html(f.activation, f.kind, note)
         self.frames_drawn += 1
 
     def _loop(self) -> None:
@@ -393,8 +541,13 @@ def _cmd_view(args) -> int:
     if args.result:
         source = ResultSource(args.result, speed=args.speed)
     elif args.udp:
-        host, _, port = args.udp.rpartition(":")
-        source = UdpSource(host or "0.0.0.0", int(port), model=args.model)
+        from .realtime import parse_endpoint, read_key_file
+        try:
+            host, port = parse_endpoint(args.udp)
+            key = read_key_file(args.key_file) if args.key_file else None
+        except (ValueError, OSError) as e:
+            raise SystemExit(f"armrt view: {e}") from None
+        source = UdpSource(host, port, model=args.model, key=key)
     else:
         source = SimulationSource(model=args.model, integrator=args.integrator, dt=args.dt, speed=args.speed)
     serve(source, host=args.host, port=args.port, fps=args.fps, lines_of_action=not args.no_lines,
@@ -429,7 +582,8 @@ def add_cli(subparsers) -> None:
     p = subparsers.add_parser("view", help="live 3D view in the browser (demo simulation, a saved result, or UDP)")
     src = p.add_mutually_exclusive_group()
     src.add_argument("--result", help="replay a saved result (.npz)")
-    src.add_argument("--udp", metavar="HOST:PORT", help="listen to the armrt-rt state stream")
+    src.add_argument("--udp", metavar="HOST:PORT", help="listen to the armrt-rt state stream (':PORT': loopback)")
+    p.add_argument("--key-file", help="the runner's --key-file (draw only signed state packets)")
     p.add_argument("--model", default="das2")
     p.add_argument("--integrator", default=DEFAULT_INTEGRATOR, choices=INTEGRATORS,
                    help="integration method (default: %(default)s, one linearly implicit step per 1 ms)")

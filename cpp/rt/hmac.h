@@ -1,0 +1,34 @@
+// HMAC-SHA256 (RFC 2104) of packets with a shared key, for the optional authentication of the UDP
+// link (docs/realtime.md, "Threat model"). SHA-256 is OpenSSL's libcrypto. The key's inner and outer
+// pad states are hashed once at set-up; each packet then costs two copies of a SHA256_CTX and the
+// hashing itself: no heap allocation, no lock (OpenSSL's EVP/HMAC interfaces duplicate provider
+// contexts on the heap per message, which the hot loop must not do).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <openssl/sha.h>
+
+namespace armrt::rt {
+
+class HmacKey {
+ public:
+  HmacKey() = default;
+  explicit HmacKey(const std::string& key);  // throws std::invalid_argument if shorter than 16 bytes
+  bool enabled() const { return enabled_; }
+  // tag = HMAC-SHA256(key, data[0, n)), 32 bytes.
+  void sign(const std::uint8_t* data, long n, std::uint8_t* tag) const;
+  // Constant-time comparison of HMAC(data[0, n)) with tag.
+  bool verify(const std::uint8_t* data, long n, const std::uint8_t* tag) const;
+
+ private:
+  bool enabled_ = false;
+  SHA256_CTX inner_{}, outer_{};
+};
+
+// The key in a file: its bytes, without one trailing newline (so `head -c 32 /dev/urandom | base64 >
+// key` and `openssl rand -hex 32 > key` both work). Throws std::invalid_argument naming the problem.
+std::string read_key_file(const std::string& path);
+
+}  // namespace armrt::rt
