@@ -176,19 +176,23 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
                         (2.0 * mc.k_see[i]);
     const double along_op = std::max(L_next - mc.lslack[i] - s_op, mc.min_lce[i]);
     const double lce_op = std::sqrt(along_op * along_op + mc.thickness[i] * mc.thickness[i]);
-    // Fraction theta of the explicit displacement h v that reaches it. theta < 1: an explicit step
-    // would run through the operating point (a slack tendon engaging within the step).
+    // Fraction theta of the step's displacement that reaches it. theta < 1: the step would run
+    // through the operating point (a slack tendon engaging within the step).
     // Only from a slack tendon: a taut one is followed by its own tangent stiffness, and stopping its
     // CE at the estimated operating point would bias the motion at every step size.
     const double slack = L_now - std::sqrt(lce * lce - mc.thickness[i] * mc.thickness[i]) - mc.lslack[i];
-    const double disp = h * xdot[kLce + i];
+    // The CE's drive over the step: its velocity plus what the activation change adds through
+    // dv/da (the first stage's activation increment, as the solve will see it). Activation onset
+    // from rest moves a slack CE through dv/da alone (v = 0 at a = 0).
+    const double ka = xdot[ia + i] / (1.0 + hg * jac.act_rate[i]);
+    const double disp = h * (xdot[kLce + i] + hg * jac.dvel_da[i] * ka);
     const double theta = disp != 0.0 ? (lce_op - x[kLce + i]) / disp : 2.0;
     // Only where the CE is driven by its own active force (F0 > 5 % fmax): a passive element's CE moves
     // with the muscle-tendon unit, and stopping it at an estimated operating point biases the motion
     // at every step size (measured: errors that do not shrink with the step).
     const bool overshoots = slack <= 0.0 && F0 > kEngagingActiveForce * mc.fmax[i] && theta > 0.0 && theta < 1.0;
-    // ROS2 on a scalar linear mode lambda moves by h v theta'(2 - theta'), theta' = 1/(1 - hg lambda):
-    // choose lambda so that this equals h v theta.
+    // ROS2 on a scalar linear mode x' = lambda x + w moves by h w theta'(2 - theta'),
+    // theta' = 1/(1 - hg lambda): choose lambda so that this equals theta h w.
     const double theta_c = overshoots ? theta : 0.5;
     const double theta_p = 1.0 - std::sqrt(1.0 - theta_c);
     const double lambda = -(1.0 / theta_p - 1.0) / hg;

@@ -48,9 +48,10 @@ def random_protocol(seed: int, n_elements: int, duration: float = 5.0, muscles: 
     muscles = muscles or [[i] for i in range(n_elements)]
     kind = KINDS[seed % len(KINDS)]
     profile = PROFILES[(seed // len(KINDS)) % len(PROFILES)]
+    # Switch times on a 10 ms grid, so control steps of 1 and 2 ms see the same input.
     times = [0.0]
     while times[-1] < duration:
-        times.append(times[-1] + rng.uniform(0.05, 0.5))
+        times.append(times[-1] + round(rng.uniform(0.05, 0.5), 2))
     times = np.array(times[:-1])
     K = len(times)
     per_muscle = np.zeros((K, len(muscles)))
