@@ -1,7 +1,7 @@
 """Benchmark harness: one command for every comparison, results under bench/results/.
 
-    python -m bench all [--quick]     # engine, OpenSim, MuJoCo/MyoSuite, scaling, then the report
-    python -m bench engine|opensim|mujoco|scaling|guard|report
+    python -m bench all [--quick]     # engine, integrators, OpenSim, MuJoCo/MyoSuite, scaling, then the report
+    python -m bench engine|integrators|opensim|mujoco|scaling|guard|report
 
 Needs `armrt` importable (pip install ., or PYTHONPATH=python with _core*.so copied there), the C++
 tools built (ninja armrt_bench armrt_bench_scaling) for the engine and scaling figures, opensim and
@@ -41,7 +41,7 @@ def plot_opensim(osr: dict, path: Path) -> None:
     t = tr["time"]
     dofs = ["GHy", "GHz", "GHyy", "ELx", "PSy"]
     fig, axes = plt.subplots(1, 5, figsize=(15, 3.2), sharex=True)
-    style = {"armrt_rk4_1ms": "-", "armrt_euler_0.1ms": ":", "armrt_cvode": "--", "opensim_rkm_default": "-",
+    style = {"armrt_ros2_1ms": "-", "armrt_rk4_1ms": "-", "armrt_euler_0.1ms": ":", "armrt_cvode": "--", "opensim_rkm_default": "-",
              "opensim_rkm_fixed_1ms": "-."}
     for name, q in tr.items():
         if name == "time":
@@ -69,10 +69,19 @@ def report() -> int:
           "(other engineers' builds running): every figure is a median over repeats; expect 10-30 % noise.", ""]
     if eng and eng.get("cpp"):
         c = eng["cpp"]
-        summary["engine"] = {k: c[k]["median"] for k in ("forward", "rk4_step", "euler_step") if k in c}
+        summary["engine"] = {k: c[k]["median"] for k in ("forward", "ros2_step", "rk4_step", "euler_step") if k in c}
         md += ["## Engine (C++, median ns)", "", "| item | median | p99 | max |", "|---|---:|---:|---:|"]
         md += [f"| {k} | {c[k]['median']:.0f} | {c[k]['p99']:.0f} | {c[k]['max']:.0f} |"
-               for k in ("forward", "forward_record", "muscle_paths", "mass_matrix", "euler_step", "rk4_step") if k in c]
+               for k in ("forward", "forward_record", "muscle_paths", "mass_matrix", "euler_step", "rk4_step", "ros2_step") if k in c]
+        md.append("")
+    integ = _load("integrators")
+    if integ:
+        from bench.bench_integrators import markdown as integ_md
+
+        summary["integrators"] = {k: integ[k] for k in ("cost", "tasks", "forward_vs_baseline") if k in integ}
+        if "random" in integ:
+            summary["integrators"]["random"] = integ["random"]["summary"]
+        md += integ_md(integ).replace("# Integrators side by side", "## Integrators side by side").replace("\n## ", "\n### ").splitlines()
         md.append("")
     if osr:
         from bench.bench_opensim import markdown as os_md
@@ -109,7 +118,7 @@ def report() -> int:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python -m bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", choices=["all", "engine", "opensim", "mujoco", "scaling", "guard", "report"])
+    ap.add_argument("what", choices=["all", "engine", "integrators", "opensim", "mujoco", "scaling", "guard", "report"])
     ap.add_argument("--quick", action="store_true", help="shorter runs (smoke test; figures noisier)")
     args = ap.parse_args(argv)
     if str(ROOT) not in sys.path:
@@ -123,10 +132,12 @@ def main(argv=None) -> int:
         "scaling": lambda: __import__("bench.bench_scaling", fromlist=["main"]).main(
             ["--reps", "3000" if q else "20000"] + (["--no-subsets"] if q else [])),
         "guard": lambda: __import__("bench.ci_guard", fromlist=["main"]).main([]),
+        "integrators": lambda: __import__("bench.bench_integrators", fromlist=["main"]).main(
+            ["--quick"] if q else []),
     }
     if args.what == "report":
         return report()
-    names = ["engine", "opensim", "mujoco", "scaling"] if args.what == "all" else [args.what]
+    names = ["engine", "integrators", "opensim", "mujoco", "scaling"] if args.what == "all" else [args.what]
     rc = 0
     for name in names:
         print(f"\n=== {name} ===", flush=True)
@@ -136,7 +147,7 @@ def main(argv=None) -> int:
             print(f"{name}: failed: {type(exc).__name__}: {exc}", file=sys.stderr)
             r = 1
         rc = rc or (r or 0)
-    if args.what in ("all", "engine", "opensim", "mujoco", "scaling"):
+    if args.what in ("all", "engine", "integrators", "opensim", "mujoco", "scaling"):
         print("\n=== report ===")
         report()
     return rc

@@ -127,7 +127,7 @@ def bench_armrt(seconds: float, reps: int) -> dict:
     import armrt
 
     out = {}
-    for integ, dt in (("rk4", 1e-3), ("euler", 1e-4)):
+    for integ, dt in (("ros2", 1e-3), ("rk4", 1e-3), ("euler", 1e-4)):
         arm = make_arm(integ, dt, 1)
         n = int(round(seconds / dt))
         walls = []
@@ -142,7 +142,7 @@ def bench_armrt(seconds: float, reps: int) -> dict:
         out[f"armrt_{integ}"] = {"muscles": arm.n_elements, "nq": 5, "timestep": dt, "integrator": integ.upper(),
                                  "sim_s": seconds, "steps": n, "step_ns": step_ns, "steps_per_s": n / wall,
                                  "ns_per_muscle_step": step_ns / arm.n_elements, "real_time_factor": seconds / wall,
-                                 "ns_per_muscle_derivative": step_ns / arm.n_elements / (4 if integ == "rk4" else 1)}
+                                 "ns_per_muscle_derivative": step_ns / arm.n_elements / {"rk4": 4, "ros2": 2}.get(integ, 1)}
     return out
 
 

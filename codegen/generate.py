@@ -322,10 +322,9 @@ def paths_source(model: dict, ns: str) -> str:
     lengths = [_global_poly(e["length_poly"], e["length_poly"]["dofs"], dof_index) for e in els]
 
     out = []
-    # muscle_lengths
-    mono = _Monomials()
-    body = [f"  L[{i}] = {_sum(t, mono)};" for i, t in enumerate(lengths)]
-    out.append("void muscle_lengths(const double* q, double* L) {\n" + "\n".join(mono.preamble() + body) + "\n}\n")
+    # muscle_lengths: the lengths of muscle_paths, bit for bit (one summation order for both).
+    out.append("void muscle_lengths(const double* q, double* L) {\n"
+               f"  double moment_arm[{max(1, len(lengths)) * NDOF}];\n  muscle_paths(q, L, moment_arm);\n}}\n")
 
     # muscle_paths: lengths and moment arms -dL/dq in one pass. Each monomial m carries the vector
     # G(m) = [-dm/dq0, ..., -dm/dq4, m, 0, 0]; every term of a length polynomial adds c G(m) (one 8-wide

@@ -60,14 +60,20 @@ def test_ros2_within_0p1_deg_of_cvode_on_the_paper_tasks(tasks, task):
     assert arm.substeps == 1
     err = np.degrees(np.abs(res.q - ref.q)).max()
     assert err < 0.1, f"{seq.name}: {err:.4f} deg"
-    # ... and the 2 ms step-halving mode on the same task, against CVODE at the same control step.
-    _, ref2 = ex.run_sequence(seq, "cvode", 2e-3)
-    _, res2 = ex.run_sequence(seq, "ros2_adaptive", 2e-3)
-    n = min(len(res2.q), len(ref2.q))
-    err2 = np.degrees(np.abs(res2.q[:n] - ref2.q[:n])).max()
-    assert err2 < 0.1, f"{seq.name} at 2 ms: {err2:.4f} deg"
     # The task moves the arm by far more than the tolerance.
     assert np.degrees(np.ptp(ref.q, axis=0)).max() > 20
+
+
+def test_ros2_adaptive_at_2ms_within_0p1_deg_on_fig1(tasks):
+    """The offline mode against CVODE at the same 2 ms control step (the Fig. 1 task: CVODE is quick
+    on its step changes; the deltoid ramps change the input every step and make CVODE slow)."""
+    seq = tasks[0]
+    _, ref = ex.run_sequence(seq, "cvode", 2e-3)
+    arm, res = ex.run_sequence(seq, "ros2_adaptive", 2e-3)
+    assert arm.substeps == 1
+    n = min(len(res.q), len(ref.q))
+    err = np.degrees(np.abs(res.q[:n] - ref.q[:n])).max()
+    assert err < 0.1, f"{err:.4f} deg"
 
 
 # Reduced random set for CI: one protocol of each kind (uniform, bang-bang, sparse) and each profile

@@ -181,6 +181,7 @@ int main(int argc, char** argv) {
   };
   step_item("euler_step", Integrator::kEuler, 1e-4, "Simulator::step, Euler, dt = 0.1 ms (1 derivative)");
   step_item("rk4_step", Integrator::kRk4, 1e-3, "Simulator::step, RK4, dt = 1 ms (4 derivatives)");
+  step_item("ros2_step", Integrator::kRos2, 1e-3, "Simulator::step, ROS2, dt = 1 ms (2 derivatives, Jacobian, 5x5 Schur LU)");
   {
     // CVODE: 1 ms advances over a 2 s stimulation (elbow flexors switched on at 0.5 s: one restart).
     const long cv_reps = std::min<long>(reps, 2000);
