@@ -149,68 +149,96 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
   StepJacobian& jac = d.jac;
   const MuscleArrays& mc = m.muscles;
   const int n = m.num_elements, ia = act_offset(m);
-  const double* qd = x + kQd;
   const double hg = kRos2Gamma * h;
+  const double b0 = m.fibre_damping;
+  // Muscle-tendon lengthening rates dL/dt = -R qd (m/s), then one branch-free pass per element.
+  double L_rate[kMaxElements];
+  for (int i = 0; i < n; ++i) {
+    const double* r = jac.moment_arm.data() + i * kNumDofs;
+    double s = 0;
+    for (int j = 0; j < kNumDofs; ++j) s -= r[j] * x[kQd + j];
+    L_rate[i] = s;
+  }
+  const double* lce_x = x + kLce;
+  const double* a_x = x + ia;
+  const double* lce_rate = xdot + kLce;
+  const double* a_rate = xdot + ia;
+  double* dvel_dlce = jac.dvel_dlce.data();
+  double* dvel_dL = jac.dvel_dL.data();
+  double* dvel_da = jac.dvel_da.data();
+  double* dforce_dL = jac.dforce_dL.data();
+  double* dforce_dlce = jac.dforce_dlce.data();
+  double taut[kMaxElements], L_op[kMaxElements], lce_at_op[kMaxElements], a_op[kMaxElements];
   int limited = 0;
 #pragma omp simd reduction(+ : limited)
   for (int i = 0; i < n; ++i) {
-    const double* r = jac.moment_arm.data() + i * kNumDofs;
-    double L_rate = 0;  // dL/dt = -R qd
-    for (int j = 0; j < kNumDofs; ++j) L_rate -= r[j] * qd[j];
     const double L_now = jac.muscle_length[i];
-    const double L_next = L_now + h * L_rate;
-    const double a_next = std::min(std::max(x[ia + i] + h * xdot[ia + i], 0.0), 1.0);
+    const double L_next = L_now + h * L_rate[i];
+    const double a_pred = a_x[i] + h * a_rate[i];
+    const double a_next = a_pred < 0.0 ? 0.0 : (a_pred > 1.0 ? 1.0 : a_pred);
     // Operating point: the tendon stretched to carry what the fibres hold isometrically, the CE's
     // force a fmax f(lce) plus the PEE's (k s^2 + 10 N/m s = that force along the tendon), where the
     // CE comes to rest once the tendon has engaged.
-    const double lce = std::max(x[kLce + i], mc.min_lce[i]);
+    const double lce = lce_x[i] > mc.min_lce[i] ? lce_x[i] : mc.min_lce[i];
     const double xfl = (lce * mc.inv_lceopt[i] - 1.0) * (1.0 / kForceLengthWidth);
     const double pee_stretch = lce - mc.pee_slack[i];
     const double pee_pos = pee_stretch > 0 ? pee_stretch : 0.0;
     const double f_pee = kLinearStiffness * pee_stretch + mc.k_pee[i] * pee_pos * pee_pos;
-    const double sin_pen = mc.thickness[i] / lce;
     const double F0 = a_next * mc.fmax[i] * exp_nonpositive(-xfl * xfl);
+    const double th2 = mc.thickness[i] * mc.thickness[i];
+    const double lce_along = std::sqrt(lce * lce - th2);
     const double fibre_force = F0 + f_pee;
-    const double F_op = std::max(fibre_force, 0.0) * std::sqrt(1.0 - sin_pen * sin_pen);
+    const double F_op = (fibre_force > 0.0 ? fibre_force : 0.0) * lce_along / lce;
     const double s_op = (std::sqrt(kLinearStiffness * kLinearStiffness + 4.0 * mc.k_see[i] * F_op) - kLinearStiffness) /
                         (2.0 * mc.k_see[i]);
-    const double along_op = std::max(L_next - mc.lslack[i] - s_op, mc.min_lce[i]);
-    const double lce_op = std::sqrt(along_op * along_op + mc.thickness[i] * mc.thickness[i]);
-    // Fraction theta of the step's displacement that reaches it. theta < 1: the step would run
-    // through the operating point (a slack tendon engaging within the step).
-    // Only from a slack tendon: a taut one is followed by its own tangent stiffness, and stopping its
-    // CE at the estimated operating point would bias the motion at every step size.
-    const double slack = L_now - std::sqrt(lce * lce - mc.thickness[i] * mc.thickness[i]) - mc.lslack[i];
+    const double along_op_raw = L_next - mc.lslack[i] - s_op;
+    const double along_op = along_op_raw > mc.min_lce[i] ? along_op_raw : mc.min_lce[i];
+    const double lce_op = std::sqrt(along_op * along_op + th2);
     // The CE's drive over the step: its velocity plus what the activation change adds through
     // dv/da (the first stage's activation increment, as the solve will see it). Activation onset
     // from rest moves a slack CE through dv/da alone (v = 0 at a = 0).
-    const double ka = xdot[ia + i] / (1.0 + hg * jac.act_rate[i]);
-    const double disp = h * (xdot[kLce + i] + hg * jac.dvel_da[i] * ka);
-    const double theta = disp != 0.0 ? (lce_op - x[kLce + i]) / disp : 2.0;
-    // Only where the CE is driven by its own active force (F0 > 5 % fmax): a passive element's CE moves
-    // with the muscle-tendon unit, and stopping it at an estimated operating point biases the motion
-    // at every step size (measured: errors that do not shrink with the step).
-    const bool overshoots = slack <= 0.0 && F0 > kEngagingActiveForce * mc.fmax[i] && theta > 0.0 && theta < 1.0;
+    const double ka = a_rate[i] / (1.0 + hg * jac.act_rate[i]);
+    const double disp = h * (lce_rate[i] + hg * dvel_da[i] * ka);
+    // Fraction theta of the step's displacement that reaches the operating point. Limited only from
+    // a slack tendon and where the CE is driven by its own active force (F0 > 5 % fmax): a taut
+    // tendon is followed by its own tangent stiffness, and a passive element's CE moves with the
+    // muscle-tendon unit; stopping those at an estimated operating point biased the motion at every
+    // step size (measured: errors that did not shrink with the step).
+    const double stretch_now = L_now - lce_along - mc.lslack[i];
+    const double disp_safe = disp != 0.0 ? disp : 1.0;
+    const double theta = (lce_op - lce_x[i]) / disp_safe;
+    const bool overshoots = disp != 0.0 && stretch_now <= 0.0 && F0 > kEngagingActiveForce * mc.fmax[i] &&
+                            theta > 0.0 && theta < 1.0;
     // ROS2 on a scalar linear mode x' = lambda x + w moves by h w theta'(2 - theta'),
     // theta' = 1/(1 - hg lambda): choose lambda so that this equals theta h w.
     const double theta_c = overshoots ? theta : 0.5;
     const double theta_p = 1.0 - std::sqrt(1.0 - theta_c);
     const double lambda = -(1.0 / theta_p - 1.0) / hg;
-    const bool stiffer = overshoots && lambda < jac.dvel_dlce[i];
-    // A taut tendon that will carry more force by the end of the step (activation rising) is stiffer
-    // there than now (quadratic tendon): linearise at the operating point when that is stiffer.
+    const bool stiffer = overshoots && lambda < dvel_dlce[i];
+    dvel_dlce[i] = stiffer ? lambda : dvel_dlce[i];
+    limited += stiffer ? 1 : 0;
+    taut[i] = stretch_now > 0.0 ? 1.0 : 0.0;
+    L_op[i] = L_next;
+    lce_at_op[i] = lce_op;
+    a_op[i] = a_next;
+  }
+  // A taut tendon that will carry more force by the end of the step (activation rising) is stiffer
+  // there than now (quadratic tendon): linearise at the operating point when that is stiffer. (A
+  // separate loop: with the kernel inside the one above, GCC 12 gave up vectorising it.)
+#pragma omp simd reduction(+ : limited)
+  for (int i = 0; i < n; ++i) {
     double force_op, vel_op;
-    MuscleDerivatives der;
+    MuscleDerivatives op;
     muscle_kernel_derivatives(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
-                              mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], mc.damping_slope[i],
-                              m.fibre_damping, L_next, lce_op, a_next, &force_op, &vel_op, &der);
-    const bool loading = slack > 0.0 && !stiffer && der.dvel_dlce < jac.dvel_dlce[i];
-    jac.dvel_dlce[i] = stiffer ? lambda : (loading ? der.dvel_dlce : jac.dvel_dlce[i]);
-    jac.dvel_dL[i] = loading ? der.dvel_dL : jac.dvel_dL[i];
-    jac.dvel_da[i] = loading ? der.dvel_da : jac.dvel_da[i];
-    jac.dforce_dL[i] = loading ? der.dforce_dL : jac.dforce_dL[i];
-    jac.dforce_dlce[i] = loading ? der.dforce_dlce : jac.dforce_dlce[i];
-    limited += (stiffer || loading) ? 1 : 0;
+                              mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], mc.damping_slope[i], b0,
+                              L_op[i], lce_at_op[i], a_op[i], &force_op, &vel_op, &op);
+    const bool loading = taut[i] > 0.0 && op.dvel_dlce < dvel_dlce[i];
+    dvel_dlce[i] = loading ? op.dvel_dlce : dvel_dlce[i];
+    dvel_dL[i] = loading ? op.dvel_dL : dvel_dL[i];
+    dvel_da[i] = loading ? op.dvel_da : dvel_da[i];
+    dforce_dL[i] = loading ? op.dforce_dL : dforce_dL[i];
+    dforce_dlce[i] = loading ? op.dforce_dlce : dforce_dlce[i];
+    limited += loading ? 1 : 0;
   }
   d.limited_fibre_steps += limited;
 }
