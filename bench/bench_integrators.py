@@ -56,9 +56,9 @@ def _tasks():
 
 
 def _bench_binary(root: Path) -> Path | None:
-    for p in sorted(root.glob("build/*/cpp/tools/armrt_bench")):
-        return p
-    return None
+    """The most recently built armrt_bench of this checkout (build/<dir>/cpp/tools)."""
+    found = sorted(root.glob("build/*/cpp/tools/armrt_bench"), key=lambda p: p.stat().st_mtime)
+    return found[-1] if found else None
 
 
 def _forward_ns(binary: Path, reps: int = 20000) -> dict:
