@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -89,6 +90,24 @@ py::dict model_info(const ModelDef& def) {
   return info;
 }
 
+// Ctrl-C during a long loop without the GIL: every ~50 ms of work the loop re-takes the GIL briefly
+// and lets Python run its signal handlers, so KeyboardInterrupt arrives within 0.1 s, not at the end.
+class InterruptCheck {
+ public:
+  static constexpr std::chrono::milliseconds kPeriod{50};
+  // True if a Python signal handler raised (the error is set; throw py::error_already_set with the GIL).
+  bool interrupted() {
+    const auto now = std::chrono::steady_clock::now();
+    if (now < next_) return false;
+    next_ = now + kPeriod;
+    py::gil_scoped_acquire gil;
+    return PyErr_CheckSignals() != 0;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point next_ = std::chrono::steady_clock::now() + kPeriod;
+};
+
 // Channels recorded by simulate(), one row per recorded step.
 struct Recording {
   std::vector<double> t, q, qd, lce, act, excitation, force, length, gh_force, gh_stab, gh_angles, hand, th_angles, tet;
@@ -137,11 +156,17 @@ PYBIND11_MODULE(_core, mod) {
         s.reset(qp, qdp, ap);
       }, py::arg("q") = py::none(), py::arg("qdot") = py::none(), py::arg("activation") = py::none())
       .def("step", [](Simulator& s, long n) {
+        bool interrupted = false;
         {
           py::gil_scoped_release release;
+          InterruptCheck check;
           // Outputs only for the last step (they describe its start state, as with record in simulate).
-          for (long k = 0; k < n; ++k) if (!s.step(k + 1 == n)) break;
+          for (long k = 0; k < n; ++k) {
+            if (!s.step(k + 1 == n)) break;
+            if (check.interrupted()) { interrupted = true; break; }
+          }
         }
+        if (interrupted) throw py::error_already_set();
         raise_if_failed(s);
       }, py::arg("n") = 1)
       .def("clear_error", [](Simulator& s) { s.data.status = Status::kOk; s.data.bad_index = -1; })
@@ -210,8 +235,10 @@ PYBIND11_MODULE(_core, mod) {
         const long n_rec = n_steps / record_every + 1;
         for (auto* v : {&r.t, &r.gh_stab, &r.tet}) v->reserve(n_rec);
         long steps_done = 0;
+        bool interrupted = false;
         {
           py::gil_scoped_release release;
+          InterruptCheck check;
           double angles[3];
           auto record = [&](double tet_ns) {
             const double* x = s.data.x.data();
@@ -251,12 +278,14 @@ PYBIND11_MODULE(_core, mod) {
               s.data.x = x1;
               s.data.time = t1;
             }
+            if (check.interrupted()) { interrupted = true; break; }
           }
-          if (s.data.status == Status::kOk && n_steps % record_every == 0) {
+          if (!interrupted && s.data.status == Status::kOk && n_steps % record_every == 0) {
             s.evaluate_outputs();
             record(0.0);
           }
         }
+        if (interrupted) throw py::error_already_set();
         raise_if_failed(s);
         const py::ssize_t T = static_cast<py::ssize_t>(r.t.size());
         auto arr = [T](const std::vector<double>& v, py::ssize_t w) {

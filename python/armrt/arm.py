@@ -2,13 +2,18 @@
 from __future__ import annotations
 
 import difflib
+import numbers
+import operator
+import threading
 import warnings
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Callable, Mapping
 
 import numpy as np
 
 from . import _core
+from .progress import bar as progress_bar
 
 INTEGRATORS = ("ros2", "ros2_adaptive", "euler", "rk4", "cvode")
 DEFAULT_INTEGRATOR = "ros2"
@@ -23,6 +28,60 @@ class SimulationError(RuntimeError):
     """The simulation diverged (non-finite state, or a joint faster than the physical bound)."""
 
 
+class ConcurrentUseError(RuntimeError):
+    """An Arm was used from a second thread while another thread was stepping or changing it."""
+
+
+# Largest step count or record interval the engine counts (C++ long on every supported platform).
+MAX_COUNT = 2**63 - 1
+
+
+def real_array(values, what: str) -> np.ndarray:
+    """`values` as a float array; TypeError for what is not real numbers (complex, strings, None,
+    other objects) instead of numpy's silent casts (complex -> real part, None -> NaN)."""
+    if isinstance(values, (str, bytes)):
+        raise TypeError(f"{what} must be numbers, got the string {values!r}")
+    try:
+        arr = np.asarray(values)
+    except ValueError as exc:  # ragged nesting
+        raise ValueError(f"{what} must be a regular array of numbers: {exc}") from None
+    if arr.dtype.kind == "O":
+        for v in arr.ravel():
+            if v is None:
+                raise TypeError(f"{what} contains None; give a number for every value")
+            if not isinstance(v, numbers.Real) or isinstance(v, (str, bytes)):
+                raise TypeError(f"{what} must be real numbers, got {type(v).__name__} {v!r}")
+        arr = arr.astype(float)
+    if arr.dtype.kind not in "biuf":
+        kind = {"c": "complex", "U": "string", "S": "bytes", "M": "datetime", "m": "timedelta", "V": "structured"}
+        raise TypeError(f"{what} must be real numbers, got {kind.get(arr.dtype.kind, str(arr.dtype))} values "
+                        f"(dtype {arr.dtype})")
+    return arr.astype(float, copy=False)
+
+
+def real_scalar(value, what: str) -> float:
+    """One real number (see real_array); TypeError for anything else, ValueError for arrays."""
+    arr = real_array(value, what)
+    if arr.ndim != 0:
+        raise ValueError(f"{what} must be a single number, got shape {arr.shape}")
+    return float(arr)
+
+
+def count(value, what: str, minimum: int = 0) -> int:
+    """An integer count in [minimum, MAX_COUNT]; TypeError for 1.7 or '3', OverflowError above."""
+    if isinstance(value, bool):
+        raise TypeError(f"{what} must be an integer, got {value!r}")
+    try:
+        n = operator.index(value)
+    except TypeError:
+        raise TypeError(f"{what} must be an integer, got {type(value).__name__} {value!r}") from None
+    if n < minimum:
+        raise ValueError(f"{what} must be >= {minimum}, got {n}")
+    if n > MAX_COUNT:
+        raise OverflowError(f"{what} = {n} is too large (at most 2**63 - 1)")
+    return n
+
+
 def deg(x):
     """Radians to degrees (arrays welcome)."""
     return np.degrees(x)
@@ -31,6 +90,22 @@ def deg(x):
 def rad(x):
     """Degrees to radians (arrays welcome)."""
     return np.radians(x)
+
+
+def _row_bytes(n_elements: int) -> int:
+    """Bytes of one recorded row of a Result: 5 per-element channels, 24 other values, float64."""
+    return 8 * (5 * n_elements + 24)
+
+
+def _recorded_rows(n_steps: int, record_every: int) -> int:
+    """Rows simulate() records: steps 0, k, 2k, ... and the final state when it falls on the grid."""
+    return -(-n_steps // record_every) + (1 if n_steps % record_every == 0 else 0)
+
+
+# simulate() refuses a Result above this (bytes) unless max_bytes says otherwise.
+RESULT_MEMORY_LIMIT = 2 * 1024**3
+# Steps per C++ call in simulate(): bounds the excitation block a callable fills.
+SIMULATE_BLOCK_STEPS = 2000
 
 
 @dataclass
@@ -103,17 +178,22 @@ class Arm:
         large: for offline runs at dt = 2 ms, not for hard real time.
 
         Raises ValueError for an unknown integrator, a non-positive or non-finite dt, or substeps
-        that is not a positive integer."""
+        below 1; TypeError for a dt or substeps that is not a real number / an integer."""
         if integrator not in INTEGRATORS:
             raise ValueError(f"unknown integrator {integrator!r}; expected one of {INTEGRATORS}")
-        dt = float(dt)
+        dt = real_scalar(dt, "dt")
         if not (np.isfinite(dt) and dt > 0):
             raise ValueError(f"dt must be a positive number of seconds, got {dt}")
         if substeps is None:
             substeps = _core.default_substeps(integrator, dt)
-        if int(substeps) != substeps or substeps < 1:
-            raise ValueError(f"substeps must be a positive integer, got {substeps!r}")
-        self._sim = _core.Simulator(model, integrator, dt, int(substeps))
+        if isinstance(substeps, (float, np.floating)) and float(substeps).is_integer():
+            substeps = int(substeps)
+        substeps = count(substeps, "substeps", minimum=1)
+        if substeps > 2**31 - 1:
+            raise OverflowError(f"substeps = {substeps} is too large (at most 2**31 - 1)")
+        self._sim = _core.Simulator(model, integrator, dt, substeps)
+        # One thread at a time: the engine's Data is a single workspace (see _exclusive).
+        self._lock = threading.RLock()
         info = _core.model_info(model)
         self.model_name = info["name"]
         self.info = info
@@ -133,6 +213,20 @@ class Arm:
         for v in self._views.values():
             v.flags.writeable = False
 
+    @contextmanager
+    def _exclusive(self):
+        """Held while a call steps or changes the simulation. A second thread arriving meanwhile gets
+        ConcurrentUseError instead of interleaving with the first (both would write the same
+        state and workspace: silently wrong results). Re-entrant for callbacks on the same thread."""
+        if not self._lock.acquire(blocking=False):
+            raise ConcurrentUseError(
+                "this Arm is being used by another thread; an Arm is not thread-safe: give each thread its "
+                "own Arm, or serialise the calls with a lock")
+        try:
+            yield
+        finally:
+            self._lock.release()
+
     # ------------------------------------------------------------------ names
     def indices(self, name: str) -> list[int]:
         """Element indices of an element, muscle or group name."""
@@ -147,11 +241,11 @@ class Arm:
         """Array of n from an array of n, a scalar or a {name: value} dict (names as in indices())."""
         n = self.n_elements
         if isinstance(values, Mapping):
-            out = np.zeros(n) if what == "excitation" else self._current(what)
+            out = np.zeros(n) if what in ("excitation", "activation") else self._current(what)
             for name, v in values.items():
                 out[self.indices(name)] = self._scalar(v, f"{what}[{name!r}]")
         else:
-            arr = np.asarray(values, dtype=float)
+            arr = real_array(values, what)
             if arr.ndim == 0:
                 arr = np.full(n, float(arr))
             if arr.shape != (n,):
@@ -173,10 +267,7 @@ class Arm:
 
     @staticmethod
     def _scalar(v, what: str) -> float:
-        try:
-            return float(v)
-        except (TypeError, ValueError):
-            raise ValueError(f"{what} must be a number, got {v!r}") from None
+        return real_scalar(v, what)
 
     def _current(self, what: str) -> np.ndarray:
         return {"strength": self._sim.get_strength, "max_activation": self._sim.get_max_activation}[what]()
@@ -185,8 +276,11 @@ class Arm:
     def set_excitation(self, u) -> None:
         """Neural excitation of the elements: an array of n, a scalar, or {name: value} with element,
         muscle or group names (unnamed elements get 0). Values outside [0, 1] are clipped with a
-        RuntimeWarning; NaN or infinite values raise ValueError."""
-        self._sim.excitation[:] = self._per_element(u, "excitation", 0.0, 1.0, clip=True)
+        RuntimeWarning and values above max_activation are capped at it (so `excitation` reads back
+        what the dynamics use); NaN or infinite values raise ValueError, non-numbers TypeError."""
+        u = self._per_element(u, "excitation", 0.0, 1.0, clip=True)
+        with self._exclusive():
+            self._sim.excitation[:] = np.minimum(u, self._sim.get_max_activation())
 
     @property
     def excitation(self) -> np.ndarray:
@@ -195,13 +289,16 @@ class Arm:
     def set_hand_load(self, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> None:
         """External force (N) at the hand point and moment (N m) on the hand, thorax frame
         (x lateral, y up, z posterior): e.g. a 1 kg weight is force=(0, -9.81, 0)."""
-        for name, v, target in (("force", force, self._sim.hand_force), ("moment", moment, self._sim.hand_moment)):
-            a = np.asarray(v, dtype=float)
+        values = []
+        for name, v in (("force", force), ("moment", moment)):
+            a = real_array(v, f"hand {name}")
             if a.shape != (3,):
                 raise ValueError(f"hand {name} must have shape (3,), got {a.shape}")
             if not np.all(np.isfinite(a)):
                 raise ValueError(f"hand {name} contains NaN or infinite values")
-            target[:] = a
+            values.append(a)
+        with self._exclusive():
+            self._sim.hand_force[:], self._sim.hand_moment[:] = values
 
     @property
     def strength(self) -> np.ndarray:
@@ -211,7 +308,8 @@ class Arm:
     @strength.setter
     def strength(self, values) -> None:
         s = self._per_element(values, "strength", 0.0, None, clip=False)
-        self._sim.set_strength_and_max_activation(s, self._sim.get_max_activation())
+        with self._exclusive():
+            self._sim.set_strength_and_max_activation(s, self._sim.get_max_activation())
 
     @property
     def max_activation(self) -> np.ndarray:
@@ -221,7 +319,10 @@ class Arm:
     @max_activation.setter
     def max_activation(self, values) -> None:
         m = self._per_element(values, "max_activation", 0.0, 1.0, clip=False)
-        self._sim.set_strength_and_max_activation(self._sim.get_strength(), m)
+        with self._exclusive():
+            self._sim.set_strength_and_max_activation(self._sim.get_strength(), m)
+            # The held excitation is what the dynamics use: keep it under the new bound.
+            self._sim.excitation[:] = np.minimum(self._sim.excitation, m)
 
     # ------------------------------------------------------------------ state
     @property
@@ -261,14 +362,27 @@ class Arm:
 
     def reset(self, q=None, qdot=None, activation=None, time: float = 0.0) -> None:
         """Back to a state: q (5, rad; default the rest posture), qdot (default 0), activations (n,
-        default 0, or a dict of names); contractile elements start in static equilibrium."""
+        default 0, or a dict of names; capped at max_activation with a RuntimeWarning); contractile
+        elements start in static equilibrium.
+        time: finite, s. Raises ValueError for NaN/infinite values, TypeError for non-numbers."""
         q = None if q is None else self._dof_vector(q, "q")
         qdot = None if qdot is None else self._dof_vector(qdot, "qdot")
         if activation is not None:
-            activation = self._per_element(activation, "excitation", 0.0, 1.0, clip=False)
-        self._sim.clear_error()
-        self._sim.reset(q, qdot, activation)
-        self._sim.time = float(time)
+            activation = self._per_element(activation, "activation", 0.0, 1.0, clip=False)
+            cap = self.max_activation
+            over = activation > cap
+            if over.any():
+                names = [self.element_names[i] for i in np.flatnonzero(over)[:5]]
+                warnings.warn(f"activation above max_activation capped for elements {names}", RuntimeWarning,
+                              stacklevel=2)
+                activation = np.minimum(activation, cap)
+        time = real_scalar(time, "time")
+        if not np.isfinite(time):
+            raise ValueError(f"time must be a finite number of seconds, got {time}")
+        with self._exclusive():
+            self._sim.clear_error()
+            self._sim.reset(q, qdot, activation)
+            self._sim.time = time
 
     def _dof_vector(self, v, what: str) -> np.ndarray:
         if isinstance(v, Mapping):
@@ -279,7 +393,7 @@ class Arm:
                     raise KeyError(f"unknown DOF {name!r}" + (f"; did you mean {close}?" if close else f"; DOFs are {self.dof_names}"))
                 out[self.dof_names.index(name)] = self._scalar(x, f"{what}[{name!r}]")
             v = out
-        a = np.asarray(v, dtype=float)
+        a = real_array(v, what)
         if a.shape != (5,):
             raise ValueError(f"{what} must have shape (5,) ({', '.join(self.dof_names)}), got {a.shape}")
         if not np.all(np.isfinite(a)):
@@ -288,55 +402,118 @@ class Arm:
 
     # ------------------------------------------------------------------ stepping
     def step(self, n: int = 1) -> None:
-        """Advances n steps with the current excitation and load (loop in C++, GIL released)."""
-        n = int(n)
-        if n < 0:
-            raise ValueError(f"n must be >= 0, got {n}")
-        try:
-            self._sim.step(n)
-        except RuntimeError as exc:
-            raise SimulationError(f"{exc}; call reset() to continue") from None
+        """Advances n control steps (an integer >= 0) with the current excitation and load (loop in
+        C++, GIL released). Ctrl-C stops it within about 50 ms, leaving the state of the last
+        completed step (KeyboardInterrupt). Raises TypeError for a non-integer n, SimulationError
+        on divergence, ConcurrentUseError if another thread is using this Arm."""
+        n = count(n, "n (number of steps)")
+        with self._exclusive():
+            try:
+                self._sim.step(n)
+            except RuntimeError as exc:
+                raise SimulationError(f"{exc}; call reset() to continue") from None
 
-    def simulate(self, excitation, duration: float, record_every: int = 1) -> Result:
+    def result_bytes(self, duration: float, record_every: int = 1) -> int:
+        """Memory (bytes) of the Result simulate(duration, record_every=...) returns."""
+        n_steps = self._n_steps(real_scalar(duration, "duration"))
+        rows = _recorded_rows(n_steps, count(record_every, "record_every", minimum=1))
+        return rows * _row_bytes(self.n_elements)
+
+    def _n_steps(self, duration: float) -> int:
+        if not (np.isfinite(duration) and duration >= 0):
+            raise ValueError(f"duration must be a non-negative number of seconds, got {duration}")
+        steps = round(duration / self.dt)
+        if steps > MAX_COUNT:
+            raise OverflowError(f"duration = {duration} s is {steps:.3g} steps of {self.dt} s, more than can be counted")
+        return int(steps)
+
+    def simulate(self, excitation, duration: float, record_every: int = 1, max_bytes: float | None = None,
+                 progress: bool | None = None) -> Result:
         """Runs for `duration` seconds from the current state and returns the time series.
 
         excitation: a (T, n) array with one row per step (T = round(duration / dt)), an (n,) array,
         scalar or {name: value} dict held constant, or a callable f(t) -> any of those, evaluated at
-        each step's start time before the loop (the loop itself runs in C++ without the GIL; for
-        feedback control use step()).
+        each step's start time (in blocks of steps between C++ loops without the GIL; for feedback
+        control use step()). Values are clipped to [0, 1] (RuntimeWarning) and capped at
+        max_activation without a warning; Result.excitation holds the values the dynamics used.
+        record_every: keep every k-th step (integer >= 1). max_bytes: refuse (MemoryError, with the
+        record_every that fits) a Result larger than this; default RESULT_MEMORY_LIMIT (2 GiB),
+        None to allow any. progress: a tqdm bar on stderr (None: only on a terminal and for runs
+        longer than a second of wall time). Ctrl-C stops within about 50 ms (KeyboardInterrupt,
+        state left at the last completed step).
         """
-        duration = float(duration)
-        if not (np.isfinite(duration) and duration >= 0):
-            raise ValueError(f"duration must be a non-negative number of seconds, got {duration}")
-        n_steps = int(round(duration / self.dt))
+        duration = real_scalar(duration, "duration")
+        n_steps = self._n_steps(duration)
+        record_every = count(record_every, "record_every", minimum=1)
+        rows = _recorded_rows(n_steps, record_every)
+        limit = RESULT_MEMORY_LIMIT if max_bytes is None else real_scalar(max_bytes, "max_bytes")
+        need = rows * _row_bytes(self.n_elements)
+        if need > limit:
+            fit = int(np.ceil(need / limit)) * record_every
+            raise MemoryError(
+                f"simulate({duration:g} s) would record {rows} rows = {need / 1e9:.1f} GB, above the limit of "
+                f"{limit / 1e9:.1f} GB: pass record_every={fit} (every {fit * self.dt:g} s) or more, a shorter "
+                f"duration, or max_bytes={need:.3g} if the memory is there")
         n = self.n_elements
+        cap = self.max_activation
+        array_in = isinstance(excitation, np.ndarray) and excitation.ndim == 2
         if callable(excitation) and not isinstance(excitation, Mapping):
-            times = self.time + self.dt * np.arange(n_steps)
-            u = np.empty((max(n_steps, 1), n))
-            for k, t in enumerate(times):
-                u[k] = self._per_element(excitation(float(t)), "excitation", 0.0, 1.0, clip=True)
-            if n_steps == 0:
-                u[0] = self.excitation
-        elif isinstance(excitation, np.ndarray) and excitation.ndim == 2:
+            def block(k0: int, k1: int) -> np.ndarray:
+                u = np.empty((k1 - k0, n))
+                for k in range(k0, k1):
+                    u[k - k0] = self._per_element(excitation(float(t0 + self.dt * k)), "excitation", 0.0, 1.0, clip=True)
+                return u
+        elif array_in:
             if excitation.shape != (n_steps, n):
                 raise ValueError(f"excitation must have shape ({n_steps}, {n}) for {duration} s at dt = {self.dt} s, "
                                  f"got {excitation.shape}")
-            u = np.asarray(excitation, dtype=float)
-            if not np.all(np.isfinite(u)):
-                row, col = np.argwhere(~np.isfinite(u))[0]
+            u_all = real_array(excitation, "excitation")
+            if not np.all(np.isfinite(u_all)):
+                row, col = np.argwhere(~np.isfinite(u_all))[0]
                 raise ValueError(f"excitation contains NaN or infinite values (first at step {row}, "
                                  f"element {self.element_names[col]})")
-            if (u < 0).any() or (u > 1).any():
+            if (u_all < 0).any() or (u_all > 1).any():
                 warnings.warn("excitation outside [0, 1] clipped", RuntimeWarning, stacklevel=2)
-                u = np.clip(u, 0.0, 1.0)
+            u_all = np.minimum(np.clip(u_all, 0.0, 1.0), cap)
+
+            def block(k0: int, k1: int) -> np.ndarray:
+                return u_all[k0:k1]
         else:
-            u = self._per_element(excitation, "excitation", 0.0, 1.0, clip=True)[None, :]
-        try:
-            raw = self._sim.simulate(np.ascontiguousarray(u), n_steps, int(record_every))
-        except RuntimeError as exc:
-            raise SimulationError(f"{exc}; call reset() to continue") from None
-        raw.pop("steps")
-        return Result(**raw, dof_names=list(self.dof_names), element_names=list(self.element_names),
+            held = np.minimum(self._per_element(excitation, "excitation", 0.0, 1.0, clip=True), cap)[None, :]
+
+            def block(k0: int, k1: int) -> np.ndarray:
+                return held
+
+        out: dict[str, np.ndarray] = {}
+        # Blocks of whole record intervals: the C++ loop records a block's rows, and its closing row
+        # (the state after the block) is the next block's first row, so it is kept only at the end.
+        chunk = record_every * max(1, -(-SIMULATE_BLOCK_STEPS // record_every))
+        with self._exclusive():
+            t0 = self.time
+            if n_steps == 0:
+                self._sim.excitation[:] = np.minimum(self._sim.excitation, cap)
+            row = 0
+            with progress_bar(n_steps * self.dt, "simulate", unit="s", enabled=progress) as pbar:
+                for k0 in range(0, max(n_steps, 1), chunk):
+                    k1 = min(n_steps, k0 + chunk)
+                    u = np.ascontiguousarray(block(k0, k1), dtype=float) if n_steps else np.minimum(
+                        self._sim.excitation, cap)[None, :].copy()
+                    u = np.minimum(u, cap)
+                    try:
+                        raw = self._sim.simulate(u, k1 - k0, record_every)
+                    except RuntimeError as exc:
+                        raise SimulationError(f"{exc}; call reset() to continue") from None
+                    raw.pop("steps")
+                    last = k1 >= n_steps
+                    take = len(raw["time"]) if last else (k1 - k0) // record_every
+                    if not out:
+                        out = {k: np.empty((rows,) + v.shape[1:]) for k, v in raw.items()}
+                    for k, v in raw.items():
+                        out[k][row:row + take] = v[:take]
+                    row += take
+                    pbar.update((k1 - k0) * self.dt)
+        assert row == rows, (row, rows)
+        return Result(**out, dof_names=list(self.dof_names), element_names=list(self.element_names),
                       integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model_name)
 
     # ------------------------------------------------------------------ outputs
@@ -344,8 +521,9 @@ class Arm:
         """Outputs at the current state: qddot, muscle_force (N), muscle_length (m), moment_arm
         (n x 5, m), fibre_velocity, torques, hand_position (thorax frame), gh_force (scapula frame),
         gh_theta, gh_phi, gh_stab."""
-        self._sim.evaluate_outputs()
-        return self._sim.outputs()
+        with self._exclusive():
+            self._sim.evaluate_outputs()
+            return self._sim.outputs()
 
     @property
     def gh_stab(self) -> float:
@@ -382,7 +560,7 @@ class Arm:
 
     def gh_stability(self, force) -> tuple[float, float, float]:
         """(theta, phi, GHstab) of a force of the humeral head on the glenoid (scapula frame, N)."""
-        f = np.asarray(force, dtype=float)
+        f = real_array(force, "force")
         if f.shape != (3,) or not np.all(np.isfinite(f)):
             raise ValueError(f"force must be 3 finite values, got {force!r}")
         return self._sim.gh_stability(f)
