@@ -123,6 +123,7 @@ PYBIND11_MODULE(_core, mod) {
           "Largest integration step (s) the integrator takes by default inside a control step (inf: CVODE).");
   mod.def("default_substeps", [](const std::string& integrator, double dt) { return default_substeps(parse_integrator(integrator), dt); },
           "Integration steps per control step dt (s) by default.");
+  mod.def("model_names", []() { return model_names(); });
 
   py::class_<Simulator>(mod, "Simulator")
       .def(py::init([](const std::string& model, const std::string& integrator, double dt, int substeps) {

@@ -92,6 +92,18 @@ def rad(x):
     return np.radians(x)
 
 
+def known_model(name) -> str:
+    """`name` if it is a model compiled into this build; ValueError otherwise (so a name read from a
+    file can never become a path)."""
+    if not isinstance(name, str):
+        raise ValueError(f"model must be a model name, got {type(name).__name__}")
+    try:
+        _core.model_info(name)
+    except ValueError as exc:
+        raise ValueError(str(exc)) from None
+    return name
+
+
 def _row_bytes(n_elements: int) -> int:
     """Bytes of one recorded row of a Result: 5 per-element channels, 24 other values, float64."""
     return 8 * (5 * n_elements + 24)
@@ -148,14 +160,42 @@ class Result:
 
     @classmethod
     def load(cls, path) -> "Result":
-        with np.load(path, allow_pickle=False) as z:
-            missing = [k for k in cls.ARRAYS if k not in z.files]
+        """A Result saved with save(). ValueError (one line, naming the file) for a file that is not
+        a readable .npz, lacks the result arrays, has arrays of the wrong shape, or names a model that
+        is not compiled into this build; FileNotFoundError if absent."""
+        import zipfile
+        path = str(path)
+        try:
+            z = np.load(path, allow_pickle=False)
+        except FileNotFoundError:
+            raise FileNotFoundError(f"{path}: no such file") from None
+        except (OSError, ValueError, zipfile.BadZipFile, EOFError) as exc:
+            raise ValueError(f"{path}: not an armrt result (.npz written by Result.save): {exc}") from None
+        if not hasattr(z, "files"):
+            raise ValueError(f"{path}: not an armrt result (a single .npy array, not an .npz)")
+        with z:
+            missing = [k for k in (*cls.ARRAYS, "dof_names", "element_names", "model") if k not in z.files]
             if missing:
                 raise ValueError(f"{path}: not an armrt result, missing arrays {missing}")
-            return cls(**{k: z[k] for k in cls.ARRAYS}, dof_names=[str(s) for s in z["dof_names"]],
-                       element_names=[str(s) for s in z["element_names"]], integrator=str(z["integrator"]),
-                       dt=float(z["dt"]), substeps=int(z["substeps"]) if "substeps" in z.files else 1,
-                       model=str(z["model"]))
+            try:
+                fields = {k: np.asarray(z[k], dtype=float) for k in cls.ARRAYS}
+                meta = dict(dof_names=[str(s) for s in z["dof_names"]],
+                            element_names=[str(s) for s in z["element_names"]],
+                            integrator=str(z["integrator"]) if "integrator" in z.files else "",
+                            dt=float(z["dt"]) if "dt" in z.files else 0.0,
+                            substeps=int(z["substeps"]) if "substeps" in z.files else 1, model=str(z["model"]))
+            except (OSError, ValueError, TypeError, zipfile.BadZipFile, EOFError) as exc:
+                raise ValueError(f"{path}: corrupt armrt result: {exc}") from None
+        try:
+            known_model(meta["model"])
+        except ValueError:
+            raise ValueError(f"{path}: the result's model field {meta['model'][:80]!r} is not a known model "
+                             f"(compiled in: {_core.model_names()})") from None
+        T = fields["time"].shape[0] if fields["time"].ndim == 1 else -1
+        bad = [k for k, v in fields.items() if v.ndim == 0 or v.shape[0] != T]
+        if T < 0 or bad:
+            raise ValueError(f"{path}: corrupt armrt result: arrays {bad or ['time']} do not have one row per time")
+        return cls(**fields, **meta)
 
 
 class Arm:

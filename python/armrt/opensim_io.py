@@ -8,7 +8,15 @@ PS_y), the six girdle coordinates held at the model's fixed girdle posture, radi
 `.sto`: one column per muscle element, named with its OpenSim force name (`delt_scap_1`, ...), or
 with `/forceset/<name>/activation` (`state_paths=True`) so it reads as an OpenSim states file.
 
+Controls `.sto` (`write_excitation_sto`): the excitations the dynamics used (after clipping to [0, 1]
+and capping at max_activation), one column per element with its OpenSim force name: an OpenSim
+controls file.
+
 Both: tab-separated, header ending in `endheader`, first column `time`.
+
+Import: `read_motion(path)` reads a `.mot`/`.sto` of joint angles (OpenSim coordinate names or armrt
+DOF names, `inDegrees=yes` converted to radians) into a `Motion`: a start posture for `Arm.reset`
+(`motion.posture(t)`) or a kinematic replay (`motion.to_result()`, for `armrt animate` / `view`).
 """
 from __future__ import annotations
 
@@ -16,6 +24,9 @@ import json
 from pathlib import Path
 
 import numpy as np
+
+import warnings
+from dataclasses import dataclass
 
 from .geometry import find_model_file
 
@@ -65,9 +76,21 @@ def read_storage(path) -> tuple[dict, list[str], np.ndarray]:
             header[key.strip()] = value.strip()
     else:
         raise ValueError(f"{path}: no 'endheader' line")
-    labels = text[k + 1].split("\t")
-    rows = [list(map(float, line.split("\t"))) for line in text[k + 2:] if line.strip()]
-    return header, labels, np.array(rows).reshape(-1, len(labels))
+    if k + 1 >= len(text):
+        raise ValueError(f"{path}: no column labels after 'endheader'")
+    labels = text[k + 1].split()
+    rows = []
+    for lineno, line in enumerate(text[k + 2:], start=k + 3):
+        if not line.strip():
+            continue
+        fields = line.split()
+        if len(fields) != len(labels):
+            raise ValueError(f"{path}:{lineno}: {len(fields)} values, expected {len(labels)}")
+        try:
+            rows.append([float(v) for v in fields])
+        except ValueError:
+            raise ValueError(f"{path}:{lineno}: not a number in {line[:60]!r}") from None
+    return header, labels, np.array(rows, dtype=float).reshape(-1, len(labels))
 
 
 def coordinate_table(result, model_desc: dict) -> tuple[list[str], np.ndarray]:
@@ -107,11 +130,108 @@ def write_activation_sto(result, path, model: str | None = None, model_file=None
     return Path(path)
 
 
-def export(result, mot_path=None, sto_path=None, model_file=None, state_paths: bool = False) -> list[Path]:
-    """Both files; returns the paths written."""
+def write_excitation_sto(result, path, model: str | None = None, model_file=None) -> Path:
+    """Excitations of a Result (those the dynamics used) to an OpenSim controls file, one column per
+    element (OpenSim force names)."""
+    desc = model_description(model or result.model or "das2", model_file)
+    osim = {e["name"]: e.get("osim_name", e["name"]) for e in desc["elements"]}
+    names = list(result.element_names) or [e["name"] for e in desc["elements"]]
+    missing = [n for n in names if n not in osim]
+    if missing:
+        raise ValueError(f"elements {missing[:5]} are not in the model file")
+    _write_storage(path, Path(path).stem, [osim[n] for n in names], result.time, np.asarray(result.excitation))
+    return Path(path)
+
+
+def export(result, mot_path=None, sto_path=None, model_file=None, state_paths: bool = False,
+           controls_path=None) -> list[Path]:
+    """The files asked for (.mot angles, .sto activations, controls .sto excitations); the paths written."""
     out = []
     if mot_path is not None:
         out.append(write_mot(result, mot_path, model_file=model_file))
     if sto_path is not None:
         out.append(write_activation_sto(result, sto_path, model_file=model_file, state_paths=state_paths))
+    if controls_path is not None:
+        out.append(write_excitation_sto(result, controls_path, model_file=model_file))
     return out
+
+
+# ------------------------------------------------------------------ import
+@dataclass
+class Motion:
+    """Joint angles read from an OpenSim motion file: time (T,) s, q (T, 5) rad in the model's DOF
+    order."""
+
+    time: np.ndarray
+    q: np.ndarray
+    dof_names: list
+    model: str = "das2"
+    source: str = ""
+
+    def posture(self, t: float | None = None) -> np.ndarray:
+        """(5,) rad: the first row, or the angles at time t (linear interpolation, t inside the file)."""
+        if t is None:
+            return self.q[0].copy()
+        t = float(t)
+        if not (self.time[0] <= t <= self.time[-1]):
+            raise ValueError(f"t = {t} s is outside the motion ({self.time[0]} to {self.time[-1]} s)")
+        return np.array([np.interp(t, self.time, self.q[:, j]) for j in range(self.q.shape[1])])
+
+    def to_result(self):
+        """A kinematics-only Result for replay (animate, view): q and qdot from the file, the
+        thorax-humerus angles computed; muscle channels, forces and GH stability are NaN (unknown)."""
+        from .arm import Arm, Result
+        arm = Arm(model=self.model)
+        T, n = len(self.time), arm.n_elements
+        nan = lambda *shape: np.full((T, *shape), np.nan)  # noqa: E731
+        qdot = np.gradient(self.q, self.time, axis=0) if T > 1 else np.zeros_like(self.q)
+        return Result(time=self.time.copy(), q=self.q.copy(), qdot=qdot, lce=nan(n), activation=nan(n),
+                      excitation=nan(n), muscle_force=nan(n), muscle_length=nan(n), gh_force=nan(3),
+                      gh_stab=np.full(T, np.nan), gh_angles=nan(2), hand_position=nan(3),
+                      thorax_humerus=np.array([arm.thorax_humerus_angles(q) for q in self.q]),
+                      tet_ns=np.zeros(T), dof_names=list(arm.dof_names), element_names=list(arm.element_names),
+                      integrator="", dt=float(np.median(np.diff(self.time))) if T > 1 else 0.0, model=self.model)
+
+
+def read_motion(path, model: str = "das2") -> Motion:
+    """A .mot/.sto of joint angles as a Motion (radians). Columns: the model's five DOFs by OpenSim
+    coordinate name (GH_y, ..., PS_y) or armrt name (GHy, ...); other columns (the fixed girdle, SC_*,
+    AC_*) are ignored, with a RuntimeWarning if the girdle differs from the model's. `inDegrees=yes`
+    is honoured. Raises ValueError naming missing columns, non-numeric rows or a bad time column."""
+    from . import _core
+    from .arm import known_model
+    known_model(model)
+    info = _core.model_info(model)
+    try:
+        header, labels, data = read_storage(path)
+    except ValueError as exc:
+        raise ValueError(f"{path}: not a readable OpenSim storage file ({exc})") from None
+    deg = header.get("inDegrees", "no").strip().lower() == "yes"
+    col = {name.strip(): k for k, name in enumerate(labels)}
+    if "time" not in col:
+        raise ValueError(f"{path}: no 'time' column")
+    idx, missing = [], []
+    for d in info["dofs"]:
+        k = col.get(d["osim_name"], col.get(d["name"]))
+        (missing if k is None else idx).append(d["osim_name"] if k is None else k)
+    if missing:
+        raise ValueError(f"{path}: no column for coordinates {missing} (columns: {labels[:12]})")
+    if data.shape[0] == 0:
+        raise ValueError(f"{path}: no rows")
+    time = data[:, col["time"]]
+    q = data[:, idx]
+    if deg:
+        q = np.radians(q)
+    if not (np.all(np.isfinite(q)) and np.all(np.isfinite(time))):
+        raise ValueError(f"{path}: NaN or infinite values")
+    if time.size > 1 and np.any(np.diff(time) <= 0):
+        raise ValueError(f"{path}: time must be strictly increasing")
+    path_desc = find_model_file(model)
+    if path_desc is not None:
+        girdle = [(g["osim_name"], g["angle"]) for g in model_description(model)["girdle"]["dofs"]]
+        off = [name for name, a in girdle if name in col and
+               np.max(np.abs((np.radians(data[:, col[name]]) if deg else data[:, col[name]]) - a)) > 1e-3]
+        if off:
+            warnings.warn(f"{path}: girdle coordinates {off} differ from the model's fixed girdle; armrt "
+                          f"ignores them (the scapula is fixed)", RuntimeWarning, stacklevel=2)
+    return Motion(time=time, q=q, dof_names=[d["name"] for d in info["dofs"]], model=model, source=str(path))

@@ -1,0 +1,107 @@
+"""Issue 11, item 3: paralysis and weakness hold at every entry point, the logged excitation is what
+the dynamics used, and OpenSim files go both ways (controls .sto out, .mot in)."""
+import warnings
+
+import numpy as np
+import pytest
+
+armrt = pytest.importorskip("armrt", reason="armrt is not built/installed (./run.sh setup)")
+from armrt import opensim_io  # noqa: E402
+from armrt.geometry import find_model_file  # noqa: E402
+
+needs_model_file = pytest.mark.skipif(find_model_file("das2") is None, reason="models/das2.json not found")
+
+
+def test_logged_excitation_is_what_the_dynamics_used(arm):
+    """The issue's example: max_activation={"bicb": 0.3} logged 1.0 while activation sat at 0.3."""
+    arm.max_activation = {"bicb": 0.3}
+    ib = arm.indices("bicb")
+    for excitation in ({"bicb": 1.0}, np.ones(102), lambda t: {"bicb": 1.0}, np.ones((500, 102))):
+        arm.reset()
+        res = arm.simulate(excitation, 0.5)
+        assert np.all(res.excitation[:, ib] == 0.3)
+        assert res.activation[-1, ib].max() == pytest.approx(0.3, abs=1e-4)
+        assert res.activation[:, ib].max() <= 0.3 + 1e-12
+        others = np.setdiff1d(np.arange(102), ib)
+        if isinstance(excitation, np.ndarray):
+            assert np.all(res.excitation[:, others] == 1.0)
+    arm.set_excitation(1.0)
+    assert np.all(arm.excitation[ib] == 0.3) and arm.excitation[0] == 1.0
+
+
+def test_lowering_max_activation_caps_the_held_excitation(arm):
+    arm.set_excitation({"triceps": 0.8})
+    arm.max_activation = {"triceps": 0.0}
+    assert np.all(arm.excitation[arm.indices("triceps")] == 0.0)
+    res = arm.simulate(arm.excitation, 0.05)
+    assert np.all(res.excitation[:, arm.indices("triceps")] == 0.0)
+
+
+def test_reset_activation_is_capped(arm):
+    arm.max_activation = {"brachialis": 0.0, "bicb": 0.25}
+    with pytest.warns(RuntimeWarning, match="above max_activation capped"):
+        arm.reset(activation={"brachialis": 0.6, "bicb": 0.6, "triceps": 0.6})
+    assert np.all(arm.activation[arm.indices("brachialis")] == 0.0)
+    assert np.all(arm.activation[arm.indices("bicb")] == 0.25)
+    assert np.all(arm.activation[arm.indices("triceps")] == 0.6)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        arm.reset(activation={"bicb": 0.2})      # within the bound: no warning
+
+
+@needs_model_file
+def test_controls_sto_holds_the_used_excitation(arm, tmp_path):
+    arm.max_activation = {"bicb": 0.3}
+    res = arm.simulate({"bicb": 1.0, "triceps": 0.4}, 0.05, record_every=10)
+    path = opensim_io.write_excitation_sto(res, tmp_path / "controls.sto")
+    _, labels, data = opensim_io.read_storage(path)
+    assert labels[:2] == ["time", "delt_scap_1"]
+    desc = opensim_io.model_description("das2")
+    osim = {e["name"]: e["osim_name"] for e in desc["elements"]}
+    k = labels.index(osim[arm.element_names[arm.indices("bicb")[0]]])
+    assert np.all(data[:, k] == 0.3)
+    np.testing.assert_allclose(data[:, 1:], res.excitation, atol=1e-10)
+
+
+@needs_model_file
+@pytest.mark.parametrize("in_degrees", [False, True])
+def test_mot_round_trip_sets_the_start_posture(arm, tmp_path, in_degrees):
+    arm.reset(q=[0.3, 0.5, 0.2, 1.2, 1.0])
+    res = arm.simulate({"elbow_flexors": 0.3}, 0.2, record_every=20)
+    path = opensim_io.write_mot(res, tmp_path / "run.mot")
+    if in_degrees:   # the same motion as OpenSim GUI writes it: degrees, flagged in the header
+        header, labels, data = opensim_io.read_storage(path)
+        data[:, 1:] = np.degrees(data[:, 1:])
+        opensim_io._write_storage(path, "run", labels[1:], data[:, 0], data[:, 1:], in_degrees=True)
+    motion = opensim_io.read_motion(path)
+    np.testing.assert_allclose(motion.q, res.q, atol=1e-8)
+    np.testing.assert_allclose(motion.time, res.time, atol=1e-9)
+    fresh = armrt.Arm()
+    fresh.reset(q=motion.posture())
+    np.testing.assert_allclose(fresh.q, [0.3, 0.5, 0.2, 1.2, 1.0], atol=1e-8)
+    mid = motion.posture(0.1)
+    np.testing.assert_allclose(mid, res.q[np.searchsorted(res.time, 0.1 - 1e-9)], atol=1e-8)
+
+
+def test_mot_with_armrt_names_and_errors(tmp_path):
+    p = tmp_path / "m.mot"
+    p.write_text("m\nversion=1\nnRows=2\nnColumns=6\ninDegrees=yes\nendheader\n"
+                 "time GHy GHz GHyy ELx PSy\n0 10 20 30 90 45\n0.5 10 20 30 80 45\n")
+    m = opensim_io.read_motion(p)
+    np.testing.assert_allclose(m.q[0], np.radians([10, 20, 30, 90, 45]))
+    p.write_text("m\ninDegrees=no\nendheader\ntime\tGH_y\tEL_x\n0\t0.1\t0.2\n")
+    with pytest.raises(ValueError, match=r"no column for coordinates \['GH_z', 'GH_yy', 'PS_y'\]"):
+        opensim_io.read_motion(p)
+    p.write_text("m\ninDegrees=no\nendheader\ntime GH_y GH_z GH_yy EL_x PS_y\n0 0.1 0.2 x 1 1\n")
+    with pytest.raises(ValueError, match="not a number"):
+        opensim_io.read_motion(p)
+
+
+@needs_model_file
+def test_motion_replays_as_a_kinematic_result(arm, tmp_path):
+    res = arm.simulate({"elbow_flexors": 0.3}, 0.1, record_every=10)
+    motion = opensim_io.read_motion(opensim_io.write_mot(res, tmp_path / "run.mot"))
+    replay = motion.to_result()
+    np.testing.assert_allclose(replay.q, res.q, atol=1e-8)
+    np.testing.assert_allclose(replay.thorax_humerus, res.thorax_humerus, atol=1e-7)
+    assert np.all(np.isnan(replay.gh_stab)) and np.all(np.isnan(replay.activation))
