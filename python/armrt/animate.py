@@ -1,8 +1,10 @@
 """Offline animation of a saved result: `armrt animate run.npz -o arm.mp4` (or .gif).
 
 Front and side views of the arm (same geometry as the live view, armrt.geometry), the GH stability
-trace (red above 1) and per-muscle activation bars. matplotlib's writers: .gif with Pillow (no extra
-software), .mp4 with ffmpeg (Debian package `ffmpeg`).
+trace (red above 1) and per-muscle activation bars. Frames go to the encoder as they are drawn, so
+memory does not grow with the length of the video: .gif through StreamingGifWriter (Pillow, one frame
+in memory; matplotlib's PillowWriter keeps every frame: 1.3 GB for 600), .mp4 through ffmpeg's pipe
+(Debian package `ffmpeg`).
 """
 from __future__ import annotations
 
@@ -27,27 +29,86 @@ def frame_indices(time: np.ndarray, fps: float, speed: float = 1.0) -> np.ndarra
     return np.clip(np.searchsorted(time, t, side="left"), 0, time.size - 1)
 
 
+class StreamingGifWriter:
+    """A matplotlib movie writer (setup / grab_frame / finish, or `saving`) that encodes each frame
+    into the .gif as soon as it is grabbed: one frame in memory at a time. Each frame gets its own
+    256-colour palette (Pillow's adaptive quantiser); the file loops forever."""
+
+    def __init__(self, fps: float = 30):
+        self.fps = fps
+        self.frames = 0
+        self._fp = None
+
+    def setup(self, fig, outfile, dpi=None) -> None:
+        self.fig, self.dpi = fig, dpi if dpi is not None else fig.dpi
+        self._fp = open(outfile, "wb")
+        self.frames = 0
+
+    def grab_frame(self, **savefig_kwargs) -> None:
+        from PIL import GifImagePlugin, Image
+        self.fig.set_dpi(self.dpi)
+        self.fig.canvas.draw()
+        rgba = np.asarray(self.fig.canvas.buffer_rgba())
+        im = Image.fromarray(rgba[..., :3]).quantize(colors=256, method=Image.Quantize.MEDIANCUT)
+        duration_ms = 1000.0 / self.fps
+        if self.frames == 0:
+            header, _ = GifImagePlugin.getheader(im, None, {"loop": 0, "duration": duration_ms})
+            self._fp.write(b"".join(header))
+        for chunk in GifImagePlugin.getdata(im, duration=duration_ms, include_color_table=True):
+            self._fp.write(chunk)
+        self._fp.flush()
+        self.frames += 1
+
+    def finish(self) -> None:
+        if self._fp is not None:
+            self._fp.write(b";")  # GIF trailer
+            self._fp.close()
+            self._fp = None
+
+    def saving(self, fig, outfile, dpi):
+        from contextlib import contextmanager
+
+        @contextmanager
+        def ctx():
+            self.setup(fig, outfile, dpi)
+            try:
+                yield self
+            finally:
+                self.finish()
+        return ctx()
+
+
+def check_output(out) -> Path:
+    """`out` if its format can be written here; ValueError/RuntimeError saying why not (before any work)."""
+    out = Path(out)
+    suffix = out.suffix.lower()
+    if suffix == ".mp4":
+        import matplotlib
+        if shutil.which(matplotlib.rcParams["animation.ffmpeg_path"]) is None:
+            raise RuntimeError("writing .mp4 needs ffmpeg (Debian: apt-get install ffmpeg); use a .gif instead")
+    elif suffix != ".gif":
+        raise ValueError(f"output must end in .gif or .mp4, got {out.name!r}")
+    return out
+
+
 def animate(result, out, fps: int = 30, speed: float = 1.0, dpi: int = 80, lines_of_action: bool = True,
-            max_frames: int | None = None) -> Path:
-    """Renders a Result (or a path to a saved .npz) to `out` (.gif or .mp4). Returns the path."""
+            max_frames: int | None = None, progress: bool | None = None) -> Path:
+    """Renders a Result (or a path to a saved .npz) to `out` (.gif or .mp4). Returns the path.
+    progress: a frame counter on stderr (None: only on a terminal)."""
     import matplotlib
     matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
     from matplotlib import animation
 
     from .arm import Result
+    from .progress import bar
+    out = check_output(out)
     if not isinstance(result, Result):
         result = Result.load(result)
-    out = Path(out)
-    suffix = out.suffix.lower()
-    if suffix == ".gif":
-        writer = animation.PillowWriter(fps=fps)
-    elif suffix == ".mp4":
-        if shutil.which(matplotlib.rcParams["animation.ffmpeg_path"]) is None:
-            raise RuntimeError("writing .mp4 needs ffmpeg (Debian: apt-get install ffmpeg); use a .gif instead")
-        writer = animation.FFMpegWriter(fps=fps, codec="libx264", extra_args=["-pix_fmt", "yuv420p"])
+    if out.suffix.lower() == ".gif":
+        writer = StreamingGifWriter(fps=fps)
     else:
-        raise ValueError(f"output must end in .gif or .mp4, got {out.name!r}")
+        writer = animation.FFMpegWriter(fps=fps, codec="libx264", extra_args=["-pix_fmt", "yuv420p"])
 
     geom = ArmGeometry(result.model or "das2")
     rows = frame_indices(result.time, fps, speed)
@@ -112,7 +173,7 @@ def animate(result, out, fps: int = 30, speed: float = 1.0, dpi: int = 80, lines
         loa_xyz = None
         if lines_of_action:
             seg, idx = geom.gh_lines_of_action(result.q[r])
-            active = np.asarray(result.activation[r])[idx] > 0.02
+            active = np.nan_to_num(np.asarray(result.activation[r])[idx]) > 0.02
             seg = seg[active]
             loa_xyz = np.concatenate([np.concatenate([s, np.full((1, 3), np.nan)]) for s in seg]) if len(seg) else None
         for proj, bones, head, loa in artists:
@@ -123,12 +184,13 @@ def animate(result, out, fps: int = 30, speed: float = 1.0, dpi: int = 80, lines
             if loa is not None:
                 loa.set_data(*(proj(loa_xyz) if loa_xyz is not None else ([], [])))
         cursor.set_xdata([result.time[r]])
-        stab_text.set_text(f"GHstab {stab:.2f}" + ("  > 1: outside the rim" if stab > 1 else ""))
+        stab_text.set_text("GHstab unknown (kinematics only)" if np.isnan(stab) else
+                           f"GHstab {stab:.2f}" + ("  > 1: outside the rim" if stab > 1 else ""))
         stab_text.set_color(colour)
         act = np.asarray(result.activation[r])
         values = [act[e].mean() for _, e in muscles] if same_elements else [act.mean()]
-        for bar, v in zip(bars, values):
-            bar.set_width(v)
+        for b, v in zip(bars, values):
+            b.set_width(0.0 if np.isnan(v) else v)
         title.set_text(f"{result.model or 'armrt'}  t = {result.time[r]:.2f} s  "
                        f"q = {np.array2string(np.degrees(result.q[r]), precision=0, separator=', ')} deg")
         return []
@@ -136,10 +198,12 @@ def animate(result, out, fps: int = 30, speed: float = 1.0, dpi: int = 80, lines
     out.parent.mkdir(parents=True, exist_ok=True)
     try:
         # One draw per frame (FuncAnimation.save draws twice).
-        with writer.saving(fig, str(out), dpi):
+        with writer.saving(fig, str(out), dpi), bar(len(rows), f"animate {out.name}", unit="frame",
+                                                     enabled=progress, delay=0.5) as pbar:
             for k in range(len(rows)):
                 draw(k)
                 writer.grab_frame()
+                pbar.update(1)
     finally:
         plt.close(fig)
     return out

@@ -114,6 +114,8 @@ def _recorded_rows(n_steps: int, record_every: int) -> int:
     return -(-n_steps // record_every) + (1 if n_steps % record_every == 0 else 0)
 
 
+# reset(q=...) refuses a joint further than this (rad, ~11 deg) beyond its range and warns inside it.
+RANGE_MARGIN = 0.2
 # simulate() refuses a Result above this (bytes) unless max_bytes says otherwise.
 RESULT_MEMORY_LIMIT = 2 * 1024**3
 # Steps per C++ call in simulate(): bounds the excitation block a callable fills.
@@ -238,6 +240,8 @@ class Arm:
         self.model_name = info["name"]
         self.info = info
         self.dof_names = [d["name"] for d in info["dofs"]]
+        self.dof_osim_names = [d["osim_name"] for d in info["dofs"]]
+        self._aliases: dict[str, list[int]] | None = None
         self.dof_ranges = np.array([d["range"] for d in info["dofs"]])
         self.rest_posture = np.array([d["rest"] for d in info["dofs"]])
         self.element_names = [e["name"] for e in info["elements"]]
@@ -269,19 +273,73 @@ class Arm:
 
     # ------------------------------------------------------------------ names
     def indices(self, name: str) -> list[int]:
-        """Element indices of an element, muscle or group name."""
-        try:
-            return self._index[name]
-        except KeyError:
-            close = difflib.get_close_matches(name, list(self._index), n=3)
-            hint = f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""
-            raise KeyError(f"unknown element, muscle or group name {name!r}{hint}") from None
+        """Element indices of an element, muscle or group name; OpenSim force names (delt_scap_1) and
+        muscle names (delt_scap: the elements delt_scap_1 ...) are accepted as aliases. KeyError
+        with close matches otherwise."""
+        if not isinstance(name, str):
+            raise KeyError(f"element, muscle or group names must be strings, got {name!r}")
+        ix = self._index.get(name)
+        if ix is None:
+            ix = self._osim_aliases().get(name)
+        if ix is None:
+            raise KeyError(self._unknown_names_message([name]))
+        return ix
+
+    def _osim_aliases(self) -> dict[str, list[int]]:
+        """OpenSim force names and their muscle prefixes -> element indices, from the model file
+        (read once, only when a name is not an armrt name)."""
+        if self._aliases is None:
+            self._aliases = {}
+            try:
+                from .geometry import find_model_file
+                import json
+                path = find_model_file(self.model_name)
+                elements = json.loads(path.read_text())["elements"] if path is not None else []
+            except (OSError, ValueError, KeyError):
+                elements = []
+            pos = {n: i for i, n in enumerate(self.element_names)}
+            for e in elements:
+                osim, i = e.get("osim_name"), pos.get(e.get("name"))
+                if not osim or i is None:
+                    continue
+                self._aliases.setdefault(osim, []).append(i)
+                # The OpenSim muscle: the force name without its element number (delt_scap_1, delt_scap10).
+                stem = osim.rstrip("0123456789").rstrip("_")
+                if stem and stem != osim:
+                    self._aliases.setdefault(stem, []).append(i)
+            self._aliases = {k: v for k, v in self._aliases.items() if k not in self._index}
+        return self._aliases
+
+    def _unknown_names_message(self, names: list) -> str:
+        parts = []
+        choices = list(self._index) + list(self._osim_aliases())
+        for name in names:
+            close = difflib.get_close_matches(str(name), choices, n=3)
+            parts.append(f"{name!r}" + (f" (did you mean {', '.join(repr(c) for c in close)}?)" if close else ""))
+        what = "name" if len(names) == 1 else f"{len(names)} names"
+        return (f"unknown element, muscle or group {what}: {'; '.join(parts)}; `armrt info` lists them"
+                if len(names) > 1 else
+                f"unknown element, muscle or group name {parts[0]}; `armrt info` lists them")
+
+    def dof_index(self, name: str) -> int:
+        """Index of a DOF by armrt name (GHy) or OpenSim coordinate name (GH_y)."""
+        if name in self.dof_names:
+            return self.dof_names.index(name)
+        if name in self.dof_osim_names:
+            return self.dof_osim_names.index(name)
+        close = difflib.get_close_matches(str(name), self.dof_names + self.dof_osim_names, n=3)
+        raise KeyError(f"unknown DOF {name!r}" + (f"; did you mean {', '.join(repr(c) for c in close)}?" if close
+                                                  else f"; DOFs are {self.dof_names} (OpenSim {self.dof_osim_names})"))
 
     def _per_element(self, values, what: str, lo: float, hi: float | None, clip: bool) -> np.ndarray:
         """Array of n from an array of n, a scalar or a {name: value} dict (names as in indices())."""
         n = self.n_elements
         if isinstance(values, Mapping):
             out = np.zeros(n) if what in ("excitation", "activation") else self._current(what)
+            unknown = [name for name in values if not isinstance(name, str) or
+                       (name not in self._index and name not in self._osim_aliases())]
+            if unknown:
+                raise KeyError(self._unknown_names_message(unknown))
             for name, v in values.items():
                 out[self.indices(name)] = self._scalar(v, f"{what}[{name!r}]")
         else:
@@ -405,7 +463,7 @@ class Arm:
         default 0, or a dict of names; capped at max_activation with a RuntimeWarning); contractile
         elements start in static equilibrium.
         time: finite, s. Raises ValueError for NaN/infinite values, TypeError for non-numbers."""
-        q = None if q is None else self._dof_vector(q, "q")
+        q = None if q is None else self._check_range(self._dof_vector(q, "q"))
         qdot = None if qdot is None else self._dof_vector(qdot, "qdot")
         if activation is not None:
             activation = self._per_element(activation, "activation", 0.0, 1.0, clip=False)
@@ -424,14 +482,30 @@ class Arm:
             self._sim.reset(q, qdot, activation)
             self._sim.time = time
 
+    def _check_range(self, q: np.ndarray) -> np.ndarray:
+        """q itself; ValueError if a joint is more than RANGE_MARGIN rad beyond its range (with a hint
+        when the values look like degrees), RuntimeWarning if beyond it by less (the passive joint
+        limits are springs, so a simulated state can end slightly outside)."""
+        lo, hi = self.dof_ranges[:, 0], self.dof_ranges[:, 1]
+        outside = (q < lo) | (q > hi)
+        if not outside.any():
+            return q
+        desc = "; ".join(f"{self.dof_names[j]} = {q[j]:.4g} rad ({np.degrees(q[j]):.1f} deg) outside "
+                         f"[{np.degrees(lo[j]):.1f}, {np.degrees(hi[j]):.1f}] deg" for j in np.flatnonzero(outside))
+        far = (q < lo - RANGE_MARGIN) | (q > hi + RANGE_MARGIN)
+        if far.any():
+            r = np.radians(q)
+            hint = (" These look like degrees: q is in radians, pass np.radians(q) (or armrt.rad(q))."
+                    if np.all((r >= lo - RANGE_MARGIN) & (r <= hi + RANGE_MARGIN)) else "")
+            raise ValueError(f"q beyond the joint limits: {desc}.{hint}")
+        warnings.warn(f"q slightly beyond the joint limits: {desc}", RuntimeWarning, stacklevel=3)
+        return q
+
     def _dof_vector(self, v, what: str) -> np.ndarray:
         if isinstance(v, Mapping):
             out = (self.rest_posture if what == "q" else np.zeros(5)).copy()
             for name, x in v.items():
-                if name not in self.dof_names:
-                    close = difflib.get_close_matches(name, self.dof_names, n=3)
-                    raise KeyError(f"unknown DOF {name!r}" + (f"; did you mean {close}?" if close else f"; DOFs are {self.dof_names}"))
-                out[self.dof_names.index(name)] = self._scalar(x, f"{what}[{name!r}]")
+                out[self.dof_index(name)] = self._scalar(x, f"{what}[{name!r}]")
             v = out
         a = real_array(v, what)
         if a.shape != (5,):

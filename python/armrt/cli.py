@@ -1,25 +1,56 @@
-"""Command line: `armrt info`, `armrt simulate`, `armrt experiments`."""
+"""Command line: `armrt info | simulate | experiments | view | animate | export`.
+
+Units: radians in the API and in files; a flag takes degrees only when its name says so (`--q-deg`).
+A user mistake (unknown name, missing file, bad value, unsupported format) prints one line
+`armrt <command>: error: ...` and exits 2; `--traceback` shows the Python traceback instead.
+"""
 from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
 
 import numpy as np
 
-from .arm import DEFAULT_INTEGRATOR, INTEGRATORS
+# What a person can get wrong: reported in one line, never as a traceback (bugs still show one).
+USER_ERRORS = (ValueError, KeyError, TypeError, OSError, MemoryError, OverflowError, RuntimeError)
 
 
-def _parse_assignments(items: list[str]) -> dict[str, float]:
-    out = {}
+class CliError(Exception):
+    """A mistake in the command line itself (reported like argparse's errors)."""
+
+
+def error_text(exc: BaseException) -> str:
+    """One line for an exception: KeyError's repr quotes removed, first line only."""
+    msg = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
+    if isinstance(exc, FileNotFoundError) and exc.filename and str(exc.filename) not in str(msg):
+        msg = f"{exc.filename}: {exc.strerror or msg}"
+    elif isinstance(exc, OSError) and exc.filename and exc.strerror:
+        msg = f"{exc.filename}: {exc.strerror}"
+    return " ".join(str(msg).split()) or type(exc).__name__
+
+
+def parse_assignments(items: list[str]) -> dict[str, float]:
+    """NAME=VALUE pairs; every malformed item reported at once."""
+    out, bad = {}, []
     for item in items:
         name, sep, value = item.partition("=")
-        if not sep:
-            raise SystemExit(f"armrt: expected NAME=VALUE, got {item!r}")
+        if not sep or not name:
+            bad.append(f"{item!r} is not NAME=VALUE")
+            continue
         try:
             out[name] = float(value)
         except ValueError:
-            raise SystemExit(f"armrt: {item!r}: {value!r} is not a number") from None
+            bad.append(f"{item!r}: {value!r} is not a number")
+    if bad:
+        raise CliError("; ".join(bad))
     return out
+
+
+def check_suffix(path: str | None, allowed: tuple[str, ...], what: str) -> None:
+    if path is not None and Path(path).suffix.lower() not in allowed:
+        raise CliError(f"{what} {path!r}: unsupported format {Path(path).suffix or '(no suffix)'!r}; "
+                       f"use {' or '.join(allowed)}")
 
 
 def cmd_info(args) -> int:
@@ -27,24 +58,43 @@ def cmd_info(args) -> int:
     arm = Arm(model=args.model)
     print(f"model {arm.model_name}: {len(arm.dof_names)} DOF, {len(arm.muscle_names)} muscles, "
           f"{arm.n_elements} elements, arm mass {arm.info['arm_mass']:.3f} kg")
-    for name, (lo, hi), rest in zip(arm.dof_names, arm.dof_ranges, arm.rest_posture):
-        print(f"  {name:5s} range [{np.degrees(lo):7.1f}, {np.degrees(hi):7.1f}] deg, rest {np.degrees(rest):6.1f} deg")
+    for name, osim, (lo, hi), rest in zip(arm.dof_names, arm.dof_osim_names, arm.dof_ranges, arm.rest_posture):
+        print(f"  {name:5s} ({osim:5s}) range [{lo:7.3f}, {hi:7.3f}] rad = [{np.degrees(lo):6.1f}, "
+              f"{np.degrees(hi):6.1f}] deg, rest {rest:.3f} rad = {np.degrees(rest):5.1f} deg")
     print("muscles: " + ", ".join(f"{m} ({len(arm.indices(m))})" for m in arm.muscle_names))
     print("groups:  " + ", ".join(arm.group_names))
+    print("OpenSim force names (delt_scap_1) and muscle names (delt_scap) are accepted as aliases.")
     return 0
+
+
+def start_posture(args, arm) -> np.ndarray | None:
+    """q (rad) from --q (rad), --q-deg (deg) or --q-mot (first row of a .mot, or at --q-mot-time)."""
+    if args.q is not None:
+        return np.asarray(args.q)
+    if args.q_deg is not None:
+        return np.radians(args.q_deg)
+    if args.q_mot is not None:
+        from .opensim_io import read_motion
+        return read_motion(args.q_mot, model=arm.model_name).posture(args.q_mot_time)
+    return None
 
 
 def cmd_simulate(args) -> int:
     from .arm import Arm
+    check_suffix(args.out, (".npz",), "--out")
+    excitation = parse_assignments(args.excitation)
     arm = Arm(model=args.model, integrator=args.integrator, dt=args.dt)
-    arm.reset(q=None if args.q is None else np.radians(args.q))
-    excitation = _parse_assignments(args.excitation)
-    res = arm.simulate(excitation, duration=args.duration)
+    arm.reset(q=start_posture(args, arm))
+    arm.set_excitation(excitation)  # unknown names fail here, before any work
+    res = arm.simulate(excitation, duration=args.duration, record_every=args.record_every,
+                       progress=None if args.progress else False)
     q0, q1 = np.degrees(res.q[0]), np.degrees(res.q[-1])
     for j, name in enumerate(arm.dof_names):
         print(f"{name:5s} {q0[j]:8.2f} -> {q1[j]:8.2f} deg")
-    print(f"GHstab max {res.gh_stab.max():.3f}; TET mean {res.tet_ns[:-1].mean() / 1e3:.2f} us, "
-          f"max {res.tet_ns.max() / 1e3:.2f} us over {len(res.time) - 1} steps")
+    tet = res.tet_ns[:-1] if len(res.tet_ns) > 1 else res.tet_ns
+    print(f"GHstab max {res.gh_stab.max():.3f}; TET mean {tet.mean() / 1e3:.2f} us, "
+          f"max {res.tet_ns.max() / 1e3:.2f} us over {len(res.time)} recorded rows "
+          f"(every {args.record_every} of {int(round(args.duration / arm.dt))} steps)")
     if args.out:
         res.save(args.out)
         print(f"saved {args.out}")
@@ -56,30 +106,80 @@ def cmd_experiments(args) -> int:
     return run_all(out_dir=args.out, quick=args.quick)
 
 
-def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(prog="armrt", description="Real-time musculoskeletal arm simulator")
-    sub = ap.add_subparsers(dest="command", required=True)
-    p = sub.add_parser("info", help="describe the model")
-    p.add_argument("--model", default="das2")
+def _formatter(prog):
+    return argparse.ArgumentDefaultsHelpFormatter(prog, max_help_position=32)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    from . import __version__
+    from .arm import DEFAULT_INTEGRATOR, INTEGRATORS
+    ap = argparse.ArgumentParser(
+        prog="armrt", formatter_class=_formatter,
+        description="Real-time musculoskeletal arm simulator. Angles in radians unless an option's "
+                    "name says deg; times in seconds.")
+    ap.add_argument("--version", action="version", version=f"armrt {__version__}")
+    ap.add_argument("--traceback", action="store_true", help="show the Python traceback on errors")
+    sub = ap.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    p = sub.add_parser("info", help="describe the model: DOFs, ranges, muscles, groups", formatter_class=_formatter)
+    p.add_argument("--model", default="das2", help="compiled-in model name")
     p.set_defaults(func=cmd_info)
-    p = sub.add_parser("simulate", help="run with constant excitations, e.g. elbow_flexors=0.3 rotator_cuff=0.05")
-    p.add_argument("excitation", nargs="*", help="NAME=VALUE (element, muscle or group)")
-    p.add_argument("--model", default="das2")
-    p.add_argument("--integrator", default=DEFAULT_INTEGRATOR, choices=INTEGRATORS,
-                   help="integration method (default: %(default)s, one linearly implicit step per 1 ms)")
-    p.add_argument("--dt", type=float, default=1e-3)
-    p.add_argument("--duration", type=float, default=2.0)
-    p.add_argument("--q", type=float, nargs=5, metavar="DEG", help="initial joint angles (deg)")
-    p.add_argument("-o", "--out", help="save the result (.npz)")
+
+    p = sub.add_parser("simulate", formatter_class=_formatter,
+                       help="run with constant excitations, e.g. elbow_flexors=0.3 rotator_cuff=0.05")
+    p.add_argument("excitation", nargs="*", metavar="NAME=VALUE",
+                   help="excitation in [0, 1] of an element, muscle or group (armrt or OpenSim name); others 0")
+    p.add_argument("--model", default="das2", help="compiled-in model name")
+    p.add_argument("--integrator", default=DEFAULT_INTEGRATOR, choices=list(INTEGRATORS),
+                   help="integration method (ros2: one linearly implicit step per 1 ms)")
+    p.add_argument("--dt", type=float, default=1e-3, help="control step, s")
+    p.add_argument("--duration", type=float, default=2.0, help="simulated time, s")
+    p.add_argument("--record-every", type=int, default=1, metavar="K",
+                   help="keep every K-th step in the result (long runs: a 1 h run at K=1 needs 15 GB)")
+    q = p.add_mutually_exclusive_group()
+    q.add_argument("--q", type=float, nargs=5, metavar="RAD",
+                   help="initial joint angles GHy GHz GHyy ELx PSy, rad (default: rest posture)")
+    q.add_argument("--q-deg", type=float, nargs=5, metavar="DEG", help="initial joint angles, deg")
+    q.add_argument("--q-mot", metavar="FILE.mot", help="initial joint angles from an OpenSim motion file")
+    p.add_argument("--q-mot-time", type=float, default=None, metavar="S",
+                   help="time in --q-mot to start from, s (default: its first row)")
+    p.add_argument("--no-progress", dest="progress", action="store_false",
+                   help="no progress bar (shown on a terminal for runs longer than 1 s)")
+    p.add_argument("-o", "--out", metavar="FILE.npz", help="save the result (.npz)")
     p.set_defaults(func=cmd_simulate)
-    p = sub.add_parser("experiments", help="the paper's experiments: figures and tables")
+
+    p = sub.add_parser("experiments", help="the paper's experiments: figures and tables", formatter_class=_formatter)
     p.add_argument("--out", default="results", help="output folder")
     p.add_argument("--quick", action="store_true", help="shorter runs (for tests)")
     p.set_defaults(func=cmd_experiments)
     from .view import add_cli
-    add_cli(sub)  # view, animate, export (viser is imported only when `view` runs)
+    add_cli(sub, _formatter)  # view, animate, export (viser is imported only when `view` runs)
+    return ap
+
+
+def main(argv=None) -> int:
+    ap = build_parser()
     args = ap.parse_args(argv)
-    return args.func(args)
+    prog = f"armrt {args.command}"
+    import warnings
+
+    def one_line_warning(message, category, filename, lineno, file=None, line=None):
+        print(f"{prog}: warning: {message}", file=sys.stderr)
+    warnings.showwarning = one_line_warning
+    try:
+        return args.func(args)
+    except KeyboardInterrupt:
+        print(f"{prog}: interrupted", file=sys.stderr)
+        return 130
+    except CliError as exc:
+        if args.traceback:
+            raise
+        print(f"{prog}: error: {exc}", file=sys.stderr)
+        return 2
+    except USER_ERRORS as exc:
+        if args.traceback:
+            raise
+        print(f"{prog}: error: {error_text(exc)}", file=sys.stderr)
+        return 2
 
 
 if __name__ == "__main__":

@@ -19,6 +19,7 @@ from __future__ import annotations
 import threading
 import time
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Callable, Protocol
 
 import numpy as np
@@ -537,16 +538,23 @@ def serve(source=None, host: str = "127.0.0.1", port: int = 8080, fps: float = 3
 
 
 # ------------------------------------------------------------------ command line
+def load_replay(path, model: str = "das2"):
+    """A saved Result (.npz) or an OpenSim motion (.mot/.sto of joint angles, kinematics only)."""
+    from .arm import Result
+    if Path(path).suffix.lower() in (".mot", ".sto"):
+        from .opensim_io import read_motion
+        return read_motion(path, model=model).to_result()
+    return Result.load(path)
+
+
 def _cmd_view(args) -> int:
     if args.result:
-        source = ResultSource(args.result, speed=args.speed)
+        source = ResultSource(load_replay(args.result, args.model), speed=args.speed)
     elif args.udp:
         from .realtime import parse_endpoint, read_key_file
-        try:
-            host, port = parse_endpoint(args.udp)
-            key = read_key_file(args.key_file) if args.key_file else None
-        except (ValueError, OSError) as e:
-            raise SystemExit(f"armrt view: {e}") from None
+        # A bad address or key file raises ValueError/OSError: one line from armrt's main().
+        host, port = parse_endpoint(args.udp)
+        key = read_key_file(args.key_file) if args.key_file else None
         source = UdpSource(host, port, model=args.model, key=key)
     else:
         source = SimulationSource(model=args.model, integrator=args.integrator, dt=args.dt, speed=args.speed)
@@ -556,59 +564,74 @@ def _cmd_view(args) -> int:
 
 
 def _cmd_animate(args) -> int:
-    from .animate import animate
-    out = animate(args.result, args.out, fps=args.fps, speed=args.speed, dpi=args.dpi,
-                  lines_of_action=not args.no_lines)
+    from .animate import animate, check_output
+    check_output(args.out)
+    out = animate(load_replay(args.result, args.model), args.out, fps=args.fps, speed=args.speed, dpi=args.dpi,
+                  lines_of_action=not args.no_lines, progress=None if args.progress else False)
     print(f"wrote {out}")
     return 0
 
 
 def _cmd_export(args) -> int:
     from .arm import Result
-    from .opensim_io import write_activation_sto, write_mot
+    from .cli import CliError, check_suffix
+    from .opensim_io import write_activation_sto, write_excitation_sto, write_mot
+    if not (args.mot or args.sto or args.controls):
+        raise CliError("give --mot FILE, --sto FILE and/or --controls FILE")
+    check_suffix(args.mot, (".mot",), "--mot")
+    check_suffix(args.sto, (".sto",), "--sto")
+    check_suffix(args.controls, (".sto",), "--controls")
     res = Result.load(args.result)
-    if not (args.mot or args.sto):
-        raise SystemExit("armrt export: give --mot FILE and/or --sto FILE")
     if args.mot:
         print(f"wrote {write_mot(res, args.mot, model_file=args.model_file)}")
     if args.sto:
         print(f"wrote {write_activation_sto(res, args.sto, model_file=args.model_file, state_paths=args.state_paths)}")
+    if args.controls:
+        print(f"wrote {write_excitation_sto(res, args.controls, model_file=args.model_file)}")
     return 0
 
 
-def add_cli(subparsers) -> None:
+def add_cli(subparsers, formatter_class=None) -> None:
     """Registers `view`, `animate` and `export` on an argparse subparsers object (each sets func)."""
     from .arm import DEFAULT_INTEGRATOR, INTEGRATORS
-    p = subparsers.add_parser("view", help="live 3D view in the browser (demo simulation, a saved result, or UDP)")
+    kw = {"formatter_class": formatter_class} if formatter_class else {}
+    p = subparsers.add_parser("view", help="live 3D view in the browser (demo simulation, a saved result, or UDP)",
+                              **kw)
     src = p.add_mutually_exclusive_group()
-    src.add_argument("--result", help="replay a saved result (.npz)")
+    src.add_argument("--result", metavar="FILE", help="replay a saved result (.npz) or a motion (.mot, angles only)")
     src.add_argument("--udp", metavar="HOST:PORT", help="listen to the armrt-rt state stream (':PORT': loopback)")
     p.add_argument("--key-file", help="the runner's --key-file (draw only signed state packets)")
-    p.add_argument("--model", default="das2")
-    p.add_argument("--integrator", default=DEFAULT_INTEGRATOR, choices=INTEGRATORS,
-                   help="integration method (default: %(default)s, one linearly implicit step per 1 ms)")
-    p.add_argument("--dt", type=float, default=1e-3)
+    p.add_argument("--model", default="das2", help="compiled-in model name")
+    p.add_argument("--integrator", default=DEFAULT_INTEGRATOR, choices=list(INTEGRATORS),
+                   help="integration method of the demo simulation (ros2: one linearly implicit step per 1 ms)")
+    p.add_argument("--dt", type=float, default=1e-3, help="control step, s (demo)")
     p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per wall-clock second")
-    p.add_argument("--host", default="127.0.0.1")
-    p.add_argument("--port", type=int, default=8080)
-    p.add_argument("--fps", type=float, default=30.0)
-    p.add_argument("--duration", type=float, default=None, help="stop after this many seconds")
+    p.add_argument("--host", default="127.0.0.1", help="address the web page is served on")
+    p.add_argument("--port", type=int, default=8080, help="port the web page is served on")
+    p.add_argument("--fps", type=float, default=30.0, help="page updates per second")
+    p.add_argument("--duration", type=float, default=None, help="stop after this many seconds (default: Ctrl-C)")
     p.add_argument("--no-lines", action="store_true", help="hide the GH lines of action")
     p.set_defaults(func=_cmd_view)
 
-    p = subparsers.add_parser("animate", help="render a saved result to .mp4 (ffmpeg) or .gif")
-    p.add_argument("result", help="saved result (.npz)")
+    p = subparsers.add_parser("animate", help="render a saved result (or a .mot motion) to .mp4 (ffmpeg) or .gif",
+                              **kw)
+    p.add_argument("result", help="saved result (.npz) or OpenSim motion (.mot, angles only)")
     p.add_argument("-o", "--out", default="arm.gif", help="output .mp4 or .gif")
-    p.add_argument("--fps", type=int, default=30)
-    p.add_argument("--speed", type=float, default=1.0)
-    p.add_argument("--dpi", type=int, default=80)
+    p.add_argument("--model", default="das2", help="model of a .mot input")
+    p.add_argument("--fps", type=int, default=30, help="frames per second of the video")
+    p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per video second")
+    p.add_argument("--dpi", type=int, default=80, help="resolution, dots per inch (figure 10 x 6.4 in)")
     p.add_argument("--no-lines", action="store_true", help="hide the GH lines of action")
+    p.add_argument("--no-progress", dest="progress", action="store_false", help="no progress bar on a terminal")
     p.set_defaults(func=_cmd_animate)
 
-    p = subparsers.add_parser("export", help="OpenSim files: joint angles (.mot) and activations (.sto)")
+    p = subparsers.add_parser("export", help="OpenSim files: joint angles (.mot), activations and excitations (.sto)",
+                              **kw)
     p.add_argument("result", help="saved result (.npz)")
-    p.add_argument("--mot", help="joint angles, OpenSim motion file")
-    p.add_argument("--sto", help="activations, OpenSim storage file")
+    p.add_argument("--mot", metavar="FILE.mot", help="joint angles, OpenSim motion file (rad)")
+    p.add_argument("--sto", metavar="FILE.sto", help="activations, OpenSim storage file (force names)")
+    p.add_argument("--controls", metavar="FILE.sto",
+                   help="excitations the dynamics used (capped at max_activation), OpenSim controls file")
     p.add_argument("--state-paths", action="store_true", help="name .sto columns /forceset/<muscle>/activation")
     p.add_argument("--model-file", help="models/<name>.json (default: found beside the package)")
     p.set_defaults(func=_cmd_export)
