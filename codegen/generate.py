@@ -26,6 +26,9 @@ BODY_CHAIN = [("humerus", "scapula"), ("ulna", "humerus"), ("radius", "ulna"), (
 JOINT_AXES = {"gimbal_yzy": 3, "pin": 1, "weld": 0}
 
 
+MAX_FILE_BYTES = 64 * 1024**2
+
+
 class ModelFileError(ValueError):
     """The model file does not follow the schema; the message names the offending field."""
 
@@ -226,17 +229,164 @@ def validate(model) -> dict:
     for g, ms in groups.items():
         if not isinstance(ms, list) or any(x not in mus_names for x in ms):
             raise ModelFileError(f"model file: field 'groups.{g}' must list muscle names")
+    check_sense(model)
     return model
+
+
+# ---------------------------------------------------------------------------------------------
+# Physical sense: a file can follow the schema and still describe no arm (negative inertia, a zero
+# glenoid normal, a polynomial of degree 10^9 that would exhaust memory in sympy). Each bound below
+# is far outside every human arm model (DAS3 values in docs/model_schema.md) and inside what the
+# generated code and the integrators can take.
+
+MAX_NESTING = 16            # JSON depth (the schema needs 7)
+MAX_POLY_DEGREE = 16        # total degree of a path polynomial term (DAS3 fits: 9)
+MAX_POLY_TERMS = 4096       # terms per polynomial (DAS3 fits: 36)
+ELEMENT_BOUNDS = {          # (lo, hi) of a muscle element parameter, SI units
+    "fmax": (0.0, 1e4), "lceopt": (1e-3, 1.0), "lslack": (0.0, 2.0), "vmax": (0.1, 100.0),
+    "tact": (1e-4, 1.0), "tdeact": (1e-4, 1.0), "peeslack": (0.5, 5.0), "mass": (0.0, 5.0),
+}
+
+
+def _fail(field: str, reason: str):
+    raise ModelFileError(f"model file: field '{field}' {reason}")
+
+
+def nesting_depth(x, limit: int = MAX_NESTING) -> int:
+    """Depth of nested lists/objects, iteratively (no recursion limit); stops counting past limit."""
+    deepest, stack = 0, [(x, 1)]
+    while stack:
+        v, d = stack.pop()
+        if isinstance(v, (dict, list)):
+            deepest = max(deepest, d)
+            if deepest > limit:
+                return deepest
+            stack.extend((c, d + 1) for c in (v.values() if isinstance(v, dict) else v))
+    return deepest
+
+
+def _norm(v) -> float:
+    return math.sqrt(sum(x * x for x in v))
+
+
+def check_sense(model: dict) -> None:
+    """Refuse a schema-valid model that is not physically meaningful; ModelFileError names the field
+    path and the reason."""
+    g = model["gravity_thorax"]
+    if _norm(g) > 100.0:
+        _fail("gravity_thorax", f"has magnitude {_norm(g):.3g} m/s^2 (more than 10 g)")
+    for i, d in enumerate(model["dofs"]):
+        lo, hi = d["range"]
+        if lo < -2 * math.pi or hi > 2 * math.pi:
+            _fail(f"dofs[{i}].range", f"[{lo}, {hi}] rad goes beyond one turn either way (radians expected)")
+        if not lo <= d["rest"] <= hi:
+            _fail(f"dofs[{i}].rest", f"{d['rest']} rad is outside the range [{lo}, {hi}]")
+    for i, b in enumerate(model["bodies"]):
+        w = f"bodies[{i}]"
+        if not b["mass"] <= 50.0:
+            _fail(f"{w}.mass", f"is {b['mass']} kg (an arm segment is under 50 kg)")
+        if _norm(b["com"]) > 1.0:
+            _fail(f"{w}.com", "is more than 1 m from the body origin")
+        inertia = b["inertia"]
+        scale = max(abs(x) for row in inertia for x in row) or 1.0
+        if any(abs(inertia[r][c] - inertia[c][r]) > 1e-9 * scale for r in range(3) for c in range(3)):
+            _fail(f"{w}.inertia", "is not symmetric")
+        lam = _eigvalsh3(inertia)
+        if lam[0] <= 0:
+            _fail(f"{w}.inertia", f"is not positive definite (principal moments {[f'{x:.3g}' for x in lam]} kg m^2)")
+        if lam[2] > lam[0] + lam[1] + 1e-9 * scale:
+            _fail(f"{w}.inertia", f"violates the triangle inequality (principal moments "
+                                  f"{[f'{x:.3g}' for x in lam]} kg m^2: no rigid body has them)")
+        axes = b["joint"]["axes"]
+        for k, a in enumerate(axes):
+            if _norm(a) == 0:
+                _fail(f"{w}.joint.axes[{k}]", "is zero")
+    gl = model["glenoid"]
+    for k in ("normal", "major_axis", "minor_axis"):
+        n = _norm(gl[k])
+        if n == 0:
+            _fail(f"glenoid.{k}", "is zero (GH stability needs a direction)")
+        if abs(n - 1.0) > 1e-6:
+            _fail(f"glenoid.{k}", f"must be a unit vector, has length {n:.6g}")
+    for a, b in (("normal", "major_axis"), ("normal", "minor_axis"), ("major_axis", "minor_axis")):
+        dot = sum(x * y for x, y in zip(gl[a], gl[b]))
+        if abs(dot) > 1e-6:
+            _fail(f"glenoid.{b}", f"must be perpendicular to glenoid.{a} (dot product {dot:.3g})")
+    for k in ("rim_half_angle_major", "rim_half_angle_minor"):
+        if not gl[k] < math.pi / 2:
+            _fail(f"glenoid.{k}", f"is {gl[k]} rad; a rim half-angle is below pi/2")
+    for i, e in enumerate(model["elements"]):
+        w = f"elements[{i}]"
+        for k, (lo, hi) in ELEMENT_BOUNDS.items():
+            if not lo <= e[k] <= hi:
+                _fail(f"{w}.{k}", f"is {e[k]}, outside the physical range [{lo}, {hi}]")
+        if not e["pennopt"] < math.pi / 2:
+            _fail(f"{w}.pennopt", f"is {e['pennopt']} rad; pennation is below pi/2")
+        if set(e["length_poly"]["dofs"]) - set(e["dofs"]):
+            _fail(f"{w}.length_poly.dofs", f"{e['length_poly']['dofs']} include DOFs the element does not cross "
+                                           f"({e['dofs']})")
+        polys = [("length_poly", e["length_poly"])]
+        if e["gh_direction"]:
+            polys += [(f"gh_direction.{c}", e["gh_direction"][c]) for c in "xyz"]
+        for name, poly in polys:
+            if len(poly["exponents"]) > MAX_POLY_TERMS:
+                _fail(f"{w}.{name}.exponents", f"has {len(poly['exponents'])} terms (at most {MAX_POLY_TERMS})")
+            for t, row in enumerate(poly["exponents"]):
+                if sum(row) > MAX_POLY_DEGREE:
+                    _fail(f"{w}.{name}.exponents[{t}]", f"has degree {sum(row)} (at most {MAX_POLY_DEGREE}; "
+                                                        f"the path fits use up to 9)")
+    # Element and muscle tables must describe the same partition.
+    owner: dict[str, str] = {}
+    for i, m in enumerate(model["muscles"]):
+        for el in m["elements"]:
+            if el in owner:
+                _fail(f"muscles[{i}].elements", f"lists {el!r}, already in muscle {owner[el]!r}")
+            owner[el] = m["name"]
+    if len({m["name"] for m in model["muscles"]}) != len(model["muscles"]):
+        _fail("muscles", "has repeated names")
+    for i, e in enumerate(model["elements"]):
+        if e["name"] not in owner:
+            _fail(f"elements[{i}].muscle", f"element {e['name']!r} is in no muscle's 'elements' list")
+        if owner[e["name"]] != e["muscle"]:
+            _fail(f"elements[{i}].muscle", f"is {e['muscle']!r} but muscle {owner[e['name']]!r} lists the element")
+
+
+def _eigvalsh3(a) -> list[float]:
+    """Eigenvalues of a symmetric 3x3 matrix, ascending (closed form; no numpy in the generator)."""
+    p1 = a[0][1] ** 2 + a[0][2] ** 2 + a[1][2] ** 2
+    q = (a[0][0] + a[1][1] + a[2][2]) / 3
+    if p1 == 0:
+        return sorted([a[0][0], a[1][1], a[2][2]])
+    p2 = sum((a[k][k] - q) ** 2 for k in range(3)) + 2 * p1
+    p = math.sqrt(p2 / 6)
+    b = [[(a[r][c] - (q if r == c else 0)) / p for c in range(3)] for r in range(3)]
+    det = (b[0][0] * (b[1][1] * b[2][2] - b[1][2] * b[2][1]) - b[0][1] * (b[1][0] * b[2][2] - b[1][2] * b[2][0])
+           + b[0][2] * (b[1][0] * b[2][1] - b[1][1] * b[2][0]))
+    phi = math.acos(max(-1.0, min(1.0, det / 2))) / 3
+    e1 = q + 2 * p * math.cos(phi)
+    e3 = q + 2 * p * math.cos(phi + 2 * math.pi / 3)
+    return sorted([e1, 3 * q - e1 - e3, e3])
 
 
 def load_model(path) -> tuple[dict, str]:
     """Read and validate a model file; returns (model, sha256 of its bytes)."""
     path = Path(path)
-    data = path.read_bytes()
+    try:
+        size = path.stat().st_size
+        if size > MAX_FILE_BYTES:
+            raise ModelFileError(f"model file {path}: {size} bytes, more than {MAX_FILE_BYTES} (das2.json: 0.3 MB)")
+        data = path.read_bytes()
+    except OSError as exc:
+        raise ModelFileError(f"model file {path}: {exc.strerror or exc}") from None
     try:
         model = json.loads(data)
     except json.JSONDecodeError as exc:
         raise ModelFileError(f"model file {path}: not valid JSON ({exc})") from None
+    except RecursionError:
+        raise ModelFileError(f"model file {path}: nesting deeper than {MAX_NESTING} levels") from None
+    depth = nesting_depth(model)
+    if depth > MAX_NESTING:
+        raise ModelFileError(f"model file {path}: nesting deeper than {MAX_NESTING} levels (the schema needs 7)")
     return validate(model), hashlib.sha256(data).hexdigest()
 
 

@@ -193,3 +193,70 @@ def test_generator_follows_changed_path_polynomials(tmp_path):
             lp = m["elements"][idx]["length_poly"]
             qs = np.array([q[dof_index[d]] for d in lp["dofs"]])
             assert L[idx] == pytest.approx(_poly_eval(lp["exponents"], lp["coefs"], qs), rel=1e-13, abs=1e-15)
+
+
+# Issue 11 item 6: schema-valid files that describe no arm are refused, naming the field and the reason.
+def _set(m, path, value):
+    obj = m
+    for k in path[:-1]:
+        obj = obj[k]
+    obj[path[-1]] = value
+    return m
+
+
+@pytest.mark.parametrize("path, value, needles", [
+    (("bodies", 0, "mass"), -2.0, ["bodies[0].mass", "> 0"]),
+    (("bodies", 1, "inertia"), [[-0.003, 0, 0], [0, 0.003, 0], [0, 0, 0.0005]], ["bodies[1].inertia", "not positive definite"]),
+    (("bodies", 1, "inertia"), [[0.001, 0, 0], [0, 0.001, 0], [0, 0, 0.01]], ["bodies[1].inertia", "triangle inequality"]),
+    (("bodies", 2, "inertia"), [[0.003, 0.001, 0], [0, 0.003, 0], [0, 0, 0.0005]], ["bodies[2].inertia", "not symmetric"]),
+    (("bodies", 3, "mass"), 500.0, ["bodies[3].mass", "under 50 kg"]),
+    (("glenoid", "normal"), [0.0, 0.0, 0.0], ["glenoid.normal", "is zero"]),
+    (("glenoid", "major_axis"), [0.0, 0.0, 2.0], ["glenoid.major_axis", "unit vector"]),
+    (("glenoid", "rim_half_angle_major"), 2.0, ["glenoid.rim_half_angle_major", "below pi/2"]),
+    (("elements", 4, "fmax"), 1e7, ["elements[4].fmax", "outside the physical range"]),
+    (("elements", 4, "tact"), 30.0, ["elements[4].tact", "outside the physical range"]),
+    (("elements", 4, "muscle"), "bicb", ["elements[4].muscle", "is 'bicb' but muscle 'deltscap' lists the element"]),
+    (("elements", 4, "crosses_gh"), False, ["elements[4].gh_direction", "not crossing GH"]),
+    (("dofs", 3, "range"), [5.0, 140.0], ["dofs[3].range", "radians expected"]),
+    (("gravity_thorax",), [0.0, -981.0, 0.0], ["gravity_thorax", "more than 10 g"]),
+])
+def test_refuses_physical_nonsense(path, value, needles):
+    _refused(_set(_model(), path, value), *needles)
+
+
+def test_refuses_absurd_polynomial_exponents_before_generating(tmp_path):
+    """The issue's example: an exponent of 10^9 exhausted memory in the generator."""
+    m = _model()
+    m["elements"][7]["length_poly"]["exponents"][0][0] = 10**9
+    _refused(m, "elements[7].length_poly.exponents[0]", "degree 1000000000")
+    bad = tmp_path / "huge.json"
+    bad.write_text(json.dumps(m))
+    out = tmp_path / "out"
+    r = subprocess.run([sys.executable, "-m", "codegen.generate", "--model", str(bad), "--out", str(out)],
+                       cwd=ROOT, env=dict(os.environ, PYTHONPATH=str(ROOT)), capture_output=True, text=True,
+                       timeout=120)
+    assert r.returncode == 2 and "degree 1000000000" in r.stderr and not out.exists()
+
+
+def test_refuses_tables_that_disagree():
+    m = _model()
+    m["muscles"][1]["elements"].append(m["muscles"][0]["elements"][0])
+    _refused(m, "muscles[1].elements", "already in muscle 'deltscap'")
+    m = _model()
+    m["muscles"][0]["elements"].remove("deltscap3")
+    _refused(m, "elements[2].muscle", "'deltscap3' is in no muscle")
+
+
+def test_refuses_excessive_nesting(tmp_path):
+    for depth in (40, 100_000):   # beyond the limit; beyond Python's recursion limit
+        m = _model()
+        text = json.dumps(m)[:-1] + ', "extra": ' + "[" * depth + "]" * depth + "}"
+        bad = tmp_path / f"deep{depth}.json"
+        bad.write_text(text)
+        with pytest.raises(ModelFileError, match="nesting deeper than 16 levels"):
+            load_model(bad)
+
+
+def test_the_shipped_model_passes_the_sense_checks():
+    from codegen.generate import check_sense
+    check_sense(validate(_model()))
