@@ -122,9 +122,11 @@ RESULT_MEMORY_LIMIT = 2 * 1024**3
 SIMULATE_BLOCK_STEPS = 2000
 
 
-@dataclass
+@dataclass(repr=False)
 class Result:
-    """Time series of a simulation; row k is the state at time[k] and the outputs at that state."""
+    """Time series of a simulation; row k is the state at time[k] and the outputs at that state.
+
+    repr() is one line; to_dataframe() gives a pandas DataFrame (pandas optional), plot() a figure."""
 
     time: np.ndarray            # (T,) s
     q: np.ndarray               # (T, 5) rad
@@ -153,6 +155,97 @@ class Result:
     @property
     def q_deg(self) -> np.ndarray:
         return np.degrees(self.q)
+
+    # Per-DOF and per-element channels, and the column names of the others (to_dataframe).
+    _DOF_CHANNELS = ("q", "qdot")
+    _ELEMENT_CHANNELS = ("lce", "activation", "excitation", "muscle_force", "muscle_length")
+    _OTHER_COLUMNS = {"gh_force": ("x", "y", "z"), "gh_angles": ("theta", "phi"), "hand_position": ("x", "y", "z"),
+                      "thorax_humerus": ("plane_of_elevation", "elevation", "axial_rotation"),
+                      "gh_stab": None, "tet_ns": None}
+
+    def __repr__(self) -> str:
+        T = len(self.time)
+        if T == 0:
+            return f"Result({self.model or '?'}, empty)"
+        step = f"dt={self.dt * 1e3:g} ms" + (f" x{self.substeps} substeps" if self.substeps > 1 else "")
+        every = ""
+        if T > 1 and self.dt > 0:
+            k = int(round((self.time[1] - self.time[0]) / self.dt))
+            every = f", every {k} steps" if k > 1 else ""
+        q_end = np.array2string(np.degrees(self.q[-1]), precision=1, separator=", ", suppress_small=True)
+        stab = np.nanmax(self.gh_stab) if np.any(np.isfinite(self.gh_stab)) else float("nan")
+        mb = sum(getattr(self, k).nbytes for k in self.ARRAYS) / 1e6
+        return (f"Result({self.model or '?'}, {self.integrator or 'replay'} {step}: {T} rows{every}, "
+                f"t = {self.time[0]:g} to {self.time[-1]:g} s, {len(self.element_names)} elements; "
+                f"final q = {q_end} deg; GHstab max {stab:.3g}; {mb:.1f} MB)")
+
+    def to_dataframe(self, channels=None):
+        """A pandas DataFrame indexed by time (s), one column per value: 'q.GHy', 'activation.deltscap1',
+        'gh_force.x', 'gh_stab', ... in the Result's units (radians). channels: names from ARRAYS
+        (default all). Raises ImportError with the install command if pandas is absent, ValueError
+        for an unknown channel."""
+        try:
+            import pandas as pd
+        except ImportError:
+            raise ImportError("Result.to_dataframe needs pandas: pip install pandas "
+                              "(or pip install 'armrt[dataframe]')") from None
+        names = [k for k in self.ARRAYS if k != "time"] if channels is None else list(channels)
+        unknown = [c for c in names if c not in self.ARRAYS or c == "time"]
+        if unknown:
+            raise ValueError(f"unknown channels {unknown}; expected some of {[k for k in self.ARRAYS if k != 'time']}")
+        cols = {}
+        for c in names:
+            a = np.asarray(getattr(self, c))
+            if c in self._DOF_CHANNELS:
+                labels = self.dof_names or [str(j) for j in range(a.shape[1])]
+            elif c in self._ELEMENT_CHANNELS:
+                labels = self.element_names or [str(i) for i in range(a.shape[1])]
+            else:
+                labels = self._OTHER_COLUMNS[c]
+            if labels is None:
+                cols[c] = a
+            else:
+                cols.update({f"{c}.{n}": a[:, j] for j, n in enumerate(labels)})
+        return pd.DataFrame(cols, index=pd.Index(np.asarray(self.time), name="time"))
+
+    def plot(self, channels=("q", "gh_stab"), names=None, fig=None):
+        """A matplotlib figure with one panel per channel against time: joint angles in degrees (the
+        label says so), GH stability with its limit of 1, other channels in their SI units. names:
+        the DOFs / elements to draw (default all DOFs, and for element channels the muscle means).
+        Returns the figure (call .savefig or plt.show())."""
+        import matplotlib.pyplot as plt
+        unknown = [c for c in channels if c not in self.ARRAYS or c == "time"]
+        if unknown:
+            raise ValueError(f"unknown channels {unknown}; expected some of {[k for k in self.ARRAYS if k != 'time']}")
+        fig = fig or plt.figure(figsize=(8, 2.2 * len(channels)))
+        axes = fig.subplots(len(channels), 1, sharex=True, squeeze=False)[:, 0]
+        for ax, c in zip(axes, channels):
+            a = np.asarray(getattr(self, c))
+            if c in self._DOF_CHANNELS:
+                scale, unit = (np.degrees(1.0), "deg" if c == "q" else "deg/s")
+                for j, n in enumerate(self.dof_names):
+                    if names is None or n in names:
+                        ax.plot(self.time, scale * a[:, j], label=n)
+                ax.set_ylabel(f"{c} ({unit})")
+            elif c in self._ELEMENT_CHANNELS:
+                pick = [i for i, n in enumerate(self.element_names) if names is None or n in names]
+                for i in pick[:12]:
+                    ax.plot(self.time, a[:, i], label=self.element_names[i], lw=0.8)
+                if len(pick) > 12:
+                    ax.plot(self.time, a[:, pick].mean(axis=1), "k", lw=1.5, label=f"mean of {len(pick)}")
+                ax.set_ylabel(c)
+            elif c == "gh_stab":
+                ax.plot(self.time, a, color="0.3")
+                ax.axhline(1.0, color="tab:red", ls="--", lw=0.8, label="rim (1)")
+                ax.set_ylabel("GHstab")
+            else:
+                ax.plot(self.time, a)
+                ax.set_ylabel(c)
+            if ax.get_legend_handles_labels()[0]:
+                ax.legend(fontsize=7, ncol=3, loc="best")
+        axes[-1].set_xlabel("time (s)")
+        fig.tight_layout()
+        return fig
 
     def save(self, path) -> None:
         """Saves to a compressed .npz (load with Result.load)."""
