@@ -199,7 +199,7 @@ def animate(result, out, fps: int = 30, speed: float = 1.0, dpi: int = 80, lines
     try:
         # One draw per frame (FuncAnimation.save draws twice).
         with writer.saving(fig, str(out), dpi), bar(len(rows), f"animate {out.name}", unit="frame",
-                                                     enabled=progress, delay=0.5) as pbar:
+                                                     enabled=progress, delay=0.0 if progress else 0.5) as pbar:
             for k in range(len(rows)):
                 draw(k)
                 writer.grab_frame()

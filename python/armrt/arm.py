@@ -608,15 +608,23 @@ class Arm:
         return a
 
     # ------------------------------------------------------------------ stepping
-    def step(self, n: int = 1) -> None:
+    def step(self, n: int = 1, progress: bool | None = None) -> None:
         """Advances n control steps (an integer >= 0) with the current excitation and load (loop in
         C++, GIL released). Ctrl-C stops it within about 50 ms, leaving the state of the last
-        completed step (KeyboardInterrupt). Raises TypeError for a non-integer n, SimulationError
-        on divergence, ConcurrentUseError if another thread is using this Arm."""
+        completed step (KeyboardInterrupt). progress: a tqdm bar on stderr (None: on a terminal, for
+        calls over a second). Raises TypeError for a non-integer n, SimulationError on divergence,
+        ConcurrentUseError if another thread is using this Arm."""
         n = count(n, "n (number of steps)")
         with self._exclusive():
             try:
-                self._sim.step(n)
+                if n <= SIMULATE_BLOCK_STEPS or progress is False:
+                    self._sim.step(n)
+                    return
+                with progress_bar(n, "step", unit="step", enabled=progress, delay=0.0 if progress else 1.0) as pbar:
+                    for k0 in range(0, n, SIMULATE_BLOCK_STEPS):
+                        k = min(SIMULATE_BLOCK_STEPS, n - k0)
+                        self._sim.step(k)
+                        pbar.update(k)
             except RuntimeError as exc:
                 raise SimulationError(f"{exc}; call reset() to continue") from None
 
@@ -700,7 +708,8 @@ class Arm:
             if n_steps == 0:
                 self._sim.excitation[:] = np.minimum(self._sim.excitation, cap)
             row = 0
-            with progress_bar(n_steps * self.dt, "simulate", unit="s", enabled=progress) as pbar:
+            with progress_bar(n_steps * self.dt, "simulate", unit="s", enabled=progress,
+                              delay=0.0 if progress else 1.0) as pbar:
                 for k0 in range(0, max(n_steps, 1), chunk):
                     k1 = min(n_steps, k0 + chunk)
                     u = np.ascontiguousarray(block(k0, k1), dtype=float) if n_steps else np.minimum(

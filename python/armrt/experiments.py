@@ -33,22 +33,47 @@ AXIAL_TOLERANCE = math.radians(10.0)  # "no excessive internal or external rotat
 
 
 class Progress:
-    """A one-line progress display on stderr (plain lines when not a terminal)."""
+    """Stages of a long job on stderr, announced when they start: on a terminal a tqdm bar whose
+    description names the stage under way and whose postfix shows the step inside it (tick); elsewhere
+    one line when a stage starts and one when it ends, with the elapsed time."""
 
     def __init__(self, total: int, enabled: bool = True):
+        from .progress import bar
         self.total, self.done, self.enabled = total, 0, enabled
         self.t0 = time.perf_counter()
         self.tty = sys.stderr.isatty()
+        self._bar = bar(total, "experiments", unit="stage", enabled=enabled and self.tty, delay=0.0, leave=True)
+
+    def _elapsed(self) -> str:
+        return f"{time.perf_counter() - self.t0:.0f} s"
+
+    def start(self, what: str):
+        """A stage begins (shown while it runs)."""
+        if not self.enabled:
+            return
+        if self.tty:
+            self._bar.set_description(what)
+        else:
+            print(f"[{self.done + 1}/{self.total}] {what} ... ({self._elapsed()})", file=sys.stderr, flush=True)
+
+    def tick(self, what: str):
+        """Progress inside a stage (terminal only: a postfix on the bar)."""
+        if self.enabled and self.tty:
+            self._bar.set_postfix_str(what)
 
     def step(self, what: str):
+        """A stage ended."""
         self.done += 1
         if not self.enabled:
             return
-        msg = f"[{self.done}/{self.total}] {what} ({time.perf_counter() - self.t0:.0f} s)"
         if self.tty:
-            print("\r" + msg.ljust(78), end="" if self.done < self.total else "\n", file=sys.stderr, flush=True)
+            self._bar.set_postfix_str(f"done: {what}")
+            self._bar.update(1)
         else:
-            print(msg, file=sys.stderr, flush=True)
+            print(f"[{self.done}/{self.total}] {what} done ({self._elapsed()})", file=sys.stderr, flush=True)
+
+    def close(self):
+        self._bar.close()
 
 
 def new_arm(integrator: str = INTEGRATOR, dt: float = DT, substeps: int | None = None) -> Arm:
@@ -104,6 +129,8 @@ def find_baseline(arm: Arm | None = None, progress: Progress | None = None) -> B
     from scipy.optimize import minimize, brentq
 
     arm = arm or new_arm()
+    if progress:
+        progress.start("baseline rotator-cuff activations")
     passive = settle(arm, np.zeros(arm.n_elements))
     evals = [1]
     if passive.gh_stab_tail < GH_LIMIT * 0.98:
@@ -115,6 +142,8 @@ def find_baseline(arm: Arm | None = None, progress: Progress | None = None) -> B
     # A common level that is just stable: the neutral reference and the optimiser's start.
     def common_margin(level):
         evals[0] += 1
+        if progress:
+            progress.tick(f"common cuff level {level:.3f} (evaluation {evals[0]})")
         return settle(arm, cuff_excitation(arm, [level] * 4)).gh_stab_tail - GH_LIMIT
     hi = 0.02
     while hi < 1.0 and common_margin(hi) > 0:
@@ -129,6 +158,8 @@ def find_baseline(arm: Arm | None = None, progress: Progress | None = None) -> B
     def constraints(a):
         s = settle(arm, cuff_excitation(arm, np.clip(a, 0, 1)))
         evals[0] += 1
+        if progress:
+            progress.tick(f"optimiser evaluation {evals[0]}")
         return np.array([GH_LIMIT * 0.98 - s.gh_stab_tail, AXIAL_TOLERANCE - abs(s.axial - axial_ref)])
 
     res = minimize(lambda a: float(np.sum(a)), x0=np.full(4, common), method="COBYLA",
@@ -388,9 +419,12 @@ def paper_tasks(arm: Arm | None = None, progress: Progress | None = None) -> Pap
     arm = arm or new_arm()
     base = find_baseline(arm, progress)
     q0 = base.settled.q
+    if progress:
+        progress.start("tuning Fig. 1 levels")
     levels = tune_fig1(base.levels, q0=q0)
     if progress:
         progress.step("tuning Fig. 1 levels")
+        progress.start("tuning the deltoid and cuff levels")
     seq1 = fig1_sequence(base.levels, levels.flex, levels.ext, levels.pron, q0)
     deltoid = middle_anterior_deltoid(arm)
     delt_level = tune_deltoid(base.levels, deltoid, q0)
@@ -424,15 +458,21 @@ def solver_study(tasks: list[Sequence], progress: Progress | None = None, step_g
     chattering the stiff muscle states by degrees is not counted as stable.
 
     refs: cvode_references(tasks), computed here when not given."""
+    if progress and refs is None:
+        progress.start("CVODE references")
     refs = refs if refs is not None else cvode_references(tasks)
     if progress:
         progress.step("CVODE references")
     table = {}
     for integ in SOLVERS:
+        if progress:
+            progress.start(f"{integ} step-size sweep")
         rows = []
         for dt in step_grid:
             row = {"dt": dt, "stable": True, "max_error_deg": 0.0, "tet_mean_us": [], "tet_max_us": []}
             for seq in tasks:
+                if progress:
+                    progress.tick(f"dt = {dt * 1e3:g} ms, {seq.name}")
                 try:
                     _, res = run_sequence(seq, integ, dt, record_every=max(1, int(round(1e-3 / dt))), substeps=1)
                 except SimulationError as exc:
@@ -524,7 +564,17 @@ def run_all(out_dir="results", quick: bool = False, progress: bool = True) -> in
     """Regenerates every figure and table of the paper's results section into out_dir."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    prog = Progress(total=13, enabled=progress)
+    from .progress import quiet
+    # Stages: baseline, two tunings, Figs. 1-3, CVODE references, one sweep per solver, Fig. 4, report.
+    prog = Progress(total=9 + len(SOLVERS), enabled=progress)
+    try:
+        with quiet():  # one bar for the job, none for each simulate() inside it
+            return _run_all(out, quick, prog)
+    finally:
+        prog.close()
+
+
+def _run_all(out: Path, quick: bool, prog: Progress) -> int:
     arm = new_arm()
     summary: dict = {"dt": DT, "integrator": INTEGRATOR}
 
@@ -537,6 +587,7 @@ def run_all(out_dir="results", quick: bool = False, progress: bool = True) -> in
                            "axial_rotation_deg": math.degrees(base.settled.axial),
                            "evaluations": base.evaluations}
 
+    prog.start("Fig. 1")
     arm1, res1 = run_sequence(seq1)
     _plot_sequence(res1, arm1, {"flexors": list(FLEXORS), "triceps": list(EXTENSORS), "pronators": list(PRONATORS),
                                 "rotator cuff": list(CUFF)}, out / "fig1.png", "Fig. 1: elbow and forearm", gh=False)
@@ -550,6 +601,7 @@ def run_all(out_dir="results", quick: bool = False, progress: bool = True) -> in
                        "gh_stab_max_time": float(res1.time[np.argmax(res1.gh_stab)])}
     prog.step("Fig. 1")
 
+    prog.start("Fig. 2")
     arm2, res2 = run_sequence(seq2)
     _plot_sequence(res2, arm2, {"middle+anterior deltoid": deltoid, "rotator cuff": list(CUFF)}, out / "fig2.png",
                    "Fig. 2: deltoid with baseline rotator cuff", gh=True)
@@ -559,6 +611,7 @@ def run_all(out_dir="results", quick: bool = False, progress: bool = True) -> in
                        "plane_at_max": float(th2[np.argmax(th2[:, 1]), 0])}
     prog.step("Fig. 2")
 
+    prog.start("Fig. 3")
     boost = dict(zip(CUFF, tuned.boost))
     arm3, res3 = run_sequence(seq3)
     _plot_sequence(res3, arm3, {"middle+anterior deltoid": deltoid, "rotator cuff": list(CUFF)}, out / "fig3.png",
@@ -571,12 +624,15 @@ def run_all(out_dir="results", quick: bool = False, progress: bool = True) -> in
     tasks = [seq1, seq2, seq3]
     if quick:
         tasks = [replace(s, duration=min(s.duration, 6.0)) for s in tasks]
+    prog.start("CVODE references")
     refs = cvode_references(tasks)
     study = solver_study(tasks, prog, STEP_GRID[3:] if quick else STEP_GRID, refs)
     summary["solvers"] = study
+    prog.start("Fig. 4")
     _plot_solvers(tasks, study, refs[tasks[0].name], out / "fig4.png")
     prog.step("Fig. 4")
 
+    prog.start("report")
     (out / "results.json").write_text(json.dumps(summary, indent=1, default=float) + "\n")
     (out / "results.md").write_text(report(summary))
     prog.step("report")

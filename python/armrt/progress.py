@@ -7,6 +7,7 @@ calls print nothing. Without tqdm installed it is a no-op with the same methods.
 from __future__ import annotations
 
 import sys
+from contextlib import contextmanager
 
 
 class _Silent:
@@ -35,10 +36,26 @@ class _Silent:
         self.close()
 
 
+_quiet_depth = 0
+
+
+@contextmanager
+def quiet():
+    """Inside: bars with enabled=None stay silent (a job with its own bar, e.g. experiments, keeps
+    the simulate() calls it makes from drawing theirs)."""
+    global _quiet_depth
+    _quiet_depth += 1
+    try:
+        yield
+    finally:
+        _quiet_depth -= 1
+
+
 def bar(total: float | None, desc: str, unit: str = "it", enabled: bool | None = None, delay: float = 1.0,
         leave: bool = False):
-    """A progress bar: enabled None = only when stderr is a terminal; True = always; False = never."""
-    if enabled is False:
+    """A progress bar: enabled None = only when stderr is a terminal (and not inside quiet());
+    True = always; False = never."""
+    if enabled is False or (enabled is None and _quiet_depth):
         return _Silent()
     try:
         from tqdm.auto import tqdm
