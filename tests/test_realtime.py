@@ -695,3 +695,46 @@ def test_lsl_bridge_never_blocks_on_resolving(monkeypatch):
         sent = s.stats()["packets"]["state_sent"]
     assert bridge.inlet is None and bridge.forwarded == 0
     assert bridge.published == sent and sent >= 90
+
+
+# ---------------------------------------------------------------------------------------- paralysis (issue 11 item 3)
+def test_paralysis_holds_in_the_real_time_loop():
+    """Elbow flexors paralysed: a controller sending them 1.0 over UDP changes nothing, so the runner's
+    trajectory is the offline one with zero excitation (same model, integrator and substeps), and the
+    streamed excitation is the capped one the dynamics used."""
+    import armrt
+    arm = armrt.Arm()
+    flexors = arm.indices("elbow_flexors")
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, integrator=arm.integrator,
+                            send_excitation=True, max_activation={"elbow_flexors": 0.0, "triceps": 0.25}) as s, \
+            rt.UdpClient(s.port, mapping="groups") as c:
+        st = None
+        for _ in range(40):
+            c.send({"elbow_flexors": 1.0, "triceps": 0.0})
+            st = c.latest_state(timeout=0.2) or st
+            if st is not None and st.time > 0.3 and st.last_applied_seq >= 0:
+                break
+        c.send({"elbow_flexors": 1.0, "triceps": 1.0})
+        capped = None
+        for _ in range(40):
+            got = c.latest_state(timeout=0.2)
+            if got is not None and got.excitation is not None and got.excitation[arm.indices("triceps")].max() > 0:
+                capped = got
+                break
+        stats = s.stop()
+    assert stats["packets"]["applied"] > 0 and stats["error"] == ""
+    assert st.excitation is not None and np.all(st.excitation[flexors] == 0.0)
+    arm.step(int(round(st.time / arm.dt)))
+    np.testing.assert_allclose(st.q, arm.q, atol=1e-9)
+    assert capped is not None and np.all(capped.excitation[arm.indices("triceps")] == 0.25)
+    assert np.all(capped.excitation[flexors] == 0.0)
+
+
+def test_max_activation_bad_values_are_refused():
+    with pytest.raises(ValueError, match=r"must lie in \[0, 1\]"):
+        rt.RealtimeSession(max_activation={"bicb": 1.5})
+    with pytest.raises(ValueError, match="unknown max-activation name 'bicbb'"):
+        rt.RealtimeSession(max_activation={"bicbb": 0.5})
+    r = subprocess.run([runner(), "--max-activation", "bicb=0.3,triceps=x", "--duration", "0.1"],
+                       capture_output=True, text=True, timeout=20)
+    assert r.returncode == 2 and "max activation of 'triceps' must be a number in [0, 1]" in r.stderr

@@ -102,6 +102,9 @@ int main(int argc, char** argv) {
                                                  "falls to zero (2 periods .. 10 s)")->capture_default_str();
   app.add_option("--channels", cfg.channels, "names (element, muscle or group) of the channel mapping (packet type 4)")
       ->delimiter(',');
+  app.add_option("--max-activation", cfg.max_activation, "paralysis/weakness: NAME=V caps the activation of "
+                                                       "element, muscle or group NAME at V in [0, 1] (comma-separated)")
+      ->delimiter(',');
   app.add_option("--rx-budget", cfg.rx_budget_us, "receive work per cycle, us (default: min(150, period / 4))");
   app.add_option("--json", json_path, "write the statistics as JSON");
   app.add_flag("--quiet", quiet, "print only the summary");

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 
@@ -130,6 +131,26 @@ RtLoop::RtLoop(const RtConfig& config) : cfg_(config) {
     sim_->reset(cfg_.q0.data(), nullptr, nullptr);
   }
   sim_->data.excitation.fill(0.0);
+  // max_activation lives in the model: forward() caps every excitation at it, whatever its source.
+  for (const std::string& item : cfg_.max_activation) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) throw std::invalid_argument("max activation '" + item + "' is not NAME=VALUE");
+    const std::string name = item.substr(0, eq);
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str() + eq + 1, &end);
+    if (end == item.c_str() + eq + 1 || *end != '\0' || !(v >= 0.0 && v <= 1.0))
+      throw std::invalid_argument("max activation of '" + name + "' must be a number in [0, 1], got '" + item.substr(eq + 1) + "'");
+    std::vector<int> ix;
+    for (int i = 0; i < def->num_elements; ++i) if (name == def->elements[i].name) ix.push_back(i);
+    if (ix.empty()) {
+      const GroupDef* g = find_group(def->muscles, def->num_muscles, name);
+      if (!g) g = find_group(def->groups, def->num_groups, name);
+      if (!g) throw std::invalid_argument("unknown max-activation name '" + name + "' (expected an element, muscle or group name)");
+      ix.assign(g->elements, g->elements + g->num_elements);
+    }
+    for (int i : ix) sim_->model.element[i].max_activation = v;
+  }
+  if (!cfg_.max_activation.empty()) model_update_derived(sim_->model);
 
   auto build = [](Mapping& m, const GroupDef* g, int n) {
     m.offsets.assign(1, 0);
@@ -377,6 +398,9 @@ void RtLoop::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in&
   if (clipped) ++pk_.clipped;
   if (map) apply_mapping(*map, values_.data());
   else for (int i = 0; i < n_el_; ++i) sim_->data.excitation[i] = values_[i];
+  // Held (and streamed with --excitations) as the dynamics use it: capped at max_activation.
+  for (int i = 0; i < n_el_; ++i)
+    sim_->data.excitation[i] = std::min(sim_->data.excitation[i], sim_->model.muscles.max_activation[i]);
   have_seq_ = true;
   last_seq_ = h.seq;
   last_valid_s_ = now_s;

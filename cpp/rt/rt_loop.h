@@ -57,6 +57,9 @@ struct RtConfig {
   bool send_excitation = false;  // append the applied element excitations to state packets
   double input_timeout = 0.1;  // s of silence from the owner after which its session ends (excitation 0)
   std::vector<std::string> channels;  // names (element, muscle or group) of the kChannels mapping
+  // Paralysis / weakness: "NAME=VALUE" (element, muscle or group; VALUE in [0, 1]) caps the
+  // activation every excitation source can produce; later entries override earlier ones.
+  std::vector<std::string> max_activation;
   double rx_budget_us = 0;     // receive work per cycle: drain the socket until empty or this long; 0: min(150 us, period / 4)
 };
 

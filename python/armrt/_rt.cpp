@@ -139,7 +139,8 @@ PYBIND11_MODULE(_rt, m) {
                        bool require_rt, int cpu, double busy_wait_us, double max_lag, const std::string& listen,
                        std::vector<std::string> state_to, std::vector<std::string> allow, py::bytes key,
                        double state_rate_hz, bool send_forces, bool send_excitation, double input_timeout,
-                       std::vector<std::string> channels, double rx_budget_us) {
+                       std::vector<std::string> channels, double rx_budget_us,
+                       std::vector<std::string> max_activation) {
              RtConfig c;
              c.model = model;
              c.integrator = integrator;
@@ -164,6 +165,7 @@ PYBIND11_MODULE(_rt, m) {
              c.input_timeout = input_timeout;
              c.channels = std::move(channels);
              c.rx_budget_us = rx_budget_us;
+             c.max_activation = std::move(max_activation);
              return std::make_unique<RtLoop>(c);
            }),
            py::arg("model") = "das2", py::arg("integrator") = RtConfig{}.integrator, py::arg("rate_hz") = 1000.0,
@@ -174,7 +176,7 @@ PYBIND11_MODULE(_rt, m) {
            py::arg("allow") = std::vector<std::string>{}, py::arg("key") = py::bytes(""),
            py::arg("state_rate_hz") = 100.0, py::arg("send_forces") = false, py::arg("send_excitation") = false,
            py::arg("input_timeout") = 0.1, py::arg("channels") = std::vector<std::string>{},
-           py::arg("rx_budget_us") = 0.0)
+           py::arg("rx_budget_us") = 0.0, py::arg("max_activation") = std::vector<std::string>{})
       .def("start", [](RtLoop& l) {
         py::gil_scoped_release release;
         l.start();

@@ -439,6 +439,24 @@ class UdpClient:
         self.close()
 
 
+def _max_activation_items(values, model: str) -> list[str]:
+    """{name: value} or an array of one value per element -> the runner's "NAME=VALUE" items."""
+    from .arm import real_array, real_scalar
+    if isinstance(values, Mapping):
+        items = [(str(k), real_scalar(v, f"max_activation[{k!r}]")) for k, v in values.items()]
+    else:
+        from . import _core
+        names = [e["name"] for e in _core.model_info(model)["elements"]]
+        arr = real_array(values, "max_activation").ravel()
+        if arr.size != len(names):
+            raise ValueError(f"max_activation must have {len(names)} values (one per element), got {arr.size}")
+        items = list(zip(names, arr.tolist()))
+    bad = [f"{k}={v}" for k, v in items if not 0.0 <= v <= 1.0]
+    if bad:
+        raise ValueError(f"max_activation must lie in [0, 1]: {bad[:5]}")
+    return [f"{k}={v!r}" for k, v in items]
+
+
 # ---------------------------------------------------------------------------------------- session
 class RealtimeSession:
     """The real-time loop in-process: a C++ thread steps the model at rate_hz (SCHED_FIFO at
@@ -449,7 +467,10 @@ class RealtimeSession:
     realtime, priority, lock_memory (mlockall of the whole Python process; off by default), require_rt,
     cpu, busy_wait_us, max_lag, listen ("127.0.0.1:0" for an ephemeral port), state_to (one "host:port"
     or a list), allow (list of "host[:port]"), key (bytes >= 16), state_rate_hz, send_forces,
-    send_excitation, input_timeout, channels, rx_budget_us. Bad values raise ValueError naming the option.
+    send_excitation, input_timeout, channels, rx_budget_us, max_activation ({name: value} of elements,
+    muscles or groups, or one value per element, in [0, 1]: paralysis and weakness; every excitation,
+    and the excitations streamed with send_excitation, are capped at it). Bad values raise ValueError
+    naming the option.
     """
 
     def __init__(self, **config):
@@ -460,6 +481,10 @@ class RealtimeSession:
             del config["q0"]
         if "channels" in config:
             config["channels"] = list(config["channels"] or [])
+        if config.get("max_activation") is not None:
+            config["max_activation"] = _max_activation_items(config["max_activation"], config.get("model", "das2"))
+        else:
+            config.pop("max_activation", None)
         for name in ("state_to", "allow"):
             if isinstance(config.get(name), str):
                 config[name] = [config[name]] if config[name] else []
