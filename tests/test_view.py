@@ -417,3 +417,25 @@ def test_realtime_page_in_headless_chromium(tmp_path):
     rows = np.where(m1.any(axis=1))[0]
     assert rows.size and (rows[-1] - rows[0]) > 0.3 * img1.shape[0], "the arm fills too little of the view"
     assert (m0 ^ m1).sum() > 300
+
+
+def test_viewer_replays_a_mot_motion(tmp_path, arm):
+    """Issue 11 item 3: an OpenSim motion (angles only: no activations, GHstab unknown) plays in the view."""
+    pytest.importorskip("viser", reason="viser is not installed (pip install viser)")
+    from armrt.geometry import find_model_file
+    if find_model_file("das2") is None:
+        pytest.skip("models/das2.json not found")
+    from armrt.opensim_io import write_mot
+    from armrt.view import ResultSource, load_replay, serve
+    write_mot(arm.simulate({"elbow_flexors": 0.3}, 0.2, record_every=10), tmp_path / "m.mot")
+    src = ResultSource(load_replay(tmp_path / "m.mot"))
+    v = serve(src, host="127.0.0.1", port=_free_port(), fps=30, block=False)
+    try:
+        deadline = time.monotonic() + 10
+        while v.frames_drawn < 5 and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert v.frames_drawn >= 5
+        f = src.latest()
+        assert f.activation is None and np.isnan(f.gh_stab)
+    finally:
+        v.stop()

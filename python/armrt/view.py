@@ -205,7 +205,9 @@ class ResultSource:
             return None
         t = self._position() + float(r.time[0])
         k = int(np.clip(np.searchsorted(r.time, t, side="right") - 1, 0, len(r.time) - 1))
-        return Frame(time=float(r.time[k]), q=np.asarray(r.q[k]), activation=np.asarray(r.activation[k]),
+        act = np.asarray(r.activation[k])
+        # A kinematic replay (a .mot) has no activations: NaN rows are shown as none.
+        return Frame(time=float(r.time[k]), q=np.asarray(r.q[k]), activation=None if np.isnan(act).all() else act,
                      gh_stab=float(r.gh_stab[k]))
 
     def close(self) -> None:
