@@ -145,6 +145,6 @@ def test_two_threads_on_one_arm_raise(arm):
     t.join()
     assert len(errors) == 6
     # The run finished undisturbed: the same as on a fresh arm.
-    ref = armrt.Arm().simulate({"bicb": 0.3}, 0.02)
+    ref = armrt.Arm(integrator=arm.integrator).simulate({"bicb": 0.3}, 0.02)
     assert np.array_equal(results["res"].q, ref.q)
     assert np.all(arm.max_activation == 1.0)
