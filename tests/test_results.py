@@ -99,3 +99,29 @@ def test_plot(arm):
     assert len(axes[2].lines) == 1
     with pytest.raises(ValueError, match="unknown channels"):
         res.plot(["nope"])
+
+
+@pytest.mark.parametrize("make, message", [
+    (lambda p, r: p.write_bytes(b"PK\x03\x04 truncated zip"), "not an armrt result"),
+    (lambda p, r: np.save(p, np.zeros(3)), "not an armrt result"),
+    (lambda p, r: np.savez(p, a=np.zeros(3)), "missing arrays"),
+    (lambda p, r: np.savez(p, **{**{k: getattr(r, k) for k in armrt.Result.ARRAYS}, "dof_names": r.dof_names,
+                                 "element_names": r.element_names, "model": "/etc/passwd"}), "'/etc/passwd' is not a known model"),
+    (lambda p, r: np.savez(p, **{**{k: getattr(r, k) for k in armrt.Result.ARRAYS}, "q": np.array([None, 1], dtype=object),
+                                 "dof_names": r.dof_names, "element_names": r.element_names, "model": "das2"}), "corrupt"),
+    (lambda p, r: np.savez(p, **{**{k: getattr(r, k) for k in armrt.Result.ARRAYS}, "q": r.q[:-1],
+                                 "dof_names": r.dof_names, "element_names": r.element_names, "model": "das2"}),
+     r"arrays \['q'\] do not have one row per time"),
+])
+def test_result_load_refuses_in_one_line(arm, tmp_path, make, message):
+    """Issue 11 item 6: corrupt, non-result or crafted files give one ValueError line naming the file."""
+    res = arm.simulate(0.0, 0.005)
+    path = tmp_path / "r.npz"
+    make(path, res)
+    if not path.exists():                    # np.save appends .npy
+        path = tmp_path / "r.npz.npy"
+    with pytest.raises(ValueError, match=message) as err:
+        armrt.Result.load(path)
+    assert "\n" not in str(err.value) and str(path) in str(err.value)
+    with pytest.raises(FileNotFoundError, match="no such file"):
+        armrt.Result.load(tmp_path / "absent.npz")
