@@ -92,17 +92,24 @@ def test_gif_frames_go_to_the_file_as_drawn(saved, tmp_path):
     fig, ax = plt.subplots(figsize=(2, 1.5), dpi=50)
     writer = StreamingGifWriter(fps=10)
     out = tmp_path / "s.gif"
-    sizes = []
+    sizes, drawn = [], []
     with writer.saving(fig, str(out), 50):
         for k in range(4):
             ax.clear()
-            ax.plot([0, 1], [0, k])
+            ax.plot([0, 1], [0, k], color="tab:red")
             writer.grab_frame()
+            drawn.append(np.asarray(fig.canvas.buffer_rgba())[..., :3].astype(int))
             sizes.append(out.stat().st_size)
     assert all(b > a for a, b in zip(sizes, sizes[1:])), sizes
     assert not hasattr(writer, "_frames")
     im = Image.open(out)
     assert im.n_frames == 4 and im.info["duration"] == 100 and im.info["loop"] == 0
+    # Frames after the first hold only what changed; decoded, each is the figure as drawn.
+    for k in range(4):
+        im.seek(k)
+        shown = np.asarray(im.convert("RGB"), dtype=int)
+        assert shown.shape == drawn[k].shape
+        assert np.abs(shown - drawn[k]).mean() < 2.0, k
     plt.close(fig)
 
 

@@ -31,30 +31,46 @@ def frame_indices(time: np.ndarray, fps: float, speed: float = 1.0) -> np.ndarra
 
 class StreamingGifWriter:
     """A matplotlib movie writer (setup / grab_frame / finish, or `saving`) that encodes each frame
-    into the .gif as soon as it is grabbed: one frame in memory at a time. Each frame gets its own
-    256-colour palette (Pillow's adaptive quantiser); the file loops forever."""
+    into the .gif as soon as it is grabbed: one frame (and the previous one, to find what changed) in
+    memory at a time. Each frame is the rectangle that changed, with its own 256-colour palette
+    (Pillow's median-cut quantiser); the file loops forever."""
 
     def __init__(self, fps: float = 30):
         self.fps = fps
         self.frames = 0
         self._fp = None
+        self._prev = None  # the last frame (RGB), to write only what changed
 
     def setup(self, fig, outfile, dpi=None) -> None:
         self.fig, self.dpi = fig, dpi if dpi is not None else fig.dpi
         self._fp = open(outfile, "wb")
         self.frames = 0
+        self._prev = None
 
     def grab_frame(self, **savefig_kwargs) -> None:
         from PIL import GifImagePlugin, Image
         self.fig.set_dpi(self.dpi)
         self.fig.canvas.draw()
-        rgba = np.asarray(self.fig.canvas.buffer_rgba())
-        im = Image.fromarray(rgba[..., :3]).quantize(colors=256, method=Image.Quantize.MEDIANCUT)
+        rgb = np.asarray(self.fig.canvas.buffer_rgba())[..., :3]
         duration_ms = 1000.0 / self.fps
+        # After the first frame only the rectangle that changed is written (kept in place by disposal
+        # 1, "do not dispose"), as Pillow's own multi-frame writer does: the arm moves, the axes do not.
+        x0 = y0 = 0
+        region = rgb
+        if self._prev is not None and self._prev.shape == rgb.shape:
+            changed = np.any(rgb != self._prev, axis=2)
+            rows, cols = np.flatnonzero(changed.any(axis=1)), np.flatnonzero(changed.any(axis=0))
+            if rows.size == 0:
+                rows, cols = np.array([0]), np.array([0])  # nothing moved: a 1-pixel frame keeps the timing
+            y0, x0 = int(rows[0]), int(cols[0])
+            region = rgb[y0:rows[-1] + 1, x0:cols[-1] + 1]
+        self._prev = rgb.copy()
+        im = Image.fromarray(np.ascontiguousarray(region)).quantize(colors=256, method=Image.Quantize.MEDIANCUT)
         if self.frames == 0:
             header, _ = GifImagePlugin.getheader(im, None, {"loop": 0, "duration": duration_ms})
             self._fp.write(b"".join(header))
-        for chunk in GifImagePlugin.getdata(im, duration=duration_ms, include_color_table=True):
+        for chunk in GifImagePlugin.getdata(im, offset=(x0, y0), duration=duration_ms, disposal=1,
+                                            include_color_table=True):
             self._fp.write(chunk)
         self._fp.flush()
         self.frames += 1
