@@ -40,8 +40,9 @@ def test_not_name_value(capsys):
     (["simulate", "-o", "run.txt"], "--out 'run.txt': unsupported format '.txt'; use .npz"),
     (["export", "r.npz", "--mot", "x.csv"], "--mot 'x.csv': unsupported format '.csv'"),
     (["export", "r.npz"], "give --mot FILE"),
-    (["view", "--udp", "localhost:abc"], "'localhost:abc' is not HOST:PORT"),
-    (["view", "--udp", "127.0.0.1:70000"], "port 70000 is outside 1-65535"),
+    (["view", "--udp", "localhost:abc"], "bad port in 'localhost:abc'"),
+    (["view", "--udp", "127.0.0.1:70000"], "bad port in '127.0.0.1:70000'"),
+    (["view", "--udp", ":9870", "--key-file", "absent.key"], "absent.key"),
     (["info", "--model", "das9"], "unknown model 'das9'"),
 ])
 def test_user_mistakes_are_one_line(capsys, tmp_path, monkeypatch, argv, message):
