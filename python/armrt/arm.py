@@ -588,7 +588,8 @@ class Arm:
         far = (q < lo - RANGE_MARGIN) | (q > hi + RANGE_MARGIN)
         if far.any():
             r = np.radians(q)
-            hint = (" These look like degrees: q is in radians, pass np.radians(q) (or armrt.rad(q))."
+            hint = (" These look like degrees: q is in radians (np.radians(q) or armrt.rad(q); "
+                    "armrt simulate --q-deg on the command line)."
                     if np.all((r >= lo - RANGE_MARGIN) & (r <= hi + RANGE_MARGIN)) else "")
             raise ValueError(f"q beyond the joint limits: {desc}.{hint}")
         warnings.warn(f"q slightly beyond the joint limits: {desc}", RuntimeWarning, stacklevel=3)
