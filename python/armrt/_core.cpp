@@ -235,15 +235,19 @@ PYBIND11_MODULE(_core, mod) {
         Recording r;
         const long n_rec = n_steps / record_every + 1;
         for (auto* v : {&r.t, &r.gh_stab, &r.tet}) v->reserve(n_rec);
+        for (auto* v : {&r.q, &r.qd}) v->reserve(n_rec * kNumDofs);
+        for (auto* v : {&r.lce, &r.act, &r.excitation, &r.force, &r.length}) v->reserve(n_rec * n);
+        for (auto* v : {&r.gh_force, &r.hand, &r.th_angles}) v->reserve(n_rec * 3);
+        r.gh_angles.reserve(n_rec * 2);
         long steps_done = 0;
         bool interrupted = false;
         {
           py::gil_scoped_release release;
           InterruptCheck check;
           double angles[3];
-          auto record = [&](double tet_ns) {
-            const double* x = s.data.x.data();
-            r.t.push_back(s.data.time);
+          // One row: the state x at time t and the outputs forward() left in s.data for that state.
+          auto record = [&](const double* x, double time, double tet_ns) {
+            r.t.push_back(time);
             r.q.insert(r.q.end(), x + kQ, x + kQ + kNumDofs);
             r.qd.insert(r.qd.end(), x + kQd, x + kQd + kNumDofs);
             r.lce.insert(r.lce.end(), x + kLce, x + kLce + n);
@@ -262,28 +266,22 @@ PYBIND11_MODULE(_core, mod) {
           };
           // Outputs of a step describe its starting state, so each recorded row is one consistent
           // time point; the final state is recorded after one more output evaluation.
-          std::vector<double> snapshot(state_size(s.model));
+          // Only a recorded step keeps a copy of its start state (its outputs describe that state).
+          std::vector<double> x0(state_size(s.model));
           for (long k = 0; k < n_steps; ++k) {
             const double* uk = u + (held ? 0 : k) * n;
             for (int i = 0; i < n; ++i) s.data.excitation[i] = uk[i];
-            const auto x0 = s.data.x;
+            const bool rec = k % record_every == 0;
             const double t0 = s.data.time;
-            if (!s.step(k % record_every == 0)) break;
+            if (rec) std::copy(s.data.x.begin(), s.data.x.begin() + x0.size(), x0.begin());
+            if (!s.step(rec)) break;
             ++steps_done;
-            if (k % record_every == 0) {
-              const auto x1 = s.data.x;
-              const double t1 = s.data.time;
-              s.data.x = x0;
-              s.data.time = t0;
-              record(s.data.tet.last_ns);
-              s.data.x = x1;
-              s.data.time = t1;
-            }
+            if (rec) record(x0.data(), t0, s.data.tet.last_ns);
             if (check.interrupted()) { interrupted = true; break; }
           }
           if (!interrupted && s.data.status == Status::kOk && n_steps % record_every == 0) {
             s.evaluate_outputs();
-            record(0.0);
+            record(s.data.x.data(), s.data.time, 0.0);
           }
         }
         if (interrupted) throw py::error_already_set();
