@@ -1,0 +1,69 @@
+// Batch (batch.cc): each arm bit-identical to a lone Simulator for 1 and 2 threads; a diverging arm
+// stops alone.
+#include <doctest/doctest.h>
+
+#include <cstring>
+
+#include "armrt/batch.h"
+#include "test_util.h"
+
+using namespace armrt;
+
+namespace {
+
+// Arm i gets its own excitation pattern and posture, so the arms really differ.
+void set_up(Simulator& s, int i) {
+  double q[kNumDofs];
+  for (int j = 0; j < kNumDofs; ++j) q[j] = s.model.def->dofs[j].rest + 0.05 * i * (j % 2 ? 1 : -1);
+  s.reset(q, nullptr, nullptr);
+  for (int e = 0; e < s.model.num_elements; ++e) s.data.excitation[e] = 0.02 * ((e * 7 + i * 3) % 11);
+}
+
+}  // namespace
+
+TEST_SUITE("batch") {
+
+TEST_CASE("every arm matches a lone Simulator bit for bit, on 1 and 2 threads") {
+  const int n = 5;
+  const long steps = 30;
+  for (int threads : {1, 2}) {
+    CAPTURE(threads);
+    Batch batch(armrt_test::das2(), n, Integrator::kRk4, 1e-3, 6);
+    for (int i = 0; i < n; ++i) set_up(batch.arm(i), i);
+    CHECK(batch.step(steps / 2, threads, true) == 0);
+    CHECK(batch.step(steps - steps / 2, threads, true) == 0);
+    for (int i = 0; i < n; ++i) {
+      Simulator lone(armrt_test::das2(), Integrator::kRk4, 1e-3, 6);
+      set_up(lone, i);
+      for (long k = 0; k < steps; ++k) REQUIRE(lone.step());
+      lone.evaluate_outputs();
+      const int ns = state_size(lone.model);
+      CHECK(std::memcmp(lone.data.x.data(), batch.arm(i).data.x.data(), ns * sizeof(double)) == 0);
+      CHECK(lone.data.time == batch.arm(i).data.time);
+      CHECK(lone.data.gh_stab == batch.arm(i).data.gh_stab);
+    }
+  }
+}
+
+TEST_CASE("a diverging arm stops alone and is flagged; the others go on") {
+  Batch batch(armrt_test::das2(), 3, Integrator::kRk4, 1e-3, 6);
+  batch.arm(1).data.x[kQd + 3] = 5.0 * batch.arm(1).model.max_joint_speed;
+  CHECK(batch.step(10, 2, true) == 1);
+  CHECK(batch.newly_failed()[1] == 1);
+  CHECK(batch.newly_failed()[0] == 0);
+  CHECK(batch.arm(1).data.status == Status::kTooFast);
+  CHECK(batch.arm(1).error_message().find("qdot[") != std::string::npos);
+  CHECK(batch.arm(0).data.time == doctest::Approx(10e-3));
+  CHECK(batch.arm(2).data.time == doctest::Approx(10e-3));
+  // Later calls leave the stopped arm alone and do not report it again.
+  const double t1 = batch.arm(1).data.time;
+  CHECK(batch.step(5, 2, true) == 0);
+  CHECK(batch.arm(1).data.time == t1);
+  CHECK(batch.arm(0).data.time == doctest::Approx(15e-3));
+}
+
+TEST_CASE("bad sizes are refused") {
+  CHECK_THROWS_AS(Batch(armrt_test::das2(), 0, Integrator::kRk4, 1e-3), std::invalid_argument);
+}
+
+}

@@ -1,0 +1,175 @@
+// pybind11 bindings of armrt::Batch (armrt/batch.py validates inputs and names things). State, inputs
+// and outputs are zero-copy (n, ...) views whose row stride is one Simulator: no copy per step.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "armrt/batch.h"
+
+namespace py = pybind11;
+using namespace armrt;
+
+namespace {
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using IndexArray = py::array_t<long, py::array::c_style | py::array::forcecast>;
+
+// A (n,) or (n, width) view of one field of every arm's Simulator, kept alive by `owner`.
+py::array arm_view(Batch& b, const double* field_of_arm0, py::ssize_t width, py::handle owner) {
+  const py::ssize_t n = b.size();
+  const auto row = static_cast<py::ssize_t>(Batch::stride());
+  auto* ptr = const_cast<double*>(field_of_arm0);
+  if (width == 0) return py::array_t<double>({n}, {row}, ptr, owner);
+  return py::array_t<double>({n, width}, {row, static_cast<py::ssize_t>(sizeof(double))}, ptr, owner);
+}
+
+const ModelDef& require_model(const std::string& name) {
+  const ModelDef* def = find_model(name);
+  if (!def) throw py::value_error("unknown model '" + name + "' (compiled-in models: " + model_names() + ")");
+  return *def;
+}
+
+// Rows of an (m, width) array, m = number of selected arms; nullptr for None.
+const double* rows(const py::object& o, Array& keep, py::ssize_t m, py::ssize_t width, const char* what) {
+  if (o.is_none()) return nullptr;
+  keep = o.cast<Array>();
+  if (keep.ndim() != 2 || keep.shape(0) != m || keep.shape(1) != width)
+    throw py::value_error(std::string(what) + ": expected shape (" + std::to_string(m) + ", " + std::to_string(width) + ")");
+  return keep.data();
+}
+
+std::vector<int> arm_indices(Batch& b, const IndexArray& idx) {
+  std::vector<int> out(idx.data(), idx.data() + idx.size());
+  for (int i : out)
+    if (i < 0 || i >= b.size()) throw py::index_error("arm index " + std::to_string(i) + " out of range for " + std::to_string(b.size()) + " arms");
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_batch, mod) {
+  mod.doc() = "armrt batch bindings (use armrt.ArmBatch)";
+  mod.def("default_threads", &batch_default_threads);
+
+  py::class_<Batch>(mod, "Batch")
+      .def(py::init([](const std::string& model, int n, const std::string& integrator, double dt, int substeps) {
+             return std::make_unique<Batch>(require_model(model), n, parse_integrator(integrator), dt, substeps);
+           }),
+           py::arg("model"), py::arg("n"), py::arg("integrator"), py::arg("dt"), py::arg("substeps") = 1)
+      .def_property_readonly("n", &Batch::size)
+      .def_property_readonly("num_elements", [](Batch& b) { return b.arm(0).model.num_elements; })
+      .def_property_readonly("state_size", [](Batch& b) { return state_size(b.arm(0).model); })
+      .def_property_readonly("substeps", [](Batch& b) { return b.arm(0).substeps; })
+      .def_property_readonly("dt", [](Batch& b) { return b.arm(0).dt; })
+      .def_property_readonly("integrator", [](Batch& b) { return integrator_name(b.arm(0).integrator); })
+      // Zero-copy views.
+      .def_property_readonly("state", [](py::object self) {
+        auto& b = self.cast<Batch&>();
+        return arm_view(b, b.arm(0).data.x.data(), state_size(b.arm(0).model), self);
+      })
+      .def_property_readonly("time", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.time, 0, self); })
+      .def_property_readonly("excitation", [](py::object self) {
+        auto& b = self.cast<Batch&>();
+        return arm_view(b, b.arm(0).data.excitation.data(), b.arm(0).model.num_elements, self);
+      })
+      .def_property_readonly("hand_force", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.hand_force.data(), 3, self); })
+      .def_property_readonly("hand_moment", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.hand_moment.data(), 3, self); })
+      .def_property_readonly("hand_position", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.hand_position.data(), 3, self); })
+      .def_property_readonly("gh_force", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.gh_force.data(), 3, self); })
+      .def_property_readonly("gh_stab", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_stab, 0, self); })
+      .def_property_readonly("gh_theta", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_theta, 0, self); })
+      .def_property_readonly("gh_phi", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_phi, 0, self); })
+      .def_property_readonly("qddot", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.qdd.data(), kNumDofs, self); })
+      .def_property_readonly("muscle_force", [](py::object self) {
+        auto& b = self.cast<Batch&>();
+        return arm_view(b, b.arm(0).data.muscle_force.data(), b.arm(0).model.num_elements, self);
+      })
+      .def_property_readonly("muscle_length", [](py::object self) {
+        auto& b = self.cast<Batch&>();
+        return arm_view(b, b.arm(0).data.muscle_length.data(), b.arm(0).model.num_elements, self);
+      })
+      // Errors.
+      .def("status", [](Batch& b) {
+        py::array_t<int> s({static_cast<py::ssize_t>(b.size())});
+        for (int i = 0; i < b.size(); ++i) s.mutable_data()[i] = static_cast<int>(b.arm(i).data.status);
+        return s;
+      })
+      .def("bad_index", [](Batch& b, int i) { return b.arm(i).data.bad_index; })
+      .def("error_message", [](Batch& b, int i) {
+        if (i < 0 || i >= b.size()) throw py::index_error("arm index out of range");
+        return b.arm(i).error_message();
+      })
+      // Stepping: returns the indices of the arms that diverged during this call.
+      .def("step", [](Batch& b, long steps, int num_threads, bool outputs) {
+        int failed;
+        {
+          py::gil_scoped_release release;
+          failed = b.step(steps, num_threads, outputs);
+        }
+        py::array_t<long> idx({static_cast<py::ssize_t>(failed)});
+        long k = 0;
+        for (int i = 0; i < b.size() && k < failed; ++i) if (b.newly_failed()[i]) idx.mutable_data()[k++] = i;
+        return idx;
+      }, py::arg("steps"), py::arg("num_threads") = 0, py::arg("outputs") = true)
+      .def("evaluate_outputs", [](Batch& b, int num_threads) {
+        py::gil_scoped_release release;
+        b.evaluate_outputs(num_threads);
+      }, py::arg("num_threads") = 0)
+      // reset(arms, q, qdot, activation): arrays with one row per selected arm, or None; clears errors
+      // and sets time to 0.
+      .def("reset", [](Batch& b, const IndexArray& arms, py::object q, py::object qd, py::object act) {
+        const std::vector<int> idx = arm_indices(b, arms);
+        const auto m = static_cast<py::ssize_t>(idx.size());
+        Array qa, qda, aa;
+        const double* qp = rows(q, qa, m, kNumDofs, "q");
+        const double* qdp = rows(qd, qda, m, kNumDofs, "qdot");
+        const int ne = b.arm(0).model.num_elements;
+        const double* ap = rows(act, aa, m, ne, "activation");
+        for (py::ssize_t r = 0; r < m; ++r) {
+          Simulator& s = b.arm(idx[r]);
+          s.data.status = Status::kOk;
+          s.data.bad_index = -1;
+          s.reset(qp ? qp + r * kNumDofs : nullptr, qdp ? qdp + r * kNumDofs : nullptr, ap ? ap + r * ne : nullptr);
+          s.data.time = 0.0;
+          s.evaluate_outputs();
+        }
+      }, py::arg("arms"), py::arg("q") = py::none(), py::arg("qdot") = py::none(), py::arg("activation") = py::none())
+      .def("get_strength", [](Batch& b) {
+        const int ne = b.arm(0).model.num_elements;
+        Array a({static_cast<py::ssize_t>(b.size()), static_cast<py::ssize_t>(ne)});
+        for (int i = 0; i < b.size(); ++i)
+          for (int e = 0; e < ne; ++e) a.mutable_data()[i * ne + e] = b.arm(i).model.element[e].strength_scale;
+        return a;
+      })
+      .def("get_max_activation", [](Batch& b) {
+        const int ne = b.arm(0).model.num_elements;
+        Array a({static_cast<py::ssize_t>(b.size()), static_cast<py::ssize_t>(ne)});
+        for (int i = 0; i < b.size(); ++i)
+          for (int e = 0; e < ne; ++e) a.mutable_data()[i * ne + e] = b.arm(i).model.element[e].max_activation;
+        return a;
+      })
+      // strength and max_activation: (n, elements) each.
+      .def("set_strength_and_max_activation", [](Batch& b, const Array& strength, const Array& maxact) {
+        const int ne = b.arm(0).model.num_elements;
+        Array sa, ma;
+        const double* st = rows(strength, sa, b.size(), ne, "strength");
+        const double* mx = rows(maxact, ma, b.size(), ne, "max_activation");
+        for (int i = 0; i < b.size(); ++i) {
+          Model& m = b.arm(i).model;
+          for (int e = 0; e < ne; ++e) {
+            m.element[e].strength_scale = st[i * ne + e];
+            m.element[e].max_activation = mx[i * ne + e];
+          }
+          model_update_derived(m);
+        }
+      })
+      .def("tet_mean_ns", [](Batch& b) {
+        Array a({static_cast<py::ssize_t>(b.size())});
+        for (int i = 0; i < b.size(); ++i) a.mutable_data()[i] = b.arm(i).data.tet.mean_ns;
+        return a;
+      });
+}

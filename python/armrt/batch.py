@@ -1,0 +1,289 @@
+"""`ArmBatch`: n independent arms of one model stepped together in C++ across threads.
+
+For sweeps, optimisation and vectorised environments. Each arm is a whole engine Simulator (the
+same code `Arm` drives), so every integrator `Arm` accepts works here, and each arm's trajectory is
+bit-identical to stepping the same arm alone with `Arm`, whatever the number of threads.
+"""
+from __future__ import annotations
+
+import os
+import warnings
+from typing import Mapping
+
+import numpy as np
+
+from . import _batch
+from .arm import Arm, SimulationError
+
+
+def available_cores() -> int:
+    """CPUs this process may run on (its affinity mask), the default thread count."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not Linux
+        return os.cpu_count() or 1
+
+
+class ArmBatch:
+    """n arms of one model, stepped in C++ on `threads` OpenMP threads with the GIL released.
+
+    batch = ArmBatch(64, dt=1e-3)                 # integrator and substeps: Arm's defaults
+    batch.reset(q=postures)                       # (64, dofs) rad, or (dofs,) for every arm
+    batch.set_excitation(U)                       # (64, elements) in [0, 1]
+    batch.step(100)                               # 100 control steps of every live arm
+    batch.q, batch.gh_stab                        # (64, dofs) rad, (64,): zero-copy views
+
+    State and outputs are read-only numpy views into the engine's memory: they follow the
+    simulation without copies (copy them to keep a snapshot). Outputs (forces, hand position, GH
+    force and stability) describe each arm's current state after step() and reset().
+
+    An arm that diverges stops alone: step() returns its index, `diverged` marks it, `errors` says
+    which state went bad and when, and a RuntimeWarning names it; the other arms go on. reset() that
+    arm (reset(arms=[i])) to use it again.
+    """
+
+    def __init__(self, n: int, model: str = "das2", integrator: str | None = None, dt: float | None = None,
+                 substeps: int | None = None, threads: int | None = None):
+        """n: number of arms (>= 1). integrator, dt (control step, s) and substeps: as for `Arm`
+        (None: Arm's defaults). threads: OpenMP threads for step() (None: the cores available).
+        Raises ValueError for a bad n, integrator, dt, substeps or threads."""
+        if int(n) != n or n < 1:
+            raise ValueError(f"n must be a positive integer number of arms, got {n!r}")
+        kw = {k: v for k, v in (("integrator", integrator), ("dt", dt), ("substeps", substeps)) if v is not None}
+        # A single Arm resolves the defaults and validates exactly as Arm does, and gives the names.
+        self._arm = Arm(model=model, **kw)
+        a = self._arm
+        self._raw = _batch.Batch(model, int(n), a.integrator, a.dt, a.substeps)
+        self.n = int(n)
+        self.model_name = a.model_name
+        self.info = a.info
+        self.dof_names, self.element_names = list(a.dof_names), list(a.element_names)
+        self.muscle_names, self.group_names = list(a.muscle_names), list(a.group_names)
+        self.dof_ranges, self.rest_posture = a.dof_ranges.copy(), a.rest_posture.copy()
+        self.n_dofs, self.n_elements = len(self.dof_names), a.n_elements
+        self.threads = threads
+        self._errors: dict[int, str] = {}
+        nd, ne = self.n_dofs, self.n_elements
+        state = self._raw.state
+        views = {"q": state[:, 0:nd], "qdot": state[:, nd:2 * nd], "lce": state[:, 2 * nd:2 * nd + ne],
+                 "activation": state[:, 2 * nd + ne:2 * nd + 2 * ne], "time": self._raw.time}
+        for name in ("hand_position", "gh_force", "gh_stab", "gh_theta", "gh_phi", "muscle_force",
+                     "muscle_length", "qddot"):
+            views[name] = getattr(self._raw, name)
+        for v in views.values():
+            v.flags.writeable = False
+        self._views = views
+        self._excitation = self._raw.excitation
+        self._hand_force, self._hand_moment = self._raw.hand_force, self._raw.hand_moment
+        self._raw.reset(np.arange(self.n))  # outputs at the rest posture
+
+    # ------------------------------------------------------------------ configuration
+    @property
+    def threads(self) -> int:
+        """OpenMP threads used by step() (default: the cores available)."""
+        return self._threads
+
+    @threads.setter
+    def threads(self, value) -> None:
+        value = available_cores() if value is None else value
+        if int(value) != value or value < 1:
+            raise ValueError(f"threads must be a positive integer, got {value!r}")
+        self._threads = int(value)
+
+    @property
+    def integrator(self) -> str:
+        return self._raw.integrator
+
+    @property
+    def dt(self) -> float:
+        """Control step (s)."""
+        return self._raw.dt
+
+    @property
+    def substeps(self) -> int:
+        return self._raw.substeps
+
+    def indices(self, name: str) -> list[int]:
+        """Element indices of an element, muscle or group name (as Arm.indices)."""
+        return self._arm.indices(name)
+
+    # ------------------------------------------------------------------ inputs
+    def _per_arm(self, values, what: str, lo: float, hi: float | None, clip: bool, current=None) -> np.ndarray:
+        """(n, elements) from an (n, elements) array, or anything Arm accepts for one arm (an array
+        of elements, a scalar, a {name: value} dict) applied to every arm."""
+        ne = self.n_elements
+        if isinstance(values, Mapping):
+            out = np.zeros((self.n, ne)) if current is None else current.copy()
+            for name, v in values.items():
+                out[:, self.indices(name)] = Arm._scalar(v, f"{what}[{name!r}]")
+        else:
+            arr = np.asarray(values, dtype=float)
+            if arr.ndim <= 1:
+                arr = np.broadcast_to(arr, (ne,)) if arr.ndim == 0 else arr
+                if arr.shape != (ne,):
+                    raise ValueError(f"{what} must have shape ({self.n}, {ne}) or ({ne},), got {arr.shape}")
+                arr = np.broadcast_to(arr, (self.n, ne))
+            if arr.shape != (self.n, ne):
+                raise ValueError(f"{what} must have shape ({self.n}, {ne}) (arms, elements) or ({ne},), got {arr.shape}")
+            out = np.array(arr, dtype=float)
+        bad = ~np.isfinite(out)
+        if bad.any():
+            i, e = np.argwhere(bad)[0]
+            raise ValueError(f"{what} contains NaN or infinite values (first: arm {i}, element {self.element_names[e]})")
+        hi_ = np.inf if hi is None else hi
+        outside = (out < lo) | (out > hi_)
+        if outside.any():
+            i, e = np.argwhere(outside)[0]
+            if not clip:
+                raise ValueError(f"{what} must lie in [{lo}, {hi_}]; arm {i}, element {self.element_names[e]} does not")
+            warnings.warn(f"{what} outside [{lo}, {hi_}] clipped ({int(outside.sum())} values)", RuntimeWarning, stacklevel=3)
+            np.clip(out, lo, hi_, out=out)
+        return out
+
+    def set_excitation(self, u) -> None:
+        """Excitations: an (n, elements) array, or one arm's (elements,) array, scalar or {name: value}
+        dict for every arm. Values outside [0, 1] are clipped with a RuntimeWarning; NaN raises ValueError."""
+        ne = self.n_elements
+        arr = None if isinstance(u, Mapping) else np.asarray(u, dtype=float)
+        if arr is not None and arr.shape == (self.n, ne) and np.isfinite(arr).all() and arr.min() >= 0 and arr.max() <= 1:
+            self._excitation[...] = arr  # the common case, checked without a copy
+            return
+        self._excitation[...] = self._per_arm(u, "excitation", 0.0, 1.0, clip=True)
+
+    @property
+    def excitation(self) -> np.ndarray:
+        """(n, elements) excitations now applied (a copy)."""
+        return np.array(self._excitation)
+
+    def set_hand_load(self, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> None:
+        """External force (N) at the hand and moment (N m) on it, thorax frame: (n, 3) or (3,) for every arm."""
+        for name, v, target in (("force", force, self._hand_force), ("moment", moment, self._hand_moment)):
+            a = np.asarray(v, dtype=float)
+            if a.shape not in ((3,), (self.n, 3)):
+                raise ValueError(f"hand {name} must have shape ({self.n}, 3) or (3,), got {a.shape}")
+            if not np.all(np.isfinite(a)):
+                raise ValueError(f"hand {name} contains NaN or infinite values")
+            target[...] = a
+
+    @property
+    def strength(self) -> np.ndarray:
+        """(n, elements) strength scale (multiplies DAS3 fmax; 1 = intact). Set with (n, elements),
+        (elements,), a scalar or a {name: value} dict (for every arm; unnamed elements unchanged)."""
+        return self._raw.get_strength()
+
+    @strength.setter
+    def strength(self, values) -> None:
+        s = self._per_arm(values, "strength", 0.0, None, clip=False, current=self.strength)
+        self._raw.set_strength_and_max_activation(s, self._raw.get_max_activation())
+
+    @property
+    def max_activation(self) -> np.ndarray:
+        """(n, elements) maximum activation in [0, 1] (0 = paralysed); set like `strength`."""
+        return self._raw.get_max_activation()
+
+    @max_activation.setter
+    def max_activation(self, values) -> None:
+        m = self._per_arm(values, "max_activation", 0.0, 1.0, clip=False, current=self.max_activation)
+        self._raw.set_strength_and_max_activation(self._raw.get_strength(), m)
+
+    # ------------------------------------------------------------------ state
+    def _arms(self, arms) -> np.ndarray:
+        if arms is None:
+            return np.arange(self.n)
+        a = np.asarray(arms)
+        if a.dtype == bool:
+            if a.shape != (self.n,):
+                raise ValueError(f"a boolean arm mask must have shape ({self.n},), got {a.shape}")
+            return np.flatnonzero(a)
+        a = np.atleast_1d(a).astype(np.int64)
+        if a.ndim != 1 or ((a < 0) | (a >= self.n)).any():
+            raise IndexError(f"arm indices must be in [0, {self.n}), got {arms!r}")
+        return a
+
+    def _rows(self, v, m: int, width: int, what: str):
+        if v is None:
+            return None
+        a = np.asarray(v, dtype=float)
+        if a.shape == (width,):
+            a = np.broadcast_to(a, (m, width))
+        if a.shape != (m, width):
+            raise ValueError(f"{what} must have shape ({m}, {width}) (one row per arm reset) or ({width},), got {a.shape}")
+        if not np.all(np.isfinite(a)):
+            raise ValueError(f"{what} contains NaN or infinite values")
+        return np.ascontiguousarray(a)
+
+    def reset(self, q=None, qdot=None, activation=None, arms=None) -> None:
+        """Resets the arms `arms` (indices or a boolean mask; None: all) to a state at time 0 and
+        clears their errors. q: (m, dofs) rad, one posture per reset arm, or (dofs,) for all
+        (default: rest posture); qdot likewise (default 0); activation (m, elements) or (elements,)
+        in [0, 1] (default 0). Contractile elements start in static equilibrium."""
+        idx = self._arms(arms)
+        m = len(idx)
+        q = self._rows(q, m, self.n_dofs, "q")
+        qdot = self._rows(qdot, m, self.n_dofs, "qdot")
+        act = self._rows(activation, m, self.n_elements, "activation")
+        if act is not None and ((act < 0) | (act > 1)).any():
+            raise ValueError("activation must lie in [0, 1]")
+        self._raw.reset(idx, q, qdot, act)
+        for i in idx:
+            self._errors.pop(int(i), None)
+
+    # ------------------------------------------------------------------ stepping
+    def step(self, k: int = 1, outputs: bool = True, warn: bool = True) -> np.ndarray:
+        """Advances every live arm by k control steps (threads in C++, GIL released). Returns the
+        indices of the arms that diverged during this call (each is also in `errors` and, with
+        `warn`, named in a RuntimeWarning); they stay where they stopped until reset. With
+        outputs=False the output views are left as of the last integration stage (saves one
+        state-derivative evaluation per arm and call)."""
+        k = int(k)
+        if k < 0:
+            raise ValueError(f"k must be >= 0, got {k}")
+        failed = self._raw.step(k, self._threads, bool(outputs))
+        for i in failed:
+            msg = self._raw.error_message(int(i))
+            self._errors[int(i)] = msg
+            if warn:
+                warnings.warn(f"arm {int(i)}: {msg}; the other arms go on (reset(arms=[{int(i)}]) to reuse it)",
+                              RuntimeWarning, stacklevel=2)
+        return failed
+
+    def evaluate_outputs(self) -> None:
+        """Outputs of every live arm at its current state (after step(..., outputs=False))."""
+        self._raw.evaluate_outputs(self._threads)
+
+    @property
+    def diverged(self) -> np.ndarray:
+        """(n,) bool: arms stopped by divergence (until reset)."""
+        return self._raw.status() != 0
+
+    @property
+    def errors(self) -> dict[int, str]:
+        """{arm index: what diverged and when} for the arms stopped by divergence."""
+        return dict(self._errors)
+
+    def raise_if_diverged(self) -> None:
+        """Raises SimulationError naming every diverged arm."""
+        if self._errors:
+            raise SimulationError("; ".join(f"arm {i}: {m}" for i, m in sorted(self._errors.items())))
+
+    # ------------------------------------------------------------------ state and output views
+    q = property(lambda self: self._views["q"], doc="(n, dofs) joint angles, rad (read-only view)")
+    qdot = property(lambda self: self._views["qdot"], doc="(n, dofs) joint velocities, rad/s")
+    lce = property(lambda self: self._views["lce"], doc="(n, elements) contractile-element lengths, m")
+    activation = property(lambda self: self._views["activation"], doc="(n, elements) activations")
+    time = property(lambda self: self._views["time"], doc="(n,) simulated time of each arm, s")
+    hand_position = property(lambda self: self._views["hand_position"], doc="(n, 3) m, thorax frame")
+    gh_force = property(lambda self: self._views["gh_force"], doc="(n, 3) N, humeral head on glenoid, scapula frame")
+    gh_stab = property(lambda self: self._views["gh_stab"], doc="(n,) GH stability; > 1: dislocating")
+    gh_theta = property(lambda self: self._views["gh_theta"], doc="(n,) rad, GH force from the glenoid normal, major axis")
+    gh_phi = property(lambda self: self._views["gh_phi"], doc="(n,) rad, minor axis")
+    muscle_force = property(lambda self: self._views["muscle_force"], doc="(n, elements) N, tendon forces")
+    muscle_length = property(lambda self: self._views["muscle_length"], doc="(n, elements) m, muscle-tendon lengths")
+    qddot = property(lambda self: self._views["qddot"], doc="(n, dofs) rad/s^2")
+
+    def __len__(self) -> int:
+        return self.n
+
+    def __repr__(self) -> str:
+        return (f"ArmBatch(n={self.n}, model={self.model_name!r}, integrator={self.integrator!r}, dt={self.dt}, "
+                f"substeps={self.substeps}, threads={self.threads})")
