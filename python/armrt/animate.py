@@ -107,29 +107,14 @@ def check_output(out) -> Path:
     return out
 
 
-def animate(result, out, fps: int = 30, speed: float = 1.0, dpi: int = 80, lines_of_action: bool = True,
-            max_frames: int | None = None, progress: bool | None = None) -> Path:
-    """Renders a Result (or a path to a saved .npz) to `out` (.gif or .mp4). Returns the path.
-    progress: a frame counter on stderr (None: only on a terminal)."""
-    import matplotlib
-    matplotlib.use("Agg", force=False)
+def build_figure(result, rows: np.ndarray, dpi: int = 80, lines_of_action: bool = True):
+    """The animation's figure for the rows `rows` of a result (anything with time, q, gh_stab,
+    activation, element_names and model): returns (fig, draw, views), draw(k) drawing frame k
+    (row rows[k]) and views the [(axes, projection of thorax-frame points)] of the two arm views.
+    Also used by armrt.gym's render()."""
     import matplotlib.pyplot as plt
-    from matplotlib import animation
-
-    from .arm import Result
-    from .progress import bar
-    out = check_output(out)
-    if not isinstance(result, Result):
-        result = Result.load(result)
-    if out.suffix.lower() == ".gif":
-        writer = StreamingGifWriter(fps=fps)
-    else:
-        writer = animation.FFMpegWriter(fps=fps, codec="libx264", extra_args=["-pix_fmt", "yuv420p"])
 
     geom = ArmGeometry(result.model or "das2")
-    rows = frame_indices(result.time, fps, speed)
-    if max_frames is not None:
-        rows = rows[:max_frames]
     pts = geom.points_series(result.q[rows])                  # (F, 6, 3)
     static = geom.static()
     ix = {n: i for i, n in enumerate(POINTS)}
@@ -211,6 +196,32 @@ def animate(result, out, fps: int = 30, speed: float = 1.0, dpi: int = 80, lines
                        f"q = {np.array2string(np.degrees(result.q[r]), precision=0, separator=', ')} deg")
         return []
 
+    return fig, draw, [(ax, proj) for ax, proj, _ in views]
+
+
+def animate(result, out, fps: int = 30, speed: float = 1.0, dpi: int = 80, lines_of_action: bool = True,
+            max_frames: int | None = None, progress: bool | None = None) -> Path:
+    """Renders a Result (or a path to a saved .npz) to `out` (.gif or .mp4). Returns the path.
+    progress: a frame counter on stderr (None: only on a terminal)."""
+    import matplotlib
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+    from matplotlib import animation
+
+    from .arm import Result
+    from .progress import bar
+    out = check_output(out)
+    if not isinstance(result, Result):
+        result = Result.load(result)
+    if out.suffix.lower() == ".gif":
+        writer = StreamingGifWriter(fps=fps)
+    else:
+        writer = animation.FFMpegWriter(fps=fps, codec="libx264", extra_args=["-pix_fmt", "yuv420p"])
+
+    rows = frame_indices(result.time, fps, speed)
+    if max_frames is not None:
+        rows = rows[:max_frames]
+    fig, draw, _ = build_figure(result, rows, dpi, lines_of_action)
     out.parent.mkdir(parents=True, exist_ok=True)
     try:
         # One draw per frame (FuncAnimation.save draws twice).

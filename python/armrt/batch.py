@@ -107,6 +107,26 @@ class ArmBatch:
         """Element indices of an element, muscle or group name (as Arm.indices)."""
         return self._arm.indices(name)
 
+    @property
+    def max_joint_speed(self) -> float:
+        """rad/s: a joint faster than this means the simulation diverged (the arm then stops)."""
+        return float(self._arm._sim.max_joint_speed)
+
+    @property
+    def gh_stab_bound(self) -> float:
+        """Largest GH stability the model can report: the force pointing away from the glenoid
+        (angles of pi from its normal along both axes)."""
+        return float((np.pi / self.info["rim_half_angle_major"]) ** 2 + (np.pi / self.info["rim_half_angle_minor"]) ** 2)
+
+    def hand_position_at(self, q) -> np.ndarray:
+        """(m, 3) hand positions (m, thorax frame) at postures q of shape (m, dofs) rad (kinematics only)."""
+        q = np.atleast_2d(np.asarray(q, dtype=float))
+        out = np.empty((len(q), 3))
+        for k, qk in enumerate(q):
+            self._arm.reset(q=qk)
+            out[k] = self._arm.outputs()["hand_position"]
+        return out
+
     # ------------------------------------------------------------------ inputs
     def _per_arm(self, values, what: str, lo: float, hi: float | None, clip: bool, current=None) -> np.ndarray:
         """(n, elements) from an (n, elements) array, or anything Arm accepts for one arm (an array
@@ -115,7 +135,10 @@ class ArmBatch:
         if isinstance(values, Mapping):
             out = np.zeros((self.n, ne)) if current is None else current.copy()
             for name, v in values.items():
-                out[:, self.indices(name)] = Arm._scalar(v, f"{what}[{name!r}]")
+                try:
+                    out[:, self.indices(name)] = float(v)
+                except (TypeError, ValueError):
+                    raise ValueError(f"{what}[{name!r}] must be a number, got {v!r}") from None
         else:
             arr = np.asarray(values, dtype=float)
             if arr.ndim <= 1:
