@@ -4,10 +4,12 @@ The paper's model (fixed scapula, 5 DOF, 22 muscles in 102 Hill-type elements) f
 integrated in C++; see armrt.Arm.
 """
 from .arm import Arm, Result, SimulationError, deg, rad
+from .batch import ArmBatch
+from .sweep import sweep
 
-__all__ = ["Arm", "Result", "SimulationError", "deg", "rad", "RealtimeSession", "UdpClient"]
+__all__ = ["Arm", "Result", "SimulationError", "deg", "rad", "ArmBatch", "sweep", "RealtimeSession", "UdpClient"]
 try:  # the packet layout comes from armrt._rt: without that extension the rest of armrt still works
     from .realtime import RealtimeSession, UdpClient
 except ImportError:  # pragma: no cover (an incomplete build: PYTHONPATH=python with only _core copied)
-    __all__ = __all__[:5]
+    __all__ = __all__[:7]
 __version__ = "0.1.0"
