@@ -45,7 +45,7 @@ class ArmEnv(gym.Env):
 
     def reset(self, *, seed: int | None = None, options: dict | None = None):
         super().reset(seed=seed)
-        self.task.reset(np.array([0]), [self.np_random])
+        self.task.reset(np.array([0]), [self.np_random], options)
         self._history.clear()
         self._record()
         return self.task.observe()[0], {}
@@ -119,7 +119,7 @@ class ArmVectorEnv(VectorEnv):
         for i, s in enumerate(seeds):
             if s is not None or self._rngs[i] is None:
                 self._rngs[i] = seeding.np_random(s)[0]
-        self.task.reset(np.arange(self.num_envs), self._rngs)
+        self.task.reset(np.arange(self.num_envs), self._rngs, options)
         self._autoreset[:] = False
         return self.task.observe(), {}
 

@@ -59,8 +59,9 @@ class Task:
     # -- to be provided by a task
     observation_space: spaces.Box
 
-    def _reset_arm(self, i: int, rng: np.random.Generator) -> np.ndarray:
-        """Samples arm i's task and start posture; returns the posture (dofs,) rad."""
+    def _reset_arm(self, i: int, rng: np.random.Generator, options: dict) -> np.ndarray:
+        """Samples arm i's task and start posture (values in `options` override the samples, which
+        are drawn anyway so the generator advances alike); returns the posture (dofs,) rad."""
         raise NotImplementedError
 
     def observe(self) -> np.ndarray:
@@ -71,11 +72,13 @@ class Task:
         raise NotImplementedError
 
     # -- shared
-    def reset(self, idx: np.ndarray, rngs) -> None:
+    def reset(self, idx: np.ndarray, rngs, options: dict | None = None) -> None:
         """Starts new episodes for arms idx, sampling each from its own generator (in order)."""
         idx = np.asarray(idx)
-        q = np.array([self._reset_arm(int(i), rng) for i, rng in zip(idx, rngs)])
-        self.batch.reset(q=q, arms=idx)
+        q = np.array([self._reset_arm(int(i), rng, options or {}) for i, rng in zip(idx, rngs)])
+        # Activations start at the background tone (as the experiments' settle()): a weakened arm
+        # hanging without it has its GH force far off the glenoid until the tone builds up.
+        self.batch.reset(q=q, activation=self.background, arms=idx)
         exc = self.batch.excitation
         exc[idx] = self.background
         self.batch.set_excitation(exc)
@@ -167,14 +170,16 @@ class ReachTask(Task):
         self.observation_space = _box([(nd, -ANGLE_BOUND, ANGLE_BOUND), (nd, -v, v), (nc, 0.0, 1.0),
                                        (3, -w, w), (3, -w, w), (1, 0.0, batch.gh_stab_bound)])
 
-    def _reset_arm(self, i, rng):
+    def _reset_arm(self, i, rng, options):
         lo, hi = self.batch.dof_ranges[:, 0], self.batch.dof_ranges[:, 1]
         m = self.target_margin
         q_target = lo + (hi - lo) * (m + (1.0 - 2.0 * m) * rng.uniform(size=len(lo)))
+        q0 = self.batch.rest_posture + rng.uniform(-self.start_noise, self.start_noise, size=len(lo))
+        if "target_posture" in options:
+            q_target = np.asarray(options["target_posture"], dtype=float)
         self.target[i] = self.batch.hand_position_at(q_target)[0]
         self.unstable_time[i] = 0.0
-        q0 = self.batch.rest_posture + rng.uniform(-self.start_noise, self.start_noise, size=len(lo))
-        return np.clip(q0, lo, hi)
+        return np.clip(np.asarray(options.get("start_posture", q0), dtype=float), lo, hi)
 
     def observe(self):
         b = self.batch
@@ -206,6 +211,7 @@ class FESElbowTask(Task):
     are otherwise silent.
     Start: rest posture with the elbow at an angle drawn uniformly in `start_range` (rad).
     Target: elbow angle drawn uniformly in `target_range` (rad), held for the episode.
+    reset(options={"target": rad, "start": rad}) sets them.
     Observation (float32): q (dofs, rad) | qdot (dofs, rad/s) | activation of each stimulated muscle
     (mean of its elements) | target elbow angle (1, rad) | elbow error, angle - target (1, rad).
     Reward per step: -|elbow - target| (rad) - effort_weight * mean(action^2).
@@ -228,10 +234,11 @@ class FESElbowTask(Task):
         a, v = ANGLE_BOUND, batch.max_joint_speed
         self.observation_space = _box([(nd, -a, a), (nd, -v, v), (nc, 0.0, 1.0), (1, -a, a), (1, -2 * a, 2 * a)])
 
-    def _reset_arm(self, i, rng):
-        self.target[i] = rng.uniform(*self.target_range)
+    def _reset_arm(self, i, rng, options):
+        target, start = rng.uniform(*self.target_range), rng.uniform(*self.start_range)
+        self.target[i] = float(options.get("target", target))
         q0 = self.batch.rest_posture.copy()
-        q0[self.elbow] = rng.uniform(*self.start_range)
+        q0[self.elbow] = float(options.get("start", start))
         return q0
 
     def observe(self):
