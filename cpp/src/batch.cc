@@ -16,6 +16,7 @@ Batch::Batch(const ModelDef& def, int n, Integrator integrator, double dt, int s
 int Batch::step(long steps, int num_threads, bool outputs) {
   const int n = size();
   if (num_threads < 1) num_threads = omp_get_max_threads();
+  if (num_threads > n) num_threads = n;  // an idle thread would only spin at the barrier
   int failed = 0;
   // dynamic: arms that diverge (stop early) or run CVODE take uneven time. One arm per chunk keeps
   // every arm on one thread for the whole call, which is all determinism needs.
