@@ -2,12 +2,26 @@
 // stops alone.
 #include <doctest/doctest.h>
 
+#include <atomic>
+#include <cstdlib>
 #include <cstring>
 
 #include "armrt/batch.h"
 #include "test_util.h"
 
 using namespace armrt;
+
+// Counts every malloc in the process while enabled, including the OpenMP runtime's (libgomp calls
+// malloc directly, not operator new): this executable's malloc interposes the C library's.
+extern "C" void* __libc_malloc(std::size_t);
+namespace {
+std::atomic<bool> g_count_mallocs{false};
+std::atomic<long> g_mallocs{0};
+}  // namespace
+extern "C" void* malloc(std::size_t size) {
+  if (g_count_mallocs.load(std::memory_order_relaxed)) g_mallocs.fetch_add(1, std::memory_order_relaxed);
+  return __libc_malloc(size);
+}
 
 namespace {
 
@@ -60,6 +74,27 @@ TEST_CASE("a diverging arm stops alone and is flagged; the others go on") {
   CHECK(batch.step(5, 2, true) == 0);
   CHECK(batch.arm(1).data.time == t1);
   CHECK(batch.arm(0).data.time == doctest::Approx(15e-3));
+}
+
+TEST_CASE("no heap allocation while stepping on 2 threads, OpenMP runtime included") {
+  Batch batch(armrt_test::das2(), 4, Integrator::kRk4, 1e-3, 6);
+  for (int i = 0; i < batch.size(); ++i) set_up(batch.arm(i), i);
+  // First call: OpenMP may create its thread pool (run alone, this case counts 2 mallocs there:
+  // libgomp's, which shows the interposer sees the runtime's allocations).
+  REQUIRE(batch.step(2, 2, true) == 0);
+  // The interposer is live: an allocation in this window is counted.
+  g_count_mallocs = true;
+  void* volatile probe = std::malloc(16);
+  g_count_mallocs = false;
+  std::free(probe);
+  REQUIRE(g_mallocs.load() == 1);
+  g_mallocs = 0;
+  g_count_mallocs = true;
+  int failed = 0;
+  for (int call = 0; call < 20; ++call) failed += batch.step(5, 2, true);
+  g_count_mallocs = false;
+  CHECK(failed == 0);
+  CHECK(g_mallocs.load() == 0);
 }
 
 TEST_CASE("bad sizes are refused") {
