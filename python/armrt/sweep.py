@@ -19,8 +19,23 @@ import numpy as np
 BACKENDS = ("local", "ray")
 
 
+class _NoBar:
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        return False
+
+    def update(self, n=1):
+        pass
+
+
 def _progress(total: int, desc: str | None, enabled: bool):
-    from tqdm.auto import tqdm
+    """A tqdm bar (pip install tqdm); without tqdm, none."""
+    try:
+        from tqdm.auto import tqdm
+    except ImportError:
+        return _NoBar()
     return tqdm(total=total, desc=desc or "sweep", disable=not enabled, unit="item")
 
 

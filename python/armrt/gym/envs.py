@@ -70,6 +70,8 @@ class ArmEnv(gym.Env):
         if self.render_mode is None:
             gym.logger.warn("render() called without render_mode; pass render_mode='rgb_array' to gymnasium.make")
             return None
+        if not self._history:
+            raise gym.error.ResetNeeded("call reset() before render()")
         from .render import render_frame
         t, q, stab, act = (np.array(v) for v in zip(*self._history))
         result = SimpleNamespace(time=t, q=q, gh_stab=stab, activation=act, element_names=self.batch.element_names,
