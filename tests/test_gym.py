@@ -126,3 +126,21 @@ def test_vector_env_matches_sync_vector_env_bit_for_bit(task_id):
             assert np.array_equal(r1[4][k], r2[4][k]), k
         resets += int(r1[3].sum())
     assert resets >= n
+
+
+def test_vector_env_a_diverging_arm_terminates_alone_and_restarts():
+    vec = armrt.gym.ReachVectorEnv(3, threads=2)
+    vec.reset(seed=0)
+    force = np.zeros((3, 3))
+    force[1] = (0.0, 5e5, 0.0)        # throws arm 1 past the joint-speed bound
+    vec.batch.set_hand_load(force=force)
+    a = np.full((3,) + vec.single_action_space.shape, 0.05, np.float32)
+    obs, reward, terminated, truncated, info = vec.step(a)
+    assert terminated.tolist() == [False, True, False]
+    assert info["diverged"].tolist() == [False, True, False] and "qdot[" in info["error"][1]
+    assert reward[1] == -vec.task.divergence_penalty
+    assert vec.single_observation_space.contains(obs[1])
+    vec.batch.set_hand_load()
+    obs, reward, terminated, truncated, info = vec.step(a)   # next-step autoreset of arm 1
+    assert not vec.batch.diverged.any() and reward[1] == 0.0 and not terminated.any()
+    assert vec.batch.time[1] == 0.0 and vec.batch.time[0] > 0.0

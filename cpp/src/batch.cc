@@ -25,8 +25,9 @@ int Batch::step(long steps, int num_threads, bool outputs) {
     Simulator& s = arms_[i];
     newly_failed_[i] = 0;
     if (s.data.status != Status::kOk) continue;
+    // Outputs are not recorded while stepping (they would be overwritten); evaluated once at the end.
     for (long k = 0; k < steps; ++k) {
-      if (!s.step()) {
+      if (!s.step(false)) {
         newly_failed_[i] = 1;
         ++failed;
         break;

@@ -40,14 +40,17 @@ TEST_SUITE("batch") {
 TEST_CASE("every arm matches a lone Simulator bit for bit, on 1 and 2 threads") {
   const int n = 5;
   const long steps = 30;
+  for (Integrator integ : {Integrator::kRos2, Integrator::kRk4})
   for (int threads : {1, 2}) {
+    CAPTURE(integrator_name(integ));
     CAPTURE(threads);
-    Batch batch(armrt_test::das2(), n, Integrator::kRk4, 1e-3, 6);
+    const int sub = default_substeps(integ, 1e-3);
+    Batch batch(armrt_test::das2(), n, integ, 1e-3, sub);
     for (int i = 0; i < n; ++i) set_up(batch.arm(i), i);
     CHECK(batch.step(steps / 2, threads, true) == 0);
     CHECK(batch.step(steps - steps / 2, threads, true) == 0);
     for (int i = 0; i < n; ++i) {
-      Simulator lone(armrt_test::das2(), Integrator::kRk4, 1e-3, 6);
+      Simulator lone(armrt_test::das2(), integ, 1e-3, sub);
       set_up(lone, i);
       for (long k = 0; k < steps; ++k) REQUIRE(lone.step());
       lone.evaluate_outputs();

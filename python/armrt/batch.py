@@ -256,8 +256,8 @@ class ArmBatch:
         """Advances every live arm by k control steps (threads in C++, GIL released). Returns the
         indices of the arms that diverged during this call (each is also in `errors` and, with
         `warn`, named in a RuntimeWarning); they stay where they stopped until reset. With
-        outputs=False the output views are left as of the last integration stage (saves one
-        state-derivative evaluation per arm and call)."""
+        outputs=False the output views are left as they were (saves one state-derivative
+        evaluation per arm and call; evaluate_outputs() brings them up to date)."""
         k = int(k)
         if k < 0:
             raise ValueError(f"k must be >= 0, got {k}")

@@ -27,8 +27,9 @@ class Batch {
   static constexpr std::ptrdiff_t stride() { return sizeof(Simulator); }
 
   // Advances each arm whose status is kOk by up to `steps` control steps on `num_threads` threads
-  // (< 1: OpenMP's default). An arm that diverges stops there; the others go on. With `outputs`,
-  // each live arm's outputs (forces, hand position, GH stability) are evaluated at its final state.
+  // (< 1: OpenMP's default; never more than the arms). An arm that diverges stops there; the others
+  // go on. With `outputs`, each live arm's outputs (forces, hand position, GH stability) are evaluated
+  // at its final state; without, they are left as they were (Simulator::step(false)).
   // Writes 1 to newly_failed[i] for each arm that diverged during this call (0 otherwise) and
   // returns how many did. No heap allocation after the first call (OpenMP keeps its thread pool).
   int step(long steps, int num_threads, bool outputs);

@@ -139,6 +139,13 @@ class ArmVectorEnv(VectorEnv):
         for k, v in info.items() if live.any() else ():   # as SyncVectorEnv: no keys when all arms reset
             infos[k] = np.where(live, v, np.zeros_like(v))
             infos["_" + k] = live.copy()
+        diverged = np.flatnonzero(live & info["diverged"])
+        if diverged.size:   # as ArmEnv's info["error"], gathered as SyncVectorEnv gathers strings
+            infos["error"] = np.full(self.num_envs, None, dtype=object)
+            infos["_error"] = np.zeros(self.num_envs, dtype=bool)
+            errors = self.batch.errors
+            for i in diverged:
+                infos["error"][i], infos["_error"][i] = errors.get(int(i), ""), True
         self._autoreset = terminated | truncated
         return obs, reward, terminated, truncated, infos
 
