@@ -274,6 +274,13 @@ class ArmBatch:
         """Outputs of every live arm at its current state (after step(..., outputs=False))."""
         self._raw.evaluate_outputs(self._threads)
 
+    def outputs(self) -> dict:
+        """Copies of the outputs at each arm's current state (as Arm.outputs(), one row per arm):
+        qddot (n, dofs), muscle_force and muscle_length (n, elements), hand_position and gh_force
+        (n, 3), gh_theta, gh_phi, gh_stab (n,). Rows of diverged arms are as they stopped."""
+        return {k: np.array(self._views[k]) for k in ("qddot", "muscle_force", "muscle_length", "hand_position",
+                                                      "gh_force", "gh_theta", "gh_phi", "gh_stab")}
+
     @property
     def diverged(self) -> np.ndarray:
         """(n,) bool: arms stopped by divergence (until reset)."""
