@@ -1,16 +1,13 @@
 """ArmBatch: every arm bit-identical to a lone Arm on 1 and 2 threads, for every integrator; a
 diverging arm stops alone and is named; inputs and outputs as (n, ...) arrays."""
-import inspect
 import warnings
 
 import numpy as np
 import pytest
 
 armrt = pytest.importorskip("armrt", reason="armrt is not built/installed (./run.sh setup)")
-from armrt.arm import INTEGRATORS, Arm  # noqa: E402
+from armrt.arm import DEFAULT_INTEGRATOR, INTEGRATORS, Arm  # noqa: E402
 from armrt.batch import ArmBatch  # noqa: E402
-
-DEFAULT_INTEGRATOR = inspect.signature(Arm.__init__).parameters["integrator"].default
 
 
 def arm_setups(n, n_dofs, n_elements, rest, seed=0):
