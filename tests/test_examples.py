@@ -29,3 +29,10 @@ def test_fes_elbow_pd_reaches_targets_and_plots(tmp_path):
     # Without stimulation the weakened arm stays near its start: the controller did the work.
     still = ex.run([100.0], kp=0.0, kd=0.0, bias=0.0, duration=2.0)[0]
     assert np.degrees(still["elbow"][-1]) < 60.0
+
+
+def test_random_search_over_the_vector_env_beats_doing_nothing():
+    ex = load("fes_elbow_search")
+    best, best_score, reference = ex.search(candidates=6, rounds=1, targets_deg=(90.0,))
+    assert best_score >= reference["hand_tuned"] > reference["no_stimulation"]
+    assert np.all(best >= ex.LOW) and np.all(best <= ex.HIGH)
