@@ -40,6 +40,9 @@ class ArmBatch:
     An arm that diverges stops alone: step() returns its index, `diverged` marks it, `errors` says
     which state went bad and when, and a RuntimeWarning names it; the other arms go on. reset() that
     arm (reset(arms=[i])) to use it again.
+
+    One Python thread at a time: step() releases the GIL while the arms run, so changing inputs
+    from another thread meanwhile would race with the engine (as with Arm).
     """
 
     def __init__(self, n: int, model: str = "das2", integrator: str | None = None, dt: float | None = None,
