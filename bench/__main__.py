@@ -1,7 +1,7 @@
 """Benchmark harness: one command for every comparison, results under bench/results/.
 
-    python -m bench all [--quick]     # engine, integrators, OpenSim, MuJoCo/MyoSuite, scaling, then the report
-    python -m bench engine|integrators|opensim|mujoco|scaling|guard|report
+    python -m bench all [--quick]     # engine, integrators, OpenSim, MuJoCo/MyoSuite, scaling, batch, then the report
+    python -m bench engine|integrators|opensim|mujoco|scaling|batch|guard|report
 
 Needs `armrt` importable (pip install ., or PYTHONPATH=python with _core*.so copied there), the C++
 tools built (ninja armrt_bench armrt_bench_scaling) for the engine and scaling figures, opensim and
@@ -118,7 +118,8 @@ def report() -> int:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python -m bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", choices=["all", "engine", "integrators", "opensim", "mujoco", "scaling", "guard", "report"])
+    ap.add_argument("what", choices=["all", "engine", "integrators", "opensim", "mujoco", "scaling", "batch", "guard",
+                                     "report"])
     ap.add_argument("--quick", action="store_true", help="shorter runs (smoke test; figures noisier)")
     args = ap.parse_args(argv)
     if str(ROOT) not in sys.path:
@@ -131,13 +132,14 @@ def main(argv=None) -> int:
         "mujoco": lambda: __import__("bench.bench_mujoco", fromlist=["main"]).main(["--reps", "2" if q else "5"]),
         "scaling": lambda: __import__("bench.bench_scaling", fromlist=["main"]).main(
             ["--reps", "3000" if q else "20000"] + (["--no-subsets"] if q else [])),
+        "batch": lambda: __import__("bench.bench_batch", fromlist=["main"]).main(["--quick"] if q else []),
         "guard": lambda: __import__("bench.ci_guard", fromlist=["main"]).main([]),
         "integrators": lambda: __import__("bench.bench_integrators", fromlist=["main"]).main(
             ["--quick"] if q else []),
     }
     if args.what == "report":
         return report()
-    names = ["engine", "integrators", "opensim", "mujoco", "scaling"] if args.what == "all" else [args.what]
+    names = ["engine", "integrators", "opensim", "mujoco", "scaling", "batch"] if args.what == "all" else [args.what]
     rc = 0
     for name in names:
         print(f"\n=== {name} ===", flush=True)
