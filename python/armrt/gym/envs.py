@@ -86,7 +86,8 @@ class ArmVectorEnv(VectorEnv):
     Autoreset: next-step (Gymnasium 1.x's default, as SyncVectorEnv): the step after an arm's
     episode ends resets that arm, ignores its action and returns its first observation with reward
     0. Seeding as SyncVectorEnv: reset(seed=s) seeds arm i with s + i (or with seed[i] for a list),
-    so each arm's episodes are those of ArmEnv(seed=s + i), bit for bit. threads: for the batch
+    so each arm's episodes are those of ArmEnv(seed=s + i), bit for bit. reset(options=...) gives
+    every arm the same options (e.g. the FES target); autoresets use none. threads: for the batch
     (default: the cores available). Other keyword arguments as ArmEnv.
     """
 
