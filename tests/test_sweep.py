@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 armrt = pytest.importorskip("armrt", reason="armrt is not built/installed (./run.sh setup)")
-from armrt.sweep import gather, sweep  # noqa: E402
+from armrt.sweeps import gather, sweep  # noqa: E402
 
 RAY_BUDGET_S = 240   # the whole Ray part: start, tasks, shutdown
 

@@ -5,7 +5,7 @@ integrated in C++; see armrt.Arm.
 """
 from .arm import Arm, Result, SimulationError, deg, rad
 from .batch import ArmBatch
-from .sweep import sweep
+from .sweeps import sweep
 
 __all__ = ["Arm", "Result", "SimulationError", "deg", "rad", "ArmBatch", "sweep", "RealtimeSession", "UdpClient"]
 try:  # the packet layout comes from armrt._rt: without that extension the rest of armrt still works

@@ -16,7 +16,7 @@ import numpy as np
 
 from .experiments import (deltoid_sequence, find_baseline, middle_anterior_deltoid, new_arm, plateau_elevation,
                           run_sequence)
-from .sweep import sweep
+from .sweeps import sweep
 
 
 @dataclass(frozen=True)
