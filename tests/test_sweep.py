@@ -28,11 +28,12 @@ def fails_on_two(x):
 
 def test_local_keeps_order_and_gathers_arrays():
     out = sweep(settle_elbow, [0.4, 0.0, 0.2], progress=False)
-    assert out["q"].shape == (3, 5) and out["gh_stab"].shape == (3,)
+    assert out["q"].shape == (3, len(armrt.Arm().dof_names)) and out["gh_stab"].shape == (3,)
     for k, level in enumerate([0.4, 0.0, 0.2]):
         one = settle_elbow(level)
         assert np.array_equal(out["q"][k], one["q"]) and out["gh_stab"][k] == one["gh_stab"]
-    assert out["q"][0, 3] > out["q"][2, 3] > out["q"][1, 3]   # more flexor drive, more elbow flexion
+    elbow = armrt.Arm().dof_names.index("ELx")
+    assert out["q"][0, elbow] > out["q"][2, elbow] > out["q"][1, elbow]   # more flexor drive, more elbow flexion
 
 
 def test_gather_and_errors():
