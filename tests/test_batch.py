@@ -163,3 +163,13 @@ def test_inputs_broadcast_validate_and_name_the_problem():
         ArmBatch(0)
     with pytest.raises(ValueError, match="integrator"):
         ArmBatch(2, integrator="leapfrog")
+
+
+def test_default_threads_follow_omp_num_threads(monkeypatch):
+    from armrt.batch import available_cores
+    monkeypatch.setenv("OMP_NUM_THREADS", "1")
+    assert ArmBatch(2).threads == 1
+    monkeypatch.delenv("OMP_NUM_THREADS")
+    assert ArmBatch(2).threads == available_cores()
+    with pytest.raises(ValueError, match="threads"):
+        ArmBatch(2, threads=0)

@@ -17,11 +17,21 @@ from .arm import Arm, SimulationError
 
 
 def available_cores() -> int:
-    """CPUs this process may run on (its affinity mask), the default thread count."""
+    """CPUs this process may run on (its affinity mask)."""
     try:
         return len(os.sched_getaffinity(0))
     except AttributeError:  # not Linux
         return os.cpu_count() or 1
+
+
+def default_threads() -> int:
+    """OMP_NUM_THREADS when set to a positive integer (Ray sets it to a task's CPUs, so a batch inside
+    a Ray task does not oversubscribe the node), else the cores available."""
+    try:
+        n = int(os.environ.get("OMP_NUM_THREADS", "").split(",")[0])
+    except ValueError:
+        n = 0
+    return n if n > 0 else available_cores()
 
 
 class ArmBatch:
@@ -48,7 +58,8 @@ class ArmBatch:
     def __init__(self, n: int, model: str = "das2", integrator: str | None = None, dt: float | None = None,
                  substeps: int | None = None, threads: int | None = None):
         """n: number of arms (>= 1). integrator, dt (control step, s) and substeps: as for `Arm`
-        (None: Arm's defaults). threads: OpenMP threads for step() (None: the cores available).
+        (None: Arm's defaults). threads: OpenMP threads for step() (None: OMP_NUM_THREADS if set,
+        else the cores available).
         Raises ValueError for a bad n, integrator, dt, substeps or threads."""
         if int(n) != n or n < 1:
             raise ValueError(f"n must be a positive integer number of arms, got {n!r}")
@@ -83,12 +94,12 @@ class ArmBatch:
     # ------------------------------------------------------------------ configuration
     @property
     def threads(self) -> int:
-        """OpenMP threads used by step() (default: the cores available)."""
+        """OpenMP threads used by step() (default: OMP_NUM_THREADS if set, else the cores available)."""
         return self._threads
 
     @threads.setter
     def threads(self, value) -> None:
-        value = available_cores() if value is None else value
+        value = default_threads() if value is None else value
         if int(value) != value or value < 1:
             raise ValueError(f"threads must be a positive integer, got {value!r}")
         self._threads = int(value)

@@ -88,7 +88,7 @@ class ArmVectorEnv(VectorEnv):
     0. Seeding as SyncVectorEnv: reset(seed=s) seeds arm i with s + i (or with seed[i] for a list),
     so each arm's episodes are those of ArmEnv(seed=s + i), bit for bit. reset(options=...) gives
     every arm the same options (e.g. the FES target); autoresets use none. threads: for the batch
-    (default: the cores available). Other keyword arguments as ArmEnv.
+    (default: OMP_NUM_THREADS if set, else the cores available). Other keyword arguments as ArmEnv.
     """
 
     metadata = {"autoreset_mode": AutoresetMode.NEXT_STEP, "render_modes": []}
