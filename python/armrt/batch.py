@@ -12,8 +12,13 @@ from typing import Mapping
 
 import numpy as np
 
-from . import _batch
-from .arm import Arm, SimulationError
+# OpenMP threads that finish early sleep instead of spinning (unless the user chose otherwise): on a
+# machine shared with other work, or between the Python steps of a vector env, a spinning thread
+# takes the core the next call or the main thread needs. libgomp reads this when _batch loads it.
+os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
+
+from . import _batch  # noqa: E402
+from .arm import Arm, SimulationError  # noqa: E402
 
 
 def available_cores() -> int:
