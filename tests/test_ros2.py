@@ -111,3 +111,18 @@ def test_random_protocols_are_seeded_and_cover_the_kinds():
     assert 0 < np.linalg.norm(p.hand_force) <= 20.0
     assert np.all((p.levels >= 0) & (p.levels <= 1))
     assert acc.random_protocol(1, 102).kind == "bang_bang" and set(np.unique(acc.random_protocol(1, 102).levels)) <= {0.0, 1.0}
+
+
+def test_steps_above_the_validated_size_warn():
+    """A 2 ms ROS2 step was measured 5.6 deg off CVODE and one explicit 1 ms step diverges: asking
+    for them warns (StepSizeWarning), the defaults do not; dt a hair above 1 ms stays one step."""
+    import warnings
+    for integ, dt, sub in (("ros2", 2e-3, 1), ("rk4", 1e-3, 1), ("euler", 1e-3, 1), ("ros2_adaptive", 5e-3, 1)):
+        with pytest.warns(armrt.StepSizeWarning, match="validated"):
+            armrt.Arm(integrator=integ, dt=dt, substeps=sub)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        for integ in armrt.arm.INTEGRATORS:
+            armrt.Arm(integrator=integ)
+        armrt.Arm(integrator="ros2_adaptive", dt=2e-3)
+        assert armrt.Arm(dt=1.0000001e-3).substeps == 1

@@ -52,7 +52,8 @@ double default_max_step(Integrator integrator) {
 
 int default_substeps(Integrator integrator, double dt) {
   const double h = default_max_step(integrator);
-  return std::isinf(h) ? 1 : std::max(1, static_cast<int>(std::ceil(dt / h - 1e-9)));
+  // A relative tolerance: dt = 1.0000001 ms is one 1 ms step, not two.
+  return std::isinf(h) ? 1 : std::max(1, static_cast<int>(std::ceil(dt / h * (1.0 - 1e-6))));
 }
 
 bool is_fixed_cost(Integrator integrator) {

@@ -3,7 +3,7 @@
 The paper's model (fixed scapula, 5 DOF, 22 muscles in 102 Hill-type elements) from the DAS3 data,
 integrated in C++; see armrt.Arm.
 """
-from .arm import Arm, Result, SimulationError, deg, rad
+from .arm import Arm, Result, SimulationError, StepSizeWarning, deg, rad
 from .batch import ArmBatch
 from .sweeps import sweep
 

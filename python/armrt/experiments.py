@@ -9,12 +9,13 @@ import json
 import math
 import sys
 import time
+import warnings
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
 
-from .arm import Arm, SimulationError
+from .arm import Arm, SimulationError, StepSizeWarning
 
 CUFF = ("infra", "termin", "supra", "subscap")
 FLEXORS = ("bicl", "bicb", "brachialis", "brachiorad")
@@ -474,7 +475,9 @@ def solver_study(tasks: list[Sequence], progress: Progress | None = None, step_g
                 if progress:
                     progress.tick(f"dt = {dt * 1e3:g} ms, {seq.name}")
                 try:
-                    _, res = run_sequence(seq, integ, dt, record_every=max(1, int(round(1e-3 / dt))), substeps=1)
+                    with warnings.catch_warnings():  # the sweep goes past the validated steps on purpose
+                        warnings.simplefilter("ignore", StepSizeWarning)
+                        _, res = run_sequence(seq, integ, dt, record_every=max(1, int(round(1e-3 / dt))), substeps=1)
                 except SimulationError as exc:
                     row["stable"], row["failure"] = False, f"{seq.name}: {exc}"
                     break
@@ -543,7 +546,9 @@ def _plot_solvers(tasks, study, ref, path: Path):
         dt = study[integ]["largest_stable_dt"]
         if dt is None:
             continue
-        _, res = run_sequence(seq, integ, dt, record_every=max(1, int(round(1e-3 / dt))), substeps=1)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", StepSizeWarning)
+            _, res = run_sequence(seq, integ, dt, record_every=max(1, int(round(1e-3 / dt))), substeps=1)
         n = min(len(res.time), len(ref.time))
         lbl = f"{integ} dt = {dt * 1e3:g} ms"
         ax[0].plot(res.time, np.degrees(res.q[:, 3]), style, label=lbl)
