@@ -14,18 +14,22 @@ using Mat5 = Eigen::Matrix<double, kNumDofs, kNumDofs, Eigen::RowMajor>;
 using Vec5 = Eigen::Matrix<double, kNumDofs, 1>;
 using Mat35 = Eigen::Matrix<double, 3, kNumDofs, Eigen::RowMajor>;
 
+namespace {
+
+// Signed excursion beyond the range of motion (rad): q - range_max above it, q - range_min below,
+// 0 inside. The torque and its derivative below are written in terms of it.
+double range_excursion(const DofParams& dof, double q) {
+  return q > dof.range_max ? q - dof.range_max : (q < dof.range_min ? q - dof.range_min : 0.0);
+}
+
+}  // namespace
+
 void passive_joint_torque(const ModelDef& def, const double* q, const double* qd, double* tau) {
   for (int j = 0; j < kNumDofs; ++j) {
     const DofParams& dof = def.dofs[j];
-    double t = -def.passive_stiffness_inside * (q[j] - dof.rest) - def.passive_damping * qd[j];
-    if (q[j] > dof.range_max) {
-      const double over = q[j] - dof.range_max;
-      t -= def.passive_stiffness_outside * over * over;
-    } else if (q[j] < dof.range_min) {
-      const double under = dof.range_min - q[j];
-      t += def.passive_stiffness_outside * under * under;
-    }
-    tau[j] = t;
+    const double e = range_excursion(dof, q[j]);
+    tau[j] = -def.passive_stiffness_inside * (q[j] - dof.rest) - def.passive_damping * qd[j] -
+             def.passive_stiffness_outside * e * std::fabs(e);
   }
 }
 
@@ -61,9 +65,8 @@ void solve_spd(const double* A, const double* b, double* x) {
 
 void passive_joint_stiffness(const ModelDef& def, const double* q, double* dtau_dq, double* dtau_dqd) {
   for (int j = 0; j < kNumDofs; ++j) {
-    const DofParams& dof = def.dofs[j];
-    const double over = q[j] > dof.range_max ? q[j] - dof.range_max : (q[j] < dof.range_min ? dof.range_min - q[j] : 0.0);
-    dtau_dq[j] = -def.passive_stiffness_inside - 2.0 * def.passive_stiffness_outside * over;
+    const double e = range_excursion(def.dofs[j], q[j]);
+    dtau_dq[j] = -def.passive_stiffness_inside - 2.0 * def.passive_stiffness_outside * std::fabs(e);
     dtau_dqd[j] = -def.passive_damping;
   }
 }

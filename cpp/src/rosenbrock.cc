@@ -260,18 +260,6 @@ void ros2_stages(const Model& m, Data& d, double h, bool record) {
   jacobian_solve(m, d.jac, d.k3.data(), d.k4.data());
 }
 
-void ros2_update(const Model& m, Data& d, double h) {
-  const int ns = state_size(m);
-  for (int k = 0; k < ns; ++k) d.x[k] += h * (1.5 * d.k2[k] + 0.5 * d.k4[k]);
-}
-
-}  // namespace
-
-void step_ros2(const Model& m, Data& d, double h, bool record) {
-  ros2_stages(m, d, h, record);
-  ros2_update(m, d, h);
-}
-
 // The embedded first-order solution is x_n + h k1 (linearly implicit Euler); their difference
 // h/2 (k1 + k2) estimates the local error. Scaled by kRos2AdaptiveTolQ (rad) on the joint angles and
 // kRos2AdaptiveTolLce (x lceopt) on the CE lengths, where the stiff slack-to-taut events show first.
@@ -284,6 +272,18 @@ double ros2_error_estimate(const Model& m, const Data& d, double h) {
     err = std::max(err, std::fabs(0.5 * h * (d.k2[kLce + i] + d.k4[kLce + i])) * mc.inv_lceopt[i] /
                             kRos2AdaptiveTolLce);
   return err;
+}
+
+void ros2_update(const Model& m, Data& d, double h) {
+  const int ns = state_size(m);
+  for (int k = 0; k < ns; ++k) d.x[k] += h * (1.5 * d.k2[k] + 0.5 * d.k4[k]);
+}
+
+}  // namespace
+
+void step_ros2(const Model& m, Data& d, double h, bool record) {
+  ros2_stages(m, d, h, record);
+  ros2_update(m, d, h);
 }
 
 int step_ros2_adaptive(const Model& m, Data& d, double h, bool record) {
