@@ -177,20 +177,17 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
     const double a_pred = a_x[i] + h * a_rate[i];
     const double a_next = a_pred < 0.0 ? 0.0 : (a_pred > 1.0 ? 1.0 : a_pred);
     // Operating point: the tendon stretched to carry what the fibres hold isometrically, the CE's
-    // force a fmax f(lce) plus the PEE's (k s^2 + 10 N/m s = that force along the tendon), where the
-    // CE comes to rest once the tendon has engaged.
+    // force a fmax f(lce) plus the PEE's less the compressive element's (k_see s^2 = that force along
+    // the tendon), where the CE comes to rest once the tendon has engaged.
     const double lce = lce_x[i] > mc.min_lce[i] ? lce_x[i] : mc.min_lce[i];
     const double xfl = (lce * mc.inv_lceopt[i] - 1.0) * (1.0 / kForceLengthWidth);
-    const double pee_stretch = lce - mc.pee_slack[i];
-    const double pee_pos = pee_stretch > 0 ? pee_stretch : 0.0;
-    const double f_pee = kLinearStiffness * pee_stretch + mc.k_pee[i] * pee_pos * pee_pos;
     const double F0 = a_next * mc.fmax[i] * exp_nonpositive(-xfl * xfl);
     const double th2 = mc.thickness[i] * mc.thickness[i];
     const double lce_along = std::sqrt(lce * lce - th2);
-    const double fibre_force = F0 + f_pee;
+    const double fibre_force = F0 + pee_force(mc.k_pee[i], mc.pee_slack[i], lce) -
+                               compressive_force(mc.k_compress[i], mc.compress_length[i], lce);
     const double F_op = (fibre_force > 0.0 ? fibre_force : 0.0) * lce_along / lce;
-    const double s_op = (std::sqrt(kLinearStiffness * kLinearStiffness + 4.0 * mc.k_see[i] * F_op) - kLinearStiffness) /
-                        (2.0 * mc.k_see[i]);
+    const double s_op = see_stretch_at_force(mc.k_see[i], F_op);
     const double along_op_raw = L_next - mc.lslack[i] - s_op;
     const double along_op = along_op_raw > mc.min_lce[i] ? along_op_raw : mc.min_lce[i];
     const double lce_op = std::sqrt(along_op * along_op + th2);
@@ -230,7 +227,7 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
     double force_op, vel_op;
     MuscleDerivatives op;
     muscle_kernel_derivatives(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
-                              mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], mc.damping_slope[i], b0,
+                              mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.compress_length[i], mc.k_compress[i], mc.ecc_c[i], mc.damping_slope[i], b0,
                               L_op[i], lce_at_op[i], a_op[i], &force_op, &vel_op, &op);
     const bool loading = taut[i] > 0.0 && op.dvel_dlce < dvel_dlce[i];
     dvel_dlce[i] = loading ? op.dvel_dlce : dvel_dlce[i];
