@@ -1,0 +1,117 @@
+"""das3 muscle paths: the girdle-and-arm region (codegen/das3_rom.py), the 11-DOF OpenSim sampler and
+scoring (codegen/das3_paths.py)."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from conftest import DAS3
+from codegen import das3_paths as dp
+from codegen.das3_chain import DAS3_DOFS
+
+
+@pytest.fixture(scope="module")
+def rom():
+    if not (DAS3 / "model_struct.mat").exists():
+        pytest.skip(f"DAS3 reference data not found at {DAS3}")
+    from codegen.das3_rom import Das3Rom
+    return Das3Rom(DAS3, n_grid=16)
+
+
+def test_crossed_dofs_follow_the_serial_chain():
+    assert dp.crossed_dofs(["thorax", "clavicle_r"]) == ["SCy", "SCz", "SCx"]
+    assert dp.crossed_dofs(["thorax", "scapula_r", "thorax"]) == DAS3_DOFS[:6]
+    assert dp.crossed_dofs(["clavicle_r", "humerus_r", "humerus_r"]) == DAS3_DOFS[3:9]
+    assert dp.crossed_dofs(["scapula_r", "radius_r"]) == DAS3_DOFS[6:]
+    assert dp.crossed_dofs(["radius_r", "hand_r"]) == []      # the wrist is a weld
+    assert dp.crossed_dofs(["ground", "humerus_r"]) == DAS3_DOFS[:9]
+
+
+def test_polynomial_moment_arms_are_minus_the_gradient():
+    rng = np.random.default_rng(1)
+    exps = [[0, 0], [1, 0], [0, 2], [1, 1], [3, 1]]
+    coefs = rng.normal(0, 0.05, 5)
+    q = rng.uniform(-1, 1, (6, 11))
+    ma = dp.polynomial_moment_arms(exps, coefs, ["SCz", "GHyy"], q)
+    from codegen.polynomial import evaluate
+    h = 1e-6
+    for j, d in enumerate(DAS3_DOFS):
+        e = np.zeros(11)
+        e[j] = h
+        fd = -(evaluate(exps, coefs, (q + e)[:, [1, 8]]) - evaluate(exps, coefs, (q - e)[:, [1, 8]])) / (2 * h)
+        np.testing.assert_allclose(ma[:, j], fd, atol=1e-8)
+    assert np.all(ma[:, [0, 2, 3, 4, 5, 6, 7, 9, 10]] == 0)
+
+
+def test_score_applies_the_paper_criterion():
+    q = np.zeros((4, 11))
+    cross = np.zeros((2, 11), bool)
+    cross[0, [6, 7]] = True
+    cross[1, 9] = True
+    ma = np.full((4, 2, 11), np.nan)
+    ma[:, 0, 6], ma[:, 0, 7] = [0.05, 0.04, 0.03, 0.02], 0.01      # peak 50 mm: criterion 5 mm
+    ma[:, 1, 9] = 0.005                                              # peak 5 mm: criterion 2 mm
+    samples = {"q": q, "ma": ma, "cross": cross, "names": np.array(["a", "b"])}
+    pred = [np.nan_to_num(ma[:, 0]), np.nan_to_num(ma[:, 1])]
+    pred[0][1, 7] += 0.0049                                          # inside
+    pred[0][2, 6] -= 0.0051                                          # over
+    pred[1][3, 9] += 0.0021                                          # over the 2 mm floor
+    bad = np.zeros((4, 2), bool)
+    bad[3, 1] = True                                                 # ... but a wrap jump: excluded
+    a, b = dp.score(samples, pred, bad)
+    assert (a["criterion_m"], a["n_over"], a["pass"], a["worst_dof"]) == (pytest.approx(0.005), 1, False, "GHy")
+    assert (b["criterion_m"], b["n_over"], b["pass"], b["n_wrap_jumps"], b["n_scored"]) == (0.002, 0, True, 1, 3)
+
+
+def test_rhythm_path_keeps_contact_and_rotates_the_scapula_upward(rom):
+    from codegen.das3_rom import RHYTHM
+    geo = rom.geo
+    rest_f = geo.contact_f(rom.rest[:6])
+    for g in rom.path:
+        np.testing.assert_allclose(geo.contact_f(g), rest_f, atol=2e-4)
+    # through the resting posture at the resting elevation
+    np.testing.assert_allclose(rom.girdle_on_path(rom.rest[7]), rom.rest[:6], atol=2e-3)
+    # the scapula turns about its plane normal by RHYTHM per rad of GHz, and AI moves laterally
+    z0, z1 = 0.6, 0.7
+    R0, _ = geo.scapula(rom.girdle_on_path(z0))
+    R1, _ = geo.scapula(rom.girdle_on_path(z1))
+    W = R0.T @ R1
+    angle = np.arctan2(geo.normal @ np.array([W[2, 1] - W[1, 2], W[0, 2] - W[2, 0], W[1, 0] - W[0, 1]]) / 2,
+                       (np.trace(W) - 1) / 2)
+    assert abs(angle) == pytest.approx(RHYTHM * (z1 - z0), rel=0.05)
+    ai0 = geo.scapula(rom.girdle_on_path(z0))
+    ai1 = geo.scapula(rom.girdle_on_path(z1))
+    assert (ai1[1] + ai1[0] @ geo.ai)[0] > (ai0[1] + ai0[0] @ geo.ai)[0]
+
+
+def test_samples_stay_in_the_region(rom):
+    from codegen.das3_rom import ARM_DOFS, ARM_ROM, GIRDLE_DOFS
+    P = rom.sample(32, 3)
+    np.testing.assert_array_equal(P, rom.sample(32, 3))             # reproducible by seed
+    for j, d in enumerate(GIRDLE_DOFS):
+        assert np.all(P[:, j] >= rom.girdle_range[d][0]) and np.all(P[:, j] <= rom.girdle_range[d][1])
+    for j, d in enumerate(ARM_DOFS):
+        assert np.all(P[:, 6 + j] >= ARM_ROM[d][0]) and np.all(P[:, 6 + j] <= ARM_ROM[d][1])
+    # near the path, not spread over the girdle box: within 4 scatter SDs of the path in every DOF
+    dev = P[:, :6] - rom.girdle_on_path(P[:, 7])
+    assert np.abs(dev).max() < 4 * 0.05 + 1e-9
+    f = np.array([rom.geo.contact_f(p[:6]) for p in P])
+    assert f.min() > -0.15 and f.max() < 0.1                        # TS and AI within ~5 mm of the thorax
+
+
+@pytest.mark.opensim
+def test_sampler_against_opensim_length_derivative(rom):
+    pytest.importorskip("opensim", reason="opensim (pip install opensim) is not installed")
+    els = [{"name": "trapclav1", "osim_name": "trap_clav_1"}, {"name": "serrant1", "osim_name": "serr_ant_1"},
+           {"name": "bicl", "osim_name": "bic_l"}]
+    from codegen.das3_source import read_model_struct
+    osim_names = {e.name: e.osim_name for e in read_model_struct(DAS3 / "model_struct.mat").elements}
+    for e in els:
+        e["osim_name"] = osim_names[e["name"]]
+    s = dp.sample_poses(DAS3 / "das3.osim", els, rom.sample(4, 9), processes=1)
+    assert [list(np.array(DAS3_DOFS)[c]) for c in s["cross"]] == [DAS3_DOFS[:3], DAS3_DOFS[:6], DAS3_DOFS[6:]]
+    for k in range(3):
+        c = s["cross"][k]
+        np.testing.assert_allclose(s["ma"][:, k, c], s["ma_fd"][:, k, c], atol=2e-3)
+        assert np.all(np.isnan(s["ma"][:, k, ~c]))
+    assert np.all((s["length"] > 0.05) & (s["length"] < 0.6))
