@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from conftest import DAS3
+from conftest import DAS3, ROOT
 from codegen import das3_paths as dp
 from codegen.das3_chain import DAS3_DOFS
 
@@ -115,3 +115,54 @@ def test_sampler_against_opensim_length_derivative(rom):
         np.testing.assert_allclose(s["ma"][:, k, c], s["ma_fd"][:, k, c], atol=2e-3)
         assert np.all(np.isnan(s["ma"][:, k, ~c]))
     assert np.all((s["length"] > 0.05) & (s["length"] < 0.6))
+
+
+PATHS = ROOT / "models" / "das3_paths.json"
+# Bounds for the committed fits on a fresh 32-pose sample (seed 987). Achieved: 129 of 138 elements meet
+# the criterion at every scored pose, 0.80% of element-poses over it (docs/das3_path_accuracy.md, 512
+# poses: 118, 0.7%; most misses are single poses). About 1.5x the achieved values, 7 elements of slack.
+MIN_FRESH_PASSING = 122
+MAX_FRESH_OVER = 0.012
+
+
+@pytest.fixture(scope="module")
+def fitted():
+    if not PATHS.exists():
+        pytest.skip(f"{PATHS} not present")
+    import json
+    return json.loads(PATHS.read_text())
+
+
+def test_fitted_paths_file_is_consistent(fitted):
+    assert fitted["schema"] == "armrt-das3-paths" and fitted["schema_version"] == 1
+    assert fitted["dofs"] == DAS3_DOFS and len(fitted["elements"]) == 138
+    joints = [DAS3_DOFS[0:3], DAS3_DOFS[3:6], DAS3_DOFS[6:9], DAS3_DOFS[9:10], DAS3_DOFS[10:11]]
+    for e in fitted["elements"]:
+        lp = e["length_poly"]
+        # the DOFs of consecutive whole joints, as the serial chain gives
+        spans = [j for j in joints if set(j) & set(e["dofs"])]
+        assert e["dofs"] == [d for j in spans for d in j] and spans == joints[joints.index(spans[0]):][:len(spans)]
+        assert lp["dofs"] == e["dofs"]
+        E = np.asarray(lp["exponents"])
+        assert E.shape == (len(lp["coefs"]), len(e["dofs"])) and E.min() >= 0 and E.sum(axis=1).max() <= 16
+        f = e["fit"]
+        assert f["pass"] == (f["max_err_m"] < f["criterion_m"]) and f["pass"] == (f["n_over"] == 0)
+
+
+@pytest.mark.opensim
+def test_fitted_paths_against_a_fresh_opensim_sample(fitted, rom):
+    """The committed fits on poses neither fitted nor scored before (seed 987): the bounds of
+    docs/das3_path_accuracy.md with slack for the smaller sample."""
+    pytest.importorskip("opensim", reason="opensim (pip install opensim) is not installed")
+    from codegen import opensim_geometry as og
+    els = [{"name": e["name"], "osim_name": e["osim_name"]} for e in fitted["elements"]]
+    s = dp.sample_poses(DAS3 / "das3.osim", els, rom.sample(32, 987), processes=2)
+    for k, e in enumerate(fitted["elements"]):
+        assert [d for d, c in zip(DAS3_DOFS, s["cross"][k]) if c] == e["dofs"], e["name"]
+    pred = [dp.polynomial_moment_arms(e["length_poly"]["exponents"], e["length_poly"]["coefs"], e["dofs"], s["q"])
+            for e in fitted["elements"]]
+    stats = dp.score(s, pred, og.wrap_jumps(s))
+    n_pass = sum(st["pass"] for st in stats)
+    over = sum(st["n_over"] for st in stats) / sum(st["n_scored"] for st in stats)
+    print(f"fresh sample: {n_pass}/138 pass, {100 * over:.2f}% element-poses over")
+    assert n_pass >= MIN_FRESH_PASSING and over <= MAX_FRESH_OVER
