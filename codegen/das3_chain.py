@@ -78,3 +78,25 @@ def das3_bodies(osim_path: str | Path) -> list[dict]:
     if got != DAS3_DOFS:
         raise ModelInputError(f"das3.osim: the chain carries {got}, expected {DAS3_DOFS} in this order")
     return out
+
+
+def girdle_points(model_struct_path: str | Path) -> list[tuple[str, str, list[float]]]:
+    """(label, body, point in body coordinates, m) of the points the girdle forces act at, from
+    model_struct.mat: TS and AI (the scapula's contact points on the thorax) and the conoid ligament's
+    origin (clavicle) and insertion (scapula)."""
+    import scipy.io as sio
+    try:
+        m = sio.loadmat(model_struct_path, squeeze_me=True, struct_as_record=False)["model"]
+    except Exception as exc:  # scipy raises several types for corrupt files
+        raise ModelInputError(f"{model_struct_path}: not a readable DAS3 model_struct ({exc})") from None
+    out = []
+    for label, body, field in [("TS", "scapula", "TSprojection"), ("AI", "scapula", "AIprojection"),
+                               ("conoid_origin", "clavicle", "conoid_origin"),
+                               ("conoid_insertion", "scapula", "conoid_insertion")]:
+        if not hasattr(m, field):
+            raise ModelInputError(f"{model_struct_path}: model has no field '{field}'")
+        v = np.ravel(np.asarray(getattr(m, field), dtype=float))
+        if v.shape != (3,) or not np.all(np.isfinite(v)) or np.abs(v).max() > 0.5:
+            raise ModelInputError(f"{model_struct_path}: model.{field} must be 3 finite coordinates (m), got {v}")
+        out.append((label, body, v.tolist()))
+    return out

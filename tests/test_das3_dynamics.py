@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from conftest import DAS3, ROOT
-from codegen.das3_chain import BASE, DAS3_DOFS, OSIM_DOF, das3_bodies
+from codegen.das3_chain import BASE, DAS3_DOFS, OSIM_DOF, das3_bodies, girdle_points
 from codegen.eom_chain import NumericChain, generate_source
 
 RTOL = 1e-9
@@ -25,6 +25,7 @@ void h_mass_matrix(const double* q, double* M) { d::mass_matrix(q, M); }
 void h_bias_force(const double* q, const double* qd, const double* g, double* b) { d::bias_force(q, qd, g, b); }
 void h_dynamics(const double* q, const double* qd, const double* g, double* M, double* b) { d::dynamics(q, qd, g, M, b); }
 void h_body_poses(const double* q, double* R, double* p) { d::body_poses(q, R, p); }
+void h_points(const double* q, double* p, double* J) { d::points(q, p, J); }
 }
 """
 
@@ -84,6 +85,11 @@ class Lib:
         self.lib.h_dynamics(*(self._p(np.ascontiguousarray(x, float)) for x in (q, qd, g)), self._p(M), self._p(b))
         return M, b
 
+    def points(self, q):
+        p, J = np.zeros((4, 3)), np.zeros((4, 3, N))
+        self.lib.h_points(self._p(np.ascontiguousarray(q, float)), self._p(p), self._p(J))
+        return p, J
+
     def body_poses(self, q):
         R, p = np.zeros((6, 3, 3)), np.zeros((6, 3))
         self.lib.h_body_poses(self._p(np.ascontiguousarray(q, float)), self._p(R), self._p(p))
@@ -96,7 +102,7 @@ def gen(bodies, tmp_path_factory):
     if cxx is None:
         pytest.skip("no C++ compiler (g++) on PATH")
     out = tmp_path_factory.mktemp("das3_dynamics")
-    header, source, _ = generate_source(DAS3_DOFS, bodies, BASE, "das3")
+    header, source, _ = generate_source(DAS3_DOFS, bodies, BASE, "das3", points=girdle_points(DAS3 / "model_struct.mat"))
     (out / "das3_dynamics.h").write_text(header)
     (out / "das3_dynamics.cc").write_text(source)
     (out / "harness.cc").write_text(HARNESS)
@@ -130,6 +136,26 @@ def test_generated_code_matches_its_python_twin(gen, ref, ranges):
             Rr, pr = ref.body_pose(q, name)
             np.testing.assert_allclose(R[k], Rr, atol=1e-14)
             np.testing.assert_allclose(p[k], pr, atol=1e-14)
+
+
+def test_girdle_points_and_jacobians(gen, ref, ranges):
+    """TS, AI, conoid origin and insertion: positions against the twin, dp/dq against central differences."""
+    pts = girdle_points(DAS3 / "model_struct.mat")
+    assert [(label, body) for label, body, _ in pts] == [("TS", "scapula"), ("AI", "scapula"),
+                                                         ("conoid_origin", "clavicle"), ("conoid_insertion", "scapula")]
+    h = 1e-7
+    for q, *_ in random_states(ranges, 5, 6):
+        p, J = gen.points(q)
+        for k, (_, body, x) in enumerate(pts):
+            pr, Jr = ref.point(q, body, x)
+            np.testing.assert_allclose(p[k], pr, atol=1e-14)
+            np.testing.assert_allclose(J[k], Jr, atol=1e-14)
+            Jfd = np.array([(ref.point(q + h * e, body, x)[0] - ref.point(q - h * e, body, x)[0]) / (2 * h)
+                            for e in np.eye(N)]).T
+            np.testing.assert_allclose(J[k], Jfd, atol=1e-8)
+            # only the DOFs above the body move the point
+            above = 3 if body == "clavicle" else 6
+            assert np.all(J[k][:, above:] == 0)
 
 
 def test_mass_matrix_symmetric_positive_definite(gen, ranges):
