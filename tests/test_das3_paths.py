@@ -197,3 +197,35 @@ def test_direction_sampler_matches_the_das2_sampler_with_the_girdle_at_rest(rom)
         old._set(np.array(arm))
         d_old = np.array([old._direction(k) for k in range(2)])
         np.testing.assert_allclose(new.sample(np.concatenate([rom.rest[:6], arm])), d_old, atol=1e-12)
+
+
+def test_fit_element_handles_girdle_dof_counts():
+    """A 9-DOF element (SC, AC, GH, as latissimus dorsi) from a known smooth length: the fit meets the
+    criterion on validation poses, with the budgets das3_fit adds for more than 5 DOFs."""
+    from codegen import das3_fit
+    rng = np.random.default_rng(2)
+    cols = np.zeros(11, bool)
+    cols[:9] = True
+
+    def length(q):
+        x = q[:, :9]
+        return 0.25 + 0.03 * np.sin(x[:, 0] + 0.5 * x[:, 6]) + 0.02 * x[:, 1] * x[:, 7] - 0.01 * x[:, 4] ** 2
+
+    def sample(n):
+        q = rng.uniform(-0.5, 0.5, (n, 11))
+        h = 1e-6
+        ma = np.full((n, 1, 11), np.nan)
+        for j in np.flatnonzero(cols):
+            e = np.zeros(11)
+            e[j] = h
+            ma[:, 0, j] = -(length(q + e) - length(q - e)) / (2 * h)
+        return {"q": q, "length": length(q)[:, None], "ma": ma, "cross": cols[None, :]}
+
+    s_tr, s_va = sample(600), sample(300)
+    no_jumps = np.zeros((600, 1), bool), np.zeros((300, 1), bool)
+    fit = das3_fit.fit_element(0, s_tr, s_va, *no_jumps)
+    assert fit["dofs"] == DAS3_DOFS[:9] and len(fit["coefs"]) <= das3_fit.EXTRA_EXT_TERMS[9]
+    s_te = sample(200)
+    pred = dp.polynomial_moment_arms(fit["exponents"], fit["coefs"], fit["dofs"], s_te["q"])
+    err = np.abs(pred[:, :9] - s_te["ma"][:, 0, :9]).max()
+    assert err < max(0.1 * np.abs(s_te["ma"][:, 0, :9]).max(), 2e-3)
