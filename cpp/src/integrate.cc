@@ -11,11 +11,11 @@
 namespace armrt {
 
 const char* state_name(const Model& m, int index, char* buf, int buflen) {
-  const int n = m.num_elements;
-  if (index < kQd) std::snprintf(buf, buflen, "q[%s]", m.def->dofs[index].name);
-  else if (index < kLce) std::snprintf(buf, buflen, "qdot[%s]", m.def->dofs[index - kQd].name);
-  else if (index < kLce + n) std::snprintf(buf, buflen, "lce[%s]", m.def->elements[index - kLce].name);
-  else std::snprintf(buf, buflen, "activation[%s]", m.def->elements[index - kLce - n].name);
+  const int iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
+  if (index < iqd) std::snprintf(buf, buflen, "q[%s]", m.def->dofs[index].name);
+  else if (index < il) std::snprintf(buf, buflen, "qdot[%s]", m.def->dofs[index - iqd].name);
+  else if (index < ia) std::snprintf(buf, buflen, "lce[%s]", m.def->elements[index - il].name);
+  else std::snprintf(buf, buflen, "activation[%s]", m.def->elements[index - ia].name);
   return buf;
 }
 
@@ -29,10 +29,11 @@ bool check_state(const Model& m, Data& d) {
       return false;
     }
   }
-  for (int j = 0; j < kNumDofs; ++j) {
-    if (std::fabs(d.x[kQd + j]) > m.max_joint_speed) {
+  const int iqd = qd_offset(m);
+  for (int j = 0; j < m.num_dofs; ++j) {
+    if (std::fabs(d.x[iqd + j]) > m.max_joint_speed) {
       d.status = Status::kTooFast;
-      d.bad_index = kQd + j;
+      d.bad_index = iqd + j;
       d.bad_time = d.time;
       return false;
     }
@@ -40,17 +41,17 @@ bool check_state(const Model& m, Data& d) {
   // The physical domain (model.h): an integrator that cannot take the step shows here long before the
   // joint angles are visibly wrong; the forces clamp lce at min_lce, so without this check a state below
   // it would go on silently.
-  const int n = m.num_elements, ia = act_offset(m);
+  const int n = m.num_elements, iq = q_offset(m), il = lce_offset(m), ia = act_offset(m);
   int bad = -1;
   for (int i = n - 1; i >= 0; --i) {
-    const double lce = d.x[kLce + i], a = d.x[ia + i];
-    if (lce < m.element[i].min_lce || lce > m.element[i].max_lce) bad = kLce + i;
+    const double lce = d.x[il + i], a = d.x[ia + i];
+    if (lce < m.element[i].min_lce || lce > m.element[i].max_lce) bad = il + i;
     if (a < -kActivationTolerance || a > 1.0 + kActivationTolerance) bad = ia + i;
   }
-  for (int j = kNumDofs - 1; j >= 0; --j) {
+  for (int j = m.num_dofs - 1; j >= 0; --j) {
     const DofParams& dof = m.def->dofs[j];
-    if (d.x[kQ + j] < dof.range_min - kJointRangeMargin || d.x[kQ + j] > dof.range_max + kJointRangeMargin)
-      bad = kQ + j;
+    if (d.x[iq + j] < dof.range_min - kJointRangeMargin || d.x[iq + j] > dof.range_max + kJointRangeMargin)
+      bad = iq + j;
   }
   if (bad >= 0) {
     d.status = Status::kOutOfDomain;
@@ -77,7 +78,7 @@ bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record
   // of degrees off CVODE, before anything diverges).
   if (dt * -m.rest_fibre_rate > explicit_stability_limit(integrator)) {
     d.status = Status::kUnstableStep;
-    d.bad_index = kLce + m.rest_fibre_element;
+    d.bad_index = lce_offset(m) + m.rest_fibre_element;
     d.bad_time = d.time;
     return false;
   }

@@ -85,14 +85,14 @@ void Simulator::reset(const double* q, const double* qd, const double* activatio
   data.excitation = excitation;
   data.hand_force = hand_force;
   data.hand_moment = hand_moment;
-  if (qd) for (int j = 0; j < kNumDofs; ++j) data.x[kQd + j] = qd[j];
+  if (qd) for (int j = 0; j < model.num_dofs; ++j) data.x[qd_offset(model) + j] = qd[j];
   if (activation) {
     double L[kMaxElements];
-    model.def->muscle_lengths(&data.x[kQ], L);
-    const int ia = act_offset(model);
+    model.def->muscle_lengths(&data.x[q_offset(model)], L);
+    const int ia = act_offset(model), il = lce_offset(model);
     for (int i = 0; i < model.num_elements; ++i) {
       data.x[ia + i] = activation[i];
-      data.x[kLce + i] = muscle_equilibrium_lce(model.element[i], model.fibre_damping, L[i], activation[i]);
+      data.x[il + i] = muscle_equilibrium_lce(model.element[i], model.fibre_damping, L[i], activation[i]);
     }
   }
   if (cvode_) cvode_->reinit();
@@ -122,15 +122,15 @@ void Simulator::evaluate_outputs() { forward(model, data, data.x.data(), data.k1
 std::string Simulator::domain_error_message() const {
   char name[96];
   char what[192];
-  const int k = data.bad_index, n = model.num_elements, ia = act_offset(model);
+  const int k = data.bad_index, n = model.num_elements, ia = act_offset(model), il = lce_offset(model);
   const double value = data.x[k];
   state_name(model, k, name, sizeof name);
-  if (k < kQd) {
+  if (k < qd_offset(model)) {
     const DofParams& dof = model.def->dofs[k];
     std::snprintf(what, sizeof what, "%s = %.4g rad is more than %.2g rad beyond its range [%.4g, %.4g] rad", name,
                   value, kJointRangeMargin, dof.range_min, dof.range_max);
-  } else if (k >= kLce && k < kLce + n) {
-    const ElementConstants& e = model.element[k - kLce];
+  } else if (k >= il && k < il + n) {
+    const ElementConstants& e = model.element[k - il];
     std::snprintf(what, sizeof what, "fibre length %s = %.4g m is outside its physical range [%.4g, %.4g] m", name,
                   value, e.min_lce, e.max_lce);
   } else if (k >= ia) {

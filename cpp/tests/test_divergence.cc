@@ -10,6 +10,7 @@
 #include "test_util.h"
 
 using namespace armrt;
+using armrt_test::kDas2Dofs, armrt_test::kQ, armrt_test::kQd, armrt_test::kLce;
 
 TEST_SUITE("divergence") {
 
@@ -57,7 +58,7 @@ TEST_CASE("huge joint velocity: kTooFast naming qdot[...] and the time") {
     CHECK_FALSE(sim.step());
     CHECK(sim.data.status == Status::kTooFast);
     REQUIRE(sim.data.bad_index >= kQd);
-    REQUIRE(sim.data.bad_index < kQd + kNumDofs);
+    REQUIRE(sim.data.bad_index < kQd + kDas2Dofs);
     CHECK(std::fabs(sim.data.x[sim.data.bad_index]) > sim.model.max_joint_speed);
     const std::string msg = sim.error_message();
     INFO(msg);
@@ -122,8 +123,8 @@ TEST_CASE("explicit steps beyond the model's stability limit at rest are refused
   // The stiffest fibre at rest, cross-checked by a finite difference of its CE velocity.
   const int i = m.rest_fibre_element;
   const ElementConstants& e = m.element[i];
-  double q[kNumDofs], L[kMaxElements];
-  for (int j = 0; j < kNumDofs; ++j) q[j] = m.def->dofs[j].rest;
+  double q[kDas2Dofs], L[kMaxElements];
+  for (int j = 0; j < kDas2Dofs; ++j) q[j] = m.def->dofs[j].rest;
   m.def->muscle_lengths(q, L);
   const double lce = muscle_equilibrium_lce(e, m.fibre_damping, L[i], 0.0), h = 1e-9;
   const double fd = (muscle_element(e, m.fibre_damping, L[i], lce + h, 0.0).fibre_velocity -
