@@ -1,7 +1,9 @@
-"""Symbolic equations of motion of the 5-DOF arm chain (scapula fixed), by Kane's method.
+"""Symbolic equations of motion of the arm chain (scapula fixed), by Kane's method.
 
 The chain is scapula -[gh: y, z, y body-fixed rotations]-> humerus -[hu pin]-> ulna -[ur pin]-> radius
--[weld]-> hand. Every revolute (the three GH rotations count as three revolutes through massless
+-[weld]-> hand (das2: 5 DOFs). Any joint may instead be a weld with an optional fixed `rotation` (a
+DOF fixed at a posture: the elbow-forearm models weld the humerus at fixed GH angles), so the number
+of DOFs is the number of joint axes in the model file. Every revolute (the three GH rotations count as three revolutes through massless
 intermediate frames at one point) contributes a partial angular velocity s_j (its axis, scapula
 frame) and partial velocities s_j x (P - o_j) for points P distal to it. Kane's equations
 F_r + F*_r = 0 then give
@@ -19,7 +21,6 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-NDOF = 5
 
 
 def _vec(v):
@@ -63,12 +64,12 @@ class ChainExprs:
     q: list
     qd: list
     g: list
-    mass_matrix: sp.Matrix          # 5x5
-    bias_force: sp.Matrix           # 5x1
+    mass_matrix: sp.Matrix          # ndof x ndof
+    bias_force: sp.Matrix           # ndof x 1
     hand_position: sp.Matrix        # 3x1
-    hand_jv: sp.Matrix              # 3x5
-    hand_jw: sp.Matrix              # 3x5
-    momentum_a: sp.Matrix           # 3x5
+    hand_jv: sp.Matrix              # 3 x ndof
+    hand_jw: sp.Matrix              # 3 x ndof
+    momentum_a: sp.Matrix           # 3 x ndof
     momentum_c: sp.Matrix           # 3x1
     body_rotations: list            # 4 x (3x3)
     body_origins: list              # 4 x (3x1)
@@ -84,6 +85,7 @@ def _exact_axis(axis):
 
 def derive(model: dict) -> ChainExprs:
     """Kane's equations of the chain described by a validated model file dict."""
+    NDOF = len(model["dofs"])
     q = list(sp.symbols(f"q0:{NDOF}", real=True))
     qd = list(sp.symbols(f"qd0:{NDOF}", real=True))
     g = sp.Matrix(sp.symbols("g0:3", real=True))
@@ -110,6 +112,9 @@ def derive(model: dict) -> ChainExprs:
         # origin acceleration at qdd = 0: carried by the parent's rotation
         a_origin = a0[parent] + alpha0[parent].cross(r_loc) + wp.cross(wp.cross(r_loc))
         Rc = Rp
+        if jt.get("rotation") is not None:
+            # A joint fixed at a posture: its child frame is rotated, and nothing moves at it.
+            Rc = Rc * _mat(jt["rotation"])
         wc, alc = wp, alpha0[parent]
         joints = list(joints_upto[parent])
         for axis, dof in zip(jt["axes"], jt["dofs"]):

@@ -21,7 +21,8 @@ from . import cxx, eom
 
 SCHEMA = "armrt-model"
 SCHEMA_VERSION = 1
-NDOF = eom.NDOF
+# Capacity of the engine (cpp/include/armrt/model.h kMaxDofs); a model has 1 to MAX_DOFS DOFs.
+MAX_DOFS = 16
 BODY_CHAIN = [("humerus", "scapula"), ("ulna", "humerus"), ("radius", "ulna"), ("hand", "radius")]
 JOINT_AXES = {"gimbal_yzy": 3, "pin": 1, "weld": 0}
 
@@ -119,7 +120,9 @@ def validate(model) -> dict:
         raise ModelFileError(f"model file: field 'name' must be a C identifier, got {name!r}")
     _vector(model, "gravity_thorax", "")
 
-    dofs = _list(model, "dofs", "", NDOF)
+    dofs = _list(model, "dofs", "")
+    if not 1 <= len(dofs) <= MAX_DOFS:
+        raise ModelFileError(f"model file: field 'dofs' has {len(dofs)} entries; the engine takes 1 to {MAX_DOFS}")
     dof_names = []
     for i, d in enumerate(dofs):
         w = f"dofs[{i}]"
@@ -129,7 +132,7 @@ def validate(model) -> dict:
         if not lo < hi:
             raise ModelFileError(f"model file: field '{w}.range' must have lo < hi")
         _number(d, "rest", w)
-    if len(set(dof_names)) != NDOF:
+    if len(set(dof_names)) != len(dof_names):
         raise ModelFileError("model file: field 'dofs' has repeated names")
 
     scap = _get(model, "scapula", "")
@@ -160,6 +163,14 @@ def validate(model) -> dict:
                 raise ModelFileError(f"model file: field '{jw}.axes[{k}]' must be a unit vector")
         jd = _list(jt, "dofs", jw, naxes)
         used_dofs.extend(jd)
+        if jt.get("rotation") is not None:
+            # A DOF fixed at a posture (elbow-forearm models weld the humerus at fixed GH angles).
+            Rj = _array(jt["rotation"], (3, 3), f"{jw}.rotation")
+            err = max(abs(sum(Rj[k][r] * Rj[k][c] for k in range(3)) - (r == c)) for r in range(3) for c in range(3))
+            det = (Rj[0][0] * (Rj[1][1] * Rj[2][2] - Rj[1][2] * Rj[2][1]) - Rj[0][1] * (Rj[1][0] * Rj[2][2] - Rj[1][2] * Rj[2][0])
+                   + Rj[0][2] * (Rj[1][0] * Rj[2][1] - Rj[1][1] * Rj[2][0]))
+            if err > 1e-9 or det < 0:
+                raise ModelFileError(f"model file: field '{jw}.rotation' must be a rotation matrix (orthonormal, det +1)")
     if used_dofs != dof_names:
         raise ModelFileError(f"model file: field 'bodies[].joint.dofs' must be {dof_names} in chain order, "
                              f"got {used_dofs}")
@@ -183,34 +194,11 @@ def validate(model) -> dict:
         raise ModelFileError("model file: field 'elements' is empty")
     el_names = []
     for i, e in enumerate(elements):
-        w = f"elements[{i}]"
-        el_names.append(_string(e, "name", w))
-        _string(e, "muscle", w)
-        for k in ("fmax", "lceopt", "lslack", "vmax", "tact", "tdeact", "peeslack", "mass"):
-            _number(e, k, w, positive=True)
-        _number(e, "pennopt", w, nonneg=True)
-        edofs = _list(e, "dofs", w)
-        if not edofs or any(d not in dof_names for d in edofs):
-            raise ModelFileError(f"model file: field '{w}.dofs' must name DOFs from {dof_names}")
-        cgh = _get(e, "crosses_gh", w)
-        if not isinstance(cgh, bool):
-            raise ModelFileError(f"model file: field '{w}.crosses_gh' must be true/false")
-        lp = _get(e, "length_poly", w)
-        lpd = _list(lp, "dofs", f"{w}.length_poly")
-        if any(d not in dof_names for d in lpd) or len(set(lpd)) != len(lpd):
-            raise ModelFileError(f"model file: field '{w}.length_poly.dofs' must name distinct DOFs from {dof_names}")
-        _poly(lp, f"{w}.length_poly", len(lpd))
-        gd = _get(e, "gh_direction", w)
-        if cgh:
-            if not isinstance(gd, dict):
-                raise ModelFileError(f"model file: field '{w}.gh_direction' must be an object for a GH-crossing element")
-            gdd = _list(gd, "dofs", f"{w}.gh_direction")
-            if any(d not in dof_names for d in gdd) or len(set(gdd)) != len(gdd):
-                raise ModelFileError(f"model file: field '{w}.gh_direction.dofs' must name distinct DOFs")
-            for c in "xyz":
-                _poly(_get(gd, c, f"{w}.gh_direction"), f"{w}.gh_direction.{c}", len(gdd))
-        elif gd is not None:
-            raise ModelFileError(f"model file: field '{w}.gh_direction' must be null for an element not crossing GH")
+        try:
+            _validate_element(e, i, dof_names, el_names)
+        except ModelFileError as exc:
+            name = e.get("name") if isinstance(e, dict) else None
+            raise ModelFileError(f"{exc} (element {name!r})" if isinstance(name, str) else str(exc)) from None
     if len(set(el_names)) != len(el_names):
         raise ModelFileError("model file: field 'elements' has repeated names")
 
@@ -231,6 +219,43 @@ def validate(model) -> dict:
             raise ModelFileError(f"model file: field 'groups.{g}' must list muscle names")
     check_sense(model)
     return model
+
+
+def _validate_element(e, i, dof_names, el_names):
+    """Schema checks of elements[i]; ModelFileError names the field (validate() adds the element name)."""
+    w = f"elements[{i}]"
+    el_names.append(_string(e, "name", w))
+    _string(e, "muscle", w)
+    if e.get("max_activation") is not None:
+        # The participant's `maxact` (0 = paralysed, 1 = intact); absent means 1.
+        _number(e, "max_activation", w, nonneg=True)
+        if e["max_activation"] > 1.0:
+            raise ModelFileError(f"model file: field '{w}.max_activation' must lie in [0, 1], got {e['max_activation']!r}")
+    for k in ("fmax", "lceopt", "lslack", "vmax", "tact", "tdeact", "peeslack", "mass"):
+        _number(e, k, w, positive=True)
+    _number(e, "pennopt", w, nonneg=True)
+    edofs = _list(e, "dofs", w)
+    if not edofs or any(d not in dof_names for d in edofs):
+        raise ModelFileError(f"model file: field '{w}.dofs' must name DOFs from {dof_names}")
+    cgh = _get(e, "crosses_gh", w)
+    if not isinstance(cgh, bool):
+        raise ModelFileError(f"model file: field '{w}.crosses_gh' must be true/false")
+    lp = _get(e, "length_poly", w)
+    lpd = _list(lp, "dofs", f"{w}.length_poly")
+    if any(d not in dof_names for d in lpd) or len(set(lpd)) != len(lpd):
+        raise ModelFileError(f"model file: field '{w}.length_poly.dofs' must name distinct DOFs from {dof_names}")
+    _poly(lp, f"{w}.length_poly", len(lpd))
+    gd = _get(e, "gh_direction", w)
+    if cgh:
+        if not isinstance(gd, dict):
+            raise ModelFileError(f"model file: field '{w}.gh_direction' must be an object for a GH-crossing element")
+        gdd = _list(gd, "dofs", f"{w}.gh_direction")
+        if any(d not in dof_names for d in gdd) or len(set(gdd)) != len(gdd):
+            raise ModelFileError(f"model file: field '{w}.gh_direction.dofs' must name distinct DOFs")
+        for c in "xyz":
+            _poly(_get(gd, c, f"{w}.gh_direction"), f"{w}.gh_direction.{c}", len(gdd))
+    elif gd is not None:
+        raise ModelFileError(f"model file: field '{w}.gh_direction' must be null for an element not crossing GH")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -316,25 +341,36 @@ def check_sense(model: dict) -> None:
         if not gl[k] < math.pi / 2:
             _fail(f"glenoid.{k}", f"is {gl[k]} rad; a rim half-angle is below pi/2")
     for i, e in enumerate(model["elements"]):
-        w = f"elements[{i}]"
-        for k, (lo, hi) in ELEMENT_BOUNDS.items():
-            if not lo <= e[k] <= hi:
-                _fail(f"{w}.{k}", f"is {e[k]}, outside the physical range [{lo}, {hi}]")
-        if not e["pennopt"] < math.pi / 2:
-            _fail(f"{w}.pennopt", f"is {e['pennopt']} rad; pennation is below pi/2")
-        if set(e["length_poly"]["dofs"]) - set(e["dofs"]):
-            _fail(f"{w}.length_poly.dofs", f"{e['length_poly']['dofs']} include DOFs the element does not cross "
-                                           f"({e['dofs']})")
-        polys = [("length_poly", e["length_poly"])]
-        if e["gh_direction"]:
-            polys += [(f"gh_direction.{c}", e["gh_direction"][c]) for c in "xyz"]
-        for name, poly in polys:
-            if len(poly["exponents"]) > MAX_POLY_TERMS:
-                _fail(f"{w}.{name}.exponents", f"has {len(poly['exponents'])} terms (at most {MAX_POLY_TERMS})")
-            for t, row in enumerate(poly["exponents"]):
-                if sum(row) > MAX_POLY_DEGREE:
-                    _fail(f"{w}.{name}.exponents[{t}]", f"has degree {sum(row)} (at most {MAX_POLY_DEGREE}; "
-                                                        f"the path fits use up to 9)")
+        try:
+            _check_element_sense(e, i)
+        except ModelFileError as exc:
+            raise ModelFileError(f"{exc} (element {e['name']!r})") from None
+    _check_partition(model)
+
+
+def _check_element_sense(e: dict, i: int) -> None:
+    w = f"elements[{i}]"
+    for k, (lo, hi) in ELEMENT_BOUNDS.items():
+        if not lo <= e[k] <= hi:
+            _fail(f"{w}.{k}", f"is {e[k]}, outside the physical range [{lo}, {hi}]")
+    if not e["pennopt"] < math.pi / 2:
+        _fail(f"{w}.pennopt", f"is {e['pennopt']} rad; pennation is below pi/2")
+    if set(e["length_poly"]["dofs"]) - set(e["dofs"]):
+        _fail(f"{w}.length_poly.dofs", f"{e['length_poly']['dofs']} include DOFs the element does not cross "
+                                       f"({e['dofs']})")
+    polys = [("length_poly", e["length_poly"])]
+    if e["gh_direction"]:
+        polys += [(f"gh_direction.{c}", e["gh_direction"][c]) for c in "xyz"]
+    for name, poly in polys:
+        if len(poly["exponents"]) > MAX_POLY_TERMS:
+            _fail(f"{w}.{name}.exponents", f"has {len(poly['exponents'])} terms (at most {MAX_POLY_TERMS})")
+        for t, row in enumerate(poly["exponents"]):
+            if sum(row) > MAX_POLY_DEGREE:
+                _fail(f"{w}.{name}.exponents[{t}]", f"has degree {sum(row)} (at most {MAX_POLY_DEGREE}; "
+                                                    f"the path fits use up to 9)")
+
+
+def _check_partition(model: dict) -> None:
     # Element and muscle tables must describe the same partition.
     owner: dict[str, str] = {}
     for i, m in enumerate(model["muscles"]):
@@ -401,11 +437,11 @@ def _banner(model_file: str, digest: str) -> str:
 
 
 def _global_poly(poly: dict, dofs: list, dof_index: dict):
-    """Terms of a polynomial as (coef, exponent tuple over all NDOF dofs)."""
+    """Terms of a polynomial as (coef, exponent tuple over all the model's DOFs)."""
     idx = [dof_index[d] for d in dofs]
     terms = []
     for row, c in zip(poly["exponents"], poly["coefs"]):
-        e = [0] * NDOF
+        e = [0] * len(dof_index)
         for j, k in zip(idx, row):
             e[j] += int(k)
         terms.append((float(c), tuple(e)))
@@ -415,7 +451,8 @@ def _global_poly(poly: dict, dofs: list, dof_index: dict):
 class _Monomials:
     """Shares each monomial (and each power of each q) once per function."""
 
-    def __init__(self):
+    def __init__(self, ndof: int):
+        self.ndof = ndof
         self.names: dict[tuple, str] = {}
         self.order: list[tuple] = []
 
@@ -428,9 +465,9 @@ class _Monomials:
         return self.names[e]
 
     def preamble(self) -> list[str]:
-        maxpow = [max((e[j] for e in self.order), default=0) for j in range(NDOF)]
+        maxpow = [max((e[j] for e in self.order), default=0) for j in range(self.ndof)]
         lines = []
-        for j in range(NDOF):
+        for j in range(self.ndof):
             if maxpow[j] >= 1:
                 lines.append(f"  const double q{j} = q[{j}];")
             for p in range(2, maxpow[j] + 1):
@@ -468,6 +505,10 @@ def _gradient(terms, j):
 
 def paths_source(model: dict, ns: str) -> str:
     dof_index = {d["name"]: i for i, d in enumerate(model["dofs"])}
+    NDOF = len(dof_index)
+    # SIMD lanes: NDOF moment arms and the length in one vector (das2: 5 + 1 in eight).
+    W = 8 if NDOF + 1 <= 8 else 16
+    vt = f"v{W}d"
     els = model["elements"]
     lengths = [_global_poly(e["length_poly"], e["length_poly"]["dofs"], dof_index) for e in els]
 
@@ -505,9 +546,9 @@ def paths_source(model: dict, ns: str) -> str:
     pname = {(0,) * NDOF: "1.0"}
     for k, m in enumerate(order):
         gname[m], pname[m] = f"g{k}", f"p{k}"
-    lines = ["  const v8d g_one = {" + ", ".join(["0.0"] * NDOF + ["1.0", "0.0", "0.0"]) + "};"]
+    lines = [f"  const {vt} g_one = {{" + ", ".join(["0.0"] * NDOF + ["1.0"] + ["0.0"] * (W - NDOF - 1)) + "};"]
     for j in range(NDOF):
-        lines.append(f"  const v8d e{j} = {{" + ", ".join("1.0" if k == j else "0.0" for k in range(8)) + "};")
+        lines.append(f"  const {vt} e{j} = {{" + ", ".join("1.0" if k == j else "0.0" for k in range(W)) + "};")
     qs = set()
     parents = {tree[m][1] for m in order}
     for m in order:
@@ -516,23 +557,23 @@ def paths_source(model: dict, ns: str) -> str:
         if m in parents:  # the scalar monomial is only needed by its children
             lines.append(f"  const double {pname[m]} = " + (f"q{j}*{pname[parent]};" if any(parent) else f"q{j};"))
         if any(parent):
-            lines.append(f"  const v8d {gname[m]} = q{j}*{gname[parent]} - {pname[parent]}*e{j};")
+            lines.append(f"  const {vt} {gname[m]} = q{j}*{gname[parent]} - {pname[parent]}*e{j};")
         else:
-            lines.append(f"  const v8d {gname[m]} = q{j}*g_one - e{j};")
+            lines.append(f"  const {vt} {gname[m]} = q{j}*g_one - e{j};")
     body = []
     for i, t in enumerate(lengths):
         parts = [f"{cxx.fmt(c)}*{gname[m]}" for c, m in t if c != 0.0]
         # Two interleaved partial sums halve the chain of dependent multiply-adds per element.
         halves = [" + ".join(parts[0::2]) or "0.0*g_one", " + ".join(parts[1::2]) or "0.0*g_one"]
         expr = f"({halves[0]}) + ({halves[1]})"
-        body.append(f"  {{ const v8d a = {expr};")
+        body.append(f"  {{ const {vt} a = {expr};")
         body.append(f"    std::memcpy(moment_arm + {i * NDOF}, &a, {NDOF} * sizeof(double)); L[{i}] = a[{NDOF}]; }}")
     head = [f"  const double q{j} = q[{j}];" for j in sorted(qs)] or ["  (void)q;"]
     out.append("void muscle_paths(const double* q, double* L, double* moment_arm) {\n"
                + "\n".join(head + lines + body) + "\n}\n")
 
     # gh_directions
-    mono = _Monomials()
+    mono = _Monomials(NDOF)
     body = []
     for i, e in enumerate(els):
         gd = e["gh_direction"]
@@ -551,13 +592,15 @@ def paths_source(model: dict, ns: str) -> str:
 
     return ("#include <cmath>\n#include <cstring>\n\n#include \"" + ns + ".h\"\n\n"
             f"namespace armrt::generated::{ns} {{\n\n"
-            "// Eight doubles, one SIMD register with AVX-512 (two with AVX2): a length and its moment arms.\n"
-            "using v8d = double __attribute__((vector_size(64)));\n\n" + "\n".join(out) + f"\n}}  // namespace armrt::generated::{ns}\n")
+            + ("// Eight doubles, one SIMD register with AVX-512 (two with AVX2): a length and its moment arms.\n"
+               if W == 8 else f"// {W} doubles: a length and its {NDOF} moment arms.\n")
+            + f"using {vt} = double __attribute__((vector_size({8 * W})));\n\n" + "\n".join(out) + f"\n}}  // namespace armrt::generated::{ns}\n")
 
 
 def dynamics_source(model: dict, ns: str) -> tuple[str, dict]:
     ex = eom.derive(model)
     q, qd, g = ex.q, ex.qd, ex.g
+    NDOF = len(q)
     fns = []
     stats = {}
 
@@ -621,6 +664,7 @@ def _arr(vals) -> str:
 def model_source(model: dict, ns: str, digest: str) -> str:
     f = cxx.fmt
     dof_index = {d["name"]: i for i, d in enumerate(model["dofs"])}
+    NDOF = len(dof_index)
     els = model["elements"]
     el_index = {e["name"]: i for i, e in enumerate(els)}
     lines = ["#include \"" + ns + ".h\"", "", f"namespace armrt::generated::{ns} {{", "", "namespace {", ""]
@@ -636,7 +680,8 @@ def model_source(model: dict, ns: str, digest: str) -> str:
         mask = sum(1 << dof_index[d] for d in e["dofs"])
         lines.append(f"    {{{cxx.cstr(e['name'])}, {cxx.cstr(e['muscle'])}, {f(e['fmax'])}, {f(e['lceopt'])}, "
                      f"{f(e['lslack'])}, {f(e['pennopt'])}, {f(e['vmax'])}, {f(e['tact'])}, {f(e['tdeact'])}, "
-                     f"{f(e['peeslack'])}, {f(e['mass'])}, {1 if e['crosses_gh'] else 0}, {mask}}},")
+                     f"{f(e['peeslack'])}, {f(e['mass'])}, {1 if e['crosses_gh'] else 0}, {mask}, "
+                     f"{f(e.get('max_activation', 1.0))}}},")
     lines.append("};")
     lines.append("")
 
