@@ -153,6 +153,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=cmd_experiments)
     from .view import add_cli
     add_cli(sub, _formatter)  # view, animate, export (viser is imported only when `view` runs)
+    from .model_cli import add_cli as add_model_cli
+    add_model_cli(sub, _formatter)  # model import (codegen from the source checkout)
     return ap
 
 
