@@ -204,3 +204,13 @@ def test_generator_refuses_bad_model_naming_field_and_element(model_file, mutate
         validate(m)
     for n in needles:
         assert n in str(err.value)
+
+
+def test_armrt_model_import_writes_the_same_file(participant_dir, tmp_path):
+    cli = pytest.importorskip("armrt.cli", reason="armrt is not built/installed")
+    out = tmp_path / "participant_A_injured.json"
+    assert cli.main(["model", "import", str(participant_dir / "model_struct_A_injured.mat"), "--free", "ELx,PSy",
+                     "--name", "participant_A_injured", "-o", str(out)]) == 0
+    assert out.read_bytes() == (ROOT / "models" / "participant_A_injured.json").read_bytes()
+    assert cli.main(["model", "import", str(participant_dir / "model_struct_A.mat"), "--free", "ELx,SCy",
+                     "-o", str(tmp_path / "bad.json")]) == 2
