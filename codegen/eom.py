@@ -1,7 +1,8 @@
-"""Symbolic equations of motion of the 5-DOF arm chain (scapula fixed), by Kane's method.
+"""Symbolic equations of motion of the arm chain (scapula fixed), by Kane's method.
 
 The chain is scapula -[gh: y, z, y body-fixed rotations]-> humerus -[hu pin]-> ulna -[ur pin]-> radius
--[weld]-> hand. Every revolute (the three GH rotations count as three revolutes through massless
+-[weld]-> hand (das2: 5 DOFs; each joint may also be a weld or a pin, so a model file can free any
+subset of them, e.g. a one-DOF elbow pendulum). Every revolute (the three GH rotations count as three revolutes through massless
 intermediate frames at one point) contributes a partial angular velocity s_j (its axis, scapula
 frame) and partial velocities s_j x (P - o_j) for points P distal to it. Kane's equations
 F_r + F*_r = 0 then give
@@ -18,9 +19,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import sympy as sp
-
-NDOF = 5
-
 
 def _vec(v):
     return sp.Matrix([sp.Float(float(x), 17) for x in v])
@@ -63,12 +61,12 @@ class ChainExprs:
     q: list
     qd: list
     g: list
-    mass_matrix: sp.Matrix          # 5x5
-    bias_force: sp.Matrix           # 5x1
+    mass_matrix: sp.Matrix          # n x n (n = number of DOFs)
+    bias_force: sp.Matrix           # n x 1
     hand_position: sp.Matrix        # 3x1
-    hand_jv: sp.Matrix              # 3x5
-    hand_jw: sp.Matrix              # 3x5
-    momentum_a: sp.Matrix           # 3x5
+    hand_jv: sp.Matrix              # 3 x n
+    hand_jw: sp.Matrix              # 3 x n
+    momentum_a: sp.Matrix           # 3 x n
     momentum_c: sp.Matrix           # 3x1
     body_rotations: list            # 4 x (3x3)
     body_origins: list              # 4 x (3x1)
@@ -84,6 +82,7 @@ def _exact_axis(axis):
 
 def derive(model: dict) -> ChainExprs:
     """Kane's equations of the chain described by a validated model file dict."""
+    NDOF = len(model["dofs"])
     q = list(sp.symbols(f"q0:{NDOF}", real=True))
     qd = list(sp.symbols(f"qd0:{NDOF}", real=True))
     g = sp.Matrix(sp.symbols("g0:3", real=True))

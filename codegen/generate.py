@@ -21,7 +21,8 @@ from . import cxx, eom
 
 SCHEMA = "armrt-model"
 SCHEMA_VERSION = 1
-NDOF = eom.NDOF
+MAX_DOFS = 16        # the engine's capacities (cpp/include/armrt/model.h kMaxDofs, kMaxElements)
+MAX_ELEMENTS = 160
 BODY_CHAIN = [("humerus", "scapula"), ("ulna", "humerus"), ("radius", "ulna"), ("hand", "radius")]
 JOINT_AXES = {"gimbal_yzy": 3, "pin": 1, "weld": 0}
 
@@ -119,7 +120,9 @@ def validate(model) -> dict:
         raise ModelFileError(f"model file: field 'name' must be a C identifier, got {name!r}")
     _vector(model, "gravity_thorax", "")
 
-    dofs = _list(model, "dofs", "", NDOF)
+    dofs = _list(model, "dofs", "")
+    if not 1 <= len(dofs) <= MAX_DOFS:
+        raise ModelFileError(f"model file: field 'dofs' has {len(dofs)} entries; the engine takes 1 to {MAX_DOFS}")
     dof_names = []
     for i, d in enumerate(dofs):
         w = f"dofs[{i}]"
@@ -129,7 +132,7 @@ def validate(model) -> dict:
         if not lo < hi:
             raise ModelFileError(f"model file: field '{w}.range' must have lo < hi")
         _number(d, "rest", w)
-    if len(set(dof_names)) != NDOF:
+    if len(set(dof_names)) != len(dof_names):
         raise ModelFileError("model file: field 'dofs' has repeated names")
 
     scap = _get(model, "scapula", "")
@@ -181,6 +184,9 @@ def validate(model) -> dict:
     elements = _list(model, "elements", "")
     if not elements:
         raise ModelFileError("model file: field 'elements' is empty")
+    if len(elements) > MAX_ELEMENTS:
+        raise ModelFileError(f"model file: field 'elements' has {len(elements)} entries; the engine takes at most "
+                             f"{MAX_ELEMENTS}")
     el_names = []
     for i, e in enumerate(elements):
         w = f"elements[{i}]"
@@ -393,19 +399,20 @@ def load_model(path) -> tuple[dict, str]:
 # ---------------------------------------------------------------------------------------------
 # Code emission
 
-def _banner(model_file: str, digest: str) -> str:
+def _banner(model_file: str, digest: str, command: str | None = None) -> str:
+    command = command or f"python -m codegen.generate --model models/{model_file} --out cpp/generated"
     return (f"// GENERATED FILE - DO NOT EDIT BY HAND.\n"
-            f"// Written by `python -m codegen.generate --model models/{model_file} --out cpp/generated`\n"
+            f"// Written by `{command}`\n"
             f"// from the model file {model_file} (sha256 {digest}).\n"
             f"// Change the model file or the generator and regenerate instead.\n")
 
 
 def _global_poly(poly: dict, dofs: list, dof_index: dict):
-    """Terms of a polynomial as (coef, exponent tuple over all NDOF dofs)."""
+    """Terms of a polynomial as (coef, exponent tuple over all of the model's dofs)."""
     idx = [dof_index[d] for d in dofs]
     terms = []
     for row, c in zip(poly["exponents"], poly["coefs"]):
-        e = [0] * NDOF
+        e = [0] * len(dof_index)
         for j, k in zip(idx, row):
             e[j] += int(k)
         terms.append((float(c), tuple(e)))
@@ -415,7 +422,8 @@ def _global_poly(poly: dict, dofs: list, dof_index: dict):
 class _Monomials:
     """Shares each monomial (and each power of each q) once per function."""
 
-    def __init__(self):
+    def __init__(self, ndof: int):
+        self.ndof = ndof
         self.names: dict[tuple, str] = {}
         self.order: list[tuple] = []
 
@@ -428,9 +436,9 @@ class _Monomials:
         return self.names[e]
 
     def preamble(self) -> list[str]:
-        maxpow = [max((e[j] for e in self.order), default=0) for j in range(NDOF)]
+        maxpow = [max((e[j] for e in self.order), default=0) for j in range(self.ndof)]
         lines = []
-        for j in range(NDOF):
+        for j in range(self.ndof):
             if maxpow[j] >= 1:
                 lines.append(f"  const double q{j} = q[{j}];")
             for p in range(2, maxpow[j] + 1):
@@ -468,6 +476,10 @@ def _gradient(terms, j):
 
 def paths_source(model: dict, ns: str) -> str:
     dof_index = {d["name"]: i for i, d in enumerate(model["dofs"])}
+    NDOF = len(dof_index)
+    # One SIMD vector holds an element's moment arms and its length: 8 doubles up to 7 DOFs, else 16.
+    W = 8 if NDOF + 1 <= 8 else 16
+    vt = f"v{W}d"
     els = model["elements"]
     lengths = [_global_poly(e["length_poly"], e["length_poly"]["dofs"], dof_index) for e in els]
 
@@ -477,8 +489,8 @@ def paths_source(model: dict, ns: str) -> str:
                f"  double moment_arm[{max(1, len(lengths)) * NDOF}];\n  muscle_paths(q, L, moment_arm);\n}}\n")
 
     # muscle_paths: lengths and moment arms -dL/dq in one pass. Each monomial m carries the vector
-    # G(m) = [-dm/dq0, ..., -dm/dq4, m, 0, 0]; every term of a length polynomial adds c G(m) (one 8-wide
-    # multiply-add gives a length and its five moment arms), instead of one scalar polynomial per
+    # G(m) = [-dm/dq0, ..., -dm/dq4, m, 0, 0] (das2; W lanes in general); every term of a length
+    # polynomial adds c G(m) (one 8-wide multiply-add gives a length and its five moment arms), instead of one scalar polynomial per
     # moment arm. G is built along a tree of monomials, each from its parent m' = m / q_j by the
     # product rule: G(q_j m') = q_j G(m') - m' E_j (E_j: unit vector of lane j), two vector operations.
     # The same polynomials summed in another order: results differ by rounding only.
@@ -505,9 +517,9 @@ def paths_source(model: dict, ns: str) -> str:
     pname = {(0,) * NDOF: "1.0"}
     for k, m in enumerate(order):
         gname[m], pname[m] = f"g{k}", f"p{k}"
-    lines = ["  const v8d g_one = {" + ", ".join(["0.0"] * NDOF + ["1.0", "0.0", "0.0"]) + "};"]
+    lines = [f"  const {vt} g_one = {{" + ", ".join(["0.0"] * NDOF + ["1.0"] + ["0.0"] * (W - NDOF - 1)) + "};"]
     for j in range(NDOF):
-        lines.append(f"  const v8d e{j} = {{" + ", ".join("1.0" if k == j else "0.0" for k in range(8)) + "};")
+        lines.append(f"  const {vt} e{j} = {{" + ", ".join("1.0" if k == j else "0.0" for k in range(W)) + "};")
     qs = set()
     parents = {tree[m][1] for m in order}
     for m in order:
@@ -516,23 +528,23 @@ def paths_source(model: dict, ns: str) -> str:
         if m in parents:  # the scalar monomial is only needed by its children
             lines.append(f"  const double {pname[m]} = " + (f"q{j}*{pname[parent]};" if any(parent) else f"q{j};"))
         if any(parent):
-            lines.append(f"  const v8d {gname[m]} = q{j}*{gname[parent]} - {pname[parent]}*e{j};")
+            lines.append(f"  const {vt} {gname[m]} = q{j}*{gname[parent]} - {pname[parent]}*e{j};")
         else:
-            lines.append(f"  const v8d {gname[m]} = q{j}*g_one - e{j};")
+            lines.append(f"  const {vt} {gname[m]} = q{j}*g_one - e{j};")
     body = []
     for i, t in enumerate(lengths):
         parts = [f"{cxx.fmt(c)}*{gname[m]}" for c, m in t if c != 0.0]
         # Two interleaved partial sums halve the chain of dependent multiply-adds per element.
         halves = [" + ".join(parts[0::2]) or "0.0*g_one", " + ".join(parts[1::2]) or "0.0*g_one"]
         expr = f"({halves[0]}) + ({halves[1]})"
-        body.append(f"  {{ const v8d a = {expr};")
+        body.append(f"  {{ const {vt} a = {expr};")
         body.append(f"    std::memcpy(moment_arm + {i * NDOF}, &a, {NDOF} * sizeof(double)); L[{i}] = a[{NDOF}]; }}")
     head = [f"  const double q{j} = q[{j}];" for j in sorted(qs)] or ["  (void)q;"]
     out.append("void muscle_paths(const double* q, double* L, double* moment_arm) {\n"
                + "\n".join(head + lines + body) + "\n}\n")
 
     # gh_directions
-    mono = _Monomials()
+    mono = _Monomials(NDOF)
     body = []
     for i, e in enumerate(els):
         gd = e["gh_direction"]
@@ -551,11 +563,13 @@ def paths_source(model: dict, ns: str) -> str:
 
     return ("#include <cmath>\n#include <cstring>\n\n#include \"" + ns + ".h\"\n\n"
             f"namespace armrt::generated::{ns} {{\n\n"
-            "// Eight doubles, one SIMD register with AVX-512 (two with AVX2): a length and its moment arms.\n"
-            "using v8d = double __attribute__((vector_size(64)));\n\n" + "\n".join(out) + f"\n}}  // namespace armrt::generated::{ns}\n")
+            + ("// Eight doubles, one SIMD register with AVX-512 (two with AVX2): a length and its moment arms.\n"
+               if W == 8 else "// Sixteen doubles (two AVX-512 registers): a length and its moment arms.\n")
+            + f"using {vt} = double __attribute__((vector_size({8 * W})));\n\n" + "\n".join(out) + f"\n}}  // namespace armrt::generated::{ns}\n")
 
 
 def dynamics_source(model: dict, ns: str) -> tuple[str, dict]:
+    NDOF = len(model["dofs"])
     ex = eom.derive(model)
     q, qd, g = ex.q, ex.qd, ex.g
     fns = []
@@ -621,6 +635,7 @@ def _arr(vals) -> str:
 def model_source(model: dict, ns: str, digest: str) -> str:
     f = cxx.fmt
     dof_index = {d["name"]: i for i, d in enumerate(model["dofs"])}
+    NDOF = len(dof_index)
     els = model["elements"]
     el_index = {e["name"]: i for i, e in enumerate(els)}
     lines = ["#include \"" + ns + ".h\"", "", f"namespace armrt::generated::{ns} {{", "", "namespace {", ""]
@@ -720,12 +735,13 @@ def model_source(model: dict, ns: str, digest: str) -> str:
     return "\n".join(lines)
 
 
-def generate(model_path, out_dir, verbose=False) -> dict:
-    """Write the generated sources for the model file into out_dir; returns {file name: bytes written}."""
+def generate(model_path, out_dir, verbose=False, command: str | None = None) -> dict:
+    """Write the generated sources for the model file into out_dir; returns {file name: bytes written}.
+    command: the command line the banner names (default: the das2 one, models/NAME -> cpp/generated)."""
     t0 = time.perf_counter()
     model, digest = load_model(model_path)
     ns = model["name"]
-    banner = _banner(Path(model_path).name, digest)
+    banner = _banner(Path(model_path).name, digest, command)
     dyn, stats = dynamics_source(model, ns)
     files = {
         f"{ns}.h": banner + header_source(ns),
@@ -755,7 +771,8 @@ def main(argv=None) -> int:
     ap.add_argument("--out", required=True, help="output directory, e.g. cpp/generated")
     args = ap.parse_args(argv)
     try:
-        generate(args.model, args.out, verbose=True)
+        generate(args.model, args.out, verbose=True,
+                 command=f"python -m codegen.generate --model {args.model} --out {args.out}")
     except ModelFileError as exc:
         print(f"codegen.generate: {exc}", file=sys.stderr)
         return 2
