@@ -1,9 +1,9 @@
 """Symbolic equations of motion of the arm chain (scapula fixed), by Kane's method.
 
 The chain is scapula -[gh: y, z, y body-fixed rotations]-> humerus -[hu pin]-> ulna -[ur pin]-> radius
--[weld]-> hand (das2: 5 DOFs). Any joint may instead be a weld with an optional fixed `rotation` (a
-DOF fixed at a posture: the elbow-forearm models weld the humerus at fixed GH angles), so the number
-of DOFs is the number of joint axes in the model file. Every revolute (the three GH rotations count as three revolutes through massless
+-[weld]-> hand (das2: 5 DOFs; each joint may also be a weld or a pin, so a model file can free any
+subset of them, e.g. a one-DOF elbow pendulum; a weld may carry a fixed `rotation`, a DOF fixed at a
+posture: the elbow-forearm models weld the humerus at fixed GH angles). Every revolute (the three GH rotations count as three revolutes through massless
 intermediate frames at one point) contributes a partial angular velocity s_j (its axis, scapula
 frame) and partial velocities s_j x (P - o_j) for points P distal to it. Kane's equations
 F_r + F*_r = 0 then give
@@ -20,8 +20,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import sympy as sp
-
-
 
 def _vec(v):
     return sp.Matrix([sp.Float(float(x), 17) for x in v])
@@ -64,12 +62,12 @@ class ChainExprs:
     q: list
     qd: list
     g: list
-    mass_matrix: sp.Matrix          # ndof x ndof
-    bias_force: sp.Matrix           # ndof x 1
+    mass_matrix: sp.Matrix          # n x n (n = number of DOFs)
+    bias_force: sp.Matrix           # n x 1
     hand_position: sp.Matrix        # 3x1
-    hand_jv: sp.Matrix              # 3 x ndof
-    hand_jw: sp.Matrix              # 3 x ndof
-    momentum_a: sp.Matrix           # 3 x ndof
+    hand_jv: sp.Matrix              # 3 x n
+    hand_jw: sp.Matrix              # 3 x n
+    momentum_a: sp.Matrix           # 3 x n
     momentum_c: sp.Matrix           # 3x1
     body_rotations: list            # 4 x (3x3)
     body_origins: list              # 4 x (3x1)

@@ -21,8 +21,8 @@ from . import cxx, eom
 
 SCHEMA = "armrt-model"
 SCHEMA_VERSION = 1
-# Capacity of the engine (cpp/include/armrt/model.h kMaxDofs); a model has 1 to MAX_DOFS DOFs.
-MAX_DOFS = 16
+MAX_DOFS = 16        # the engine's capacities (cpp/include/armrt/model.h kMaxDofs, kMaxElements)
+MAX_ELEMENTS = 160
 BODY_CHAIN = [("humerus", "scapula"), ("ulna", "humerus"), ("radius", "ulna"), ("hand", "radius")]
 JOINT_AXES = {"gimbal_yzy": 3, "pin": 1, "weld": 0}
 
@@ -192,6 +192,9 @@ def validate(model) -> dict:
     elements = _list(model, "elements", "")
     if not elements:
         raise ModelFileError("model file: field 'elements' is empty")
+    if len(elements) > MAX_ELEMENTS:
+        raise ModelFileError(f"model file: field 'elements' has {len(elements)} entries; the engine takes at most "
+                             f"{MAX_ELEMENTS}")
     el_names = []
     for i, e in enumerate(elements):
         try:
@@ -429,15 +432,16 @@ def load_model(path) -> tuple[dict, str]:
 # ---------------------------------------------------------------------------------------------
 # Code emission
 
-def _banner(model_file: str, digest: str) -> str:
+def _banner(model_file: str, digest: str, command: str | None = None) -> str:
+    command = command or f"python -m codegen.generate --model models/{model_file} --out cpp/generated"
     return (f"// GENERATED FILE - DO NOT EDIT BY HAND.\n"
-            f"// Written by `python -m codegen.generate --model models/{model_file} --out cpp/generated`\n"
+            f"// Written by `{command}`\n"
             f"// from the model file {model_file} (sha256 {digest}).\n"
             f"// Change the model file or the generator and regenerate instead.\n")
 
 
 def _global_poly(poly: dict, dofs: list, dof_index: dict):
-    """Terms of a polynomial as (coef, exponent tuple over all the model's DOFs)."""
+    """Terms of a polynomial as (coef, exponent tuple over all of the model's dofs)."""
     idx = [dof_index[d] for d in dofs]
     terms = []
     for row, c in zip(poly["exponents"], poly["coefs"]):
@@ -506,7 +510,7 @@ def _gradient(terms, j):
 def paths_source(model: dict, ns: str) -> str:
     dof_index = {d["name"]: i for i, d in enumerate(model["dofs"])}
     NDOF = len(dof_index)
-    # SIMD lanes: NDOF moment arms and the length in one vector (das2: 5 + 1 in eight).
+    # One SIMD vector holds an element's moment arms and its length: 8 doubles up to 7 DOFs, else 16.
     W = 8 if NDOF + 1 <= 8 else 16
     vt = f"v{W}d"
     els = model["elements"]
@@ -518,8 +522,8 @@ def paths_source(model: dict, ns: str) -> str:
                f"  double moment_arm[{max(1, len(lengths)) * NDOF}];\n  muscle_paths(q, L, moment_arm);\n}}\n")
 
     # muscle_paths: lengths and moment arms -dL/dq in one pass. Each monomial m carries the vector
-    # G(m) = [-dm/dq0, ..., -dm/dq4, m, 0, 0]; every term of a length polynomial adds c G(m) (one 8-wide
-    # multiply-add gives a length and its five moment arms), instead of one scalar polynomial per
+    # G(m) = [-dm/dq0, ..., -dm/dq4, m, 0, 0] (das2; W lanes in general); every term of a length
+    # polynomial adds c G(m) (one 8-wide multiply-add gives a length and its five moment arms), instead of one scalar polynomial per
     # moment arm. G is built along a tree of monomials, each from its parent m' = m / q_j by the
     # product rule: G(q_j m') = q_j G(m') - m' E_j (E_j: unit vector of lane j), two vector operations.
     # The same polynomials summed in another order: results differ by rounding only.
@@ -593,14 +597,14 @@ def paths_source(model: dict, ns: str) -> str:
     return ("#include <cmath>\n#include <cstring>\n\n#include \"" + ns + ".h\"\n\n"
             f"namespace armrt::generated::{ns} {{\n\n"
             + ("// Eight doubles, one SIMD register with AVX-512 (two with AVX2): a length and its moment arms.\n"
-               if W == 8 else f"// {W} doubles: a length and its {NDOF} moment arms.\n")
+               if W == 8 else "// Sixteen doubles (two AVX-512 registers): a length and its moment arms.\n")
             + f"using {vt} = double __attribute__((vector_size({8 * W})));\n\n" + "\n".join(out) + f"\n}}  // namespace armrt::generated::{ns}\n")
 
 
 def dynamics_source(model: dict, ns: str) -> tuple[str, dict]:
+    NDOF = len(model["dofs"])
     ex = eom.derive(model)
     q, qd, g = ex.q, ex.qd, ex.g
-    NDOF = len(q)
     fns = []
     stats = {}
 
@@ -765,12 +769,13 @@ def model_source(model: dict, ns: str, digest: str) -> str:
     return "\n".join(lines)
 
 
-def generate(model_path, out_dir, verbose=False) -> dict:
-    """Write the generated sources for the model file into out_dir; returns {file name: bytes written}."""
+def generate(model_path, out_dir, verbose=False, command: str | None = None) -> dict:
+    """Write the generated sources for the model file into out_dir; returns {file name: bytes written}.
+    command: the command line the banner names (default: the das2 one, models/NAME -> cpp/generated)."""
     t0 = time.perf_counter()
     model, digest = load_model(model_path)
     ns = model["name"]
-    banner = _banner(Path(model_path).name, digest)
+    banner = _banner(Path(model_path).name, digest, command)
     dyn, stats = dynamics_source(model, ns)
     files = {
         f"{ns}.h": banner + header_source(ns),
@@ -800,7 +805,8 @@ def main(argv=None) -> int:
     ap.add_argument("--out", required=True, help="output directory, e.g. cpp/generated")
     args = ap.parse_args(argv)
     try:
-        generate(args.model, args.out, verbose=True)
+        generate(args.model, args.out, verbose=True,
+                 command=f"python -m codegen.generate --model {args.model} --out {args.out}")
     except ModelFileError as exc:
         print(f"codegen.generate: {exc}", file=sys.stderr)
         return 2

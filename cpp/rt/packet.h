@@ -18,6 +18,8 @@
 
 #include <cstdint>
 #include <cstring>
+#include <string>
+#include <vector>
 
 namespace armrt::rt {
 
@@ -56,22 +58,38 @@ enum PacketFlags : std::uint16_t {
 };
 
 // State payload (values): the fixed part below, then muscle_force[n_elements] if kFlagForces, then
-// excitation[n_elements] if kFlagExcitation.
-inline constexpr const char* kStateFields[] = {
-    "time",                                   // s, simulated
-    "q0", "q1", "q2", "q3", "q4",             // rad (GHy GHz GHyy ELx PSy)
-    "qd0", "qd1", "qd2", "qd3", "qd4",        // rad/s
-    "hand_x", "hand_y", "hand_z",             // m, thorax frame
-    "gh_stab",                                // 1
-    "last_seq",                               // last applied excitation seq (-1: none in this session)
-    "lag",                                    // s, simulated time behind the wall-clock schedule
-    "overruns",                               // overrun cycles since the start
+// excitation[n_elements] if kFlagExcitation. The fixed part depends on the model's number of DOFs n:
+//   time                 s, simulated
+//   q0 .. q{n-1}         rad, in the model's DOF order (das2: GHy GHz GHyy ELx PSy)
+//   qd0 .. qd{n-1}       rad/s
+//   hand_x hand_y hand_z m, thorax frame
+//   gh_stab              1
+//   last_seq             last applied excitation seq (-1: none in this session)
+//   lag                  s, simulated time behind the wall-clock schedule
+//   overruns             overrun cycles since the start
+struct StateLayout {
+  int time = 0, q = 1, qd = 0, hand = 0, gh_stab = 0, last_seq = 0, lag = 0, overruns = 0;
+  int fixed_values = 0;  // values before the optional force / excitation blocks
 };
-inline constexpr int kStateFixedValues = sizeof kStateFields / sizeof kStateFields[0];
-enum StateIndex : int {
-  kStTime = 0, kStQ = 1, kStQd = 6, kStHand = 11, kStGhStab = 14, kStLastSeq = 15, kStLag = 16, kStOverruns = 17,
-};
-static_assert(kStOverruns + 1 == kStateFixedValues, "state layout and field names disagree");
+inline StateLayout state_layout(int num_dofs) {
+  StateLayout s;
+  s.qd = s.q + num_dofs;
+  s.hand = s.qd + num_dofs;
+  s.gh_stab = s.hand + 3;
+  s.last_seq = s.gh_stab + 1;
+  s.lag = s.last_seq + 1;
+  s.overruns = s.lag + 1;
+  s.fixed_values = s.overruns + 1;
+  return s;
+}
+// The names of the fixed values, in order (exported to Python as armrt._rt.state_fields(model)).
+inline std::vector<std::string> state_field_names(int num_dofs) {
+  std::vector<std::string> f{"time"};
+  for (int j = 0; j < num_dofs; ++j) f.push_back("q" + std::to_string(j));
+  for (int j = 0; j < num_dofs; ++j) f.push_back("qd" + std::to_string(j));
+  for (const char* n : {"hand_x", "hand_y", "hand_z", "gh_stab", "last_seq", "lag", "overruns"}) f.push_back(n);
+  return f;
+}
 
 inline void put_u16(std::uint8_t* p, std::uint16_t v) { p[0] = v & 0xff; p[1] = v >> 8; }
 inline void put_u32(std::uint8_t* p, std::uint32_t v) {

@@ -120,12 +120,14 @@ RtLoop::RtLoop(const RtConfig& config) : cfg_(config) {
 
   sim_ = std::make_unique<Simulator>(*def, integ, period_s, substeps);
   n_el_ = sim_->model.num_elements;
-  if (n_el_ > kMaxValues || kStateFixedValues + 2 * n_el_ > kMaxValues)
+  layout_ = state_layout(sim_->model.num_dofs);
+  if (n_el_ > kMaxValues || layout_.fixed_values + 2 * n_el_ > kMaxValues)
     throw std::invalid_argument("model '" + cfg_.model + "' has " + std::to_string(n_el_) +
                                 " elements: too many for one packet (state with forces and excitations)");
   if (!cfg_.q0.empty()) {
-    if (static_cast<int>(cfg_.q0.size()) != kNumDofs)
-      throw std::invalid_argument("--q0 needs " + std::to_string(kNumDofs) + " values");
+    if (static_cast<int>(cfg_.q0.size()) != def->num_dofs)
+      throw std::invalid_argument("--q0 needs " + std::to_string(def->num_dofs) + " values (model '" + cfg_.model +
+                                  "' has " + std::to_string(def->num_dofs) + " DOFs)");
     for (double v : cfg_.q0)
       if (!std::isfinite(v)) throw std::invalid_argument("--q0 values must be finite");
     sim_->reset(cfg_.q0.data(), nullptr, nullptr);
@@ -470,15 +472,17 @@ void RtLoop::send_state() {
   if (overrun_since_state_) flags |= kFlagOverrun;
   if (key_.enabled()) flags |= kFlagAuth;
   double* v = values_.data();  // reused as the output staging area (the input is applied by now)
-  v[kStTime] = d.time;
-  for (int j = 0; j < kNumDofs; ++j) v[kStQ + j] = d.x[kQ + j];
-  for (int j = 0; j < kNumDofs; ++j) v[kStQd + j] = d.x[kQd + j];
-  for (int j = 0; j < 3; ++j) v[kStHand + j] = d.hand_position[j];
-  v[kStGhStab] = d.gh_stab;
-  v[kStLastSeq] = have_seq_ ? static_cast<double>(last_seq_) : -1.0;
-  v[kStLag] = static_cast<double>(missed_) * period_ns_ * 1e-9;
-  v[kStOverruns] = static_cast<double>(overruns_);
-  int c = kStateFixedValues;
+  const StateLayout& st = layout_;
+  const Model& m = sim_->model;
+  v[st.time] = d.time;
+  for (int j = 0; j < m.num_dofs; ++j) v[st.q + j] = d.x[q_offset(m) + j];
+  for (int j = 0; j < m.num_dofs; ++j) v[st.qd + j] = d.x[qd_offset(m) + j];
+  for (int j = 0; j < 3; ++j) v[st.hand + j] = d.hand_position[j];
+  v[st.gh_stab] = d.gh_stab;
+  v[st.last_seq] = have_seq_ ? static_cast<double>(last_seq_) : -1.0;
+  v[st.lag] = static_cast<double>(missed_) * period_ns_ * 1e-9;
+  v[st.overruns] = static_cast<double>(overruns_);
+  int c = st.fixed_values;
   if (cfg_.send_forces)
     for (int i = 0; i < n_el_; ++i) v[c++] = d.muscle_force[i];
   if (cfg_.send_excitation)

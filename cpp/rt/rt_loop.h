@@ -37,7 +37,7 @@ struct RtConfig {
   std::string integrator = "ros2";
   double rate_hz = 1000.0;     // loop rate
   double dt = 0;               // largest integration step (s); each 1/rate cycle takes ceil(period/dt) substeps; 0: default_max_step() (ros2 1 ms, rk4 0.17 ms, euler 0.1 ms)
-  std::vector<double> q0;      // initial joint angles (5, rad); empty: rest posture
+  std::vector<double> q0;      // initial joint angles (one per DOF of the model, rad); empty: rest posture
   double duration = 0;         // s; 0: until stop() / a signal
   // Real-time set-up.
   bool realtime = true;        // try SCHED_FIFO; false: normal scheduling on purpose
@@ -161,6 +161,7 @@ class RtLoop {
   RtConfig cfg_;
   std::unique_ptr<Simulator> sim_;
   int n_el_ = 0;
+  StateLayout layout_;                  // of this model's state packets
   double period_ns_ = 0;
   std::int64_t max_cycles_ = 0;         // from duration; 0: unbounded
   int state_every_ = 0;                 // cycles between state packets; 0: none

@@ -625,14 +625,17 @@ TEST_CASE("state packets reach the controller and describe the arm") {
   REQUIRE(decode_header(b, n, h) == DecodeError::kOk);
   CHECK(h.type == kState);
   CHECK(h.session == a.session);
-  CHECK(h.count == kStateFixedValues + 2 * n_el);
+  const StateLayout st = state_layout(loop.simulator().model.num_dofs);
+  CHECK(st.fixed_values == 18);  // das2: 5 DOFs
+  CHECK(state_field_names(5).size() == 18u);
+  CHECK(h.count == st.fixed_values + 2 * n_el);
   CHECK((h.flags & kFlagForces) != 0);
   CHECK((h.flags & kFlagExcitation) != 0);
   CHECK((h.flags & kFlagTimedOut) == 0);
   CHECK(get_f64(b + kHeaderSize) > 0);
-  CHECK(get_f64(b + kHeaderSize + 8 * kStLastSeq) == static_cast<double>(a.seq));
-  CHECK(get_f64(b + kHeaderSize + 8 * kStLag) >= 0.0);
-  CHECK(get_f64(b + kHeaderSize + 8 * (kStateFixedValues + n_el)) == doctest::Approx(0.125));  // excitation
+  CHECK(get_f64(b + kHeaderSize + 8 * st.last_seq) == static_cast<double>(a.seq));
+  CHECK(get_f64(b + kHeaderSize + 8 * st.lag) >= 0.0);
+  CHECK(get_f64(b + kHeaderSize + 8 * (st.fixed_values + n_el)) == doctest::Approx(0.125));  // excitation
 }
 
 TEST_CASE("lag and overrun flag: skip and report, --max-lag stops") {
@@ -659,7 +662,7 @@ TEST_CASE("lag and overrun flag: skip and report, --max-lag stops") {
     Header h;
     if (decode_header(b, n, h) != DecodeError::kOk || h.type != kState) continue;
     flagged = flagged || (h.flags & kFlagOverrun);
-    lag = get_f64(b + kHeaderSize + 8 * kStLag);
+    lag = get_f64(b + kHeaderSize + 8 * state_layout(over.simulator().model.num_dofs).lag);
   }
   CHECK(flagged);
   CHECK(lag > 0);

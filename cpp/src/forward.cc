@@ -3,16 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Core>
-
 #include "armrt/engine.h"
 #include "armrt/muscle_kernel.h"
 
 namespace armrt {
-
-using Mat5 = Eigen::Matrix<double, kNumDofs, kNumDofs, Eigen::RowMajor>;
-using Vec5 = Eigen::Matrix<double, kNumDofs, 1>;
-using Mat35 = Eigen::Matrix<double, 3, kNumDofs, Eigen::RowMajor>;
 
 namespace {
 
@@ -25,7 +19,7 @@ double range_excursion(const DofParams& dof, double q) {
 }  // namespace
 
 void passive_joint_torque(const ModelDef& def, const double* q, const double* qd, double* tau) {
-  for (int j = 0; j < kNumDofs; ++j) {
+  for (int j = 0; j < def.num_dofs; ++j) {
     const DofParams& dof = def.dofs[j];
     const double e = range_excursion(dof, q[j]);
     tau[j] = -def.passive_stiffness_inside * (q[j] - dof.rest) - def.passive_damping * qd[j] -
@@ -33,11 +27,10 @@ void passive_joint_torque(const ModelDef& def, const double* q, const double* qd
   }
 }
 
-void solve_spd(const double* A, const double* b, double* x) {
-  // Cholesky A = L L^T, row-major, fixed size: no pivoting needed for a mass matrix.
-  constexpr int n = kNumDofs;
-  double Lc[n * n] = {};
-  double inv_diag[n];
+void solve_spd(const double* A, const double* b, int n, double* x) {
+  // Cholesky A = L L^T, row-major, in fixed-capacity storage: no pivoting needed for a mass matrix.
+  double Lc[kMaxDofs * kMaxDofs];
+  double inv_diag[kMaxDofs];
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j <= i; ++j) {
       double sum = A[i * n + j];
@@ -50,7 +43,7 @@ void solve_spd(const double* A, const double* b, double* x) {
       }
     }
   }
-  double y[n];
+  double y[kMaxDofs];
   for (int i = 0; i < n; ++i) {
     double sum = b[i];
     for (int k = 0; k < i; ++k) sum -= Lc[i * n + k] * y[k];
@@ -64,7 +57,7 @@ void solve_spd(const double* A, const double* b, double* x) {
 }
 
 void passive_joint_stiffness(const ModelDef& def, const double* q, double* dtau_dq, double* dtau_dqd) {
-  for (int j = 0; j < kNumDofs; ++j) {
+  for (int j = 0; j < def.num_dofs; ++j) {
     const double e = range_excursion(def.dofs[j], q[j]);
     dtau_dq[j] = -def.passive_stiffness_inside - 2.0 * def.passive_stiffness_outside * std::fabs(e);
     dtau_dqd[j] = -def.passive_damping;
@@ -121,44 +114,47 @@ void muscle_dynamics(const Model& m, const double* excitation, const double* mus
       jac->dvel_da[i] = der.dvel_da;
     }
   }
-  generalised_force(moment_arm, force, n, tau);
+  generalised_force(moment_arm, force, n, m.num_dofs, tau);
 }
 
-void generalised_force(const double* moment_arm, const double* force, int n, double* tau) {
+void generalised_force(const double* moment_arm, const double* force, int n, int ndof, double* tau) {
   // Four independent partial sums per DOF: one running sum would chain n multiply-adds back to back.
-  double acc[4][kNumDofs] = {};
+  double acc[4][kMaxDofs];
+  for (int k = 0; k < 4; ++k)
+    for (int j = 0; j < ndof; ++j) acc[k][j] = 0.0;
   int i = 0;
   for (; i + 4 <= n; i += 4)
     for (int k = 0; k < 4; ++k)
-      for (int j = 0; j < kNumDofs; ++j) acc[k][j] += moment_arm[(i + k) * kNumDofs + j] * force[i + k];
+      for (int j = 0; j < ndof; ++j) acc[k][j] += moment_arm[(i + k) * ndof + j] * force[i + k];
   for (; i < n; ++i)
-    for (int j = 0; j < kNumDofs; ++j) acc[0][j] += moment_arm[i * kNumDofs + j] * force[i];
-  for (int j = 0; j < kNumDofs; ++j) tau[j] = (acc[0][j] + acc[1][j]) + (acc[2][j] + acc[3][j]);
+    for (int j = 0; j < ndof; ++j) acc[0][j] += moment_arm[i * ndof + j] * force[i];
+  for (int j = 0; j < ndof; ++j) tau[j] = (acc[0][j] + acc[1][j]) + (acc[2][j] + acc[3][j]);
 }
 
 void forward(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac) {
   const ModelDef& def = *m.def;
   const int n = m.num_elements;
-  const int ia = act_offset(m);
-  const double* q = x + kQ;
-  const double* qd = x + kQd;
+  const int nq = m.num_dofs;
+  const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
+  const double* q = x + iq;
+  const double* qd = x + iqd;
 
   double L_local[kMaxElements];
-  double R_local[kMaxElements * kNumDofs];
+  double R_local[kMaxElements * kMaxDofs];
   double* L = jac ? jac->muscle_length.data() : L_local;  // the Jacobian keeps the path geometry
   double* R = jac ? jac->moment_arm.data() : R_local;
   def.muscle_paths(q, L, R);
 
   double force[kMaxElements];
-  double tau[kNumDofs];
-  const double* lce_dot = xdot + kLce;
-  muscle_dynamics(m, d.excitation.data(), L, R, x + ia, x + kLce, xdot + ia, xdot + kLce, force, tau, jac);
+  double tau[kMaxDofs];
+  const double* lce_dot = xdot + il;
+  muscle_dynamics(m, d.excitation.data(), L, R, x + ia, x + il, xdot + ia, xdot + il, force, tau, jac);
   if (record) {
     std::copy(force, force + n, d.muscle_force.begin());
     std::copy(lce_dot, lce_dot + n, d.fibre_velocity.begin());
   }
 
-  double tau_passive[kNumDofs];
+  double tau_passive[kMaxDofs];
   passive_joint_torque(def, q, qd, tau_passive);
   if (jac) passive_joint_stiffness(def, q, jac->dtau_passive_dq.data(), jac->dtau_passive_dqd.data());
 
@@ -169,36 +165,37 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
     f_ext[k] = Rs[0 * 3 + k] * d.hand_force[0] + Rs[1 * 3 + k] * d.hand_force[1] + Rs[2 * 3 + k] * d.hand_force[2];
     t_ext[k] = Rs[0 * 3 + k] * d.hand_moment[0] + Rs[1 * 3 + k] * d.hand_moment[1] + Rs[2 * 3 + k] * d.hand_moment[2];
   }
-  double tau_ext[kNumDofs] = {0, 0, 0, 0, 0};
+  double tau_ext[kMaxDofs];
+  for (int j = 0; j < nq; ++j) tau_ext[j] = 0.0;
   const bool loaded = f_ext[0] != 0 || f_ext[1] != 0 || f_ext[2] != 0 || t_ext[0] != 0 || t_ext[1] != 0 || t_ext[2] != 0;
   if (loaded) {
-    double Jv[3 * kNumDofs], Jw[3 * kNumDofs];
+    double Jv[3 * kMaxDofs], Jw[3 * kMaxDofs];
     def.hand_jacobian(q, Jv, Jw);
-    for (int j = 0; j < kNumDofs; ++j)
-      for (int k = 0; k < 3; ++k) tau_ext[j] += Jv[k * kNumDofs + j] * f_ext[k] + Jw[k * kNumDofs + j] * t_ext[k];
+    for (int j = 0; j < nq; ++j)
+      for (int k = 0; k < 3; ++k) tau_ext[j] += Jv[k * nq + j] * f_ext[k] + Jw[k * nq + j] * t_ext[k];
   }
 
-  Mat5 M;
-  Vec5 rhs;
-  def.dynamics(q, qd, m.gravity_scapula.data(), M.data(), rhs.data());
-  if (jac) std::copy(M.data(), M.data() + kNumDofs * kNumDofs, jac->mass_matrix.begin());
-  for (int j = 0; j < kNumDofs; ++j) rhs[j] += tau[j] + tau_passive[j] + tau_ext[j];
-  Vec5 qdd;
-  solve_spd(M.data(), rhs.data(), qdd.data());
-  for (int j = 0; j < kNumDofs; ++j) {
-    xdot[kQ + j] = qd[j];
-    xdot[kQd + j] = qdd[j];
+  double M[kMaxDofs * kMaxDofs];
+  double rhs[kMaxDofs];
+  def.dynamics(q, qd, m.gravity_scapula.data(), M, rhs);
+  if (jac) std::copy(M, M + nq * nq, jac->mass_matrix.begin());
+  for (int j = 0; j < nq; ++j) rhs[j] += tau[j] + tau_passive[j] + tau_ext[j];
+  double qdd[kMaxDofs];
+  solve_spd(M, rhs, nq, qdd);
+  for (int j = 0; j < nq; ++j) {
+    xdot[iq + j] = qd[j];
+    xdot[iqd + j] = qdd[j];
   }
 
   if (!record) return;
-  for (int j = 0; j < kNumDofs; ++j) {
+  for (int j = 0; j < nq; ++j) {
     d.qdd[j] = qdd[j];
     d.muscle_torque[j] = tau[j];
     d.passive_torque[j] = tau_passive[j];
     d.external_torque[j] = tau_ext[j];
   }
   std::copy(L, L + n, d.muscle_length.begin());
-  std::copy(R, R + n * kNumDofs, d.moment_arm.begin());
+  std::copy(R, R + n * nq, d.moment_arm.begin());
 
   double p[3];
   def.hand_position(q, p);
@@ -209,12 +206,13 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
   // arm's weight minus its mass times acceleration.
   double dir[kMaxElements * 3];
   def.gh_directions(q, dir);
-  Mat35 A;
-  Eigen::Vector3d c;
-  def.arm_momentum_rate(q, qd, A.data(), c.data());
-  const Eigen::Vector3d inertial = A * qdd + c;
+  double A[3 * kMaxDofs], c[3];
+  def.arm_momentum_rate(q, qd, A, c);
   for (int k = 0; k < 3; ++k) {
-    double fk = f_ext[k] + def.arm_mass * m.gravity_scapula[k] - inertial[k];
+    double Aqdd = 0.0;
+    for (int j = 0; j < nq; ++j) Aqdd += A[k * nq + j] * qdd[j];
+    const double inertial = Aqdd + c[k];
+    double fk = f_ext[k] + def.arm_mass * m.gravity_scapula[k] - inertial;
     for (int i = 0; i < n; ++i) fk += force[i] * dir[i * 3 + k];
     d.gh_force[k] = fk;
   }

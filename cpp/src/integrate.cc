@@ -10,11 +10,11 @@
 namespace armrt {
 
 const char* state_name(const Model& m, int index, char* buf, int buflen) {
-  const int n = m.num_elements;
-  if (index < kQd) std::snprintf(buf, buflen, "q[%s]", m.def->dofs[index].name);
-  else if (index < kLce) std::snprintf(buf, buflen, "qdot[%s]", m.def->dofs[index - kQd].name);
-  else if (index < kLce + n) std::snprintf(buf, buflen, "lce[%s]", m.def->elements[index - kLce].name);
-  else std::snprintf(buf, buflen, "activation[%s]", m.def->elements[index - kLce - n].name);
+  const int iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
+  if (index < iqd) std::snprintf(buf, buflen, "q[%s]", m.def->dofs[index].name);
+  else if (index < il) std::snprintf(buf, buflen, "qdot[%s]", m.def->dofs[index - iqd].name);
+  else if (index < ia) std::snprintf(buf, buflen, "lce[%s]", m.def->elements[index - il].name);
+  else std::snprintf(buf, buflen, "activation[%s]", m.def->elements[index - ia].name);
   return buf;
 }
 
@@ -28,10 +28,11 @@ bool check_state(const Model& m, Data& d) {
       return false;
     }
   }
-  for (int j = 0; j < kNumDofs; ++j) {
-    if (std::fabs(d.x[kQd + j]) > m.max_joint_speed) {
+  const int iqd = qd_offset(m);
+  for (int j = 0; j < m.num_dofs; ++j) {
+    if (std::fabs(d.x[iqd + j]) > m.max_joint_speed) {
       d.status = Status::kTooFast;
-      d.bad_index = kQd + j;
+      d.bad_index = iqd + j;
       d.bad_time = d.time;
       return false;
     }

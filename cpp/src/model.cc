@@ -1,5 +1,7 @@
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "armrt/data.h"
 #include "armrt/engine.h"
@@ -38,7 +40,15 @@ void model_update_derived(Model& m) {
 }
 
 void model_init(Model& m, const ModelDef& def) {
+  const std::string name = def.name ? def.name : "?";
+  if (def.num_dofs < 1 || def.num_dofs > kMaxDofs)
+    throw std::invalid_argument("model '" + name + "' has " + std::to_string(def.num_dofs) +
+                                " DOFs; the engine takes 1 to " + std::to_string(kMaxDofs));
+  if (def.num_elements < 1 || def.num_elements > kMaxElements)
+    throw std::invalid_argument("model '" + name + "' has " + std::to_string(def.num_elements) +
+                                " elements; the engine takes 1 to " + std::to_string(kMaxElements));
   m.def = &def;
+  m.num_dofs = def.num_dofs;
   m.num_elements = def.num_elements;
   for (int k = 0; k < 3; ++k) m.gravity_scapula[k] = def.gravity_scapula[k];
   for (int i = 0; i < m.num_elements; ++i) {
@@ -50,13 +60,13 @@ void model_init(Model& m, const ModelDef& def) {
 
 void data_reset(const Model& m, Data& d, const double* q) {
   d = Data{};
-  for (int j = 0; j < kNumDofs; ++j) d.x[kQ + j] = q ? q[j] : m.def->dofs[j].rest;
+  for (int j = 0; j < m.num_dofs; ++j) d.x[q_offset(m) + j] = q ? q[j] : m.def->dofs[j].rest;
   double L[kMaxElements];
-  m.def->muscle_lengths(&d.x[kQ], L);
-  const int ia = act_offset(m);
+  m.def->muscle_lengths(&d.x[q_offset(m)], L);
+  const int ia = act_offset(m), il = lce_offset(m);
   for (int i = 0; i < m.num_elements; ++i) {
     d.x[ia + i] = 0.0;
-    d.x[kLce + i] = muscle_equilibrium_lce(m.element[i], m.fibre_damping, L[i], 0.0);
+    d.x[il + i] = muscle_equilibrium_lce(m.element[i], m.fibre_damping, L[i], 0.0);
   }
 }
 

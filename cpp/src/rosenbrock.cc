@@ -5,9 +5,10 @@
 //   (I - h gamma J) k2 = f(x_n + h k1) - 2 k1
 //   x_{n+1} = x_n + h (3/2 k1 + 1/2 k2)
 // J is the structured ("arrow") Jacobian of data.h StepJacobian. The linear systems are never formed
-// as a 214 x 214 matrix: the activation rows are scalar, each CE-length row is scalar once the joint
-// part is known, and what remains is a 5 x 5 Schur complement in the joint-velocity part (docs/engine.md
-// derives it). Cost per step: fixed, two passes over the elements, one 5 x 5 LU; no iteration, no heap.
+// as a state-sized matrix (214 x 214 for das2): the activation rows are scalar, each CE-length row is
+// scalar once the joint part is known, and what remains is an n x n Schur complement (n = num_dofs) in
+// the joint-velocity part (docs/engine.md derives it). Cost per step: fixed, two passes over the
+// elements, one n x n LU; no iteration, no heap.
 //
 // J is the tangent at x_n except where a tangent cannot see what happens within the step (ROS2 stays
 // second order with any J: it is a W-method): an active element whose slack tendon engages within the
@@ -24,10 +25,9 @@ namespace armrt {
 
 namespace {
 
-// In-place LU with partial pivoting of a row-major 5 x 5 matrix. The pivot choice depends on the values,
-// the work does not.
-void lu_factor5(double* a, int* perm) {
-  constexpr int n = kNumDofs;
+// In-place LU with partial pivoting of a row-major n x n matrix (n = the model's DOFs). The pivot
+// choice depends on the values, the work does not.
+void lu_factor(double* a, int n, int* perm) {
   for (int i = 0; i < n; ++i) perm[i] = i;
   for (int k = 0; k < n; ++k) {
     int p = k;
@@ -46,9 +46,8 @@ void lu_factor5(double* a, int* perm) {
   }
 }
 
-void lu_solve5(const double* lu, const int* perm, const double* b, double* x) {
-  constexpr int n = kNumDofs;
-  double y[n];
+void lu_solve(const double* lu, int n, const int* perm, const double* b, double* x) {
+  double y[kMaxDofs];
   for (int i = 0; i < n; ++i) {
     double s = b[perm[i]];
     for (int j = 0; j < i; ++j) s -= lu[i * n + j] * y[j];
@@ -79,89 +78,91 @@ void jacobian_factor(const Model& m, StepJacobian& jac, double hg) {
     jac.series_stiffness[i] = jac.dforce_dL[i] + jac.dforce_dlce[i] * jac.lce_from_q[i];
   }
   // K_eff = diag(dtau_passive/dq) - R^T diag(series_stiffness) R (symmetric: build the upper half).
-  double K[kNumDofs * kNumDofs] = {};
+  const int nq = m.num_dofs;
+  double* K = jac.stiffness.data();
+  std::fill(K, K + nq * nq, 0.0);
   for (int i = 0; i < n; ++i) {
-    const double* r = R + i * kNumDofs;
+    const double* r = R + i * nq;
     const double c = jac.series_stiffness[i];
-    for (int a = 0; a < kNumDofs; ++a)
-      for (int b = a; b < kNumDofs; ++b) K[a * kNumDofs + b] -= c * r[a] * r[b];
+    for (int a = 0; a < nq; ++a)
+      for (int b = a; b < nq; ++b) K[a * nq + b] -= c * r[a] * r[b];
   }
-  for (int a = 0; a < kNumDofs; ++a) {
-    K[a * kNumDofs + a] += jac.dtau_passive_dq[a];
-    for (int b = 0; b < a; ++b) K[a * kNumDofs + b] = K[b * kNumDofs + a];
+  for (int a = 0; a < nq; ++a) {
+    K[a * nq + a] += jac.dtau_passive_dq[a];
+    for (int b = 0; b < a; ++b) K[a * nq + b] = K[b * nq + a];
   }
-  std::copy(K, K + kNumDofs * kNumDofs, jac.stiffness.begin());
   // Schur complement S = M - hg diag(dtau_passive/dqd) - hg^2 K_eff.
   double* S = jac.schur_lu.data();
-  for (int a = 0; a < kNumDofs; ++a)
-    for (int b = 0; b < kNumDofs; ++b)
-      S[a * kNumDofs + b] = jac.mass_matrix[a * kNumDofs + b] - hg * hg * K[a * kNumDofs + b] -
-                            (a == b ? hg * jac.dtau_passive_dqd[a] : 0.0);
-  lu_factor5(S, jac.schur_perm.data());
+  for (int a = 0; a < nq; ++a)
+    for (int b = 0; b < nq; ++b)
+      S[a * nq + b] = jac.mass_matrix[a * nq + b] - hg * hg * K[a * nq + b] -
+                      (a == b ? hg * jac.dtau_passive_dqd[a] : 0.0);
+  lu_factor(S, nq, jac.schur_perm.data());
 }
 
 void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* k) {
   const int n = m.num_elements;
-  const int ia = act_offset(m);
+  const int nq = m.num_dofs;
+  const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
   const double hg = jac.hg;
   const double* R = jac.moment_arm.data();
-  const double* rq = r + kQ;
-  const double* rqd = r + kQd;
+  const double* rq = r + iq;
+  const double* rqd = r + iqd;
   // Activation rows, then the CE-length rows' part that does not depend on k_q (kept in tmp).
   double* p = jac.tmp.data();
 #pragma omp simd
   for (int i = 0; i < n; ++i) {
     const double ka = r[ia + i] * jac.inv_act[i];
     k[ia + i] = ka;
-    p[i] = jac.inv_lce[i] * (r[kLce + i] + hg * jac.dvel_da[i] * ka);
+    p[i] = jac.inv_lce[i] * (r[il + i] + hg * jac.dvel_da[i] * ka);
   }
   // Schur right-hand side: M r_qd + hg R^T (dforce_dlce p) + hg K_eff r_q.
-  double rhs[kNumDofs];
-  for (int a = 0; a < kNumDofs; ++a) {
+  double rhs[kMaxDofs];
+  for (int a = 0; a < nq; ++a) {
     double s = 0;
-    for (int b = 0; b < kNumDofs; ++b)
-      s += jac.mass_matrix[a * kNumDofs + b] * rqd[b] + hg * jac.stiffness[a * kNumDofs + b] * rq[b];
+    for (int b = 0; b < nq; ++b)
+      s += jac.mass_matrix[a * nq + b] * rqd[b] + hg * jac.stiffness[a * nq + b] * rq[b];
     rhs[a] = s;
   }
   double f[kMaxElements];
 #pragma omp simd
   for (int i = 0; i < n; ++i) f[i] = hg * jac.dforce_dlce[i] * p[i];
-  double tau_p[kNumDofs];
-  generalised_force(R, f, n, tau_p);
-  for (int a = 0; a < kNumDofs; ++a) rhs[a] += tau_p[a];
-  double kqd[kNumDofs];
-  lu_solve5(jac.schur_lu.data(), jac.schur_perm.data(), rhs, kqd);
-  double kq[kNumDofs];
-  for (int a = 0; a < kNumDofs; ++a) {
+  double tau_p[kMaxDofs];
+  generalised_force(R, f, n, nq, tau_p);
+  for (int a = 0; a < nq; ++a) rhs[a] += tau_p[a];
+  double kqd[kMaxDofs];
+  lu_solve(jac.schur_lu.data(), nq, jac.schur_perm.data(), rhs, kqd);
+  double kq[kMaxDofs];
+  for (int a = 0; a < nq; ++a) {
     kq[a] = rq[a] + hg * kqd[a];
-    k[kQ + a] = kq[a];
-    k[kQd + a] = kqd[a];
+    k[iq + a] = kq[a];
+    k[iqd + a] = kqd[a];
   }
   for (int i = 0; i < n; ++i) {
-    const double* ri = R + i * kNumDofs;
+    const double* ri = R + i * nq;
     double rk = 0;
-    for (int a = 0; a < kNumDofs; ++a) rk += ri[a] * kq[a];
-    k[kLce + i] = p[i] - jac.lce_from_q[i] * rk;
+    for (int a = 0; a < nq; ++a) rk += ri[a] * kq[a];
+    k[il + i] = p[i] - jac.lce_from_q[i] * rk;
   }
 }
 
 void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const double* xdot, double h) {
   StepJacobian& jac = d.jac;
   const MuscleArrays& mc = m.muscles;
-  const int n = m.num_elements, ia = act_offset(m);
+  const int n = m.num_elements, nq = m.num_dofs, iqd = qd_offset(m), ia = act_offset(m);
   const double hg = kRos2Gamma * h;
   const double b0 = m.fibre_damping;
   // Muscle-tendon lengthening rates dL/dt = -R qd (m/s), then one branch-free pass per element.
   double L_rate[kMaxElements];
   for (int i = 0; i < n; ++i) {
-    const double* r = jac.moment_arm.data() + i * kNumDofs;
+    const double* r = jac.moment_arm.data() + i * nq;
     double s = 0;
-    for (int j = 0; j < kNumDofs; ++j) s -= r[j] * x[kQd + j];
+    for (int j = 0; j < nq; ++j) s -= r[j] * x[iqd + j];
     L_rate[i] = s;
   }
-  const double* lce_x = x + kLce;
+  const double* lce_x = x + lce_offset(m);
   const double* a_x = x + ia;
-  const double* lce_rate = xdot + kLce;
+  const double* lce_rate = xdot + lce_offset(m);
   const double* a_rate = xdot + ia;
   double* dvel_dlce = jac.dvel_dlce.data();
   double* dvel_dL = jac.dvel_dL.data();
@@ -265,11 +266,12 @@ void ros2_stages(const Model& m, Data& d, double h, bool record) {
 // kRos2AdaptiveTolLce (x lceopt) on the CE lengths, where the stiff slack-to-taut events show first.
 double ros2_error_estimate(const Model& m, const Data& d, double h) {
   double err = 0;
-  for (int j = 0; j < kNumDofs; ++j)
-    err = std::max(err, std::fabs(0.5 * h * (d.k2[kQ + j] + d.k4[kQ + j])) / kRos2AdaptiveTolQ);
+  const int iq = q_offset(m), il = lce_offset(m);
+  for (int j = 0; j < m.num_dofs; ++j)
+    err = std::max(err, std::fabs(0.5 * h * (d.k2[iq + j] + d.k4[iq + j])) / kRos2AdaptiveTolQ);
   const MuscleArrays& mc = m.muscles;
   for (int i = 0; i < m.num_elements; ++i)
-    err = std::max(err, std::fabs(0.5 * h * (d.k2[kLce + i] + d.k4[kLce + i])) * mc.inv_lceopt[i] /
+    err = std::max(err, std::fabs(0.5 * h * (d.k2[il + i] + d.k4[il + i])) * mc.inv_lceopt[i] /
                             kRos2AdaptiveTolLce);
   return err;
 }

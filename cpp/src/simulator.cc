@@ -85,14 +85,14 @@ void Simulator::reset(const double* q, const double* qd, const double* activatio
   data.excitation = excitation;
   data.hand_force = hand_force;
   data.hand_moment = hand_moment;
-  if (qd) for (int j = 0; j < kNumDofs; ++j) data.x[kQd + j] = qd[j];
+  if (qd) for (int j = 0; j < model.num_dofs; ++j) data.x[qd_offset(model) + j] = qd[j];
   if (activation) {
     double L[kMaxElements];
-    model.def->muscle_lengths(&data.x[kQ], L);
-    const int ia = act_offset(model);
+    model.def->muscle_lengths(&data.x[q_offset(model)], L);
+    const int ia = act_offset(model), il = lce_offset(model);
     for (int i = 0; i < model.num_elements; ++i) {
       data.x[ia + i] = activation[i];
-      data.x[kLce + i] = muscle_equilibrium_lce(model.element[i], model.fibre_damping, L[i], activation[i]);
+      data.x[il + i] = muscle_equilibrium_lce(model.element[i], model.fibre_damping, L[i], activation[i]);
     }
   }
   if (cvode_) cvode_->reinit();

@@ -10,6 +10,7 @@
 #include "test_util.h"
 
 using namespace armrt;
+using armrt_test::kDas2Dofs, armrt_test::kQ, armrt_test::kQd, armrt_test::kLce;
 
 // Counts every malloc in the process while enabled, including the OpenMP runtime's (libgomp calls
 // malloc directly, not operator new): this executable's malloc interposes the C library's.
@@ -27,8 +28,8 @@ namespace {
 
 // Arm i gets its own excitation pattern and posture, so the arms really differ.
 void set_up(Simulator& s, int i) {
-  double q[kNumDofs];
-  for (int j = 0; j < kNumDofs; ++j) q[j] = s.model.def->dofs[j].rest + 0.05 * i * (j % 2 ? 1 : -1);
+  double q[kDas2Dofs];
+  for (int j = 0; j < kDas2Dofs; ++j) q[j] = s.model.def->dofs[j].rest + 0.05 * i * (j % 2 ? 1 : -1);
   s.reset(q, nullptr, nullptr);
   for (int e = 0; e < s.model.num_elements; ++e) s.data.excitation[e] = 0.02 * ((e * 7 + i * 3) % 11);
 }

@@ -9,6 +9,7 @@
 #include "test_util.h"
 
 using namespace armrt;
+using armrt_test::kDas2Dofs, armrt_test::kQ, armrt_test::kQd, armrt_test::kLce;
 
 TEST_SUITE("divergence") {
 
@@ -56,7 +57,7 @@ TEST_CASE("huge joint velocity: kTooFast naming qdot[...] and the time") {
     CHECK_FALSE(sim.step());
     CHECK(sim.data.status == Status::kTooFast);
     REQUIRE(sim.data.bad_index >= kQd);
-    REQUIRE(sim.data.bad_index < kQd + kNumDofs);
+    REQUIRE(sim.data.bad_index < kQd + kDas2Dofs);
     CHECK(std::fabs(sim.data.x[sim.data.bad_index]) > sim.model.max_joint_speed);
     const std::string msg = sim.error_message();
     INFO(msg);

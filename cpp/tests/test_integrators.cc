@@ -13,6 +13,7 @@
 #include "test_util.h"
 
 using namespace armrt;
+using armrt_test::kDas2Dofs, armrt_test::kQ, armrt_test::kQd, armrt_test::kLce;
 using armrt_test::das2;
 
 namespace {
@@ -48,7 +49,7 @@ Run run(const Model& m, Integrator integ, double dt, double duration) {
 // Max abs error over the joint angles and (scaled) over the whole state.
 double q_error(const StateVec& a, const StateVec& b) {
   double e = 0;
-  for (int j = 0; j < kNumDofs; ++j) e = std::max(e, std::fabs(a[kQ + j] - b[kQ + j]));
+  for (int j = 0; j < kDas2Dofs; ++j) e = std::max(e, std::fabs(a[kQ + j] - b[kQ + j]));
   return e;
 }
 
@@ -111,7 +112,7 @@ void compare_with_cvode(double dt, int substeps = 1, Integrator integ = Integrat
   Simulator rk4(das2(), integ, dt, substeps);
   Simulator cv(das2(), Integrator::kCvode, 1e-3);
   for (Simulator* s : {&rk4, &cv}) armrt_test::set_group_excitation(*s, "rotator_cuff", 0.05);
-  double worst[kNumDofs] = {0, 0, 0, 0, 0};
+  double worst[kDas2Dofs] = {0, 0, 0, 0, 0};
   double worst_t = 0, worst_all = 0;
   const int n = 2000;
   for (int k = 0; k < n; ++k) {
@@ -121,7 +122,7 @@ void compare_with_cvode(double dt, int substeps = 1, Integrator integ = Integrat
     for (int r = 0; r < per; ++r) REQUIRE_MESSAGE(rk4.step(), rk4.error_message());
     REQUIRE_MESSAGE(cv.step(), cv.error_message());
     REQUIRE(rk4.data.time == doctest::Approx(cv.data.time).epsilon(1e-9));
-    for (int j = 0; j < kNumDofs; ++j) {
+    for (int j = 0; j < kDas2Dofs; ++j) {
       const double e = std::fabs(rk4.data.x[kQ + j] - cv.data.x[kQ + j]) * 180.0 / M_PI;
       worst[j] = std::max(worst[j], e);
       if (e > worst_all) worst_all = e, worst_t = rk4.data.time;
@@ -130,7 +131,7 @@ void compare_with_cvode(double dt, int substeps = 1, Integrator integ = Integrat
   MESSAGE(std::string(integrator_name(integ)) << " dt = " << dt << " s: max |x - CVODE| (deg) per joint: " << worst[0] << " " << worst[1] << " "
                       << worst[2] << " " << worst[3] << " " << worst[4] << " (worst at t = " << worst_t
                       << " s); final ELx " << cv.data.x[kQ + 3] * 180 / M_PI << " deg");
-  for (int j = 0; j < kNumDofs; ++j) {
+  for (int j = 0; j < kDas2Dofs; ++j) {
     CAPTURE(j);
     CHECK(worst[j] < 0.1);
   }

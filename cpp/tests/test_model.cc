@@ -10,6 +10,7 @@
 #include "test_util.h"
 
 using namespace armrt;
+using armrt_test::kDas2Dofs, armrt_test::kQ, armrt_test::kQd, armrt_test::kLce;
 
 TEST_SUITE("model") {
 
@@ -18,7 +19,7 @@ TEST_CASE("sizes, names and DOF order") {
   CHECK(std::string(def.name) == "das2");
   CHECK(def.num_elements == 102);
   CHECK(def.num_dofs == 5);
-  CHECK(def.num_dofs == kNumDofs);
+  CHECK(def.num_dofs == kDas2Dofs);
   CHECK(def.num_muscles == 22);
   const char* dofs[] = {"GHy", "GHz", "GHyy", "ELx", "PSy"};
   for (int j = 0; j < 5; ++j) {
@@ -31,7 +32,23 @@ TEST_CASE("sizes, names and DOF order") {
   Model m;
   model_init(m, def);
   CHECK(m.num_elements == 102);
+  CHECK(m.num_dofs == 5);
   CHECK(state_size(m) == 214);
+  // The das2 layout constants of the tests are data.h's offsets for this model.
+  CHECK(q_offset(m) == kQ);
+  CHECK(qd_offset(m) == kQd);
+  CHECK(lce_offset(m) == kLce);
+  CHECK(act_offset(m) == kLce + 102);
+}
+
+TEST_CASE("a model larger than the engine's capacities is refused by name") {
+  ModelDef big = armrt_test::das2();
+  big.num_dofs = kMaxDofs + 1;
+  Model m;
+  CHECK_THROWS_WITH_AS(model_init(m, big), doctest::Contains("DOFs; the engine takes 1 to 16"), std::invalid_argument);
+  big = armrt_test::das2();
+  big.num_elements = kMaxElements + 1;
+  CHECK_THROWS_WITH_AS(model_init(m, big), doctest::Contains("elements; the engine takes 1 to 160"), std::invalid_argument);
 }
 
 TEST_CASE("element parameters are physical") {

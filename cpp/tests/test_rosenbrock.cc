@@ -17,6 +17,7 @@
 #include "test_util.h"
 
 using namespace armrt;
+using armrt_test::kDas2Dofs, armrt_test::kQ, armrt_test::kQd, armrt_test::kLce;
 using armrt_test::das2;
 
 namespace {
@@ -156,8 +157,8 @@ TEST_CASE("the structured Jacobian's exact blocks match finite differences of fo
   StateVec x = d.x, f0{}, fp{}, fm{};
   forward(m, d, x.data(), f0.data(), false, &d.jac);
   const StepJacobian& J = d.jac;
-  Eigen::Matrix<double, kNumDofs, kNumDofs, Eigen::RowMajor> M;
-  for (int k = 0; k < kNumDofs * kNumDofs; ++k) M.data()[k] = J.mass_matrix[k];
+  Eigen::Matrix<double, kDas2Dofs, kDas2Dofs, Eigen::RowMajor> M;
+  for (int k = 0; k < kDas2Dofs * kDas2Dofs; ++k) M.data()[k] = J.mass_matrix[k];
   const auto Minv = M.inverse().eval();
   auto fd = [&](int col, double h, int row) {
     StateVec xp = x, xm = x;
@@ -178,13 +179,13 @@ TEST_CASE("the structured Jacobian's exact blocks match finite differences of fo
     CHECK(fd(ia + i, 1e-7, kLce + i) == doctest::Approx(J.dvel_da[i]).epsilon(1e-4).scale(1e-3));
     CHECK(fd(ia + i, 1e-7, ia + i) == doctest::Approx(-J.act_rate[i]).epsilon(1e-6));
     // d lce_i'/d q_j = -dvel_dL R_ij: exact (lce' depends on q only through L).
-    for (int j = 0; j < kNumDofs; ++j)
+    for (int j = 0; j < kDas2Dofs; ++j)
       CHECK(fd(kQ + j, 1e-7, kLce + i) ==
-            doctest::Approx(-J.dvel_dL[i] * J.moment_arm[i * kNumDofs + j]).epsilon(1e-4).scale(1e-2));
+            doctest::Approx(-J.dvel_dL[i] * J.moment_arm[i * kDas2Dofs + j]).epsilon(1e-4).scale(1e-2));
     // d qdd/d lce_i = M^-1 R^T e_i dforce_dlce: exact.
-    for (int j = 0; j < kNumDofs; ++j) {
+    for (int j = 0; j < kDas2Dofs; ++j) {
       double expected = 0;
-      for (int b = 0; b < kNumDofs; ++b) expected += Minv(j, b) * J.moment_arm[i * kNumDofs + b] * J.dforce_dlce[i];
+      for (int b = 0; b < kDas2Dofs; ++b) expected += Minv(j, b) * J.moment_arm[i * kDas2Dofs + b] * J.dforce_dlce[i];
       CHECK(fd(kLce + i, h, kQd + j) == doctest::Approx(expected).epsilon(1e-4).scale(1e-2));
     }
     ++checked;
@@ -192,15 +193,15 @@ TEST_CASE("the structured Jacobian's exact blocks match finite differences of fo
   CHECK(checked >= 14);
   // The mechanical block is approximate (no dR/dq, gravity, Coriolis, dM/dq): its muscle and passive
   // stiffness must still carry the bulk of d qdd/d q at this stimulated state.
-  Eigen::Matrix<double, kNumDofs, kNumDofs> Kfd, Kj;
-  for (int c = 0; c < kNumDofs; ++c)
-    for (int r = 0; r < kNumDofs; ++r) Kfd(r, c) = fd(kQ + c, 1e-7, kQd + r);
-  Eigen::Matrix<double, kNumDofs, kNumDofs> K = Eigen::Matrix<double, kNumDofs, kNumDofs>::Zero();
+  Eigen::Matrix<double, kDas2Dofs, kDas2Dofs> Kfd, Kj;
+  for (int c = 0; c < kDas2Dofs; ++c)
+    for (int r = 0; r < kDas2Dofs; ++r) Kfd(r, c) = fd(kQ + c, 1e-7, kQd + r);
+  Eigen::Matrix<double, kDas2Dofs, kDas2Dofs> K = Eigen::Matrix<double, kDas2Dofs, kDas2Dofs>::Zero();
   for (int i = 0; i < n; ++i)
-    for (int a = 0; a < kNumDofs; ++a)
-      for (int b = 0; b < kNumDofs; ++b)
-        K(a, b) -= J.dforce_dL[i] * J.moment_arm[i * kNumDofs + a] * J.moment_arm[i * kNumDofs + b];
-  for (int a = 0; a < kNumDofs; ++a) K(a, a) += J.dtau_passive_dq[a];
+    for (int a = 0; a < kDas2Dofs; ++a)
+      for (int b = 0; b < kDas2Dofs; ++b)
+        K(a, b) -= J.dforce_dL[i] * J.moment_arm[i * kDas2Dofs + a] * J.moment_arm[i * kDas2Dofs + b];
+  for (int a = 0; a < kDas2Dofs; ++a) K(a, a) += J.dtau_passive_dq[a];
   Kj = Minv * K;
   const double rel = (Kj - Kfd).norm() / Kfd.norm();
   MESSAGE("d qdd/dq: relative difference of the approximate block from finite differences " << rel);
@@ -219,19 +220,19 @@ TEST_CASE("the Schur-complement solve equals a dense LU of I - h gamma J") {
   const StepJacobian& J = d.jac;
   // The same J written out densely (test only: the engine never forms it).
   Eigen::MatrixXd Jd = Eigen::MatrixXd::Zero(ns, ns);
-  Eigen::Matrix<double, kNumDofs, kNumDofs, Eigen::RowMajor> M;
-  for (int k = 0; k < kNumDofs * kNumDofs; ++k) M.data()[k] = J.mass_matrix[k];
+  Eigen::Matrix<double, kDas2Dofs, kDas2Dofs, Eigen::RowMajor> M;
+  for (int k = 0; k < kDas2Dofs * kDas2Dofs; ++k) M.data()[k] = J.mass_matrix[k];
   const Eigen::MatrixXd Minv = M.inverse();
-  Eigen::MatrixXd R(n, kNumDofs);
+  Eigen::MatrixXd R(n, kDas2Dofs);
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < kNumDofs; ++j) R(i, j) = J.moment_arm[i * kNumDofs + j];
+    for (int j = 0; j < kDas2Dofs; ++j) R(i, j) = J.moment_arm[i * kDas2Dofs + j];
   Eigen::MatrixXd Kq = -R.transpose() * Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(J.dforce_dL.data(), n)).asDiagonal() * R;
-  for (int j = 0; j < kNumDofs; ++j) Kq(j, j) += J.dtau_passive_dq[j];
-  for (int j = 0; j < kNumDofs; ++j) Jd(kQ + j, kQd + j) = 1.0;
-  Jd.block(kQd, kQ, kNumDofs, kNumDofs) = Minv * Kq;
-  Jd.block(kQd, kQd, kNumDofs, kNumDofs) = Minv * Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(J.dtau_passive_dqd.data(), kNumDofs)).asDiagonal();
+  for (int j = 0; j < kDas2Dofs; ++j) Kq(j, j) += J.dtau_passive_dq[j];
+  for (int j = 0; j < kDas2Dofs; ++j) Jd(kQ + j, kQd + j) = 1.0;
+  Jd.block(kQd, kQ, kDas2Dofs, kDas2Dofs) = Minv * Kq;
+  Jd.block(kQd, kQd, kDas2Dofs, kDas2Dofs) = Minv * Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(J.dtau_passive_dqd.data(), kDas2Dofs)).asDiagonal();
   for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < kNumDofs; ++j) {
+    for (int j = 0; j < kDas2Dofs; ++j) {
       Jd(kQd + j, kLce + i) = (Minv.row(j) * R.row(i).transpose())(0) * J.dforce_dlce[i];
       Jd(kLce + i, kQ + j) = -J.dvel_dL[i] * R(i, j);
     }
@@ -267,7 +268,7 @@ TEST_CASE("a slack tendon engaging within a 1 ms step: the CE stops near where i
     REQUIRE(ros2.step());
     REQUIRE(fine.step());
     worst_lce = std::max(worst_lce, std::fabs(ros2.data.x[kLce + i] - fine.data.x[kLce + i]));
-    for (int j = 0; j < kNumDofs; ++j) worst_q = std::max(worst_q, std::fabs(ros2.data.x[kQ + j] - fine.data.x[kQ + j]));
+    for (int j = 0; j < kDas2Dofs; ++j) worst_q = std::max(worst_q, std::fabs(ros2.data.x[kQ + j] - fine.data.x[kQ + j]));
   }
   MESSAGE("termaj1: max |lce - reference| " << worst_lce * 1e3 << " mm, joints " << worst_q * 180 / M_PI
           << " deg; element-steps limited " << ros2.data.limited_fibre_steps);

@@ -15,6 +15,12 @@ inline const armrt::ModelDef& das2() {
   return *def;
 }
 
+// das2's sizes and state layout, for the tests written for das2 (the engine takes them from the model;
+// test_model.cc checks these against data.h's offsets).
+inline constexpr int kDas2Dofs = 5;
+inline constexpr int kDas2Elements = 102;
+inline constexpr int kQ = 0, kQd = kDas2Dofs, kLce = 2 * kDas2Dofs;
+
 inline int element_index(const armrt::ModelDef& def, const char* name) {
   for (int i = 0; i < def.num_elements; ++i)
     if (std::strcmp(def.elements[i].name, name) == 0) return i;

@@ -140,11 +140,11 @@ int main(int argc, char** argv) {
                             "state derivative, record=false (one RK4 stage)"));
   results.push_back(time_it("forward_record", reps, batch, [&] { forward(m, d, x->data(), xdot->data(), true); sink = d.gh_stab; },
                             "state derivative, record=true (+ outputs, GH force/stability)"));
-  double L[kMaxElements], R[kMaxElements * kNumDofs], M[25];
+  double L[kMaxElements], R[kMaxElements * kMaxDofs], M[kMaxDofs * kMaxDofs];
   results.push_back(time_it("muscle_paths", reps, batch, [&] { def->muscle_paths(x->data(), L, R); sink = L[0] + R[7]; },
-                            "102 path lengths + moment arms (polynomials)"));
+                            "path lengths + moment arms of every element (polynomials)"));
   results.push_back(time_it("mass_matrix", reps, batch, [&] { def->mass_matrix(x->data(), M); sink = M[6]; },
-                            "5x5 M(q), generated"));
+                            "M(q), generated"));
 
   // Steps: keep stepping from the stimulated state; reset when the 2 s window is over so the state
   // stays physiological (reset is outside the timed region only when batch == 1; it is rare anyway).

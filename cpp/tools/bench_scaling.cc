@@ -174,12 +174,12 @@ int main(int argc, char** argv) {
   {
     auto s = make_sim(*def, nmax, Integrator::kRk4, 1e-3, 200);
     const double* q = s->data.x.data();
-    double L[kMaxElements], R[kMaxElements * kNumDofs], M[25], b[5];
+    double L[kMaxElements], R[kMaxElements * kMaxDofs], M[kMaxDofs * kMaxDofs], b[kMaxDofs];
     items.push_back(time_it("muscle_paths", nmax, reps, [&] { def->muscle_paths(q, L, R); sink = L[0] + R[3]; }));
     items.push_back(time_it("muscle_lengths", nmax, reps, [&] { def->muscle_lengths(q, L); sink = L[0]; }));
     items.push_back(time_it("mass_matrix", nmax, reps, [&] { def->mass_matrix(q, M); sink = M[6]; }));
     items.push_back(time_it("dynamics", nmax, reps, [&] {
-      def->dynamics(q, q + kQd, s->model.gravity_scapula.data(), M, b);
+      def->dynamics(q, q + qd_offset(s->model), s->model.gravity_scapula.data(), M, b);
       sink = M[6] + b[2];
     }));
   }
@@ -191,14 +191,14 @@ int main(int argc, char** argv) {
     Data& d = s->data;
     auto x = std::make_unique<StateVec>(d.x);
     auto xdot = std::make_unique<StateVec>();
-    double L[kMaxElements], R[kMaxElements * kNumDofs];
+    double L[kMaxElements], R[kMaxElements * kMaxDofs];
     def->muscle_paths(x->data(), L, R);
     const int ia = act_offset(m);
     // The muscle stage of forward() (activation dynamics + Hill kernel + R^T F), over n elements.
     auto loop = [&] {
-      double force[kMaxElements], tau[kNumDofs];
-      muscle_dynamics(m, d.excitation.data(), L, R, x->data() + ia, x->data() + kLce, xdot->data() + ia,
-                      xdot->data() + kLce, force, tau);
+      double force[kMaxElements], tau[kMaxDofs];
+      muscle_dynamics(m, d.excitation.data(), L, R, x->data() + ia, x->data() + lce_offset(m), xdot->data() + ia,
+                      xdot->data() + lce_offset(m), force, tau);
       sink = tau[0] + tau[3];
     };
     items.push_back(time_it("muscle_loop", n, reps, loop));

@@ -83,7 +83,7 @@ PYBIND11_MODULE(_batch, mod) {
       .def_property_readonly("gh_stab", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_stab, 0, self); })
       .def_property_readonly("gh_theta", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_theta, 0, self); })
       .def_property_readonly("gh_phi", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_phi, 0, self); })
-      .def_property_readonly("qddot", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.qdd.data(), kNumDofs, self); })
+      .def_property_readonly("qddot", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.qdd.data(), b.arm(0).model.num_dofs, self); })
       .def_property_readonly("muscle_force", [](py::object self) {
         auto& b = self.cast<Batch&>();
         return arm_view(b, b.arm(0).data.muscle_force.data(), b.arm(0).model.num_elements, self);
@@ -125,15 +125,16 @@ PYBIND11_MODULE(_batch, mod) {
         const std::vector<int> idx = arm_indices(b, arms);
         const auto m = static_cast<py::ssize_t>(idx.size());
         Array qa, qda, aa;
-        const double* qp = rows(q, qa, m, kNumDofs, "q");
-        const double* qdp = rows(qd, qda, m, kNumDofs, "qdot");
+        const int nq = b.arm(0).model.num_dofs;
+        const double* qp = rows(q, qa, m, nq, "q");
+        const double* qdp = rows(qd, qda, m, nq, "qdot");
         const int ne = b.arm(0).model.num_elements;
         const double* ap = rows(act, aa, m, ne, "activation");
         for (py::ssize_t r = 0; r < m; ++r) {
           Simulator& s = b.arm(idx[r]);
           s.data.status = Status::kOk;
           s.data.bad_index = -1;
-          s.reset(qp ? qp + r * kNumDofs : nullptr, qdp ? qdp + r * kNumDofs : nullptr, ap ? ap + r * ne : nullptr);
+          s.reset(qp ? qp + r * nq : nullptr, qdp ? qdp + r * nq : nullptr, ap ? ap + r * ne : nullptr);
           s.data.time = 0.0;
           s.evaluate_outputs();
         }

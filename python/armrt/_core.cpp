@@ -51,6 +51,18 @@ py::dict model_info(const ModelDef& def) {
   py::dict info;
   info["name"] = def.name;
   info["source_hash"] = def.source_hash;
+  info["num_dofs"] = def.num_dofs;
+  info["num_elements"] = def.num_elements;
+  // The state layout, defined once in data.h: {block: (offset, size)} of x = [q | qdot | lce | activation].
+  Model m;
+  model_init(m, def);
+  py::dict layout;
+  layout["q"] = py::make_tuple(q_offset(m), m.num_dofs);
+  layout["qdot"] = py::make_tuple(qd_offset(m), m.num_dofs);
+  layout["lce"] = py::make_tuple(lce_offset(m), m.num_elements);
+  layout["activation"] = py::make_tuple(act_offset(m), m.num_elements);
+  info["state_layout"] = layout;
+  info["state_size"] = state_size(m);
   py::list dofs, elements, muscles, groups;
   for (int j = 0; j < def.num_dofs; ++j) {
     const DofParams& d = def.dofs[j];
@@ -117,7 +129,8 @@ struct Recording {
 
 PYBIND11_MODULE(_core, mod) {
   mod.doc() = "armrt engine bindings (use armrt.Arm)";
-  mod.attr("NUM_DOFS") = kNumDofs;
+  mod.attr("MAX_DOFS") = kMaxDofs;
+  mod.attr("MAX_ELEMENTS") = kMaxElements;
   mod.def("model_info", [](const std::string& name) { return model_info(require_model(name)); });
   mod.def("default_max_step", [](const std::string& integrator) { return default_max_step(parse_integrator(integrator)); },
           "Largest integration step (s) the integrator takes by default inside a control step (inf: CVODE).");
@@ -132,6 +145,8 @@ PYBIND11_MODULE(_core, mod) {
            py::arg("model"), py::arg("integrator"), py::arg("dt"), py::arg("substeps") = 1)
       .def_property_readonly("substeps", [](const Simulator& s) { return s.substeps; })
       .def_property_readonly("num_elements", [](const Simulator& s) { return s.model.num_elements; })
+      .def_property_readonly("num_dofs", [](const Simulator& s) { return s.model.num_dofs; })
+      .def_property_readonly("model_name", [](const Simulator& s) { return std::string(s.model.def->name); })
       .def_property_readonly("dt", [](const Simulator& s) { return s.dt; })
       .def_property_readonly("integrator", [](const Simulator& s) { return integrator_name(s.integrator); })
       .def("set_integrator", [](Simulator& s, const std::string& name, double dt, int substeps) { s.set_integrator(parse_integrator(name), dt, substeps); },
@@ -151,8 +166,9 @@ PYBIND11_MODULE(_core, mod) {
       .def("reset", [](Simulator& s, py::object q, py::object qd, py::object act) {
         Array qa, qda, aa;
         const double *qp = nullptr, *qdp = nullptr, *ap = nullptr;
-        if (!q.is_none()) { qa = q.cast<Array>(); qp = checked(qa, kNumDofs, "q"); }
-        if (!qd.is_none()) { qda = qd.cast<Array>(); qdp = checked(qda, kNumDofs, "qdot"); }
+        const int nq = s.model.num_dofs;
+        if (!q.is_none()) { qa = q.cast<Array>(); qp = checked(qa, nq, "q"); }
+        if (!qd.is_none()) { qda = qd.cast<Array>(); qdp = checked(qda, nq, "qdot"); }
         if (!act.is_none()) { aa = act.cast<Array>(); ap = checked(aa, s.model.num_elements, "activation"); }
         s.reset(qp, qdp, ap);
       }, py::arg("q") = py::none(), py::arg("qdot") = py::none(), py::arg("activation") = py::none())
@@ -173,21 +189,21 @@ PYBIND11_MODULE(_core, mod) {
       .def("clear_error", [](Simulator& s) { s.data.status = Status::kOk; s.data.bad_index = -1; })
       .def("evaluate_outputs", &Simulator::evaluate_outputs)
       .def("outputs", [](Simulator& s) {
-        const int n = s.model.num_elements;
+        const int n = s.model.num_elements, nq = s.model.num_dofs;
         py::dict o;
         auto copy = [](const double* p, std::vector<py::ssize_t> shape) {
           Array a(shape);
           std::copy(p, p + a.size(), a.mutable_data());
           return a;
         };
-        o["qddot"] = copy(s.data.qdd.data(), {kNumDofs});
+        o["qddot"] = copy(s.data.qdd.data(), {nq});
         o["muscle_length"] = copy(s.data.muscle_length.data(), {n});
-        o["moment_arm"] = copy(s.data.moment_arm.data(), {n, kNumDofs});
+        o["moment_arm"] = copy(s.data.moment_arm.data(), {n, nq});
         o["muscle_force"] = copy(s.data.muscle_force.data(), {n});
         o["fibre_velocity"] = copy(s.data.fibre_velocity.data(), {n});
-        o["muscle_torque"] = copy(s.data.muscle_torque.data(), {kNumDofs});
-        o["passive_torque"] = copy(s.data.passive_torque.data(), {kNumDofs});
-        o["external_torque"] = copy(s.data.external_torque.data(), {kNumDofs});
+        o["muscle_torque"] = copy(s.data.muscle_torque.data(), {nq});
+        o["passive_torque"] = copy(s.data.passive_torque.data(), {nq});
+        o["external_torque"] = copy(s.data.external_torque.data(), {nq});
         o["hand_position"] = copy(s.data.hand_position.data(), {3});
         o["gh_force"] = copy(s.data.gh_force.data(), {3});
         o["gh_theta"] = s.data.gh_theta;
@@ -226,7 +242,8 @@ PYBIND11_MODULE(_core, mod) {
                     [](Simulator& s, double v) { s.model.max_joint_speed = v; })
       // simulate: excitation is (T, n) (one row per step) or (1, n) (held); the loop runs without the GIL.
       .def("simulate", [](Simulator& s, const Array& excitation, long n_steps, long record_every) {
-        const int n = s.model.num_elements;
+        const int n = s.model.num_elements, nq = s.model.num_dofs;
+        const int iq = q_offset(s.model), iqd = qd_offset(s.model), il = lce_offset(s.model), ia = act_offset(s.model);
         if (excitation.ndim() != 2 || excitation.shape(1) != n || (excitation.shape(0) != n_steps && excitation.shape(0) != 1))
           throw py::value_error("excitation must have shape (" + std::to_string(n_steps) + ", " + std::to_string(n) + ") or (1, " + std::to_string(n) + ")");
         if (record_every < 1) throw py::value_error("record_every must be >= 1");
@@ -235,7 +252,7 @@ PYBIND11_MODULE(_core, mod) {
         Recording r;
         const long n_rec = n_steps / record_every + 1;
         for (auto* v : {&r.t, &r.gh_stab, &r.tet}) v->reserve(n_rec);
-        for (auto* v : {&r.q, &r.qd}) v->reserve(n_rec * kNumDofs);
+        for (auto* v : {&r.q, &r.qd}) v->reserve(n_rec * nq);
         for (auto* v : {&r.lce, &r.act, &r.excitation, &r.force, &r.length}) v->reserve(n_rec * n);
         for (auto* v : {&r.gh_force, &r.hand, &r.th_angles}) v->reserve(n_rec * 3);
         r.gh_angles.reserve(n_rec * 2);
@@ -248,10 +265,10 @@ PYBIND11_MODULE(_core, mod) {
           // One row: the state x at time t and the outputs forward() left in s.data for that state.
           auto record = [&](const double* x, double time, double tet_ns) {
             r.t.push_back(time);
-            r.q.insert(r.q.end(), x + kQ, x + kQ + kNumDofs);
-            r.qd.insert(r.qd.end(), x + kQd, x + kQd + kNumDofs);
-            r.lce.insert(r.lce.end(), x + kLce, x + kLce + n);
-            r.act.insert(r.act.end(), x + act_offset(s.model), x + act_offset(s.model) + n);
+            r.q.insert(r.q.end(), x + iq, x + iq + nq);
+            r.qd.insert(r.qd.end(), x + iqd, x + iqd + nq);
+            r.lce.insert(r.lce.end(), x + il, x + il + n);
+            r.act.insert(r.act.end(), x + ia, x + ia + n);
             r.excitation.insert(r.excitation.end(), s.data.excitation.begin(), s.data.excitation.begin() + n);
             r.force.insert(r.force.end(), s.data.muscle_force.begin(), s.data.muscle_force.begin() + n);
             r.length.insert(r.length.end(), s.data.muscle_length.begin(), s.data.muscle_length.begin() + n);
@@ -260,7 +277,7 @@ PYBIND11_MODULE(_core, mod) {
             r.gh_angles.push_back(s.data.gh_theta);
             r.gh_angles.push_back(s.data.gh_phi);
             r.hand.insert(r.hand.end(), s.data.hand_position.begin(), s.data.hand_position.end());
-            thorax_humerus_angles(s.model, x + kQ, angles);
+            thorax_humerus_angles(s.model, x + iq, angles);
             r.th_angles.insert(r.th_angles.end(), angles, angles + 3);
             r.tet.push_back(tet_ns);
           };
@@ -294,8 +311,8 @@ PYBIND11_MODULE(_core, mod) {
         };
         py::dict out;
         out["time"] = arr(r.t, 0);
-        out["q"] = arr(r.q, kNumDofs);
-        out["qdot"] = arr(r.qd, kNumDofs);
+        out["q"] = arr(r.q, nq);
+        out["qdot"] = arr(r.qd, nq);
         out["lce"] = arr(r.lce, n);
         out["activation"] = arr(r.act, n);
         out["excitation"] = arr(r.excitation, n);
@@ -312,40 +329,41 @@ PYBIND11_MODULE(_core, mod) {
       }, py::arg("excitation"), py::arg("n_steps"), py::arg("record_every") = 1)
       // Model functions at any pose.
       .def("muscle_paths", [](const Simulator& s, const Array& q) {
-        const double* qp = checked(q, kNumDofs, "q");
+        const int nq = s.model.num_dofs;
+        const double* qp = checked(q, nq, "q");
         const int n = s.model.num_elements;
-        Array L({n}), R({n, kNumDofs});
+        Array L({n}), R({n, nq});
         s.model.def->muscle_paths(qp, L.mutable_data(), R.mutable_data());
         return py::make_tuple(L, R);
       })
       .def("gh_directions", [](const Simulator& s, const Array& q) {
         Array d({s.model.num_elements, 3});
-        s.model.def->gh_directions(checked(q, kNumDofs, "q"), d.mutable_data());
+        s.model.def->gh_directions(checked(q, s.model.num_dofs, "q"), d.mutable_data());
         return d;
       })
       .def("mass_matrix", [](const Simulator& s, const Array& q) {
-        Array M({kNumDofs, kNumDofs});
-        s.model.def->mass_matrix(checked(q, kNumDofs, "q"), M.mutable_data());
+        Array M({s.model.num_dofs, s.model.num_dofs});
+        s.model.def->mass_matrix(checked(q, s.model.num_dofs, "q"), M.mutable_data());
         return M;
       })
       .def("bias_force", [](const Simulator& s, const Array& q, const Array& qd) {
-        Array b({kNumDofs});
-        s.model.def->bias_force(checked(q, kNumDofs, "q"), checked(qd, kNumDofs, "qdot"), s.model.gravity_scapula.data(), b.mutable_data());
+        Array b({s.model.num_dofs});
+        s.model.def->bias_force(checked(q, s.model.num_dofs, "q"), checked(qd, s.model.num_dofs, "qdot"), s.model.gravity_scapula.data(), b.mutable_data());
         return b;
       })
       .def("body_poses", [](const Simulator& s, const Array& q) {
         Array R({4, 3, 3}), p({4, 3});
-        s.model.def->body_poses(checked(q, kNumDofs, "q"), R.mutable_data(), p.mutable_data());
+        s.model.def->body_poses(checked(q, s.model.num_dofs, "q"), R.mutable_data(), p.mutable_data());
         return py::make_tuple(R, p);
       })
       .def("thorax_humerus_angles", [](const Simulator& s, const Array& q) {
         Array a({3});
-        thorax_humerus_angles(s.model, checked(q, kNumDofs, "q"), a.mutable_data());
+        thorax_humerus_angles(s.model, checked(q, s.model.num_dofs, "q"), a.mutable_data());
         return a;
       })
       .def("passive_joint_torque", [](const Simulator& s, const Array& q, const Array& qd) {
-        Array t({kNumDofs});
-        passive_joint_torque(*s.model.def, checked(q, kNumDofs, "q"), checked(qd, kNumDofs, "qdot"), t.mutable_data());
+        Array t({s.model.num_dofs});
+        passive_joint_torque(*s.model.def, checked(q, s.model.num_dofs, "q"), checked(qd, s.model.num_dofs, "qdot"), t.mutable_data());
         return t;
       })
       .def("muscle_element", [](const Simulator& s, int i, double L, double lce, double a) {

@@ -121,9 +121,13 @@ PYBIND11_MODULE(_rt, m) {
   flags["overrun"] = static_cast<int>(kFlagOverrun);
   flags["excitation"] = static_cast<int>(kFlagExcitation);
   m.attr("FLAGS") = flags;
-  py::list state_fields;
-  for (const char* f : kStateFields) state_fields.append(f);
-  m.attr("STATE_FIELDS") = state_fields;
+  // The fixed values of a state packet depend on the model's DOFs (packet.h state_layout).
+  m.def("state_fields", [](const std::string& model) {
+        const armrt::ModelDef* def = armrt::find_model(model);
+        if (!def) throw py::value_error("unknown model '" + model + "' (compiled-in models: " + armrt::model_names() + ")");
+        return state_field_names(def->num_dofs);
+      }, py::arg("model") = "das2",
+      "Names of the fixed values of a state packet of this model, in order (time, q0.., qd0.., hand_x, ...)");
   m.def("parse_endpoint", [](const std::string& s, bool require_port) {
         const sockaddr_in a = parse_endpoint(s, require_port);
         char b[INET_ADDRSTRLEN] = {};

@@ -60,9 +60,15 @@ EXC_ELEMENTS, EXC_MUSCLES, EXC_GROUPS, EXC_CHANNELS = (TYPES[k] for k in ("eleme
 RELEASE, HELLO, STATE, OFFER = (TYPES[k] for k in ("release", "hello", "state", "offer"))
 FLAG_FORCES, FLAG_STOPPED, FLAG_ERROR, FLAG_TIMED_OUT = (FLAGS[k] for k in ("forces", "stopped", "error", "timed_out"))
 FLAG_AUTH, FLAG_OVERRUN, FLAG_EXCITATION = (FLAGS[k] for k in ("auth", "overrun", "excitation"))
-STATE_FIELDS: list = list(_rt.STATE_FIELDS)
+
+
+def state_fields(model: str = "das2") -> list:
+    """Names of the fixed values of a state packet of `model`, in order (they depend on its DOFs)."""
+    return list(_rt.state_fields(model))
+
+
+STATE_FIELDS: list = state_fields("das2")   # the default model's (das2: 18 values)
 STATE_FIXED_VALUES = len(STATE_FIELDS)
-_ST = {name: k for k, name in enumerate(STATE_FIELDS)}
 
 MAPPING_TYPES = {"elements": EXC_ELEMENTS, "muscles": EXC_MUSCLES, "groups": EXC_GROUPS, "channels": EXC_CHANNELS}
 
@@ -154,8 +160,8 @@ class State:
 
     seq: int
     time: float                 # s, simulated
-    q: np.ndarray               # (5,) rad
-    qdot: np.ndarray            # (5,) rad/s
+    q: np.ndarray               # (n_dofs,) rad
+    qdot: np.ndarray            # (n_dofs,) rad/s
     hand_position: np.ndarray   # (3,) m, thorax frame
     gh_stab: float
     last_applied_seq: int       # sequence number of the last excitation applied in this session (-1: none)
@@ -186,23 +192,28 @@ class State:
         return bool(self.flags & FLAG_OVERRUN)
 
     @classmethod
-    def from_packet(cls, p: Packet) -> "State":
+    def from_packet(cls, p: Packet, fields: Sequence[str] | None = None) -> "State":
+        """fields: the model's state_fields() (default: das2's)."""
         if p.type != STATE:
             raise PacketError(f"not a state packet (type {p.type})")
+        fields = STATE_FIELDS if fields is None else list(fields)
+        st = {name: k for k, name in enumerate(fields)}
+        n_fixed = len(fields)
+        n_dofs = st["qd0"] - st["q0"]
         v = p.values
-        if v.size < STATE_FIXED_VALUES:
-            raise PacketError(f"state packet with {v.size} values, expected at least {STATE_FIXED_VALUES}")
-        rest = v[STATE_FIXED_VALUES:]
+        if v.size < n_fixed:
+            raise PacketError(f"state packet with {v.size} values, expected at least {n_fixed}")
+        rest = v[n_fixed:]
         n_blocks = bool(p.flags & FLAG_FORCES) + bool(p.flags & FLAG_EXCITATION)
         if n_blocks and rest.size % n_blocks:
             raise PacketError(f"state packet with {rest.size} trailing values for {n_blocks} blocks")
         n = rest.size // n_blocks if n_blocks else 0
         forces = rest[:n].copy() if p.flags & FLAG_FORCES else None
         exc = rest[n_blocks * n - n:].copy() if p.flags & FLAG_EXCITATION else None
-        q0, qd0 = _ST["q0"], _ST["qd0"]
-        return cls(p.seq, float(v[_ST["time"]]), v[q0:q0 + 5].copy(), v[qd0:qd0 + 5].copy(),
-                   v[_ST["hand_x"]:_ST["hand_z"] + 1].copy(), float(v[_ST["gh_stab"]]), int(v[_ST["last_seq"]]),
-                   p.flags, float(v[_ST["lag"]]), int(v[_ST["overruns"]]), forces, exc, p.session)
+        q0, qd0 = st["q0"], st["qd0"]
+        return cls(p.seq, float(v[st["time"]]), v[q0:q0 + n_dofs].copy(), v[qd0:qd0 + n_dofs].copy(),
+                   v[st["hand_x"]:st["hand_z"] + 1].copy(), float(v[st["gh_stab"]]), int(v[st["last_seq"]]),
+                   p.flags, float(v[st["lag"]]), int(v[st["overruns"]]), forces, exc, p.session)
 
 
 # ---------------------------------------------------------------------------------------- mappings
@@ -299,6 +310,7 @@ class UdpClient:
                  model: str = "das2", channels: Sequence[str] | None = None, bind_port: int = 0,
                  key: bytes | str | None = None):
         self.address = parse_endpoint(f"{host}:{int(port)}")
+        self.state_fields = state_fields(model)
         self.mapping = mapping if isinstance(mapping, GroupMapping) else GroupMapping.from_model(mapping, model, channels)
         self.key = _key_bytes(key)
         self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
@@ -334,7 +346,7 @@ class UdpClient:
             if p.type == OFFER:
                 self.session = p.session
             elif p.type == STATE:
-                st = State.from_packet(p)
+                st = State.from_packet(p, self.state_fields)
                 st.received_at = time.monotonic()
                 if not st.timed_out:
                     self.session = st.session

@@ -10,12 +10,13 @@
 
 namespace armrt {
 
-// State vector layout: [q (5) | qdot (5) | lce (n) | activation (n)].
-inline constexpr int kQ = 0;
-inline constexpr int kQd = kNumDofs;
-inline constexpr int kLce = 2 * kNumDofs;
-inline int act_offset(const Model& m) { return kLce + m.num_elements; }
-inline int state_size(const Model& m) { return 2 * kNumDofs + 2 * m.num_elements; }
+// State vector layout: [q (num_dofs) | qdot (num_dofs) | lce (num_elements) | activation (num_elements)].
+// These offsets are the one definition of the layout (the Python API reads them from armrt._core).
+inline int q_offset(const Model&) { return 0; }
+inline int qd_offset(const Model& m) { return m.num_dofs; }
+inline int lce_offset(const Model& m) { return 2 * m.num_dofs; }
+inline int act_offset(const Model& m) { return 2 * m.num_dofs + m.num_elements; }
+inline int state_size(const Model& m) { return 2 * m.num_dofs + 2 * m.num_elements; }
 
 using StateVec = std::array<double, kMaxState>;
 
@@ -45,10 +46,10 @@ struct StepJacobian {
   std::array<double, kMaxElements> dvel_da{};      // m/s, CE velocity vs activation
   std::array<double, kMaxElements> act_rate{};     // 1/s, -d(activation rate)/d(activation) = c1 u + c2
   std::array<double, kMaxElements> muscle_length{};          // m
-  std::array<double, kMaxElements * kNumDofs> moment_arm{};  // m, [element][dof]
-  std::array<double, kNumDofs * kNumDofs> mass_matrix{};     // kg m^2, row-major
-  std::array<double, kNumDofs> dtau_passive_dq{};   // N m/rad, diagonal
-  std::array<double, kNumDofs> dtau_passive_dqd{};  // N m s/rad, diagonal
+  std::array<double, kMaxElements * kMaxDofs> moment_arm{};  // m, [element][dof], row stride num_dofs
+  std::array<double, kMaxDofs * kMaxDofs> mass_matrix{};     // kg m^2, num_dofs x num_dofs row-major
+  std::array<double, kMaxDofs> dtau_passive_dq{};   // N m/rad, diagonal
+  std::array<double, kMaxDofs> dtau_passive_dqd{};  // N m s/rad, diagonal
 
   // Factorisation of I - h gamma J for one h gamma (rosenbrock.cc).
   double hg = 0;                                    // s, h * gamma it was built for
@@ -56,9 +57,9 @@ struct StepJacobian {
   std::array<double, kMaxElements> inv_lce{};       // 1 / (1 - hg dvel_dlce)
   std::array<double, kMaxElements> lce_from_q{};    // hg dvel_dL / (1 - hg dvel_dlce), m/m
   std::array<double, kMaxElements> series_stiffness{};  // N/m, dforce_dL + dforce_dlce * lce_from_q
-  std::array<double, kNumDofs * kNumDofs> schur_lu{};   // LU of the 5x5 Schur complement, row-major
-  std::array<int, kNumDofs> schur_perm{};               // its row permutation
-  std::array<double, kNumDofs * kNumDofs> stiffness{};  // N m/rad, K_eff = diag(dtau_passive_dq) - R^T diag(series_stiffness) R
+  std::array<double, kMaxDofs * kMaxDofs> schur_lu{};   // LU of the num_dofs x num_dofs Schur complement
+  std::array<int, kMaxDofs> schur_perm{};               // its row permutation
+  std::array<double, kMaxDofs * kMaxDofs> stiffness{};  // N m/rad, K_eff = diag(dtau_passive_dq) - R^T diag(series_stiffness) R
   std::array<double, kMaxElements> tmp{};               // scratch of one solve
 };
 
@@ -74,14 +75,14 @@ struct Data {
   std::array<double, 3> hand_moment{};  // N m, applied to the hand, thorax frame
 
   // Outputs of the last forward() (at the state it was evaluated at).
-  std::array<double, kNumDofs> qdd{};             // rad/s^2
+  std::array<double, kMaxDofs> qdd{};             // rad/s^2
   std::array<double, kMaxElements> muscle_length{};  // m, muscle-tendon length
-  std::array<double, kMaxElements * kNumDofs> moment_arm{};  // m, [element][dof]
+  std::array<double, kMaxElements * kMaxDofs> moment_arm{};  // m, [element][dof], row stride num_dofs
   std::array<double, kMaxElements> muscle_force{};   // N, tendon (SEE) force
   std::array<double, kMaxElements> fibre_velocity{}; // m/s, d lce/dt (lengthening positive)
-  std::array<double, kNumDofs> muscle_torque{};   // N m, generalised muscle forces
-  std::array<double, kNumDofs> passive_torque{};  // N m, passive joint moments
-  std::array<double, kNumDofs> external_torque{}; // N m, from the hand force and moment
+  std::array<double, kMaxDofs> muscle_torque{};   // N m, generalised muscle forces
+  std::array<double, kMaxDofs> passive_torque{};  // N m, passive joint moments
+  std::array<double, kMaxDofs> external_torque{}; // N m, from the hand force and moment
   std::array<double, 3> hand_position{};  // m, thorax frame
   std::array<double, 3> gh_force{};       // N, humeral head on glenoid, scapula frame
   double gh_theta = 0, gh_phi = 0;        // rad, from the glenoid normal along the major / minor axis
@@ -101,6 +102,6 @@ struct Data {
   StepJacobian jac;  // linearly implicit steps (rosenbrock.cc)
 };
 
-void data_reset(const Model& m, Data& d, const double* q /* 5 or nullptr: rest posture */);
+void data_reset(const Model& m, Data& d, const double* q /* num_dofs or nullptr: rest posture */);
 
 }  // namespace armrt

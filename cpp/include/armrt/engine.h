@@ -33,10 +33,10 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
 void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
                      const double* moment_arm, const double* act, const double* lce, double* act_dot,
                      double* lce_dot, double* force, double* tau, StepJacobian* jac = nullptr);
-// Solves A x = b for a symmetric positive definite 5 x 5 A (row-major), e.g. M(q) qdd = tau.
-void solve_spd(const double* A, const double* b, double* x);
-// Generalised forces tau = R^T F (N m) of n element forces F (N) with moment arms R (n x 5, m).
-void generalised_force(const double* moment_arm, const double* force, int n, double* tau);
+// Solves A x = b for a symmetric positive definite n x n A (row-major, n <= kMaxDofs), e.g. M(q) qdd = tau.
+void solve_spd(const double* A, const double* b, int n, double* x);
+// Generalised forces tau = R^T F (N m) of n element forces F (N) with moment arms R (n x ndof, m).
+void generalised_force(const double* moment_arm, const double* force, int n, int ndof, double* tau);
 // GH stability of a force of the humeral head on the glenoid (scapula frame).
 void gh_stability(const ModelDef& def, const double* force, double* theta, double* phi, double* stab);
 // Passive joint moments (N m) at q, qd.

@@ -9,9 +9,12 @@
 
 namespace armrt {
 
-inline constexpr int kNumDofs = 5;
-inline constexpr int kMaxElements = 128;
-inline constexpr int kMaxState = 2 * kNumDofs + 2 * kMaxElements;
+// Capacities, not sizes: a model's own sizes are ModelDef::num_dofs and num_elements (das2: 5 and 102;
+// the full shoulder girdle: 11 and 138). Model and Data reserve room for the largest, so one build runs
+// any generated model and stepping never allocates.
+inline constexpr int kMaxDofs = 16;
+inline constexpr int kMaxElements = 160;
+inline constexpr int kMaxState = 2 * kMaxDofs + 2 * kMaxElements;
 
 // Hill-type muscle constants (McLean et al. 2003, as used by the DAS3 real-time code).
 inline constexpr double kHillA = 0.25;             // Hill a/Fmax (concentric curvature)
@@ -57,7 +60,8 @@ struct MuscleArrays {
 
 struct Model {
   const ModelDef* def = nullptr;
-  int num_elements = 0;
+  int num_dofs = 0;       // generalised coordinates (<= kMaxDofs)
+  int num_elements = 0;   // muscle elements (<= kMaxElements)
   std::array<ElementConstants, kMaxElements> element{};
   MuscleArrays muscles{};  // derived from element[] by model_update_derived()
   std::array<double, 3> gravity_scapula{};  // m/s^2, may be changed (e.g. a lying posture)
@@ -65,7 +69,8 @@ struct Model {
   double max_joint_speed = 100.0;           // rad/s; faster means the simulation diverged
 };
 
-// Builds a Model from generated tables. Never allocates.
+// Builds a Model from generated tables. Never allocates; throws std::invalid_argument if the model's
+// sizes exceed the capacities above.
 void model_init(Model& m, const ModelDef& def);
 // Recomputes per-element constants after strength_scale or max_activation changed.
 void model_update_derived(Model& m);

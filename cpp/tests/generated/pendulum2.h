@@ -1,0 +1,24 @@
+// GENERATED FILE - DO NOT EDIT BY HAND.
+// Written by `python -m codegen.generate --model tests/data/pendulum2.json --out cpp/tests/generated`
+// from the model file pendulum2.json (sha256 2718c0e45e068edd42892f9941382c2ce55fbc1c7f7eee6ca80b24523a8d3c96).
+// Change the model file or the generator and regenerate instead.
+#pragma once
+
+#include "armrt/model_def.h"
+
+namespace armrt::generated::pendulum2 {
+
+const armrt::ModelDef& model_def();
+
+void mass_matrix(const double* q, double* M);
+void bias_force(const double* q, const double* qd, const double* g_scapula, double* b);
+void dynamics(const double* q, const double* qd, const double* g_scapula, double* M, double* b);
+void hand_position(const double* q, double* p);
+void hand_jacobian(const double* q, double* Jv, double* Jw);
+void arm_momentum_rate(const double* q, const double* qd, double* A, double* c);
+void body_poses(const double* q, double* R, double* p);
+void muscle_lengths(const double* q, double* L);
+void muscle_paths(const double* q, double* L, double* moment_arm);
+void gh_directions(const double* q, double* d);
+
+}  // namespace armrt::generated::pendulum2
