@@ -214,3 +214,36 @@ def test_armrt_model_import_writes_the_same_file(participant_dir, tmp_path):
     assert out.read_bytes() == (ROOT / "models" / "participant_A_injured.json").read_bytes()
     assert cli.main(["model", "import", str(participant_dir / "model_struct_A.mat"), "--free", "ELx,SCy",
                      "-o", str(tmp_path / "bad.json")]) == 2
+
+
+def test_committed_participant_code_matches_a_fresh_generation(tmp_path):
+    from codegen.generate import generate
+    generate(ROOT / "models" / "participant_A.json", tmp_path)
+    for f in ["participant_A.h", "participant_A_model.cc", "participant_A_dynamics.cc", "participant_A_paths.cc"]:
+        assert (tmp_path / f).read_bytes() == (ROOT / "cpp" / "generated" / f).read_bytes(), \
+            f"cpp/generated/{f} is stale: python -m codegen.generate --model models/participant_A.json --out cpp/generated"
+
+
+@pytest.mark.slow
+def test_welded_gh_dynamics_equal_the_free_gh_model_at_the_fixed_angles(participant_dir, equilibrium):
+    """The 2-DOF model (humerus welded at the fixed GH angles) has the mass matrix and generalised
+    gravity/Coriolis forces of the 5-DOF model's elbow-forearm block at those angles, GH at rest."""
+    import sympy as sp
+    from codegen.eom import derive
+    m2 = build_reduced_model(participant_dir / "model_struct_A.mat", ["ELx", "PSy"], "p2", equilibrium_path=equilibrium)
+    gh = {d["name"]: d["angle"] for d in m2["fixed_dofs"]["dofs"] if d["name"] in ("GHy", "GHz", "GHyy")}
+    m5 = build_reduced_model(participant_dir / "model_struct_A.mat", ARM5, "p5", equilibrium_path=equilibrium,
+                             posture={**gh, "ELx": m2["dofs"][0]["rest"], "PSy": m2["dofs"][1]["rest"]})
+    assert np.allclose(m5["scapula"]["rotation_in_thorax"], m2["scapula"]["rotation_in_thorax"], atol=1e-15)
+    e2, e5 = derive(m2), derive(m5)
+    f2 = sp.lambdify(e2.q + e2.qd + e2.g, [e2.mass_matrix, e2.bias_force, e2.hand_position], "numpy")
+    f5 = sp.lambdify(e5.q + e5.qd + e5.g, [e5.mass_matrix, e5.bias_force, e5.hand_position], "numpy")
+    rng = np.random.default_rng(7)
+    ghv = [gh["GHy"], gh["GHz"], gh["GHyy"]]
+    for _ in range(5):
+        q, qd, g = rng.uniform(0.2, 2.0, 2), rng.normal(size=2), rng.normal(size=3) * 5
+        M2, b2, h2 = f2(*q, *qd, *g)
+        M5, b5, h5 = f5(*ghv, *q, 0.0, 0.0, 0.0, *qd, *g)
+        assert np.allclose(np.asarray(M2, float), np.asarray(M5, float)[3:, 3:], rtol=1e-12, atol=1e-14)
+        assert np.allclose(np.asarray(b2, float).ravel(), np.asarray(b5, float).ravel()[3:], rtol=1e-12, atol=1e-12)
+        assert np.allclose(np.asarray(h2, float).ravel(), np.asarray(h5, float).ravel(), rtol=1e-12, atol=1e-14)
