@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/participant_A.json --out cpp/generated`
-// from the model file participant_A.json (sha256 eaab489547cf4b5c46196084a955c2176ae2a2a90e99e5399e80ed495eef3d1e).
+// from the model file participant_A.json (sha256 a16b40f11dac3788bfbcead1d42799439af7374618332248e40139a73b438068).
 // Change the model file or the generator and regenerate instead.
 
 #include "participant_A.h"
@@ -103,7 +103,7 @@ const GroupDef kGroups[6] = {
 
 const ModelDef kModel = {
     "participant_A",
-    "eaab489547cf4b5c46196084a955c2176ae2a2a90e99e5399e80ed495eef3d1e",
+    "a16b40f11dac3788bfbcead1d42799439af7374618332248e40139a73b438068",
     2,
     42,
     kDofs,

@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/participant_A.json --out cpp/generated`
-// from the model file participant_A.json (sha256 eaab489547cf4b5c46196084a955c2176ae2a2a90e99e5399e80ed495eef3d1e).
+// from the model file participant_A.json (sha256 a16b40f11dac3788bfbcead1d42799439af7374618332248e40139a73b438068).
 // Change the model file or the generator and regenerate instead.
 
 #include <cmath>
@@ -46,17 +46,17 @@ void muscle_paths(const double* q, double* L, double* moment_arm) {
   const v8d g11 = q0*g7 - p7*e0;
   { const v8d a = (0.35943589043957508*g_one + 0.0038545695404445454*g0) + (-0.039350572219693764*g1);
     std::memcpy(moment_arm + 0, &a, 2 * sizeof(double)); L[0] = a[2]; }
-  { const v8d a = (0.33473067183820548*g_one + 0.0015576962817986635*g11) + (-0.021160884811199852*g1 + -0.01710614612749067*g4);
+  { const v8d a = (0.33473066287360076*g_one + 0.0015576962817986635*g11) + (-0.021160884811199852*g1 + -0.01710614612749067*g4);
     std::memcpy(moment_arm + 2, &a, 2 * sizeof(double)); L[1] = a[2]; }
-  { const v8d a = (0.33473067183820548*g_one + 0.0015576962817986635*g11) + (-0.021160884811199852*g1 + -0.01710614612749067*g4);
+  { const v8d a = (0.33473066287360076*g_one + 0.0015576962817986635*g11) + (-0.021160884811199852*g1 + -0.01710614612749067*g4);
     std::memcpy(moment_arm + 4, &a, 2 * sizeof(double)); L[2] = a[2]; }
-  { const v8d a = (0.2833813550870054*g_one) + (0.018303606851437355*g1);
+  { const v8d a = (0.28338136608271164*g_one) + (0.018303606851437355*g1);
     std::memcpy(moment_arm + 6, &a, 2 * sizeof(double)); L[3] = a[2]; }
-  { const v8d a = (0.28719746771599802*g_one) + (0.018333913075011372*g1);
+  { const v8d a = (0.28719747442926685*g_one) + (0.018333913075011372*g1);
     std::memcpy(moment_arm + 8, &a, 2 * sizeof(double)); L[4] = a[2]; }
-  { const v8d a = (0.3151093845389738*g_one) + (0.018347585403952173*g1);
+  { const v8d a = (0.31510939348476741*g_one) + (0.018347585403952173*g1);
     std::memcpy(moment_arm + 10, &a, 2 * sizeof(double)); L[5] = a[2]; }
-  { const v8d a = (0.31090320754429662*g_one) + (0.018333298313063819*g1);
+  { const v8d a = (0.31090321429854784*g_one) + (0.018333298313063819*g1);
     std::memcpy(moment_arm + 12, &a, 2 * sizeof(double)); L[6] = a[2]; }
   { const v8d a = (0.14439930529052919*g_one) + (0.018495944824771921*g1);
     std::memcpy(moment_arm + 14, &a, 2 * sizeof(double)); L[7] = a[2]; }
@@ -133,57 +133,57 @@ void muscle_paths(const double* q, double* L, double* moment_arm) {
 void gh_directions(const double* q, double* d) {
   (void)q;
   {
-    const double x = -0.57396360191246154;
-    const double y = -0.51966037992952341;
-    const double z = -0.30229769625042041;
+    const double x = -0.57396365917253478;
+    const double y = -0.51966034605835165;
+    const double z = -0.30229789420071657;
     const double n = std::sqrt(x*x + y*y + z*z);
     const double s = n > 0.0 ? 1.0/n : 0.0;
     d[0] = x*s; d[1] = y*s; d[2] = z*s;
   }
   {
-    const double x = -0.34224697678519994;
-    const double y = 0.92231723411164446;
-    const double z = 0.13808947157347895;
+    const double x = -0.34224702721856137;
+    const double y = 0.92231716639197281;
+    const double z = 0.13808962160250379;
     const double n = std::sqrt(x*x + y*y + z*z);
     const double s = n > 0.0 ? 1.0/n : 0.0;
     d[3] = x*s; d[4] = y*s; d[5] = z*s;
   }
   {
-    const double x = -0.34224697678519994;
-    const double y = 0.92231723411164446;
-    const double z = 0.13808947157347895;
+    const double x = -0.34224702721856137;
+    const double y = 0.92231716639197281;
+    const double z = 0.13808962160250379;
     const double n = std::sqrt(x*x + y*y + z*z);
     const double s = n > 0.0 ? 1.0/n : 0.0;
     d[6] = x*s; d[7] = y*s; d[8] = z*s;
   }
   {
-    const double x = -0.2842255056403965;
-    const double y = 0.94004287818321675;
-    const double z = 0.14946044538537637;
+    const double x = -0.28422550305151778;
+    const double y = 0.940042793594561;
+    const double z = 0.1494606077685372;
     const double n = std::sqrt(x*x + y*y + z*z);
     const double s = n > 0.0 ? 1.0/n : 0.0;
     d[9] = x*s; d[10] = y*s; d[11] = z*s;
   }
   {
-    const double x = -0.28751395226292331;
-    const double y = 0.93666008715717508;
-    const double z = 0.1517457538910543;
+    const double x = -0.28751395029967308;
+    const double y = 0.93666000134722283;
+    const double z = 0.15174591875711696;
     const double n = std::sqrt(x*x + y*y + z*z);
     const double s = n > 0.0 ? 1.0/n : 0.0;
     d[12] = x*s; d[13] = y*s; d[14] = z*s;
   }
   {
-    const double x = -0.28297907229398389;
-    const double y = 0.93970312024997427;
-    const double z = 0.14989986114259743;
+    const double x = -0.28297907074343831;
+    const double y = 0.93970303633463714;
+    const double z = 0.14990002400316696;
     const double n = std::sqrt(x*x + y*y + z*z);
     const double s = n > 0.0 ? 1.0/n : 0.0;
     d[15] = x*s; d[16] = y*s; d[17] = z*s;
   }
   {
-    const double x = -0.29392760691297254;
-    const double y = 0.93488996784270506;
-    const double z = 0.15170165961000867;
+    const double x = -0.29392760492651177;
+    const double y = 0.93488988209403134;
+    const double z = 0.1517018244281646;
     const double n = std::sqrt(x*x + y*y + z*z);
     const double s = n > 0.0 ? 1.0/n : 0.0;
     d[18] = x*s; d[19] = y*s; d[20] = z*s;

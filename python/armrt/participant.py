@@ -14,7 +14,7 @@ N m, flexion positive).
 
 The variants are one geometry with profiles (Arm.apply_profile): the four participant files share
 every polynomial, joint and segment; they differ in fmax and maxact (runtime parameters of the
-engine) and in lceopt/lslack of 13 elements by at most 1.4e-4 relative (0.012 mm), which the
+engine) and in lceopt/lslack of 16 elements by at most 1.4e-4 relative (0.012 mm), which the
 profile does not carry (docs/experiments.md).
 """
 from __future__ import annotations
