@@ -216,12 +216,14 @@ def test_armrt_model_import_writes_the_same_file(participant_dir, tmp_path):
                      "-o", str(tmp_path / "bad.json")]) == 2
 
 
-def test_committed_participant_code_matches_a_fresh_generation(tmp_path):
+@pytest.mark.parametrize("name, out", [("participant_A", "cpp/generated"),           # built in
+                                       ("participant_A_FES", "cpp/tests/generated")])  # C++ tests only
+def test_committed_participant_code_matches_a_fresh_generation(tmp_path, name, out):
     from codegen.generate import generate
-    generate(ROOT / "models" / "participant_A.json", tmp_path)
-    for f in ["participant_A.h", "participant_A_model.cc", "participant_A_dynamics.cc", "participant_A_paths.cc"]:
-        assert (tmp_path / f).read_bytes() == (ROOT / "cpp" / "generated" / f).read_bytes(), \
-            f"cpp/generated/{f} is stale: python -m codegen.generate --model models/participant_A.json --out cpp/generated"
+    cmd = f"python -m codegen.generate --model models/{name}.json --out {out}"
+    generate(ROOT / "models" / f"{name}.json", tmp_path, command=cmd)
+    for f in [f"{name}.h", f"{name}_model.cc", f"{name}_dynamics.cc", f"{name}_paths.cc"]:
+        assert (tmp_path / f).read_bytes() == (ROOT / out / f).read_bytes(), f"{out}/{f} is stale: {cmd}"
 
 
 @pytest.mark.slow
