@@ -44,7 +44,8 @@ def cmd_model_import(args) -> int:
 
 def add_cli(sub, formatter) -> None:
     p = sub.add_parser("model", help="model files: import a DAS-format .mat", formatter_class=formatter)
-    msub = p.add_subparsers(dest="model_command", required=True, metavar="MODEL_COMMAND")
+    msub = p.add_subparsers(dest="model_command", required=True, metavar="MODEL_COMMAND",
+                            help="import: a DAS-format .mat to a model file")
     q = msub.add_parser("import", formatter_class=formatter,
                         help="DAS-format model_struct*.mat -> model file with chosen free DOFs (docs/model_schema.md)")
     q.add_argument("mat", type=Path, help="DAS-format model_struct*.mat")
