@@ -771,8 +771,11 @@ def main(argv=None) -> int:
     ap.add_argument("--out", required=True, help="output directory, e.g. cpp/generated")
     args = ap.parse_args(argv)
     try:
+        # The banner names the standard command for the project's models (whatever paths were typed, so
+        # regeneration stays byte-identical), and the command as typed for any other model file.
+        in_models = Path(args.model).resolve().parent == Path(__file__).resolve().parents[1] / "models"
         generate(args.model, args.out, verbose=True,
-                 command=f"python -m codegen.generate --model {args.model} --out {args.out}")
+                 command=None if in_models else f"python -m codegen.generate --model {args.model} --out {args.out}")
     except ModelFileError as exc:
         print(f"codegen.generate: {exc}", file=sys.stderr)
         return 2

@@ -534,7 +534,7 @@ def _run_bridge(bridge):
 
 def test_lsl_bridge_loopback():
     pylsl = _pylsl()
-    from armrt.lsl_bridge import LslBridge, STATE_LABELS, channel_labels
+    from armrt.lsl_bridge import LslBridge, channel_labels, state_channels
     source = f"armrt-test-{os.getpid()}"
     bridge = LslBridge(runner_port=0, mapping="groups", source_id=source, excitation_name=f"exc-{source}",
                        state_rate_hz=200)
@@ -550,7 +550,8 @@ def test_lsl_bridge_loopback():
             inlet = pylsl.StreamInlet(found[0])
             full = inlet.info(timeout=5)
             labels_out = channel_labels(full)
-            assert labels_out == STATE_LABELS and labels_out[-2:] == ["lag", "overrun"]
+            assert labels_out == state_channels("das2")[0] and labels_out[-2:] == ["lag", "overrun"]
+            assert labels_out[1:6] == ["GHy", "GHz", "GHyy", "ELx", "PSy"]
             u = np.zeros(len(labels))
             u[labels.index("elbow_flexors")] = 0.15
             el0 = None

@@ -5,6 +5,7 @@
 
 #include "armrt/engine.h"
 #include "armrt/muscle_kernel.h"
+#include "dof_dispatch.h"
 
 namespace armrt {
 
@@ -27,10 +28,13 @@ void passive_joint_torque(const ModelDef& def, const double* q, const double* qd
   }
 }
 
-void solve_spd(const double* A, const double* b, int n, double* x) {
-  // Cholesky A = L L^T, row-major, in fixed-capacity storage: no pivoting needed for a mass matrix.
-  double Lc[kMaxDofs * kMaxDofs];
-  double inv_diag[kMaxDofs];
+namespace {
+
+template <int n>
+void solve_spd_n(const double* A, const double* b, double* x) {
+  // Cholesky A = L L^T, row-major, fixed size: no pivoting needed for a mass matrix.
+  double Lc[n * n];
+  double inv_diag[n];
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j <= i; ++j) {
       double sum = A[i * n + j];
@@ -43,7 +47,7 @@ void solve_spd(const double* A, const double* b, int n, double* x) {
       }
     }
   }
-  double y[kMaxDofs];
+  double y[n];
   for (int i = 0; i < n; ++i) {
     double sum = b[i];
     for (int k = 0; k < i; ++k) sum -= Lc[i * n + k] * y[k];
@@ -54,6 +58,25 @@ void solve_spd(const double* A, const double* b, int n, double* x) {
     for (int k = i + 1; k < n; ++k) sum -= Lc[k * n + i] * x[k];
     x[i] = sum * inv_diag[i];
   }
+}
+
+template <int ndof>
+void generalised_force_n(const double* moment_arm, const double* force, int n, double* tau) {
+  // Four independent partial sums per DOF: one running sum would chain n multiply-adds back to back.
+  double acc[4][ndof] = {};
+  int i = 0;
+  for (; i + 4 <= n; i += 4)
+    for (int k = 0; k < 4; ++k)
+      for (int j = 0; j < ndof; ++j) acc[k][j] += moment_arm[(i + k) * ndof + j] * force[i + k];
+  for (; i < n; ++i)
+    for (int j = 0; j < ndof; ++j) acc[0][j] += moment_arm[i * ndof + j] * force[i];
+  for (int j = 0; j < ndof; ++j) tau[j] = (acc[0][j] + acc[1][j]) + (acc[2][j] + acc[3][j]);
+}
+
+}  // namespace
+
+void solve_spd(const double* A, const double* b, int n, double* x) {
+  detail::dispatch_dofs(n, [&](auto N) { solve_spd_n<N>(A, b, x); });
 }
 
 void passive_joint_stiffness(const ModelDef& def, const double* q, double* dtau_dq, double* dtau_dqd) {
@@ -118,23 +141,15 @@ void muscle_dynamics(const Model& m, const double* excitation, const double* mus
 }
 
 void generalised_force(const double* moment_arm, const double* force, int n, int ndof, double* tau) {
-  // Four independent partial sums per DOF: one running sum would chain n multiply-adds back to back.
-  double acc[4][kMaxDofs];
-  for (int k = 0; k < 4; ++k)
-    for (int j = 0; j < ndof; ++j) acc[k][j] = 0.0;
-  int i = 0;
-  for (; i + 4 <= n; i += 4)
-    for (int k = 0; k < 4; ++k)
-      for (int j = 0; j < ndof; ++j) acc[k][j] += moment_arm[(i + k) * ndof + j] * force[i + k];
-  for (; i < n; ++i)
-    for (int j = 0; j < ndof; ++j) acc[0][j] += moment_arm[i * ndof + j] * force[i];
-  for (int j = 0; j < ndof; ++j) tau[j] = (acc[0][j] + acc[1][j]) + (acc[2][j] + acc[3][j]);
+  detail::dispatch_dofs(ndof, [&](auto N) { generalised_force_n<N>(moment_arm, force, n, tau); });
 }
 
-void forward(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac) {
+namespace {
+
+template <int nq>
+void forward_n(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac) {
   const ModelDef& def = *m.def;
   const int n = m.num_elements;
-  const int nq = m.num_dofs;
   const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
   const double* q = x + iq;
   const double* qd = x + iqd;
@@ -181,7 +196,7 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
   if (jac) std::copy(M, M + nq * nq, jac->mass_matrix.begin());
   for (int j = 0; j < nq; ++j) rhs[j] += tau[j] + tau_passive[j] + tau_ext[j];
   double qdd[kMaxDofs];
-  solve_spd(M, rhs, nq, qdd);
+  solve_spd_n<nq>(M, rhs, qdd);
   for (int j = 0; j < nq; ++j) {
     xdot[iq + j] = qd[j];
     xdot[iqd + j] = qdd[j];
@@ -217,6 +232,12 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
     d.gh_force[k] = fk;
   }
   gh_stability(def, d.gh_force.data(), &d.gh_theta, &d.gh_phi, &d.gh_stab);
+}
+
+}  // namespace
+
+void forward(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac) {
+  detail::dispatch_dofs(m.num_dofs, [&](auto N) { forward_n<N>(m, d, x, xdot, record, jac); });
 }
 
 }  // namespace armrt

@@ -357,7 +357,9 @@ class Arm:
         self.n_elements = len(self.element_names)
         n = self.n_elements
         state = self._sim.state
-        self._views = {"q": state[0:5], "qdot": state[5:10], "lce": state[10:10 + n], "activation": state[10 + n:10 + 2 * n]}
+        self.n_dofs = len(self.dof_names)
+        # The state layout is the engine's (data.h), read from it: {block: (offset, size)}.
+        self._views = {k: state[o:o + size] for k, (o, size) in info["state_layout"].items()}
         for v in self._views.values():
             v.flags.writeable = False
 
@@ -608,13 +610,13 @@ class Arm:
 
     def _dof_vector(self, v, what: str) -> np.ndarray:
         if isinstance(v, Mapping):
-            out = (self.rest_posture if what == "q" else np.zeros(5)).copy()
+            out = (self.rest_posture if what == "q" else np.zeros(self.n_dofs)).copy()
             for name, x in v.items():
                 out[self.dof_index(name)] = self._scalar(x, f"{what}[{name!r}]")
             v = out
         a = real_array(v, what)
-        if a.shape != (5,):
-            raise ValueError(f"{what} must have shape (5,) ({', '.join(self.dof_names)}), got {a.shape}")
+        if a.shape != (self.n_dofs,):
+            raise ValueError(f"{what} must have shape ({self.n_dofs},) ({', '.join(self.dof_names)}), got {a.shape}")
         if not np.all(np.isfinite(a)):
             raise ValueError(f"{what} contains NaN or infinite values")
         return a
