@@ -734,7 +734,7 @@ def test_paralysis_holds_in_the_real_time_loop():
 def test_max_activation_bad_values_are_refused():
     with pytest.raises(ValueError, match=r"must lie in \[0, 1\]"):
         rt.RealtimeSession(max_activation={"bicb": 1.5})
-    with pytest.raises(ValueError, match="unknown max-activation name 'bicbb'"):
+    with pytest.raises(ValueError, match=r"--max-activation: unknown element, muscle or group name 'bicbb' \(did you mean 'bicb'"):
         rt.RealtimeSession(max_activation={"bicbb": 0.5})
     r = subprocess.run([runner(), "--max-activation", "bicb=0.3,triceps=x", "--duration", "0.1"],
                        capture_output=True, text=True, timeout=20)
