@@ -673,19 +673,23 @@ def model_source(model: dict, ns: str, digest: str) -> str:
     el_index = {e["name"]: i for i, e in enumerate(els)}
     lines = ["#include \"" + ns + ".h\"", "", f"namespace armrt::generated::{ns} {{", "", "namespace {", ""]
 
+    # Every struct is filled by member name (C++20 designated initialisers), never by position.
     lines.append(f"const DofParams kDofs[{NDOF}] = {{")
     for d in model["dofs"]:
-        lines.append(f"    {{{cxx.cstr(d['name'])}, {cxx.cstr(d['osim_name'])}, {f(d['range'][0])}, "
-                     f"{f(d['range'][1])}, {f(d['rest'])}}},")
+        lines.append(f"    {{.name = {cxx.cstr(d['name'])}, .osim_name = {cxx.cstr(d['osim_name'])}, "
+                     f".range_min = {f(d['range'][0])}, .range_max = {f(d['range'][1])}, .rest = {f(d['rest'])}}},")
     lines.append("};")
     lines.append("")
     lines.append(f"const ElementParams kElements[{len(els)}] = {{")
     for e in els:
         mask = sum(1 << dof_index[d] for d in e["dofs"])
-        lines.append(f"    {{{cxx.cstr(e['name'])}, {cxx.cstr(e['muscle'])}, {f(e['fmax'])}, {f(e['lceopt'])}, "
-                     f"{f(e['lslack'])}, {f(e['pennopt'])}, {f(e['vmax'])}, {f(e['tact'])}, {f(e['tdeact'])}, "
-                     f"{f(e['peeslack'])}, {f(e['mass'])}, {1 if e['crosses_gh'] else 0}, {mask}, "
-                     f"{f(e.get('max_activation', 1.0))}}},")
+        lines.append(f"    {{.name = {cxx.cstr(e['name'])}, .muscle = {cxx.cstr(e['muscle'])}, "
+                     f".osim_name = {cxx.cstr(e.get('osim_name') or '')}, .fmax = {f(e['fmax'])}, "
+                     f".lceopt = {f(e['lceopt'])}, .lslack = {f(e['lslack'])}, .pennopt = {f(e['pennopt'])}, "
+                     f".vmax = {f(e['vmax'])}, .tact = {f(e['tact'])}, .tdeact = {f(e['tdeact'])}, "
+                     f".peeslack = {f(e['peeslack'])}, .mass = {f(e['mass'])}, "
+                     f".crosses_gh = {1 if e['crosses_gh'] else 0}, .dof_mask = {mask}, "
+                     f".max_activation = {f(e.get('max_activation', 1.0))}}},")
     lines.append("};")
     lines.append("")
 
@@ -697,7 +701,8 @@ def model_source(model: dict, ns: str, digest: str) -> str:
     lines.append("")
     lines.append(f"const GroupDef kMuscles[{len(model['muscles'])}] = {{")
     for k, m in enumerate(model["muscles"]):
-        lines.append(f"    {{{cxx.cstr(m['name'])}, {len(muscle_elements[m['name']])}, kMuscle{k}}},")
+        lines.append(f"    {{.name = {cxx.cstr(m['name'])}, .num_elements = {len(muscle_elements[m['name']])}, "
+                     f".elements = kMuscle{k}}},")
     lines.append("};")
     lines.append("")
     groups = list(model["groups"].items())
@@ -709,7 +714,7 @@ def model_source(model: dict, ns: str, digest: str) -> str:
         lines.append(f"const GroupDef kGroups[{len(groups)}] = {{")
         for k, (gname, ms) in enumerate(groups):
             n = len({i for mname in ms for i in muscle_elements[mname]})
-            lines.append(f"    {{{cxx.cstr(gname)}, {n}, kGroup{k}}},")
+            lines.append(f"    {{.name = {cxx.cstr(gname)}, .num_elements = {n}, .elements = kGroup{k}}},")
         lines.append("};")
         groups_ptr = "kGroups"
     else:
@@ -724,39 +729,39 @@ def model_source(model: dict, ns: str, digest: str) -> str:
     arm_mass = math.fsum(b["mass"] for b in model["bodies"])
     lines += [
         "const ModelDef kModel = {",
-        f"    {cxx.cstr(model['name'])},",
-        f"    {cxx.cstr(digest)},",
-        f"    {NDOF},",
-        f"    {len(els)},",
-        "    kDofs,",
-        "    kElements,",
-        f"    {len(model['muscles'])},",
-        "    kMuscles,",
-        f"    {len(groups)},",
-        f"    {groups_ptr},",
-        f"    {_arr(g_scap)},",
-        f"    {_arr([x for row in R for x in row])},",
-        f"    {_arr(model['scapula']['origin_in_thorax'])},",
-        f"    {_arr(gl['gh_centre'])},",
-        f"    {_arr(gl['normal'])},",
-        f"    {_arr(gl['major_axis'])},",
-        f"    {_arr(gl['minor_axis'])},",
-        f"    {f(gl['rim_half_angle_major'])},",
-        f"    {f(gl['rim_half_angle_minor'])},",
-        f"    {f(arm_mass)},",
-        f"    {f(pj['stiffness_inside'])},",
-        f"    {f(pj['stiffness_outside'])},",
-        f"    {f(pj['damping'])},",
-        "    &mass_matrix,",
-        "    &bias_force,",
-        "    &dynamics,",
-        "    &hand_position,",
-        "    &hand_jacobian,",
-        "    &arm_momentum_rate,",
-        "    &body_poses,",
-        "    &muscle_lengths,",
-        "    &muscle_paths,",
-        "    &gh_directions,",
+        f"    .name = {cxx.cstr(model['name'])},",
+        f"    .source_hash = {cxx.cstr(digest)},",
+        f"    .num_dofs = {NDOF},",
+        f"    .num_elements = {len(els)},",
+        "    .dofs = kDofs,",
+        "    .elements = kElements,",
+        f"    .num_muscles = {len(model['muscles'])},",
+        "    .muscles = kMuscles,",
+        f"    .num_groups = {len(groups)},",
+        f"    .groups = {groups_ptr},",
+        f"    .gravity_scapula = {_arr(g_scap)},",
+        f"    .scapula_rotation_in_thorax = {_arr([x for row in R for x in row])},",
+        f"    .scapula_origin_in_thorax = {_arr(model['scapula']['origin_in_thorax'])},",
+        f"    .gh_centre = {_arr(gl['gh_centre'])},",
+        f"    .glenoid_normal = {_arr(gl['normal'])},",
+        f"    .glenoid_major_axis = {_arr(gl['major_axis'])},",
+        f"    .glenoid_minor_axis = {_arr(gl['minor_axis'])},",
+        f"    .rim_half_angle_major = {f(gl['rim_half_angle_major'])},",
+        f"    .rim_half_angle_minor = {f(gl['rim_half_angle_minor'])},",
+        f"    .arm_mass = {f(arm_mass)},",
+        f"    .passive_stiffness_inside = {f(pj['stiffness_inside'])},",
+        f"    .passive_stiffness_outside = {f(pj['stiffness_outside'])},",
+        f"    .passive_damping = {f(pj['damping'])},",
+        "    .mass_matrix = &mass_matrix,",
+        "    .bias_force = &bias_force,",
+        "    .dynamics = &dynamics,",
+        "    .hand_position = &hand_position,",
+        "    .hand_jacobian = &hand_jacobian,",
+        "    .arm_momentum_rate = &arm_momentum_rate,",
+        "    .body_poses = &body_poses,",
+        "    .muscle_lengths = &muscle_lengths,",
+        "    .muscle_paths = &muscle_paths,",
+        "    .gh_directions = &gh_directions,",
         "};",
         "",
         "}  // namespace",
@@ -805,8 +810,11 @@ def main(argv=None) -> int:
     ap.add_argument("--out", required=True, help="output directory, e.g. cpp/generated")
     args = ap.parse_args(argv)
     try:
+        # The banner names the standard command for the project's models (whatever paths were typed, so
+        # regeneration stays byte-identical), and the command as typed for any other model file.
+        in_models = Path(args.model).resolve().parent == Path(__file__).resolve().parents[1] / "models"
         generate(args.model, args.out, verbose=True,
-                 command=f"python -m codegen.generate --model {args.model} --out {args.out}")
+                 command=None if in_models else f"python -m codegen.generate --model {args.model} --out {args.out}")
     except ModelFileError as exc:
         print(f"codegen.generate: {exc}", file=sys.stderr)
         return 2

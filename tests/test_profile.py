@@ -100,3 +100,13 @@ def test_bad_profiles_are_refused(pdir, tmp_path):
     (tmp_path / "junk.mat").write_bytes(b"not a mat file")
     with pytest.raises(ValueError, match="not a readable MATLAB file"):
         arm.apply_profile(tmp_path / "junk.mat")
+
+
+def test_profile_names_fall_back_to_opensim_names(pdir, tmp_path):
+    mat = sio.loadmat(pdir / "model_struct_A_FES.mat", squeeze_me=True, struct_as_record=False)
+    mat["model"].muscles[0].name = "biceps_long"            # not an armrt name; osim_name stays bic_l
+    sio.savemat(tmp_path / "fes.mat", {"model": mat["model"]})
+    arm = armrt.Arm("das2")
+    report = arm.apply_profile(tmp_path / "fes.mat", reference=pdir / "model_struct_A_FES.mat")
+    assert report.unmatched == [] and "bicl" in report.applied
+    assert arm.max_activation[arm.element_names.index("bicl")] == pytest.approx(0.4203335240475676)

@@ -79,8 +79,9 @@ int main(int argc, char** argv) {
   app.add_option("--dt", cfg.dt, "largest integration step, s (<= 1/rate); each cycle takes ceil(1/rate / dt) substeps "
                                   "(default: ros2 0.001, rk4 0.00017, euler 0.0001)");
   app.add_option("--model", cfg.model, "compiled-in model")->capture_default_str();
-  app.add_option("--q0", cfg.q0, "initial joint angles, rad (5 values, comma-separated; default: rest posture)")
-      ->delimiter(',')->expected(5);
+  app.add_option("--q0", cfg.q0, "initial joint angles, rad, one per DOF of the model in its order, comma-separated "
+                                  "(das2: GHy,GHz,GHyy,ELx,PSy; default: rest posture)")
+      ->delimiter(',')->expected(1, armrt::kMaxDofs);
   app.add_option("--duration", cfg.duration, "run for S seconds (0: until SIGINT/SIGTERM)")->capture_default_str();
   app.add_option("--priority", cfg.priority, "SCHED_FIFO priority 1..99")->capture_default_str();
   app.add_flag("--no-rt", no_rt, "normal scheduling on purpose (no SCHED_FIFO)");

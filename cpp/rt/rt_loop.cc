@@ -1,5 +1,7 @@
 #include "rt_loop.h"
 
+#include "armrt/names.h"
+
 #include <arpa/inet.h>
 #include <errno.h>
 #include <sched.h>
@@ -32,11 +34,6 @@ inline timespec to_timespec(std::int64_t ns) {
   return ts;
 }
 
-const GroupDef* find_group(const GroupDef* g, int n, const std::string& name) {
-  for (int k = 0; k < n; ++k)
-    if (name == g[k].name) return &g[k];
-  return nullptr;
-}
 
 std::uint64_t splitmix64(std::uint64_t& s) {
   std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
@@ -143,13 +140,7 @@ RtLoop::RtLoop(const RtConfig& config) : cfg_(config) {
     if (end == item.c_str() + eq + 1 || *end != '\0' || !(v >= 0.0 && v <= 1.0))
       throw std::invalid_argument("max activation of '" + name + "' must be a number in [0, 1], got '" + item.substr(eq + 1) + "'");
     std::vector<int> ix;
-    for (int i = 0; i < def->num_elements; ++i) if (name == def->elements[i].name) ix.push_back(i);
-    if (ix.empty()) {
-      const GroupDef* g = find_group(def->muscles, def->num_muscles, name);
-      if (!g) g = find_group(def->groups, def->num_groups, name);
-      if (!g) throw std::invalid_argument("unknown max-activation name '" + name + "' (expected an element, muscle or group name)");
-      ix.assign(g->elements, g->elements + g->num_elements);
-    }
+    if (!find_elements(*def, name, ix)) throw std::invalid_argument("--max-activation: " + unknown_names_message(*def, {name}));
     for (int i : ix) sim_->model.element[i].max_activation = v;
   }
   if (!cfg_.max_activation.empty()) model_update_derived(sim_->model);
@@ -165,17 +156,9 @@ RtLoop::RtLoop(const RtConfig& config) : cfg_(config) {
   build(groups_, def->groups, def->num_groups);
   channels_.offsets.assign(1, 0);
   for (const std::string& name : cfg_.channels) {
-    int e = -1;
-    for (int i = 0; i < def->num_elements; ++i)
-      if (name == def->elements[i].name) e = i;
-    if (e >= 0) {
-      channels_.elements.push_back(e);
-    } else {
-      const GroupDef* g = find_group(def->muscles, def->num_muscles, name);
-      if (!g) g = find_group(def->groups, def->num_groups, name);
-      if (!g) throw std::invalid_argument("unknown channel name '" + name + "' (expected an element, muscle or group name)");
-      channels_.elements.insert(channels_.elements.end(), g->elements, g->elements + g->num_elements);
-    }
+    std::vector<int> ix;
+    if (!find_elements(*def, name, ix)) throw std::invalid_argument("--channels: " + unknown_names_message(*def, {name}));
+    channels_.elements.insert(channels_.elements.end(), ix.begin(), ix.end());
     channels_.offsets.push_back(static_cast<int>(channels_.elements.size()));
   }
   if (static_cast<int>(cfg_.channels.size()) > kMaxValues) throw std::invalid_argument("too many --channels");

@@ -20,6 +20,7 @@
 
 #include "armrt/engine.h"
 #include "armrt/muscle_kernel.h"
+#include "dof_dispatch.h"
 
 namespace armrt {
 
@@ -27,7 +28,8 @@ namespace {
 
 // In-place LU with partial pivoting of a row-major n x n matrix (n = the model's DOFs). The pivot
 // choice depends on the values, the work does not.
-void lu_factor(double* a, int n, int* perm) {
+template <int n>
+void lu_factor(double* a, int* perm) {
   for (int i = 0; i < n; ++i) perm[i] = i;
   for (int k = 0; k < n; ++k) {
     int p = k;
@@ -46,8 +48,9 @@ void lu_factor(double* a, int n, int* perm) {
   }
 }
 
-void lu_solve(const double* lu, int n, const int* perm, const double* b, double* x) {
-  double y[kMaxDofs];
+template <int n>
+void lu_solve(const double* lu, const int* perm, const double* b, double* x) {
+  double y[n];
   for (int i = 0; i < n; ++i) {
     double s = b[perm[i]];
     for (int j = 0; j < i; ++j) s -= lu[i * n + j] * y[j];
@@ -66,7 +69,10 @@ constexpr double kRos2Gamma = 1.7071067811865475;  // 1 + 1/sqrt(2)
 // Isometric force (x fmax) above which a slack element's CE is fast enough to need limiting.
 constexpr double kEngagingActiveForce = 0.05;
 
-void jacobian_factor(const Model& m, StepJacobian& jac, double hg) {
+namespace {
+
+template <int nq>
+void jacobian_factor_n(const Model& m, StepJacobian& jac, double hg) {
   const int n = m.num_elements;
   jac.hg = hg;
   const double* R = jac.moment_arm.data();
@@ -78,9 +84,7 @@ void jacobian_factor(const Model& m, StepJacobian& jac, double hg) {
     jac.series_stiffness[i] = jac.dforce_dL[i] + jac.dforce_dlce[i] * jac.lce_from_q[i];
   }
   // K_eff = diag(dtau_passive/dq) - R^T diag(series_stiffness) R (symmetric: build the upper half).
-  const int nq = m.num_dofs;
-  double* K = jac.stiffness.data();
-  std::fill(K, K + nq * nq, 0.0);
+  double K[nq * nq] = {};  // local: the compiler keeps it in registers (no aliasing with jac's arrays)
   for (int i = 0; i < n; ++i) {
     const double* r = R + i * nq;
     const double c = jac.series_stiffness[i];
@@ -91,18 +95,19 @@ void jacobian_factor(const Model& m, StepJacobian& jac, double hg) {
     K[a * nq + a] += jac.dtau_passive_dq[a];
     for (int b = 0; b < a; ++b) K[a * nq + b] = K[b * nq + a];
   }
+  std::copy(K, K + nq * nq, jac.stiffness.begin());
   // Schur complement S = M - hg diag(dtau_passive/dqd) - hg^2 K_eff.
   double* S = jac.schur_lu.data();
   for (int a = 0; a < nq; ++a)
     for (int b = 0; b < nq; ++b)
       S[a * nq + b] = jac.mass_matrix[a * nq + b] - hg * hg * K[a * nq + b] -
                       (a == b ? hg * jac.dtau_passive_dqd[a] : 0.0);
-  lu_factor(S, nq, jac.schur_perm.data());
+  lu_factor<nq>(S, jac.schur_perm.data());
 }
 
-void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* k) {
+template <int nq>
+void jacobian_solve_n(const Model& m, StepJacobian& jac, const double* r, double* k) {
   const int n = m.num_elements;
-  const int nq = m.num_dofs;
   const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
   const double hg = jac.hg;
   const double* R = jac.moment_arm.data();
@@ -117,7 +122,7 @@ void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* 
     p[i] = jac.inv_lce[i] * (r[il + i] + hg * jac.dvel_da[i] * ka);
   }
   // Schur right-hand side: M r_qd + hg R^T (dforce_dlce p) + hg K_eff r_q.
-  double rhs[kMaxDofs];
+  double rhs[nq];
   for (int a = 0; a < nq; ++a) {
     double s = 0;
     for (int b = 0; b < nq; ++b)
@@ -127,12 +132,12 @@ void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* 
   double f[kMaxElements];
 #pragma omp simd
   for (int i = 0; i < n; ++i) f[i] = hg * jac.dforce_dlce[i] * p[i];
-  double tau_p[kMaxDofs];
+  double tau_p[nq];
   generalised_force(R, f, n, nq, tau_p);
   for (int a = 0; a < nq; ++a) rhs[a] += tau_p[a];
-  double kqd[kMaxDofs];
-  lu_solve(jac.schur_lu.data(), nq, jac.schur_perm.data(), rhs, kqd);
-  double kq[kMaxDofs];
+  double kqd[nq];
+  lu_solve<nq>(jac.schur_lu.data(), jac.schur_perm.data(), rhs, kqd);
+  double kq[nq];
   for (int a = 0; a < nq; ++a) {
     kq[a] = rq[a] + hg * kqd[a];
     k[iq + a] = kq[a];
@@ -146,6 +151,16 @@ void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* 
   }
 }
 
+}  // namespace
+
+void jacobian_factor(const Model& m, StepJacobian& jac, double hg) {
+  detail::dispatch_dofs(m.num_dofs, [&](auto N) { jacobian_factor_n<N>(m, jac, hg); });
+}
+
+void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* k) {
+  detail::dispatch_dofs(m.num_dofs, [&](auto N) { jacobian_solve_n<N>(m, jac, r, k); });
+}
+
 void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const double* xdot, double h) {
   StepJacobian& jac = d.jac;
   const MuscleArrays& mc = m.muscles;
@@ -154,12 +169,14 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
   const double b0 = m.fibre_damping;
   // Muscle-tendon lengthening rates dL/dt = -R qd (m/s), then one branch-free pass per element.
   double L_rate[kMaxElements];
-  for (int i = 0; i < n; ++i) {
-    const double* r = jac.moment_arm.data() + i * nq;
-    double s = 0;
-    for (int j = 0; j < nq; ++j) s -= r[j] * x[iqd + j];
-    L_rate[i] = s;
-  }
+  detail::dispatch_dofs(nq, [&](auto N) {
+    for (int i = 0; i < n; ++i) {
+      const double* r = jac.moment_arm.data() + i * N;
+      double s = 0;
+      for (int j = 0; j < N; ++j) s -= r[j] * x[iqd + j];
+      L_rate[i] = s;
+    }
+  });
   const double* lce_x = x + lce_offset(m);
   const double* a_x = x + ia;
   const double* lce_rate = xdot + lce_offset(m);

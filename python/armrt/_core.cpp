@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "armrt/engine.h"
+#include "armrt/names.h"
 #include "armrt/simulator.h"
 
 namespace py = pybind11;
@@ -73,7 +74,8 @@ py::dict model_info(const ModelDef& def) {
     const ElementParams& e = def.elements[i];
     std::vector<int> crossed;
     for (int j = 0; j < def.num_dofs; ++j) if (e.dof_mask & (1 << j)) crossed.push_back(j);
-    elements.append(py::dict(py::arg("name") = e.name, py::arg("muscle") = e.muscle, py::arg("fmax") = e.fmax,
+    elements.append(py::dict(py::arg("name") = e.name, py::arg("muscle") = e.muscle,
+                             py::arg("osim_name") = e.osim_name, py::arg("fmax") = e.fmax,
                              py::arg("lceopt") = e.lceopt, py::arg("lslack") = e.lslack,
                              py::arg("pennopt") = e.pennopt, py::arg("vmax") = e.vmax, py::arg("tact") = e.tact,
                              py::arg("tdeact") = e.tdeact, py::arg("peeslack") = e.peeslack,
@@ -137,6 +139,29 @@ PYBIND11_MODULE(_core, mod) {
   mod.def("default_substeps", [](const std::string& integrator, double dt) { return default_substeps(parse_integrator(integrator), dt); },
           "Integration steps per control step dt (s) by default.");
   mod.def("model_names", []() { return model_names(); });
+  // The name service (names.h): the Python API's lookups and messages come from here.
+  mod.def("find_elements", [](const std::string& model, const std::string& name) {
+        std::vector<int> ix;
+        if (!find_elements(require_model(model), name, ix)) throw py::key_error(unknown_names_message(require_model(model), {name}));
+        return ix;
+      }, py::arg("model"), py::arg("name"),
+      "Element indices of an element, muscle or group name (or OpenSim force / muscle alias); KeyError with close matches");
+  mod.def("is_name", [](const std::string& model, const std::string& name) {
+        std::vector<int> ix;
+        return find_elements(require_model(model), name, ix);
+      }, py::arg("model"), py::arg("name"));
+  mod.def("unknown_names_message", [](const std::string& model, const std::vector<std::string>& names) {
+        return unknown_names_message(require_model(model), names);
+      }, py::arg("model"), py::arg("names"));
+  mod.def("find_dof", [](const std::string& model, const std::string& name) {
+        const ModelDef& def = require_model(model);
+        const int j = find_dof(def, name);
+        if (j < 0) throw py::key_error(unknown_dof_message(def, name));
+        return j;
+      }, py::arg("model"), py::arg("name"), "DOF index by armrt or OpenSim name; KeyError with close matches");
+  mod.def("close_matches", [](const std::string& model, const std::string& name, bool dofs) {
+        return close_matches(require_model(model), name, dofs ? NameKind::kDofs : NameKind::kElementsMusclesGroups);
+      }, py::arg("model"), py::arg("name"), py::arg("dofs") = false);
 
   py::class_<Simulator>(mod, "Simulator")
       .def(py::init([](const std::string& model, const std::string& integrator, double dt, int substeps) {

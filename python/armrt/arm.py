@@ -1,7 +1,6 @@
 """The Python API: `Arm` drives one simulated arm; arrays in, arrays out, SI units and radians."""
 from __future__ import annotations
 
-import difflib
 import numbers
 import operator
 import threading
@@ -345,7 +344,6 @@ class Arm:
         self.info = info
         self.dof_names = [d["name"] for d in info["dofs"]]
         self.dof_osim_names = [d["osim_name"] for d in info["dofs"]]
-        self._aliases: dict[str, list[int]] | None = None
         self.dof_ranges = np.array([d["range"] for d in info["dofs"]])
         self.rest_posture = np.array([d["rest"] for d in info["dofs"]])
         self.element_names = [e["name"] for e in info["elements"]]
@@ -381,69 +379,30 @@ class Arm:
     def indices(self, name: str) -> list[int]:
         """Element indices of an element, muscle or group name; OpenSim force names (delt_scap_1) and
         muscle names (delt_scap: the elements delt_scap_1 ...) are accepted as aliases. KeyError
-        with close matches otherwise."""
+        with close matches otherwise (the engine's name service, cpp/src/names.cc)."""
         if not isinstance(name, str):
             raise KeyError(f"element, muscle or group names must be strings, got {name!r}")
         ix = self._index.get(name)
         if ix is None:
-            ix = self._osim_aliases().get(name)
-        if ix is None:
-            raise KeyError(self._unknown_names_message([name]))
+            ix = list(_core.find_elements(self.model_name, name))  # aliases, or KeyError with close matches
         return ix
 
-    def _osim_aliases(self) -> dict[str, list[int]]:
-        """OpenSim force names and their muscle prefixes -> element indices, from the model file
-        (read once, only when a name is not an armrt name)."""
-        if self._aliases is None:
-            self._aliases = {}
-            try:
-                from .geometry import find_model_file
-                import json
-                path = find_model_file(self.model_name)
-                elements = json.loads(path.read_text())["elements"] if path is not None else []
-            except (OSError, ValueError, KeyError):
-                elements = []
-            pos = {n: i for i, n in enumerate(self.element_names)}
-            for e in elements:
-                osim, i = e.get("osim_name"), pos.get(e.get("name"))
-                if not osim or i is None:
-                    continue
-                self._aliases.setdefault(osim, []).append(i)
-                # The OpenSim muscle: the force name without its element number (delt_scap_1, delt_scap10).
-                stem = osim.rstrip("0123456789").rstrip("_")
-                if stem and stem != osim:
-                    self._aliases.setdefault(stem, []).append(i)
-            self._aliases = {k: v for k, v in self._aliases.items() if k not in self._index}
-        return self._aliases
+    def _is_name(self, name) -> bool:
+        return isinstance(name, str) and (name in self._index or _core.is_name(self.model_name, name))
 
     def _unknown_names_message(self, names: list) -> str:
-        parts = []
-        choices = list(self._index) + list(self._osim_aliases())
-        for name in names:
-            close = difflib.get_close_matches(str(name), choices, n=3)
-            parts.append(f"{name!r}" + (f" (did you mean {', '.join(repr(c) for c in close)}?)" if close else ""))
-        what = "name" if len(names) == 1 else f"{len(names)} names"
-        return (f"unknown element, muscle or group {what}: {'; '.join(parts)}; `armrt info` lists them"
-                if len(names) > 1 else
-                f"unknown element, muscle or group name {parts[0]}; `armrt info` lists them")
+        return _core.unknown_names_message(self.model_name, [str(n) for n in names])
 
     def dof_index(self, name: str) -> int:
-        """Index of a DOF by armrt name (GHy) or OpenSim coordinate name (GH_y)."""
-        if name in self.dof_names:
-            return self.dof_names.index(name)
-        if name in self.dof_osim_names:
-            return self.dof_osim_names.index(name)
-        close = difflib.get_close_matches(str(name), self.dof_names + self.dof_osim_names, n=3)
-        raise KeyError(f"unknown DOF {name!r}" + (f"; did you mean {', '.join(repr(c) for c in close)}?" if close
-                                                  else f"; DOFs are {self.dof_names} (OpenSim {self.dof_osim_names})"))
+        """Index of a DOF by armrt name (GHy) or OpenSim coordinate name (GH_y); KeyError with close matches."""
+        return _core.find_dof(self.model_name, str(name))
 
     def _per_element(self, values, what: str, lo: float, hi: float | None, clip: bool) -> np.ndarray:
         """Array of n from an array of n, a scalar or a {name: value} dict (names as in indices())."""
         n = self.n_elements
         if isinstance(values, Mapping):
             out = np.zeros(n) if what in ("excitation", "activation") else self._current(what)
-            unknown = [name for name in values if not isinstance(name, str) or
-                       (name not in self._index and name not in self._osim_aliases())]
+            unknown = [name for name in values if not self._is_name(name)]
             if unknown:
                 raise KeyError(self._unknown_names_message(unknown))
             for name, v in values.items():

@@ -141,9 +141,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--record-every", type=int, default=1, metavar="K",
                    help="keep every K-th step in the result (long runs: a 1 h run at K=1 needs 15 GB)")
     q = p.add_mutually_exclusive_group()
-    q.add_argument("--q", type=float, nargs=5, metavar="RAD",
-                   help="initial joint angles GHy GHz GHyy ELx PSy, rad (default: rest posture)")
-    q.add_argument("--q-deg", type=float, nargs=5, metavar="DEG", help="initial joint angles, deg")
+    q.add_argument("--q", type=float, nargs="+", metavar="RAD",
+                   help="initial joint angles, one per DOF of the model in its order (das2: GHy GHz GHyy ELx PSy), "
+                        "rad (default: rest posture)")
+    q.add_argument("--q-deg", type=float, nargs="+", metavar="DEG", help="initial joint angles, deg")
     q.add_argument("--q-mot", metavar="FILE.mot", help="initial joint angles from an OpenSim motion file")
     p.add_argument("--q-mot-time", type=float, default=None, metavar="S",
                    help="time in --q-mot to start from, s (default: its first row)")

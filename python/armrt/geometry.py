@@ -91,12 +91,16 @@ class ArmGeometry:
         h_scap = self.R_scapula.T @ (h_thorax - self.o_scapula)
         self.hand_point_in_hand = R[3].T @ (h_scap - p[3])
         # Pronation-supination axis in the ulna frame: the rotation axis of the radius relative to the
-        # ulna between two PSy values.
+        # ulna between two values of the DOF that turns the radius (das2: PSy). A model whose radius
+        # is welded to the ulna has none: the ulna's long axis (its origin to the wrist) stands in.
         q2 = q.copy()
-        q2[4] += 0.5
+        if "PSy" in self.dof_names:
+            q2[self.dof_names.index("PSy")] += 0.5
         R2, p2 = self._sim.body_poses(q2)
         rel = R2[2] @ R[2].T                     # scapula frame rotation taking radius(q) to radius(q2)
         axis = np.array([rel[2, 1] - rel[1, 2], rel[0, 2] - rel[2, 0], rel[1, 0] - rel[0, 1]])
+        if np.linalg.norm(axis) < 1e-12:
+            axis = p[3] - p[1]
         axis /= np.linalg.norm(axis)
         axis_u = R[1].T @ axis
         r0_u = R[1].T @ (p[2] - p[1])            # radius origin (on the axis), ulna frame
@@ -127,7 +131,7 @@ class ArmGeometry:
         return self.to_thorax(pts)
 
     def points_series(self, q: np.ndarray) -> np.ndarray:
-        """(T, 6, 3) points for a (T, 5) series of poses."""
+        """(T, 6, 3) points for a (T, n_dofs) series of poses."""
         q = np.atleast_2d(np.asarray(q, dtype=float))
         return np.stack([self.points(qk) for qk in q])
 

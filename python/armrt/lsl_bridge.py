@@ -30,12 +30,18 @@ import numpy as np
 
 from .realtime import GroupMapping, PacketError, State, UdpClient, decode_packet, parse_endpoint
 
-DOFS = ["GHy", "GHz", "GHyy", "ELx", "PSy"]
-STATE_LABELS = (["time"] + DOFS + [f"{d}_dot" for d in DOFS] + ["hand_x", "hand_y", "hand_z", "gh_stab",
-                                                                   "lag", "overrun"])
-STATE_UNITS = ["s"] + ["rad"] * 5 + ["rad/s"] * 5 + ["m"] * 3 + ["1", "s", "1"]
-STATE_TYPES = (["time"] + ["angle"] * 5 + ["angular_velocity"] * 5 + ["position"] * 3 +
-               ["stability", "lag", "flag"])
+
+
+def state_channels(model: str = "das2") -> tuple[list[str], list[str], list[str]]:
+    """Labels, units and types of the state stream's channels for `model` (its DOF names from the
+    engine): time, one angle and one angular velocity per DOF, hand position, GHstab, lag, overrun."""
+    from . import _core
+    dofs = [d["name"] for d in _core.model_info(model)["dofs"]]
+    n = len(dofs)
+    labels = ["time"] + dofs + [f"{d}_dot" for d in dofs] + ["hand_x", "hand_y", "hand_z", "gh_stab", "lag", "overrun"]
+    units = ["s"] + ["rad"] * n + ["rad/s"] * n + ["m"] * 3 + ["1", "s", "1"]
+    types = ["time"] + ["angle"] * n + ["angular_velocity"] * n + ["position"] * 3 + ["stability", "lag", "flag"]
+    return labels, units, types
 
 
 def _pylsl():
@@ -62,7 +68,7 @@ def check_state_rate(state_rate_hz: float, runner_rate_hz: float = 1000.0) -> in
 
 def state_stream_info(pylsl, name: str, source_id: str, rate_hz: float, forces: list[str] | None = None,
                       model: str = "das2"):
-    labels, units, types = list(STATE_LABELS), list(STATE_UNITS), list(STATE_TYPES)
+    labels, units, types = state_channels(model)
     for f in forces or []:
         labels.append(f"force_{f}")
         units.append("N")

@@ -136,20 +136,30 @@ def profile_values(arm, path_or_name, reference=None):
     strength = np.array(arm.strength, dtype=float)
     max_act = np.array(arm.max_activation, dtype=float)
     pos = {n: i for i, n in enumerate(arm.element_names)}
-    aliases = arm._osim_aliases()
+
+    def by_osim_name(osim: str):
+        """The one arm element an OpenSim force name names (the engine's name service), else None."""
+        try:
+            ix = list(arm.indices(osim))
+        except KeyError:
+            return None
+        return ix[0] if len(ix) == 1 else None
     applied, unmatched, s_out, a_out = [], [], {}, {}
     for name, f in prof.fmax.items():
         i = pos.get(name)
-        if i is None:
-            ix = aliases.get(prof.osim_names.get(name, ""))
-            i = ix[0] if ix is not None and len(ix) == 1 else None
+        if i is None and prof.osim_names.get(name):
+            i = by_osim_name(prof.osim_names[name])
         if i is None:
             unmatched.append(name)
             continue
         if ref is not None:
-            if name not in ref.fmax:
+            # The same element in the reference: by the profile's name, the arm's, or the OpenSim name.
+            key = next((k for k in (name, arm.element_names[i]) if k in ref.fmax), None)
+            if key is None:
+                key = next((k for k, o in ref.osim_names.items() if o == prof.osim_names.get(name)), None)
+            if key is None:
                 raise ValueError(f"reference {ref.source} has no element '{name}' (named by the profile {p})")
-            f_ref = ref.fmax[name]
+            f_ref = ref.fmax[key]
         else:
             f_ref = arm_fmax[i]
         if f_ref <= 0:

@@ -250,10 +250,12 @@ class GroupMapping:
         elif kind == "channels":
             if not channels:
                 raise ValueError("mapping 'channels' needs the channel names")
-            unknown = [c for c in channels if c not in index]
+            unknown = [c for c in channels if not _core.is_name(model, c)]
             if unknown:
-                raise KeyError(f"unknown channel names {unknown} (element, muscle or group names)")
+                raise KeyError("channels: " + _core.unknown_names_message(model, list(unknown)))
             names = list(channels)
+            # Aliases (OpenSim names) resolve through the engine's name service, as the runner does.
+            index.update({c: list(_core.find_elements(model, c)) for c in names if c not in index})
         else:
             raise ValueError(f"unknown mapping {kind!r}; expected one of {list(MAPPING_TYPES)}")
         return cls(kind, names, elements, index)

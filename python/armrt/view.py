@@ -42,7 +42,7 @@ STAB_WINDOW_S = 10.0   # GHstab plot: the last seconds
 class Frame:
     """One state to draw."""
     time: float
-    q: np.ndarray                      # (5,) rad
+    q: np.ndarray                      # (n_dofs,) rad
     activation: np.ndarray | None      # (n,) or None
     gh_stab: float = float("nan")
     lag: float | None = None           # s behind wall time (real-time runner only)
@@ -235,6 +235,7 @@ class UdpSource:
         self.model = model
         from . import _core
         self.element_names = [e["name"] for e in _core.model_info(model)["elements"]]
+        self._state_fields = realtime.state_fields(model)
         self._sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         self._sock.bind((host, int(port)))
         self.port = self._sock.getsockname()[1]
@@ -253,7 +254,7 @@ class UdpSource:
             except OSError:
                 continue
             try:
-                s = rt.State.from_packet(rt.decode_packet(data, self._key))
+                s = rt.State.from_packet(rt.decode_packet(data, self._key), self._state_fields)
                 self._frame = Frame(time=s.time, q=np.asarray(s.q, dtype=float), activation=s.excitation,
                                     gh_stab=s.gh_stab, lag=s.lag, overrun=s.overrun, timed_out=s.timed_out,
                                     kind="excitation received")

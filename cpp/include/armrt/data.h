@@ -65,25 +65,34 @@ struct StepJacobian {
 
 enum class Status { kOk = 0, kNonFinite = 1, kTooFast = 2, kCvodeFailed = 3 };
 
+// Grouped like mjData and pinocchio::Data: state, inputs, then the outputs of forward() by the stage
+// that fills them (forward.cc lists the stages; outputs are filled only with record = true and describe
+// the state forward() was evaluated at), then errors, statistics and workspace.
 struct Data {
+  // State.
   double time = 0;   // s
-  StateVec x{};      // state, see layout above
+  StateVec x{};      // [q | qdot | lce | activation], offsets above
 
   // Inputs.
   std::array<double, kMaxElements> excitation{};  // neural excitation u in [0, 1]
   std::array<double, 3> hand_force{};   // N, applied at the hand point, thorax frame
   std::array<double, 3> hand_moment{};  // N m, applied to the hand, thorax frame
 
-  // Outputs of the last forward() (at the state it was evaluated at).
-  std::array<double, kMaxDofs> qdd{};             // rad/s^2
-  std::array<double, kMaxElements> muscle_length{};  // m, muscle-tendon length
+  // Paths (generated polynomials).
+  std::array<double, kMaxElements> muscle_length{};          // m, muscle-tendon length
   std::array<double, kMaxElements * kMaxDofs> moment_arm{};  // m, [element][dof], row stride num_dofs
+  // Muscles (muscles.cc).
   std::array<double, kMaxElements> muscle_force{};   // N, tendon (SEE) force
   std::array<double, kMaxElements> fibre_velocity{}; // m/s, d lce/dt (lengthening positive)
-  std::array<double, kMaxDofs> muscle_torque{};   // N m, generalised muscle forces
-  std::array<double, kMaxDofs> passive_torque{};  // N m, passive joint moments
-  std::array<double, kMaxDofs> external_torque{}; // N m, from the hand force and moment
-  std::array<double, 3> hand_position{};  // m, thorax frame
+  std::array<double, kMaxDofs> muscle_torque{};      // N m, generalised muscle forces R^T F
+  // Passive joints (passive_joints.cc).
+  std::array<double, kMaxDofs> passive_torque{};     // N m
+  // External loads (external_loads.cc).
+  std::array<double, kMaxDofs> external_torque{};    // N m, from the hand force and moment
+  std::array<double, 3> hand_position{};             // m, thorax frame
+  // Skeleton (skeleton.cc).
+  std::array<double, kMaxDofs> qdd{};                // rad/s^2
+  // GH reaction (gh_reaction.cc).
   std::array<double, 3> gh_force{};       // N, humeral head on glenoid, scapula frame
   double gh_theta = 0, gh_phi = 0;        // rad, from the glenoid normal along the major / minor axis
   double gh_stab = 0;                     // (theta/theta_a)^2 + (phi/phi_a)^2; > 1: dislocating
@@ -93,8 +102,9 @@ struct Data {
   int bad_index = -1;  // state index that went bad
   double bad_time = 0;
 
-  TetStats tet;
-  std::int64_t halved_steps = 0;  // ROS2 steps redone as two halves (Integrator::kRos2Adaptive)
+  // Statistics.
+  TetStats tet;                          // wall time of whole control steps (Simulator::step)
+  std::int64_t halved_steps = 0;         // ROS2 steps redone as two halves (Integrator::kRos2Adaptive)
   std::int64_t limited_fibre_steps = 0;  // ROS2: element-steps whose CE mode was stiffened (rosenbrock.cc)
 
   // Integrator workspace.

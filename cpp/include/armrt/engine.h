@@ -1,6 +1,11 @@
-// The simulation stages, one per file under cpp/src/:
-//   muscle.cc        Hill-type muscle element: tendon force and contractile-element velocity
-//   forward.cc       state derivative: paths, muscles, joint torques, M(q) qdd = tau + b, GH stability
+// The simulation stages, one per file under cpp/src/ (each file opens with its in -> out contract):
+//   muscle.cc          Hill-type muscle element: tendon force and contractile-element velocity
+//   forward.cc         the state derivative: the stages below in order
+//     muscles.cc         excitation, paths, CE state -> activation/CE rates, forces, tau_muscle
+//     passive_joints.cc  q, qd -> tau_passive
+//     external_loads.cc  q, hand load -> tau_ext
+//     skeleton.cc        q, qd, tau -> M(q), qdd
+//     gh_reaction.cc     q, qd, qdd, forces, hand load -> GH force and stability
 //   integrate.cc     fixed-step Euler, RK4 and ROS2, with TET measured every step
 //   rosenbrock.cc    the linearly implicit ROS2 step: structured Jacobian, Schur-complement solve
 //   cvode.cc         SUNDIALS CVODE (BDF), the accurate reference
@@ -23,26 +28,38 @@ MuscleOut muscle_element(const ElementConstants& e, double fibre_damping, double
 // at muscle-tendon length L and activation a; used to start simulations without transients.
 double muscle_equilibrium_lce(const ElementConstants& e, double fibre_damping, double L, double a);
 
-// ---- forward.cc
+// ---- forward.cc (the pipeline) and its stage files
 // Evaluates dx/dt at state x into xdot. With record = true also fills the outputs of d (forces,
 // moment arms, qdd, hand position, GH force and stability); with a non-null jac also the parts of the
 // structured Jacobian at x (data.h StepJacobian), in the same pass over the elements.
 void forward(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac = nullptr);
-// The muscle stage of forward(): activation dynamics and CE velocity of every element (a vectorised
+// muscles.cc. The muscle stage of forward(): activation dynamics and CE velocity of every element (a vectorised
 // loop), their tendon forces (N) and the generalised muscle forces tau = R^T F (N m).
 void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
                      const double* moment_arm, const double* act, const double* lce, double* act_dot,
                      double* lce_dot, double* force, double* tau, StepJacobian* jac = nullptr);
-// Solves A x = b for a symmetric positive definite n x n A (row-major, n <= kMaxDofs), e.g. M(q) qdd = tau.
-void solve_spd(const double* A, const double* b, int n, double* x);
 // Generalised forces tau = R^T F (N m) of n element forces F (N) with moment arms R (n x ndof, m).
 void generalised_force(const double* moment_arm, const double* force, int n, int ndof, double* tau);
-// GH stability of a force of the humeral head on the glenoid (scapula frame).
-void gh_stability(const ModelDef& def, const double* force, double* theta, double* phi, double* stab);
-// Passive joint moments (N m) at q, qd.
+// passive_joints.cc. Passive joint moments (N m) at q, qd.
 void passive_joint_torque(const ModelDef& def, const double* q, const double* qd, double* tau);
 // Their derivatives (diagonal): d tau / dq (N m/rad) and d tau / dqd (N m s/rad).
 void passive_joint_stiffness(const ModelDef& def, const double* q, double* dtau_dq, double* dtau_dqd);
+// external_loads.cc. The hand force (N) and moment (N m), thorax frame, in the scapula frame (f_ext,
+// t_ext) and as generalised forces tau_ext (N m); false (tau_ext zero) when there is no load.
+bool external_load(const Model& m, const double* q, const double* hand_force, const double* hand_moment,
+                   double* f_ext, double* t_ext, double* tau_ext);
+// The hand point (m) in the thorax frame at q.
+void hand_position_in_thorax(const Model& m, const double* q, double* p_thorax);
+// skeleton.cc. M(q) (n x n, row-major, kg m^2) and qdd (rad/s^2) from M qdd = tau + b(q, qd, g).
+void skeleton_dynamics(const Model& m, const double* q, const double* qd, const double* tau, double* M, double* qdd);
+// Solves A x = b for a symmetric positive definite n x n A (row-major, n <= kMaxDofs), e.g. M(q) qdd = tau.
+void solve_spd(const double* A, const double* b, int n, double* x);
+// gh_reaction.cc. Force of the humeral head on the glenoid (N, scapula frame) from the tendon forces F,
+// the hand load f_ext (scapula frame) and the arm's weight and acceleration; its angles and GHstab.
+void gh_reaction(const Model& m, const double* q, const double* qd, const double* qdd, const double* force,
+                 const double* f_ext_scapula, double* gh_force, double* theta, double* phi, double* stab);
+// GH stability of a force of the humeral head on the glenoid (scapula frame).
+void gh_stability(const ModelDef& def, const double* force, double* theta, double* phi, double* stab);
 
 // ---- integrate.cc
 // Advances d by one step of dt with the fixed-step integrator; with record, the outputs of d describe

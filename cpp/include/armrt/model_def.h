@@ -1,5 +1,7 @@
 // The interface between generated model code (cpp/generated/, written by `python -m codegen.generate`)
 // and the engine. A ModelDef is immutable, static data: parameter tables plus straight-line functions.
+// The generator fills it by member name (designated initialisers), so a field added here is never
+// silently shifted into its neighbour's place. Sizes are the model's: n = num_dofs, E = num_elements.
 // Arrays are row-major; frames and sign conventions are in docs/conventions.md.
 #pragma once
 
@@ -8,6 +10,7 @@ namespace armrt {
 struct ElementParams {
   const char* name;        // DAS3 element name, e.g. "deltscap1"
   const char* muscle;      // parent muscle, e.g. "deltscap"
+  const char* osim_name;   // OpenSim force name, e.g. "delt_scap_1" ("" if none): an alias (names.h)
   double fmax;             // N
   double lceopt;           // m
   double lslack;           // m, series elastic (tendon) slack length
@@ -40,12 +43,12 @@ struct GroupDef {
 struct ModelDef {
   const char* name;              // "das2"
   const char* source_hash;       // SHA-256 of the model file it was generated from
-  int num_dofs;                  // 5
-  int num_elements;              // 102
+  int num_dofs;                  // n (das2: 5), at most kMaxDofs
+  int num_elements;              // E (das2: 102), at most kMaxElements
   const DofParams* dofs;
   const ElementParams* elements;
   int num_muscles;
-  const GroupDef* muscles;       // the 22 muscles
+  const GroupDef* muscles;       // the muscles (das2: 22)
   int num_groups;
   const GroupDef* groups;        // named groups (rotator_cuff, elbow_flexors, ...)
 
@@ -64,20 +67,20 @@ struct ModelDef {
   double passive_damping;            // N m s/rad
 
   // Dynamics: M(q) qdd = tau + bias_force(q, qd, g).
-  void (*mass_matrix)(const double* q, double* M);                       // M[5*5]
+  void (*mass_matrix)(const double* q, double* M);                       // M[n*n]
   void (*bias_force)(const double* q, const double* qd, const double* g_scapula,
-                     double* b);                                         // b[5]: gravity and Coriolis/centrifugal generalised forces
+                     double* b);                                         // b[n]: gravity and Coriolis/centrifugal generalised forces
   void (*dynamics)(const double* q, const double* qd, const double* g_scapula,
                    double* M, double* b);                                // both at once, sharing subexpressions
   void (*hand_position)(const double* q, double* p);                     // p[3], m, scapula frame
-  void (*hand_jacobian)(const double* q, double* Jv, double* Jw);        // 3x5 each: hand point velocity, hand angular velocity
+  void (*hand_jacobian)(const double* q, double* Jv, double* Jw);        // 3 x n each: hand point velocity, hand angular velocity
   void (*arm_momentum_rate)(const double* q, const double* qd,
-                            double* A, double* c);                       // sum_b m_b a_b = A qdd + c; A[3*5], c[3]
+                            double* A, double* c);                       // sum_b m_b a_b = A qdd + c; A[3*n], c[3]
   void (*body_poses)(const double* q, double* R, double* p);             // R[4*9], p[4*3]: humerus, ulna, radius, hand in scapula frame
   // Muscle paths (polynomials): lengths, moment arms -dL/dq, lines of action at GH.
-  void (*muscle_lengths)(const double* q, double* L);                    // L[102], m
-  void (*muscle_paths)(const double* q, double* L, double* moment_arm);  // L[102], moment_arm[102*5], m
-  void (*gh_directions)(const double* q, double* d);                     // d[102*3], unit, zero rows for non-GH elements
+  void (*muscle_lengths)(const double* q, double* L);                    // L[E], m
+  void (*muscle_paths)(const double* q, double* L, double* moment_arm);  // L[E], moment_arm[E*n], m
+  void (*gh_directions)(const double* q, double* d);                     // d[E*3], unit, zero rows for non-GH elements
 };
 
 }  // namespace armrt

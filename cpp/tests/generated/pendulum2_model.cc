@@ -10,16 +10,16 @@ namespace armrt::generated::pendulum2 {
 namespace {
 
 const DofParams kDofs[2] = {
-    {"ELx", "EL_x", -1.5, 2.0, 0.0},
-    {"PSy", "PS_y", -1.2, 1.2, 0.0},
+    {.name = "ELx", .osim_name = "EL_x", .range_min = -1.5, .range_max = 2.0, .rest = 0.0},
+    {.name = "PSy", .osim_name = "PS_y", .range_min = -1.2, .range_max = 1.2, .rest = 0.0},
 };
 
 const ElementParams kElements[5] = {
-    {"flexor1", "flexor", 300.0, 0.10000000000000001, 0.14999999999999999, 0.0, 10.0, 0.02, 0.059999999999999998, 1.0, 0.02, 0, 1, 1.0},
-    {"flexor2", "flexor", 200.0, 0.089999999999999997, 0.14999999999999999, 0.10000000000000001, 10.0, 0.02, 0.059999999999999998, 1.0, 0.02, 0, 1, 1.0},
-    {"extensor1", "extensor", 400.0, 0.10000000000000001, 0.13, 0.0, 10.0, 0.02, 0.059999999999999998, 1.0, 0.02, 0, 1, 1.0},
-    {"pronator1", "pronator", 100.0, 0.040000000000000001, 0.035000000000000003, 0.0, 10.0, 0.02, 0.059999999999999998, 1.0, 0.02, 0, 2, 1.0},
-    {"supinator1", "supinator", 100.0, 0.040000000000000001, 0.035000000000000003, 0.0, 10.0, 0.02, 0.059999999999999998, 1.0, 0.02, 0, 2, 1.0},
+    {.name = "flexor1", .muscle = "flexor", .osim_name = "flexor1", .fmax = 300.0, .lceopt = 0.10000000000000001, .lslack = 0.14999999999999999, .pennopt = 0.0, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 1, .max_activation = 1.0},
+    {.name = "flexor2", .muscle = "flexor", .osim_name = "flexor2", .fmax = 200.0, .lceopt = 0.089999999999999997, .lslack = 0.14999999999999999, .pennopt = 0.10000000000000001, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 1, .max_activation = 1.0},
+    {.name = "extensor1", .muscle = "extensor", .osim_name = "extensor1", .fmax = 400.0, .lceopt = 0.10000000000000001, .lslack = 0.13, .pennopt = 0.0, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 1, .max_activation = 1.0},
+    {.name = "pronator1", .muscle = "pronator", .osim_name = "pronator1", .fmax = 100.0, .lceopt = 0.040000000000000001, .lslack = 0.035000000000000003, .pennopt = 0.0, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 2, .max_activation = 1.0},
+    {.name = "supinator1", .muscle = "supinator", .osim_name = "supinator1", .fmax = 100.0, .lceopt = 0.040000000000000001, .lslack = 0.035000000000000003, .pennopt = 0.0, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 2, .max_activation = 1.0},
 };
 
 const int kMuscle0[2] = {0, 1};
@@ -28,54 +28,54 @@ const int kMuscle2[1] = {3};
 const int kMuscle3[1] = {4};
 
 const GroupDef kMuscles[4] = {
-    {"flexor", 2, kMuscle0},
-    {"extensor", 1, kMuscle1},
-    {"pronator", 1, kMuscle2},
-    {"supinator", 1, kMuscle3},
+    {.name = "flexor", .num_elements = 2, .elements = kMuscle0},
+    {.name = "extensor", .num_elements = 1, .elements = kMuscle1},
+    {.name = "pronator", .num_elements = 1, .elements = kMuscle2},
+    {.name = "supinator", .num_elements = 1, .elements = kMuscle3},
 };
 
 const int kGroup0[3] = {0, 1, 2};
 const int kGroup1[2] = {3, 4};
 
 const GroupDef kGroups[2] = {
-    {"elbow", 3, kGroup0},
-    {"forearm", 2, kGroup1},
+    {.name = "elbow", .num_elements = 3, .elements = kGroup0},
+    {.name = "forearm", .num_elements = 2, .elements = kGroup1},
 };
 
 const ModelDef kModel = {
-    "pendulum2",
-    "2718c0e45e068edd42892f9941382c2ce55fbc1c7f7eee6ca80b24523a8d3c96",
-    2,
-    5,
-    kDofs,
-    kElements,
-    4,
-    kMuscles,
-    2,
-    kGroups,
-    {0.0, -9.8066499999999994, 0.0},
-    {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0},
-    {0.0, 0.0, 0.0},
-    {0.0, 0.0, 0.0},
-    {-1.0, 0.0, 0.0},
-    {0.0, 1.0, 0.0},
-    {0.0, 0.0, -1.0},
-    0.77439999999999998,
-    0.67279999999999995,
-    3.8999999999999999,
-    1.0,
-    5000.0,
-    0.0,
-    &mass_matrix,
-    &bias_force,
-    &dynamics,
-    &hand_position,
-    &hand_jacobian,
-    &arm_momentum_rate,
-    &body_poses,
-    &muscle_lengths,
-    &muscle_paths,
-    &gh_directions,
+    .name = "pendulum2",
+    .source_hash = "2718c0e45e068edd42892f9941382c2ce55fbc1c7f7eee6ca80b24523a8d3c96",
+    .num_dofs = 2,
+    .num_elements = 5,
+    .dofs = kDofs,
+    .elements = kElements,
+    .num_muscles = 4,
+    .muscles = kMuscles,
+    .num_groups = 2,
+    .groups = kGroups,
+    .gravity_scapula = {0.0, -9.8066499999999994, 0.0},
+    .scapula_rotation_in_thorax = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0},
+    .scapula_origin_in_thorax = {0.0, 0.0, 0.0},
+    .gh_centre = {0.0, 0.0, 0.0},
+    .glenoid_normal = {-1.0, 0.0, 0.0},
+    .glenoid_major_axis = {0.0, 1.0, 0.0},
+    .glenoid_minor_axis = {0.0, 0.0, -1.0},
+    .rim_half_angle_major = 0.77439999999999998,
+    .rim_half_angle_minor = 0.67279999999999995,
+    .arm_mass = 3.8999999999999999,
+    .passive_stiffness_inside = 1.0,
+    .passive_stiffness_outside = 5000.0,
+    .passive_damping = 0.0,
+    .mass_matrix = &mass_matrix,
+    .bias_force = &bias_force,
+    .dynamics = &dynamics,
+    .hand_position = &hand_position,
+    .hand_jacobian = &hand_jacobian,
+    .arm_momentum_rate = &arm_momentum_rate,
+    .body_poses = &body_poses,
+    .muscle_lengths = &muscle_lengths,
+    .muscle_paths = &muscle_paths,
+    .gh_directions = &gh_directions,
 };
 
 }  // namespace

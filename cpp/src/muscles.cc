@@ -1,0 +1,71 @@
+// Stage: muscles. (excitation u, path lengths L, moment arms R, CE lengths lce, activations a) ->
+// (da/dt, dlce/dt, tendon forces F (N), generalised muscle forces tau = R^T F (N m)), and with a
+// Jacobian the kernel's derivatives in the same pass. The element itself: muscle_kernel.h, muscle.cc.
+#include "armrt/engine.h"
+#include "armrt/muscle_kernel.h"
+#include "dof_dispatch.h"
+
+namespace armrt {
+
+namespace {
+
+template <int ndof>
+void generalised_force_n(const double* moment_arm, const double* force, int n, double* tau) {
+  // Four independent partial sums per DOF: one running sum would chain n multiply-adds back to back.
+  double acc[4][ndof] = {};
+  int i = 0;
+  for (; i + 4 <= n; i += 4)
+    for (int k = 0; k < 4; ++k)
+      for (int j = 0; j < ndof; ++j) acc[k][j] += moment_arm[(i + k) * ndof + j] * force[i + k];
+  for (; i < n; ++i)
+    for (int j = 0; j < ndof; ++j) acc[0][j] += moment_arm[i * ndof + j] * force[i];
+  for (int j = 0; j < ndof; ++j) tau[j] = (acc[0][j] + acc[1][j]) + (acc[2][j] + acc[3][j]);
+}
+
+}  // namespace
+
+void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
+                     const double* moment_arm, const double* act, const double* lce, double* act_dot,
+                     double* lce_dot, double* force, double* tau, StepJacobian* jac) {
+  const int n = m.num_elements;
+  const MuscleArrays& mc = m.muscles;
+  const double b = m.fibre_damping;
+  if (!jac) {
+#pragma omp simd
+    for (int i = 0; i < n; ++i) {
+      double u = excitation[i];
+      u = u < 0.0 ? 0.0 : (u > mc.max_activation[i] ? mc.max_activation[i] : u);
+      act_dot[i] = (mc.c1[i] * u + mc.c2[i]) * (u - act[i]);
+      muscle_kernel(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
+                    mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], mc.damping_slope[i], b,
+                    muscle_length[i], lce[i], act[i], &force[i], &lce_dot[i]);
+    }
+  } else {
+    // The same loop with the kernel's derivatives (one pass: the Jacobian costs no second sweep).
+#pragma omp simd
+    for (int i = 0; i < n; ++i) {
+      double u = excitation[i];
+      u = u < 0.0 ? 0.0 : (u > mc.max_activation[i] ? mc.max_activation[i] : u);
+      const double rate = mc.c1[i] * u + mc.c2[i];
+      act_dot[i] = rate * (u - act[i]);
+      jac->act_rate[i] = rate;
+      MuscleDerivatives der;
+      muscle_kernel_derivatives(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i],
+                                mc.vmax[i], mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i],
+                                mc.damping_slope[i], b, muscle_length[i], lce[i], act[i], &force[i], &lce_dot[i],
+                                &der);
+      jac->dforce_dL[i] = der.dforce_dL;
+      jac->dforce_dlce[i] = der.dforce_dlce;
+      jac->dvel_dL[i] = der.dvel_dL;
+      jac->dvel_dlce[i] = der.dvel_dlce;
+      jac->dvel_da[i] = der.dvel_da;
+    }
+  }
+  generalised_force(moment_arm, force, n, m.num_dofs, tau);
+}
+
+void generalised_force(const double* moment_arm, const double* force, int n, int ndof, double* tau) {
+  detail::dispatch_dofs(ndof, [&](auto N) { generalised_force_n<N>(moment_arm, force, n, tau); });
+}
+
+}  // namespace armrt
