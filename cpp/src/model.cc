@@ -5,8 +5,35 @@
 
 #include "armrt/data.h"
 #include "armrt/engine.h"
+#include "armrt/muscle_kernel.h"
 
 namespace armrt {
+
+namespace {
+
+void find_rest_fibre_rate(Model& m) {
+  const ModelDef& def = *m.def;
+  double q[kMaxDofs], L[kMaxElements];
+  for (int j = 0; j < def.num_dofs; ++j) q[j] = def.dofs[j].rest;
+  def.muscle_lengths(q, L);
+  m.rest_fibre_rate = 0;
+  m.rest_fibre_element = 0;
+  for (int i = 0; i < m.num_elements; ++i) {
+    const ElementConstants& e = m.element[i];
+    const double lce = muscle_equilibrium_lce(e, m.fibre_damping, L[i], 0.0);
+    double force, velocity;
+    MuscleDerivatives der;
+    muscle_kernel_derivatives(e.fmax, e.inv_lceopt, e.lslack, e.thickness, e.min_lce, e.vmax, e.k_see, e.k_pee,
+                              e.pee_slack, e.compress_length, e.k_compress, e.ecc_c, e.damping_slope,
+                              m.fibre_damping, L[i], lce, 0.0, &force, &velocity, &der);
+    if (der.dvel_dlce < m.rest_fibre_rate) {
+      m.rest_fibre_rate = der.dvel_dlce;
+      m.rest_fibre_element = i;
+    }
+  }
+}
+
+}  // namespace
 
 void model_update_derived(Model& m) {
   for (int i = 0; i < m.num_elements; ++i) {
@@ -31,12 +58,18 @@ void model_update_derived(Model& m) {
     e.inv_lceopt = 1.0 / p.lceopt;
     // Fibres cannot be shorter than the muscle is thick; the floor also keeps 1/cos(pennation) finite.
     e.min_lce = std::max(1.001 * e.thickness, 0.05 * p.lceopt);
+    e.compress_length = std::max(kCompressOnset * p.lceopt, e.min_lce + kCompressMinSpan * p.lceopt);
+    const double compress_span = e.compress_length - e.min_lce;
+    e.k_compress = kCompressForceAtMin * e.fmax / (compress_span * compress_span);
+    e.max_lce = e.pee_slack + std::sqrt(kMaxPeeForce) * pee_stretch_at_fmax;
     MuscleArrays& a = m.muscles;
     a.fmax[i] = e.fmax, a.inv_lceopt[i] = e.inv_lceopt, a.lslack[i] = e.lslack, a.thickness[i] = e.thickness;
     a.min_lce[i] = e.min_lce, a.vmax[i] = e.vmax, a.k_see[i] = e.k_see, a.k_pee[i] = e.k_pee;
-    a.pee_slack[i] = e.pee_slack, a.ecc_c[i] = e.ecc_c, a.damping_slope[i] = e.damping_slope, a.c1[i] = e.c1, a.c2[i] = e.c2;
+    a.pee_slack[i] = e.pee_slack, a.compress_length[i] = e.compress_length, a.k_compress[i] = e.k_compress;
+    a.ecc_c[i] = e.ecc_c, a.damping_slope[i] = e.damping_slope, a.c1[i] = e.c1, a.c2[i] = e.c2;
     a.max_activation[i] = e.max_activation;
   }
+  find_rest_fibre_rate(m);
 }
 
 void model_init(Model& m, const ModelDef& def) {

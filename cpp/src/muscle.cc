@@ -20,7 +20,27 @@
 // F0 g(v) + b v is strictly increasing in v, so the inversion has exactly one root, finite at zero
 // activation. Pennation keeps the muscle's thickness lceopt sin(pennopt) constant (constant volume).
 // SEE: k (L - lslack)^2 with 4% strain at fmax; PEE: k (lce - peeslack lceopt)^2 reaching fmax at
-// (peeslack + 0.56) lceopt; both have the DAS3 code's 10 N/m linear term so they are never force-free.
+// (peeslack + 0.56) lceopt. Both are zero when slack: a tendon cannot push. (The DAS3 code adds a 10 N/m
+// linear term to each so the equations stay solvable at zero activation; here the damper b > 0 does
+// that, and the linear term would give negative tendon forces at rest and a force that does not scale
+// with fmax, so that strength 0.5 would not halve the active force.) Every force is proportional to fmax,
+// so a strength scale s multiplies the isometric force at every length and activation by exactly s.
+//
+// Fibre compressive element: a fibre cannot shorten without bound. A sarcomere shortened below about
+// 60 % of its optimal length has its thick filaments against the Z-discs: active force is gone and the
+// fibre resists further shortening (Gordon, Huxley & Julian 1966, J Physiol 184:170); OpenSim's
+// Millard2012 muscles add a fibre compressive force-length curve for the same reason (Millard et al.
+// 2013, J Biomech Eng 135:021005). Without it a unit shorter than its tendon slack length (supinator at
+// full supination) lets an active CE shorten at vmax through zero length. Here: k_c (l_c - lce)^2 below
+// l_c = max(0.3 lceopt, min_lce + 0.1 lceopt), reaching 4 fmax at the geometric minimum min_lce, in
+// parallel with CE and PEE. The onset sits below the shortest fibre lengths of the paper's tasks (0.42
+// lceopt: biceps at full elbow flexion), where the paper's Gaussian force-length curve still gives
+// active force; an onset at 0.5 lceopt cancelled much of that force (elbow flexors at 0.4 for 6 s
+// reached 132 instead of 137.5 deg). At min_lce it exceeds any active force the CE can develop there (<= fmax f(lce)),
+// so the CE velocity turns to lengthening before min_lce:
+// the fibre stays above its geometric minimum. A whole slack unit at zero activation carries no force and
+// its fibre keeps its length (v = 0), moved only by the PEE (if stretched) and the compressive element;
+// at rest (muscle_equilibrium_lce) such a fibre sits at its PEE slack length.
 #include "armrt/engine.h"
 #include "armrt/muscle_kernel.h"
 
@@ -29,18 +49,22 @@ namespace armrt {
 MuscleOut muscle_element(const ElementConstants& e, double b, double L, double lce, double a) {
   MuscleOut out;
   muscle_kernel(e.fmax, e.inv_lceopt, e.lslack, e.thickness, e.min_lce, e.vmax, e.k_see, e.k_pee, e.pee_slack,
-                e.ecc_c, e.damping_slope, b, L, lce, a, &out.force, &out.fibre_velocity);
+                e.compress_length, e.k_compress, e.ecc_c, e.damping_slope, b, L, lce, a, &out.force, &out.fibre_velocity);
   return out;
 }
 
 double muscle_equilibrium_lce(const ElementConstants& e, double b, double L, double a) {
-  // The CE velocity falls monotonically as lce grows (the tendon slackens); bisect on its sign.
-  // A slack muscle-tendon unit settles where the two linear slack springs balance, which can be
-  // longer than L itself, hence the generous upper bracket.
+  // The CE velocity falls monotonically as lce grows (the tendon slackens); bisect on its sign. Where a
+  // slack unit is force-free over a range of lce (v = 0), the bisection returns the longest length of
+  // that range: a relaxed, unloaded fibre rests at its own slack length (the PEE's), the tendon slack.
+  // (The shortest, where the tendon just goes taut, would put every slack unit exactly on the tendon's
+  // kink, where the ROS2 step's slack/taut decisions flip with a 1e-9 perturbation of the start.)
+  // A muscle of zero strength carries no force at any length: its fibre, too, rests at its slack length.
+  if (e.fmax == 0.0) return e.pee_slack;
   double lo = e.min_lce, hi = (L > lo ? L : lo) + e.pee_slack + e.lceopt;
   for (int it = 0; it < 100; ++it) {
     const double mid = 0.5 * (lo + hi);
-    if (muscle_element(e, b, L, mid, a).fibre_velocity > 0) lo = mid; else hi = mid;
+    if (muscle_element(e, b, L, mid, a).fibre_velocity >= 0) lo = mid; else hi = mid;
   }
   return 0.5 * (lo + hi);
 }

@@ -37,7 +37,7 @@ void muscle_dynamics(const Model& m, const double* excitation, const double* mus
       u = u < 0.0 ? 0.0 : (u > mc.max_activation[i] ? mc.max_activation[i] : u);
       act_dot[i] = (mc.c1[i] * u + mc.c2[i]) * (u - act[i]);
       muscle_kernel(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
-                    mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], mc.damping_slope[i], b,
+                    mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.compress_length[i], mc.k_compress[i], mc.ecc_c[i], mc.damping_slope[i], b,
                     muscle_length[i], lce[i], act[i], &force[i], &lce_dot[i]);
     }
   } else {
@@ -51,7 +51,7 @@ void muscle_dynamics(const Model& m, const double* excitation, const double* mus
       jac->act_rate[i] = rate;
       MuscleDerivatives der;
       muscle_kernel_derivatives(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i],
-                                mc.vmax[i], mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i],
+                                mc.vmax[i], mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.compress_length[i], mc.k_compress[i], mc.ecc_c[i],
                                 mc.damping_slope[i], b, muscle_length[i], lce[i], act[i], &force[i], &lce_dot[i],
                                 &der);
       jac->dforce_dL[i] = der.dforce_dL;

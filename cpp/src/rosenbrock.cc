@@ -194,21 +194,24 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
     const double L_next = L_now + h * L_rate[i];
     const double a_pred = a_x[i] + h * a_rate[i];
     const double a_next = a_pred < 0.0 ? 0.0 : (a_pred > 1.0 ? 1.0 : a_pred);
-    // Operating point: the tendon stretched to carry what the fibres hold isometrically, the CE's
-    // force a fmax f(lce) plus the PEE's (k s^2 + 10 N/m s = that force along the tendon), where the
-    // CE comes to rest once the tendon has engaged.
+    // Operating point: the tendon stretched to carry what the fibres hold once it has engaged (k_see s^2
+    // = that force along the tendon): the CE's isometric force a fmax f(lce) plus the PEE's, less the
+    // compressive element's, plus the damper's drag b v where a lengthening muscle-tendon unit pulls
+    // the fibre along at v = dL/dt cos(pennation). Without the drag a relaxed fibre's operating point is
+    // the slack kink itself, where the tendon has no stiffness.
     const double lce = lce_x[i] > mc.min_lce[i] ? lce_x[i] : mc.min_lce[i];
     const double xfl = (lce * mc.inv_lceopt[i] - 1.0) * (1.0 / kForceLengthWidth);
-    const double pee_stretch = lce - mc.pee_slack[i];
-    const double pee_pos = pee_stretch > 0 ? pee_stretch : 0.0;
-    const double f_pee = kLinearStiffness * pee_stretch + mc.k_pee[i] * pee_pos * pee_pos;
     const double F0 = a_next * mc.fmax[i] * exp_nonpositive(-xfl * xfl);
     const double th2 = mc.thickness[i] * mc.thickness[i];
     const double lce_along = std::sqrt(lce * lce - th2);
-    const double fibre_force = F0 + f_pee;
-    const double F_op = (fibre_force > 0.0 ? fibre_force : 0.0) * lce_along / lce;
-    const double s_op = (std::sqrt(kLinearStiffness * kLinearStiffness + 4.0 * mc.k_see[i] * F_op) - kLinearStiffness) /
-                        (2.0 * mc.k_see[i]);
+    const double cos_pen = lce_along / lce;
+    const double v_drag = L_rate[i] > 0.0 ? L_rate[i] * cos_pen : 0.0;
+    const double missing_damping = mc.damping_slope[i] * (kLowActivation - F0 / mc.fmax[i]);
+    const double b_drag = b0 + (missing_damping > 0.0 ? missing_damping : 0.0);
+    const double fibre_force = F0 + b_drag * v_drag + pee_force(mc.k_pee[i], mc.pee_slack[i], lce) -
+                               compressive_force(mc.k_compress[i], mc.compress_length[i], lce);
+    const double F_op = (fibre_force > 0.0 ? fibre_force : 0.0) * cos_pen;
+    const double s_op = see_stretch_at_force(mc.k_see[i], F_op);
     const double along_op_raw = L_next - mc.lslack[i] - s_op;
     const double along_op = along_op_raw > mc.min_lce[i] ? along_op_raw : mc.min_lce[i];
     const double lce_op = std::sqrt(along_op * along_op + th2);
@@ -223,6 +226,9 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
     // muscle-tendon unit; stopping those at an estimated operating point biased the motion at every
     // step size (measured: errors that did not shrink with the step).
     const double stretch_now = L_now - lce_along - mc.lslack[i];
+    // The tendon's stretch at the end of the step if the CE stood still (the unit's own motion).
+    const double stretch_pulled = stretch_now + h * L_rate[i];
+    const double stretch_end = stretch_pulled > stretch_now ? stretch_pulled : stretch_now;
     const double disp_safe = disp != 0.0 ? disp : 1.0;
     const double theta = (lce_op - lce_x[i]) / disp_safe;
     const bool overshoots = disp != 0.0 && stretch_now <= 0.0 && F0 > kEngagingActiveForce * mc.fmax[i] &&
@@ -235,7 +241,10 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
     const bool stiffer = overshoots && lambda < dvel_dlce[i];
     dvel_dlce[i] = stiffer ? lambda : dvel_dlce[i];
     limited += stiffer ? 1 : 0;
-    taut[i] = stretch_now > 0.0 ? 1.0 : 0.0;
+    // Tautness weight of the loading rule below: 0 while the tendon is slack and the unit does not pull it
+    // taut within the step, 1 once it is (or will be) stretched by a tenth of its stretch at fmax.
+    const double taut_w = stretch_end / (0.1 * kTendonStrainAtFmax * mc.lslack[i]);
+    taut[i] = taut_w < 0.0 ? 0.0 : (taut_w > 1.0 ? 1.0 : taut_w);
     L_op[i] = L_next;
     lce_at_op[i] = lce_op;
     a_op[i] = a_next;
@@ -248,15 +257,21 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
     double force_op, vel_op;
     MuscleDerivatives op;
     muscle_kernel_derivatives(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
-                              mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.ecc_c[i], mc.damping_slope[i], b0,
+                              mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.compress_length[i], mc.k_compress[i], mc.ecc_c[i], mc.damping_slope[i], b0,
                               L_op[i], lce_at_op[i], a_op[i], &force_op, &vel_op, &op);
-    const bool loading = taut[i] > 0.0 && op.dvel_dlce < dvel_dlce[i];
-    dvel_dlce[i] = loading ? op.dvel_dlce : dvel_dlce[i];
-    dvel_dL[i] = loading ? op.dvel_dL : dvel_dL[i];
-    dvel_da[i] = loading ? op.dvel_da : dvel_da[i];
-    dforce_dL[i] = loading ? op.dforce_dL : dforce_dL[i];
-    dforce_dlce[i] = loading ? op.dforce_dlce : dforce_dlce[i];
-    limited += loading ? 1 : 0;
+    // Blended, not switched: weight 0 where the operating point is no stiffer, rising to 1 where it is
+    // 1.5x stiffer, times the tendon's tautness. A switch here made the step, and so the trajectory,
+    // jump with a 1e-9 rad change of the start.
+    const double gap = dvel_dlce[i] - op.dvel_dlce;
+    const double w_stiff_raw = gap / (0.5 * std::fabs(op.dvel_dlce) + 1e-300);
+    const double w_stiff = w_stiff_raw < 0.0 ? 0.0 : (w_stiff_raw > 1.0 ? 1.0 : w_stiff_raw);
+    const double w = w_stiff * taut[i];
+    dvel_dlce[i] += w * (op.dvel_dlce - dvel_dlce[i]);
+    dvel_dL[i] += w * (op.dvel_dL - dvel_dL[i]);
+    dvel_da[i] += w * (op.dvel_da - dvel_da[i]);
+    dforce_dL[i] += w * (op.dforce_dL - dforce_dL[i]);
+    dforce_dlce[i] += w * (op.dforce_dlce - dforce_dlce[i]);
+    limited += w > 0.0 ? 1 : 0;
   }
   d.limited_fibre_steps += limited;
 }

@@ -124,6 +124,33 @@ bool Simulator::step(bool record) {
 
 void Simulator::evaluate_outputs() { forward(model, data, data.x.data(), data.k1.data(), true); }
 
+std::string Simulator::domain_error_message() const {
+  char name[96];
+  char what[192];
+  const int k = data.bad_index, n = model.num_elements, ia = act_offset(model), il = lce_offset(model);
+  const double value = data.x[k];
+  state_name(model, k, name, sizeof name);
+  if (k >= q_offset(model) && k < qd_offset(model)) {
+    const DofParams& dof = model.def->dofs[k - q_offset(model)];
+    std::snprintf(what, sizeof what, "%s = %.4g rad is more than %.2g rad beyond its range [%.4g, %.4g] rad", name,
+                  value, kJointRangeMargin, dof.range_min, dof.range_max);
+  } else if (k >= il && k < il + n) {
+    const ElementConstants& e = model.element[k - il];
+    std::snprintf(what, sizeof what, "fibre length %s = %.4g m is outside its physical range [%.4g, %.4g] m", name,
+                  value, e.min_lce, e.max_lce);
+  } else if (k >= ia) {
+    std::snprintf(what, sizeof what, "%s = %.6g is outside [0, 1]", name, value);
+  } else {
+    std::snprintf(what, sizeof what, "%s = %.4g", name, value);
+  }
+  char buf[384];
+  std::snprintf(buf, sizeof buf,
+                "simulation left the physical domain: %s at t = %.6f s (a step too large for integrator '%s', "
+                "or inputs beyond the model)",
+                what, data.bad_time, integrator_name(integrator));
+  return buf;
+}
+
 std::string Simulator::error_message() const {
   char name[96];
   char buf[256];
@@ -142,6 +169,19 @@ std::string Simulator::error_message() const {
     case Status::kCvodeFailed:
       std::snprintf(buf, sizeof buf, "CVODE failed to advance at t = %.6f s", data.bad_time);
       return buf;
+    case Status::kOutOfDomain:
+      return domain_error_message();
+    case Status::kUnstableStep: {
+      const double rate = model.rest_fibre_rate, h = dt / substeps;
+      const double h_max = explicit_stability_limit(integrator) / std::fabs(rate);
+      std::snprintf(buf, sizeof buf,
+                    "step too large for integrator '%s': a %.3g ms step is unstable even for the resting arm "
+                    "(the fibre of %s has eigenvalue %.3g 1/s at rest, stable for steps <= %.3g ms); use "
+                    "integrator 'ros2', or substeps=%d (the validated %.3g ms step)",
+                    integrator_name(integrator), 1e3 * h, model.def->elements[model.rest_fibre_element].name,
+                    rate, 1e3 * h_max, default_substeps(integrator, dt), 1e3 * default_max_step(integrator));
+      return buf;
+    }
   }
   return "unknown error";
 }

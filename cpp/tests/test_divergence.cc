@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "armrt/engine.h"
 #include "armrt/simulator.h"
 #include "test_util.h"
 
@@ -75,6 +76,78 @@ TEST_CASE("elbow velocity beyond the bound: qdot[ELx]") {
   CHECK(sim.data.status == Status::kTooFast);
   CHECK(sim.data.bad_index == kQd + 3);
   CHECK(sim.error_message().find("qdot[ELx]") != std::string::npos);
+}
+
+TEST_CASE("domain check: a CE length, activation or joint angle out of its physical range stops the step") {
+  struct Case {
+    const char* what;
+    int index;
+    double value;
+    const char* expect;
+  };
+  Model m;
+  model_init(m, armrt_test::das2());
+  const int i = armrt_test::element_index(*m.def, "supinator2");
+  REQUIRE(i >= 0);
+  const ElementConstants& e = m.element[i];
+  const DofParams& psy = m.def->dofs[4];
+  const Case cases[] = {
+      {"lce below its geometric minimum", kLce + i, 0.5 * e.min_lce, "fibre length lce[supinator2]"},
+      {"lce above its maximum", kLce + i, 1.01 * e.max_lce, "fibre length lce[supinator2]"},
+      {"activation above 1", act_offset(m) + i, 1.2, "activation[supinator2] = 1.2 is outside [0, 1]"},
+      {"activation below 0", act_offset(m) + i, -0.1, "activation[supinator2] = -0.1 is outside [0, 1]"},
+      {"joint far beyond its range", kQ + 4, psy.range_max + kJointRangeMargin + 0.2, "q[PSy]"},
+  };
+  for (const Case& c : cases) {
+    const std::string what = c.what;
+    CAPTURE(what);
+    Simulator sim(armrt_test::das2(), Integrator::kRos2, 1e-3);
+    for (int k = 0; k < 6; ++k) REQUIRE(sim.step());
+    // The state a step would have produced (check_state runs after every step).
+    sim.data.x[c.index] = c.value;
+    CHECK_FALSE(check_state(sim.model, sim.data));
+    CHECK_FALSE(sim.step());  // sticky
+    CHECK(sim.data.status == Status::kOutOfDomain);
+    CHECK(sim.data.bad_index == c.index);
+    const std::string msg = sim.error_message();
+    INFO(msg);
+    CHECK(msg.find("left the physical domain") != std::string::npos);
+    CHECK(msg.find(c.expect) != std::string::npos);
+    CHECK(msg.find("t = 0.006") != std::string::npos);
+  }
+}
+
+TEST_CASE("explicit steps beyond the model's stability limit at rest are refused before any data") {
+  Model m;
+  model_init(m, armrt_test::das2());
+  // The stiffest fibre at rest, cross-checked by a finite difference of its CE velocity.
+  const int i = m.rest_fibre_element;
+  const ElementConstants& e = m.element[i];
+  double q[kMaxDofs], L[kMaxElements];
+  for (int j = 0; j < m.num_dofs; ++j) q[j] = m.def->dofs[j].rest;
+  m.def->muscle_lengths(q, L);
+  const double lce = muscle_equilibrium_lce(e, m.fibre_damping, L[i], 0.0), h = 1e-9;
+  const double fd = (muscle_element(e, m.fibre_damping, L[i], lce + h, 0.0).fibre_velocity -
+                     muscle_element(e, m.fibre_damping, L[i], lce - h, 0.0).fibre_velocity) / (2 * h);
+  MESSAGE("stiffest fibre at rest: " << std::string(m.def->elements[i].name) << ", " << m.rest_fibre_rate << " 1/s");
+  CHECK(m.rest_fibre_rate == doctest::Approx(fd).epsilon(1e-4));
+  CHECK(m.rest_fibre_rate < -2.785e3);  // beyond RK4 at 1 ms
+  for (Integrator integ : {Integrator::kRk4, Integrator::kEuler}) {
+    CAPTURE(integrator_name(integ));
+    Simulator one(armrt_test::das2(), integ, 1e-3);  // substeps = 1
+    CHECK_FALSE(one.step());
+    CHECK(one.data.status == Status::kUnstableStep);
+    CHECK(one.data.time == 0.0);
+    const std::string msg = one.error_message();
+    INFO(msg);
+    CHECK(msg.find("step too large") != std::string::npos);
+    CHECK(msg.find(m.def->elements[i].name) != std::string::npos);
+    // The default substeps (the validated step) run.
+    Simulator ok(armrt_test::das2(), integ, 1e-3, default_substeps(integ, 1e-3));
+    for (int k = 0; k < 20; ++k) CHECK(ok.step());
+  }
+  Simulator ros2(armrt_test::das2(), Integrator::kRos2, 1e-3);
+  CHECK(ros2.step());  // L-stable: no such limit
 }
 
 TEST_CASE("state_name covers every part of the state") {

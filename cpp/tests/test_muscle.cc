@@ -31,15 +31,13 @@ int pennated_element(const Model& m) {
   return -1;
 }
 
-// SEE stretch s >= 0 at which 10 N/m * s + k_see * s^2 = F (F >= 0).
-double see_stretch_for_force(const ElementConstants& e, double F) {
-  return (-kLinearStiffness + std::sqrt(kLinearStiffness * kLinearStiffness + 4.0 * e.k_see * F)) / (2.0 * e.k_see);
-}
+// SEE stretch s >= 0 at which k_see * s^2 = F (F >= 0).
+double see_stretch_for_force(const ElementConstants& e, double F) { return std::sqrt(F / e.k_see); }
 
 // PEE force at lce.
 double pee_force(const ElementConstants& e, double lce) {
   const double s = lce - e.pee_slack;
-  return kLinearStiffness * s + (s > 0 ? e.k_pee * s * s : 0.0);
+  return s > 0 ? e.k_pee * s * s : 0.0;
 }
 
 // Unpennated element at lce = lceopt: muscle-tendon length at which the fibres carry force F.
@@ -181,7 +179,7 @@ TEST_CASE("force-velocity: dF/dv continuous at v = 0") {
   }
 }
 
-TEST_CASE("tendon: SEE force at 4% strain of lslack is Fmax plus the linear term") {
+TEST_CASE("tendon: SEE force at 4% strain of lslack is Fmax, zero when slack") {
   Fixture f;
   for (int i = 0; i < f.m.num_elements; ++i) {
     const ElementConstants& e = f.m.element[i];
@@ -191,11 +189,105 @@ TEST_CASE("tendon: SEE force at 4% strain of lslack is Fmax plus the linear term
       const double stretch = kTendonStrainAtFmax * e.lslack;
       const double L = lce * cos_pen + e.lslack + stretch;
       const MuscleOut out = muscle_element(e, f.m.fibre_damping, L, lce, 0.3);
-      CHECK(out.force == doctest::Approx(e.fmax + kLinearStiffness * stretch).epsilon(1e-10));
-      // Slack tendon: only the linear term (negative).
+      CHECK(out.force == doctest::Approx(e.fmax).epsilon(1e-10));
+      // Slack tendon: a tendon cannot push.
       const MuscleOut slack = muscle_element(e, f.m.fibre_damping, L - 2 * stretch, lce, 0.3);
-      CHECK(slack.force == doctest::Approx(-kLinearStiffness * stretch).epsilon(1e-8));
+      CHECK(slack.force == 0.0);
     }
+  }
+}
+
+TEST_CASE("a tendon cannot push: the tendon force is never negative (every element, slack to stretched)") {
+  Fixture f;
+  int checked = 0;
+  for (int i = 0; i < f.m.num_elements; ++i) {
+    const ElementConstants& e = f.m.element[i];
+    CAPTURE(f.m.def->elements[i].name);
+    for (double lf : {0.3, 0.6, 1.0, 1.4, 2.0})
+      for (double Lf : {0.2, 0.6, 0.9, 1.0, 1.1, 1.3})
+        for (double a : {0.0, 0.5, 1.0}) {
+          const MuscleOut out = muscle_element(e, f.m.fibre_damping, Lf * (e.lceopt + e.lslack), lf * e.lceopt, a);
+          CHECK(out.force >= 0.0);
+          ++checked;
+        }
+  }
+  CHECK(checked == f.m.num_elements * 90);
+}
+
+TEST_CASE("strength 0.5 halves the isometric force exactly, active and passive alike") {
+  Model full, half;
+  model_init(full, armrt_test::das2());
+  model_init(half, armrt_test::das2());
+  for (int i = 0; i < half.num_elements; ++i) half.element[i].strength_scale = 0.5;
+  model_update_derived(half);
+  const double b = full.fibre_damping;
+  for (int i = 0; i < full.num_elements; ++i) {
+    const ElementConstants &e = full.element[i], &h = half.element[i];
+    CAPTURE(full.def->elements[i].name);
+    for (double Lf : {0.95, 1.0, 1.03, 1.1}) {
+      const double L = Lf * (e.lceopt + e.lslack);
+      const double passive_full = muscle_element(e, b, L, muscle_equilibrium_lce(e, b, L, 0.0), 0.0).force;
+      const double passive_half = muscle_element(h, b, L, muscle_equilibrium_lce(h, b, L, 0.0), 0.0).force;
+      CHECK(passive_half == doctest::Approx(0.5 * passive_full).epsilon(1e-9).scale(1e-9 * e.fmax));
+      for (double a : {0.3, 1.0}) {
+        const double total_full = muscle_element(e, b, L, muscle_equilibrium_lce(e, b, L, a), a).force;
+        const double total_half = muscle_element(h, b, L, muscle_equilibrium_lce(h, b, L, a), a).force;
+        CHECK((total_half - passive_half) == doctest::Approx(0.5 * (total_full - passive_full)).epsilon(1e-8));
+      }
+    }
+  }
+}
+
+TEST_CASE("fibre compressive element: zero above its onset, 4 fmax at min_lce, velocity F/b when relaxed") {
+  Fixture f;
+  const double b0 = f.m.fibre_damping;
+  for (int i = 0; i < f.m.num_elements; ++i) {
+    const ElementConstants& e = f.m.element[i];
+    CAPTURE(f.m.def->elements[i].name);
+    CHECK(e.compress_length >= kCompressOnset * e.lceopt);
+    CHECK(e.compress_length >= e.min_lce + kCompressMinSpan * e.lceopt - 1e-15);
+    // Slack tendon and PEE, a = 0: the damper alone (b0 plus the full floor) carries the compressive force.
+    const double L = 0.5 * e.lslack;
+    const double b = b0 + e.damping_slope * kLowActivation;
+    CHECK(muscle_element(e, b0, L, e.min_lce, 0.0).fibre_velocity ==
+          doctest::Approx(kCompressForceAtMin * e.fmax / b).epsilon(1e-12));
+    const double mid = 0.5 * (e.min_lce + e.compress_length);
+    CHECK(muscle_element(e, b0, L, mid, 0.0).fibre_velocity ==
+          doctest::Approx(0.25 * kCompressForceAtMin * e.fmax / b).epsilon(1e-12));
+    // Above the onset a whole slack unit carries nothing and its relaxed fibre keeps its length.
+    if (e.pee_slack > e.compress_length * 1.01) {
+      CHECK(muscle_element(e, b0, L, e.compress_length * 1.001, 0.0).fibre_velocity == 0.0);
+      CHECK(muscle_element(e, b0, L, 0.5 * (e.compress_length + e.pee_slack), 0.0).fibre_velocity == 0.0);
+    }
+    // Fully active and unloaded, the fibre still lengthens at min_lce: it cannot reach it.
+    CHECK(muscle_element(e, b0, L, e.min_lce, 1.0).fibre_velocity > 0.0);
+    // It comes to rest where the compressive force balances the active isometric force.
+    const double lce_eq = muscle_equilibrium_lce(e, b0, L, 1.0);
+    CHECK(lce_eq > e.min_lce);
+    CHECK(lce_eq < e.compress_length);
+    const double x = (lce_eq / e.lceopt - 1.0) / kForceLengthWidth;
+    CHECK(e.k_compress * (e.compress_length - lce_eq) * (e.compress_length - lce_eq) ==
+          doctest::Approx(e.fmax * std::exp(-x * x)).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("zero-activation equilibrium of a slack unit: the relaxed fibre rests at its PEE slack length") {
+  Fixture f;
+  const double b0 = f.m.fibre_damping;
+  for (int i = 0; i < f.m.num_elements; ++i) {
+    const ElementConstants& e = f.m.element[i];
+    CAPTURE(f.m.def->elements[i].name);
+    // A unit whose tendon is slack even with the fibre at its PEE slack length, and one just taut there.
+    const double along = std::sqrt(e.pee_slack * e.pee_slack - e.thickness * e.thickness);
+    const double L_slack = along + 0.98 * e.lslack;
+    const double lce_eq = muscle_equilibrium_lce(e, b0, L_slack, 0.0);
+    CHECK(lce_eq == doctest::Approx(e.pee_slack).epsilon(1e-9));
+    CHECK(muscle_element(e, b0, L_slack, lce_eq, 0.0).force == 0.0);
+    // Taut there: the tendon pulls the fibre beyond its slack length until the PEE balances it.
+    const double L_taut = along + 1.01 * e.lslack;
+    const double lce_taut = muscle_equilibrium_lce(e, b0, L_taut, 0.0);
+    CHECK(lce_taut > e.pee_slack);
+    CHECK(std::fabs(muscle_element(e, b0, L_taut, lce_taut, 0.0).fibre_velocity) < 1e-9 * e.vmax);
   }
 }
 

@@ -35,7 +35,8 @@ const double kMomentArm[5] = {0.03, 0.02, -0.025, 0.01, -0.01};  // m: -dL/dq of
 void detached_paths(const double* q, double* L, double* R) {
   (void)q;
   for (int i = 0; i < 5; ++i) {
-    L[i] = 0.25;
+    // Slack tendon, fibre at optimal length: inside every element's physical range (check_state).
+    L[i] = pendulum().elements[i].lslack + pendulum().elements[i].lceopt;
     R[2 * i] = R[2 * i + 1] = 0.0;
   }
 }

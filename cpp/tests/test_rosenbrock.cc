@@ -30,7 +30,8 @@ struct KernelOut {
 KernelOut kernel(const ElementConstants& e, double b0, double L, double lce, double a) {
   KernelOut o;
   muscle_kernel_derivatives(e.fmax, e.inv_lceopt, e.lslack, e.thickness, e.min_lce, e.vmax, e.k_see, e.k_pee,
-                            e.pee_slack, e.ecc_c, e.damping_slope, b0, L, lce, a, &o.force, &o.velocity, &o.der);
+                            e.pee_slack, e.compress_length, e.k_compress, e.ecc_c, e.damping_slope, b0, L, lce, a,
+                            &o.force, &o.velocity, &o.der);
   return o;
 }
 
@@ -102,7 +103,7 @@ TEST_CASE("muscle kernel derivatives match finite differences at random states (
   CHECK(kinks < samples / 20);  // kinks are rare at random states: the central check covers the bulk
 }
 
-TEST_CASE("muscle kernel derivatives at the kinks: slack tendon, concentric/eccentric switch, damping floor, lce floor") {
+TEST_CASE("muscle kernel derivatives at the kinks: slack tendon, concentric/eccentric switch, compressive onset, damping floor, lce floor") {
   Model m;
   model_init(m, das2());
   const double b0 = m.fibre_damping;
@@ -125,6 +126,13 @@ TEST_CASE("muscle kernel derivatives at the kinks: slack tendon, concentric/ecce
       CHECK(std::fabs(kernel(e, b0, L, lce_eq, a).velocity) < 1e-6 * e.vmax);
       for (double d : {-1e-6, 0.0, 1e-6}) check_element(e, b0, L, lce_eq + d * e.lceopt, a);
     }
+    // Onset of the fibre compressive element (C1), tendon slack and taut, relaxed and active.
+    for (double a : {0.0, 0.5})
+      for (double strain : {-0.01, 0.02})
+        for (double d : {-1e-6, 0.0, 1e-6})
+          check_element(e, b0, e.compress_length + e.lslack * (1.0 + strain), e.compress_length + d * e.lceopt, a);
+    // Inside the compressive range (a smooth quadratic there).
+    check_element(e, b0, e.lslack, 0.5 * (e.min_lce + e.compress_length), 1.0);
     // Damping floor fading out at F0 = 0.02 fmax: a = 0.02 / f(lce) at lce = lceopt.
     check_element(e, b0, L_slack + 0.01 * e.lslack, lce, kLowActivation);
     // At the lce floor: derivatives with respect to lce are those of the clamped side (zero).

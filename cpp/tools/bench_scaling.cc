@@ -172,7 +172,7 @@ int main(int argc, char** argv) {
 
   // Whole-model items.
   {
-    auto s = make_sim(*def, nmax, Integrator::kRk4, 1e-3, 200);
+    auto s = make_sim(*def, nmax, Integrator::kRk4, 1e-3 / 6, 200);
     const double* q = s->data.x.data();
     double L[kMaxElements], R[kMaxElements * kMaxDofs], M[kMaxDofs * kMaxDofs], b[kMaxDofs];
     items.push_back(time_it("muscle_paths", nmax, reps, [&] { def->muscle_paths(q, L, R); sink = L[0] + R[3]; }));
@@ -186,7 +186,7 @@ int main(int argc, char** argv) {
 
   for (int n : sizes) {
     if (n < 1 || n > nmax) continue;
-    auto s = make_sim(*def, n, Integrator::kRk4, 1e-3, 200);
+    auto s = make_sim(*def, n, Integrator::kRk4, 1e-3 / 6, 200);
     const Model& m = s->model;
     Data& d = s->data;
     auto x = std::make_unique<StateVec>(d.x);
@@ -205,7 +205,7 @@ int main(int argc, char** argv) {
     items.push_back(time_it("forward", n, reps, [&] { forward(m, d, x->data(), xdot->data(), false); sink = (*xdot)[3]; }));
     items.push_back(time_it("forward_record", n, reps, [&] { forward(m, d, x->data(), xdot->data(), true); sink = d.gh_stab; }));
     items.push_back(time_steps("euler_step", *def, n, Integrator::kEuler, 1e-4, reps));
-    items.push_back(time_steps("rk4_step", *def, n, Integrator::kRk4, 1e-3, reps));
+    items.push_back(time_steps("rk4_step", *def, n, Integrator::kRk4, 1e-3 / 6, reps));
   }
   (void)sink;
 

@@ -28,7 +28,16 @@ class StepSizeWarning(RuntimeWarning):
 
 
 class SimulationError(RuntimeError):
-    """The simulation diverged (non-finite state, or a joint faster than the physical bound)."""
+    """The simulation diverged or left the model's physical domain: a non-finite state, a joint faster
+    than the physical bound, a fibre length, activation or joint angle out of range (docs/engine.md), or
+    an explicit step too large for the model."""
+
+
+def _simulation_error(exc: RuntimeError) -> SimulationError:
+    msg = str(exc)
+    # A step the integrator cannot take fails again after reset(): the message says what to change.
+    hint = "" if msg.startswith("step too large") else "; call reset() to continue"
+    return SimulationError(msg + hint)
 
 
 class ConcurrentUseError(RuntimeError):
@@ -619,7 +628,7 @@ class Arm:
                         self._sim.step(k)
                         pbar.update(k)
             except RuntimeError as exc:
-                raise SimulationError(f"{exc}; call reset() to continue") from None
+                raise _simulation_error(exc) from None
 
     def result_bytes(self, duration: float, record_every: int = 1) -> int:
         """Memory (bytes) of the Result simulate(duration, record_every=...) returns."""
@@ -711,7 +720,7 @@ class Arm:
                     try:
                         raw = self._sim.simulate(u, k1 - k0, record_every)
                     except RuntimeError as exc:
-                        raise SimulationError(f"{exc}; call reset() to continue") from None
+                        raise _simulation_error(exc) from None
                     raw.pop("steps")
                     last = k1 >= n_steps
                     take = len(raw["time"]) if last else (k1 - k0) // record_every

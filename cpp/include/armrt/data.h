@@ -63,7 +63,11 @@ struct StepJacobian {
   std::array<double, kMaxElements> tmp{};               // scratch of one solve
 };
 
-enum class Status { kOk = 0, kNonFinite = 1, kTooFast = 2, kCvodeFailed = 3 };
+// kOutOfDomain: a CE length outside [min_lce, max_lce], an activation outside [0, 1] or a joint more than
+// kJointRangeMargin beyond its range (model.h): the step left the model's physical domain.
+// kUnstableStep: an explicit step (Euler, RK4) beyond its stability limit for the stiffest CE mode of the
+// model at rest (Model::rest_fibre_rate): refused before it is taken (integrate.cc).
+enum class Status { kOk = 0, kNonFinite = 1, kTooFast = 2, kCvodeFailed = 3, kOutOfDomain = 4, kUnstableStep = 5 };
 
 // Grouped like mjData and pinocchio::Data: state, inputs, then the outputs of forward() by the stage
 // that fills them (forward.cc lists the stages; outputs are filled only with record = true and describe

@@ -67,6 +67,8 @@ void gh_stability(const ModelDef& def, const double* force, double* theta, doubl
 // non-finite or a joint moved faster than m.max_joint_speed. Adds the step's wall time to d.tet.
 bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record = true);
 bool check_state(const Model& m, Data& d);
+// Real stability interval [-limit, 0] of an explicit integrator (Euler 2, RK4 2.785; infinity otherwise).
+double explicit_stability_limit(Integrator integrator);
 const char* state_name(const Model& m, int index, char* buf, int buflen);
 
 // ---- rosenbrock.cc

@@ -21,7 +21,18 @@ inline constexpr double kHillA = 0.25;             // Hill a/Fmax (concentric cu
 inline constexpr double kEccentricFmax = 1.5;      // eccentric force limit, x isometric force
 inline constexpr double kForceLengthWidth = 0.56;  // width of the Gaussian force-length curve (x lceopt)
 inline constexpr double kTendonStrainAtFmax = 0.04;
-inline constexpr double kLinearStiffness = 10.0;   // N/m in SEE and PEE: keeps the equations solvable when slack
+// Fibre compressive element (muscle.cc): zero above kCompressOnset lceopt (or kCompressMinSpan lceopt above
+// the geometric minimum min_lce, whichever is longer), quadratic below, kCompressForceAtMin fmax at min_lce.
+inline constexpr double kCompressOnset = 0.3;
+inline constexpr double kCompressMinSpan = 0.1;
+inline constexpr double kCompressForceAtMin = 4.0;
+// Physical domain checked after every step (integrate.cc check_state): CE length in [min_lce, max_lce]
+// with max_lce where the PEE alone would carry kMaxPeeForce fmax; activation in [0, 1] (with
+// kActivationTolerance for round-off); joints at most kJointRangeMargin beyond their range of motion,
+// where the passive joint moment is already 5000 N m/rad^2 * 0.35^2 = 610 N m.
+inline constexpr double kMaxPeeForce = 9.0;
+inline constexpr double kActivationTolerance = 1e-6;
+inline constexpr double kJointRangeMargin = 0.35;  // rad (20 deg)
 inline constexpr double kFibreDamping = 10.0;      // N/(m/s), parallel to the contractile element
 inline constexpr double kLowActivation = 0.02;     // below it the damper adds the CE damping that is lost
 
@@ -39,6 +50,9 @@ struct ElementConstants {
   double lceopt;        // m
   double inv_lceopt;    // 1/m
   double min_lce;       // m, shortest CE length the pennation geometry allows
+  double max_lce;       // m, longest CE length accepted by the domain check (PEE at kMaxPeeForce fmax)
+  double compress_length;  // m, below it the fibre compressive element pushes
+  double k_compress;    // N/m^2, its quadratic stiffness
   double lslack;        // m
   double thickness;     // m, lceopt * sin(pennopt): constant for a constant-volume pennate muscle
   double vmax;          // m/s (vmax * lceopt)
@@ -55,7 +69,7 @@ struct ElementConstants {
 // The same constants as structure-of-arrays, for the vectorised muscle loop in forward().
 struct MuscleArrays {
   std::array<double, kMaxElements> fmax, inv_lceopt, lslack, thickness, min_lce, vmax, k_see, k_pee,
-      pee_slack, ecc_c, damping_slope, c1, c2, max_activation;
+      pee_slack, compress_length, k_compress, ecc_c, damping_slope, c1, c2, max_activation;
 };
 
 struct Model {
@@ -67,6 +81,11 @@ struct Model {
   std::array<double, 3> gravity_scapula{};  // m/s^2, may be changed (e.g. a lying posture)
   double fibre_damping = kFibreDamping;     // N/(m/s)
   double max_joint_speed = 100.0;           // rad/s; faster means the simulation diverged
+  // The stiffest CE mode at the rest posture with zero activation (model_update_derived): its eigenvalue
+  // dvel/dlce (1/s, negative) and element. An explicit step h with h |rate| beyond the method's stability
+  // interval cannot hold the resting arm (integrate.cc refuses it).
+  double rest_fibre_rate = 0;
+  int rest_fibre_element = 0;
 };
 
 // Builds a Model from generated tables. Never allocates; throws std::invalid_argument if the model's

@@ -31,12 +31,14 @@ struct MuscleDerivatives {
 // Where the formula has kinks the derivative is one-sided (the value of the branch taken):
 //   - lce at its geometric floor min_lce: derivatives with respect to lce are 0 (floor side);
 //   - the damping floor's fade-out at F0 = 0.02 fmax (db/dF0 jumps from -damping_slope/fmax to 0);
-//   - the slack points of tendon and PEE are C1 (quadratic plus linear), so the first derivatives are
-//     continuous there; the concentric/eccentric switch at v = 0 is C1 too (g and g' match).
+//   - the slack points of tendon, PEE and compressive element are C1 (quadratics from zero), so the
+//     first derivatives are continuous there; the concentric/eccentric switch at v = 0 is C1 too (g and
+//     g' match).
 inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lslack, double thickness,
                                       double min_lce, double vmax, double k_see, double k_pee, double pee_slack,
-                                      double ecc_c, double damping_slope, double b0, double L, double lce,
-                                      double a, double* force, double* velocity, MuscleDerivatives* der) {
+                                      double compress_length, double k_compress, double ecc_c,
+                                      double damping_slope, double b0, double L, double lce, double a,
+                                      double* force, double* velocity, MuscleDerivatives* der) {
   const bool above_floor = lce > min_lce;
   lce = above_floor ? lce : min_lce;
   // Fibre length projected on the tendon, lce cos(pennation) = sqrt(lce^2 - thickness^2): one square
@@ -46,11 +48,14 @@ inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lsl
   const double inv_cos = lce * inv_lce_along;
   const double see_stretch = L - lce_along - lslack;
   const double see_pos = see_stretch > 0 ? see_stretch : 0.0;
-  const double f_see = kLinearStiffness * see_stretch + k_see * see_pos * see_pos;
+  const double f_see = k_see * see_pos * see_pos;  // a tendon pulls, never pushes
   const double pee_stretch = lce - pee_slack;
   const double pee_pos = pee_stretch > 0 ? pee_stretch : 0.0;
-  const double f_pee = kLinearStiffness * pee_stretch + k_pee * pee_pos * pee_pos;
-  const double F = f_see * inv_cos - f_pee;  // what the CE and damper must carry along the fibres
+  const double f_pee = k_pee * pee_pos * pee_pos;
+  const double compression = compress_length - lce;  // fibre compressive element (muscle.cc)
+  const double compress_pos = compression > 0 ? compression : 0.0;
+  const double f_compress = k_compress * compress_pos * compress_pos;
+  const double F = f_see * inv_cos - f_pee + f_compress;  // what the CE and damper must carry along the fibres
   const double xfl = (lce * inv_lceopt - 1.0) * (1.0 / kForceLengthWidth);
   const double fl = exp_nonpositive(-xfl * xfl);
   const double afl = a * fl;  // F0 / fmax
@@ -77,13 +82,14 @@ inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lsl
   *force = f_see;
 
   // Derivatives (dead code, removed by the compiler, where the caller drops them: muscle_kernel).
-  const double dfsee = kLinearStiffness + 2.0 * k_see * see_pos;  // d f_see / d see_stretch
-  const double dfpee = kLinearStiffness + 2.0 * k_pee * pee_pos;
+  const double dfsee = 2.0 * k_see * see_pos;  // d f_see / d see_stretch
+  const double dfpee = 2.0 * k_pee * pee_pos;
+  const double dfcompress = -2.0 * k_compress * compress_pos;  // d f_compress / d lce
   // d(lce cos)/dlce = 1/cos; d(1/cos)/dlce = -s^2 / (lce cos^3).
   const double dF_dL = dfsee * inv_cos;
   const double inv_lce = 1.0 / lce;
   const double sin2_over_lce_cos = thickness * thickness * inv_lce * inv_lce * inv_lce_along;  // s^2 / (lce cos)
-  const double dF_dlce = -inv_cos * inv_cos * (dfsee + f_see * sin2_over_lce_cos) - dfpee;
+  const double dF_dlce = -inv_cos * inv_cos * (dfsee + f_see * sin2_over_lce_cos) - dfpee + dfcompress;
   const double dfl_dlce = -2.0 * xfl * fl * inv_lceopt * (1.0 / kForceLengthWidth);
   const double dF0_dlce = fmax * a * dfl_dlce;
   const double dF0_da = fmax * fl;
@@ -108,12 +114,28 @@ inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lsl
 
 // The same element without derivatives: what forward() evaluates at every RK4 stage.
 inline void muscle_kernel(double fmax, double inv_lceopt, double lslack, double thickness, double min_lce,
-                          double vmax, double k_see, double k_pee, double pee_slack, double ecc_c,
-                          double damping_slope, double b0, double L, double lce, double a, double* force,
-                          double* velocity) {
+                          double vmax, double k_see, double k_pee, double pee_slack, double compress_length,
+                          double k_compress, double ecc_c, double damping_slope, double b0, double L, double lce,
+                          double a, double* force, double* velocity) {
   MuscleDerivatives unused;
-  muscle_kernel_derivatives(fmax, inv_lceopt, lslack, thickness, min_lce, vmax, k_see, k_pee, pee_slack, ecc_c,
-                            damping_slope, b0, L, lce, a, force, velocity, &unused);
+  muscle_kernel_derivatives(fmax, inv_lceopt, lslack, thickness, min_lce, vmax, k_see, k_pee, pee_slack,
+                            compress_length, k_compress, ecc_c, damping_slope, b0, L, lce, a, force, velocity,
+                            &unused);
 }
+
+// Force of the parallel elastic element (N) at CE length lce (m): quadratic beyond its slack length.
+inline double pee_force(double k_pee, double pee_slack, double lce) {
+  const double stretch = lce - pee_slack;
+  return stretch > 0 ? k_pee * stretch * stretch : 0.0;
+}
+
+// Force of the fibre compressive element (N) at CE length lce (m): quadratic below compress_length.
+inline double compressive_force(double k_compress, double compress_length, double lce) {
+  const double compression = compress_length - lce;
+  return compression > 0 ? k_compress * compression * compression : 0.0;
+}
+
+// Tendon stretch (m) beyond slack at which the quadratic SEE carries force F (N), F >= 0.
+inline double see_stretch_at_force(double k_see, double F) { return std::sqrt((F > 0 ? F : 0.0) / k_see); }
 
 }  // namespace armrt

@@ -45,6 +45,7 @@ class Simulator {
   void evaluate_outputs();
   // Describes data.status for an error message: which state, when.
   std::string error_message() const;
+  std::string domain_error_message() const;  // the kOutOfDomain case of error_message()
   void set_integrator(Integrator integrator, double dt, int substeps = 1);
 
   Model model;
