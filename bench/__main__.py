@@ -41,7 +41,7 @@ def plot_opensim(osr: dict, path: Path) -> None:
     t = tr["time"]
     dofs = ["GHy", "GHz", "GHyy", "ELx", "PSy"]
     fig, axes = plt.subplots(1, 5, figsize=(15, 3.2), sharex=True)
-    style = {"armrt_ros2_1ms": "-", "armrt_rk4_1ms": "-", "armrt_euler_0.1ms": ":", "armrt_cvode": "--", "opensim_rkm_default": "-",
+    style = {"armrt_ros2_1ms": "-", "armrt_rk4_1ms_6substeps": "-", "armrt_euler_0.1ms": ":", "armrt_cvode": "--", "opensim_rkm_default": "-",
              "opensim_rkm_fixed_1ms": "-."}
     for name, q in tr.items():
         if name == "time":

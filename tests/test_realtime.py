@@ -239,8 +239,10 @@ def test_fuzz_pool_covers_every_rejection():
 
 
 def test_runner_divergence_stops_cleanly():
-    # One RK4 step per 10 ms cycle (no substeps) is unstable for this model: it diverges within a few
-    # cycles. The last state packet, flagged stopped + error, reaches the subscriber.
+    # One RK4 step per 10 ms cycle (no substeps) is unstable for this model: the engine refuses it at the
+    # first cycle ("step too large", before any state is computed; it used to diverge within a few
+    # cycles). The runner stops the same way as on a divergence: the last state packet, flagged
+    # stopped + error, reaches the subscriber, and the exit code is 1.
     sub = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
     sub.bind(("127.0.0.1", 0))
     sub.settimeout(5.0)
@@ -258,7 +260,7 @@ def test_runner_divergence_stops_cleanly():
     sub.close()
     err = p.stderr.read()
     assert rc == 1
-    assert "diverged" in err
+    assert "step too large for integrator 'rk4'" in err, err
     assert final is not None and final.stopped and final.diverged
 
 

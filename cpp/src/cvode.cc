@@ -69,8 +69,6 @@ void CvodeIntegrator::reinit() {
 }
 
 bool CvodeIntegrator::advance(double dt) {
-  timespec t0, t1;
-  clock_gettime(CLOCK_MONOTONIC, &t0);
   forward(m_, d_, d_.x.data(), d_.k1.data(), true);
   N_Vector y = static_cast<N_Vector>(y_);
   // Inputs are piecewise constant per interval: restart when they jump so the BDF history does not
@@ -89,8 +87,6 @@ bool CvodeIntegrator::advance(double dt) {
   const int flag = CVode(mem_, d_.time + dt, y, &tret, CV_NORMAL);
   for (int k = 0; k < state_size(m_); ++k) d_.x[k] = NV_Ith_S(y, k);
   d_.time = tret;
-  clock_gettime(CLOCK_MONOTONIC, &t1);
-  d_.tet.add(1e9 * static_cast<double>(t1.tv_sec - t0.tv_sec) + static_cast<double>(t1.tv_nsec - t0.tv_nsec));
   if (flag < 0) {
     d_.status = Status::kCvodeFailed;
     d_.bad_time = d_.time;

@@ -1,11 +1,10 @@
 // Fixed-step integrators: explicit Euler and RK4 (the paper's), and the linearly implicit ROS2
-// (rosenbrock.cc). TET (task execution time) is the wall time of one whole step.
+// (rosenbrock.cc). TET (task execution time) is measured around whole control steps by Simulator::step.
 #include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <limits>
 
-#include "armrt/clock.h"
 #include "armrt/engine.h"
 
 namespace armrt {
@@ -41,7 +40,7 @@ bool check_state(const Model& m, Data& d) {
   // The physical domain (model.h): an integrator that cannot take the step shows here long before the
   // joint angles are visibly wrong; the forces clamp lce at min_lce, so without this check a state below
   // it would go on silently.
-  const int n = m.num_elements, ia = act_offset(m), il = lce_offset(m), iq = q_offset(m);
+  const int n = m.num_elements, iq = q_offset(m), il = lce_offset(m), ia = act_offset(m);
   int bad = -1;
   for (int i = n - 1; i >= 0; --i) {
     const double lce = d.x[il + i], a = d.x[ia + i];
@@ -82,7 +81,6 @@ bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record
     d.bad_time = d.time;
     return false;
   }
-  const std::int64_t t0 = now_ns();
   const int ns = state_size(m);
   double* x = d.x.data();
   switch (integrator) {
@@ -110,7 +108,6 @@ bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record
     }
   }
   d.time += dt;
-  d.tet.add(static_cast<double>(now_ns() - t0));
   return check_state(m, d);
 }
 

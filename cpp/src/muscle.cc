@@ -40,7 +40,9 @@
 // so the CE velocity turns to lengthening before min_lce:
 // the fibre stays above its geometric minimum. A whole slack unit at zero activation carries no force and
 // its fibre keeps its length (v = 0), moved only by the PEE (if stretched) and the compressive element;
-// at rest (muscle_equilibrium_lce) such a fibre sits at its PEE slack length.
+// at rest (muscle_equilibrium_lce) such a fibre has taken up all but 0.2 % of its tendon's slack.
+#include <cmath>
+
 #include "armrt/engine.h"
 #include "armrt/muscle_kernel.h"
 
@@ -54,19 +56,27 @@ MuscleOut muscle_element(const ElementConstants& e, double b, double L, double l
 }
 
 double muscle_equilibrium_lce(const ElementConstants& e, double b, double L, double a) {
-  // The CE velocity falls monotonically as lce grows (the tendon slackens); bisect on its sign. Where a
-  // slack unit is force-free over a range of lce (v = 0), the bisection returns the longest length of
-  // that range: a relaxed, unloaded fibre rests at its own slack length (the PEE's), the tendon slack.
-  // (The shortest, where the tendon just goes taut, would put every slack unit exactly on the tendon's
-  // kink, where the ROS2 step's slack/taut decisions flip with a 1e-9 perturbation of the start.)
-  // A muscle of zero strength carries no force at any length: its fibre, too, rests at its slack length.
+  // The CE velocity falls monotonically as lce grows (the tendon slackens); bisect on its sign.
+  // A muscle of zero strength carries no force at any length: its fibre rests at its slack length.
   if (e.fmax == 0.0) return e.pee_slack;
   double lo = e.min_lce, hi = (L > lo ? L : lo) + e.pee_slack + e.lceopt;
   for (int it = 0; it < 100; ++it) {
     const double mid = 0.5 * (lo + hi);
     if (muscle_element(e, b, L, mid, a).fibre_velocity >= 0) lo = mid; else hi = mid;
   }
-  return 0.5 * (lo + hi);
+  const double lce = 0.5 * (lo + hi);
+  // A relaxed slack unit is force-free over a range of fibre lengths (v = 0), and the bisection returned
+  // the range's long end, the PEE's slack length. That can be longer than the whole unit (latdorsi6 at
+  // rest: a 0.34 m fibre in a 0.24 m unit): the relaxed fibre rests instead where it has taken up all
+  // but kRestTendonSlack of its tendon's slack, inside the unit, so it pulls as soon as it is activated.
+  // (Not exactly at the taut point: that is the tendon's kink, where a 1e-9 perturbation of the start
+  // would flip the ROS2 step's slack/taut decisions.)
+  const double along_rest = L - e.lslack * (1.0 - kRestTendonSlack);
+  if (a != 0.0 || along_rest <= 0.0) return lce;
+  double lce_rest = std::sqrt(along_rest * along_rest + e.thickness * e.thickness);
+  lce_rest = lce_rest > e.compress_length ? lce_rest : e.compress_length;
+  if (lce_rest < lce && muscle_element(e, b, L, lce_rest, 0.0).fibre_velocity == 0.0) return lce_rest;
+  return lce;
 }
 
 }  // namespace armrt

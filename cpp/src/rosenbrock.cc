@@ -226,9 +226,11 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
     // muscle-tendon unit; stopping those at an estimated operating point biased the motion at every
     // step size (measured: errors that did not shrink with the step).
     const double stretch_now = L_now - lce_along - mc.lslack[i];
-    // The tendon's stretch at the end of the step if the CE stood still (the unit's own motion).
+    // The tendon's stretch at the end of the step from the unit's own motion ...
     const double stretch_pulled = stretch_now + h * L_rate[i];
-    const double stretch_end = stretch_pulled > stretch_now ? stretch_pulled : stretch_now;
+    // ... or the CE's own shortening over the step (its drive disp, negative when shortening).
+    const double stretch_drawn = stretch_pulled - (disp < 0.0 ? disp : 0.0) / cos_pen;
+    const double stretch_end = stretch_drawn > stretch_now ? stretch_drawn : stretch_now;
     const double disp_safe = disp != 0.0 ? disp : 1.0;
     const double theta = (lce_op - lce_x[i]) / disp_safe;
     const bool overshoots = disp != 0.0 && stretch_now <= 0.0 && F0 > kEngagingActiveForce * mc.fmax[i] &&
@@ -241,8 +243,9 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
     const bool stiffer = overshoots && lambda < dvel_dlce[i];
     dvel_dlce[i] = stiffer ? lambda : dvel_dlce[i];
     limited += stiffer ? 1 : 0;
-    // Tautness weight of the loading rule below: 0 while the tendon is slack and the unit does not pull it
-    // taut within the step, 1 once it is (or will be) stretched by a tenth of its stretch at fmax.
+    // Tautness weight of the loading rule below: 0 while the tendon is slack and neither the unit nor the
+    // CE draws it taut within the step, 1 once it is (or will be) stretched by a tenth of its stretch at
+    // fmax. Without the CE's part a fibre resting just slack, activated, ran 36 mm past the engagement.
     const double taut_w = stretch_end / (0.1 * kTendonStrainAtFmax * mc.lslack[i]);
     taut[i] = taut_w < 0.0 ? 0.0 : (taut_w > 1.0 ? 1.0 : taut_w);
     L_op[i] = L_next;

@@ -123,8 +123,8 @@ TEST_CASE("explicit steps beyond the model's stability limit at rest are refused
   // The stiffest fibre at rest, cross-checked by a finite difference of its CE velocity.
   const int i = m.rest_fibre_element;
   const ElementConstants& e = m.element[i];
-  double q[kMaxDofs], L[kMaxElements];
-  for (int j = 0; j < m.num_dofs; ++j) q[j] = m.def->dofs[j].rest;
+  double q[kDas2Dofs], L[kMaxElements];
+  for (int j = 0; j < kDas2Dofs; ++j) q[j] = m.def->dofs[j].rest;
   m.def->muscle_lengths(q, L);
   const double lce = muscle_equilibrium_lce(e, m.fibre_damping, L[i], 0.0), h = 1e-9;
   const double fd = (muscle_element(e, m.fibre_damping, L[i], lce + h, 0.0).fibre_velocity -

@@ -271,24 +271,35 @@ TEST_CASE("fibre compressive element: zero above its onset, 4 fmax at min_lce, v
   }
 }
 
-TEST_CASE("zero-activation equilibrium of a slack unit: the relaxed fibre rests at its PEE slack length") {
+TEST_CASE("zero-activation equilibrium of a slack unit: the fibre has taken up all but 0.2 % of the slack") {
   Fixture f;
   const double b0 = f.m.fibre_damping;
+  int slack_cases = 0;
   for (int i = 0; i < f.m.num_elements; ++i) {
     const ElementConstants& e = f.m.element[i];
     CAPTURE(f.m.def->elements[i].name);
-    // A unit whose tendon is slack even with the fibre at its PEE slack length, and one just taut there.
-    const double along = std::sqrt(e.pee_slack * e.pee_slack - e.thickness * e.thickness);
-    const double L_slack = along + 0.98 * e.lslack;
-    const double lce_eq = muscle_equilibrium_lce(e, b0, L_slack, 0.0);
-    CHECK(lce_eq == doctest::Approx(e.pee_slack).epsilon(1e-9));
-    CHECK(muscle_element(e, b0, L_slack, lce_eq, 0.0).force == 0.0);
-    // Taut there: the tendon pulls the fibre beyond its slack length until the PEE balances it.
-    const double L_taut = along + 1.01 * e.lslack;
+    // A unit slack by 10 % of its tendon's slack length with the fibre at its PEE slack length: the fibre
+    // rests shorter, inside the unit, where the tendon is slack by 0.2 % of lslack.
+    const double along_pee = std::sqrt(e.pee_slack * e.pee_slack - e.thickness * e.thickness);
+    const double L = along_pee + 0.9 * e.lslack;
+    const double lce_eq = muscle_equilibrium_lce(e, b0, L, 0.0);
+    const double along_eq = std::sqrt(lce_eq * lce_eq - e.thickness * e.thickness);
+    if (along_eq > std::sqrt(e.compress_length * e.compress_length - e.thickness * e.thickness) * (1 + 1e-12)) {
+      CHECK(L - along_eq == doctest::Approx((1.0 - kRestTendonSlack) * e.lslack).epsilon(1e-9));
+      ++slack_cases;
+    }
+    CHECK(along_eq < L);  // never longer than the whole unit
+    CHECK(lce_eq <= e.pee_slack);
+    CHECK(muscle_element(e, b0, L, lce_eq, 0.0).force == 0.0);
+    CHECK(muscle_element(e, b0, L, lce_eq, 0.0).fibre_velocity == 0.0);
+    // A unit taut with the fibre at its PEE slack length: the tendon pulls the fibre beyond it until
+    // the PEE balances (a unique rest length).
+    const double L_taut = along_pee + 1.01 * e.lslack;
     const double lce_taut = muscle_equilibrium_lce(e, b0, L_taut, 0.0);
     CHECK(lce_taut > e.pee_slack);
     CHECK(std::fabs(muscle_element(e, b0, L_taut, lce_taut, 0.0).fibre_velocity) < 1e-9 * e.vmax);
   }
+  CHECK(slack_cases > f.m.num_elements / 2);
 }
 
 TEST_CASE("finite CE velocity at zero activation over a range of lengths") {

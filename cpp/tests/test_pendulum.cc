@@ -31,12 +31,13 @@ constexpr double kSpring = 1.0;        // passive_joint.stiffness_inside, N m/ra
 constexpr double kHandDistance = 0.25 + 0.08;  // elbow to hand point, m
 const double kMomentArm[5] = {0.03, 0.02, -0.025, 0.01, -0.01};  // m: -dL/dq of each element's polynomial
 
-// The same model with the muscles detached (constant lengths, zero moment arms): a pure pendulum.
+// The same model with the muscles detached (lengths held at their rest values, zero moment arms): a
+// pure pendulum.
 void detached_paths(const double* q, double* L, double* R) {
   (void)q;
+  const double rest_length[5] = {0.26, 0.25, 0.24, 0.08, 0.08};  // the polynomials' constant terms, m
   for (int i = 0; i < 5; ++i) {
-    // Slack tendon, fibre at optimal length: inside every element's physical range (check_state).
-    L[i] = pendulum().elements[i].lslack + pendulum().elements[i].lceopt;
+    L[i] = rest_length[i];
     R[2 * i] = R[2 * i + 1] = 0.0;
   }
 }

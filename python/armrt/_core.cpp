@@ -12,6 +12,7 @@
 
 #include "armrt/engine.h"
 #include "armrt/names.h"
+#include "armrt/recorder.h"
 #include "armrt/simulator.h"
 
 namespace py = pybind11;
@@ -120,11 +121,6 @@ class InterruptCheck {
 
  private:
   std::chrono::steady_clock::time_point next_ = std::chrono::steady_clock::now() + kPeriod;
-};
-
-// Channels recorded by simulate(), one row per recorded step.
-struct Recording {
-  std::vector<double> t, q, qd, lce, act, excitation, force, length, gh_force, gh_stab, gh_angles, hand, th_angles, tet;
 };
 
 }  // namespace
@@ -268,87 +264,45 @@ PYBIND11_MODULE(_core, mod) {
       // simulate: excitation is (T, n) (one row per step) or (1, n) (held); the loop runs without the GIL.
       .def("simulate", [](Simulator& s, const Array& excitation, long n_steps, long record_every) {
         const int n = s.model.num_elements, nq = s.model.num_dofs;
-        const int iq = q_offset(s.model), iqd = qd_offset(s.model), il = lce_offset(s.model), ia = act_offset(s.model);
         if (excitation.ndim() != 2 || excitation.shape(1) != n || (excitation.shape(0) != n_steps && excitation.shape(0) != 1))
           throw py::value_error("excitation must have shape (" + std::to_string(n_steps) + ", " + std::to_string(n) + ") or (1, " + std::to_string(n) + ")");
         if (record_every < 1) throw py::value_error("record_every must be >= 1");
-        const double* u = excitation.data();
-        const bool held = excitation.shape(0) == 1;
         Recording r;
-        const long n_rec = n_steps / record_every + 1;
-        for (auto* v : {&r.t, &r.gh_stab, &r.tet}) v->reserve(n_rec);
-        for (auto* v : {&r.q, &r.qd}) v->reserve(n_rec * nq);
-        for (auto* v : {&r.lce, &r.act, &r.excitation, &r.force, &r.length}) v->reserve(n_rec * n);
-        for (auto* v : {&r.gh_force, &r.hand, &r.th_angles}) v->reserve(n_rec * 3);
-        r.gh_angles.reserve(n_rec * 2);
         long steps_done = 0;
         bool interrupted = false;
         {
           py::gil_scoped_release release;
           InterruptCheck check;
-          double angles[3];
-          // One row: the state x at time t and the outputs forward() left in s.data for that state.
-          auto record = [&](const double* x, double time, double tet_ns) {
-            r.t.push_back(time);
-            r.q.insert(r.q.end(), x + iq, x + iq + nq);
-            r.qd.insert(r.qd.end(), x + iqd, x + iqd + nq);
-            r.lce.insert(r.lce.end(), x + il, x + il + n);
-            r.act.insert(r.act.end(), x + ia, x + ia + n);
-            r.excitation.insert(r.excitation.end(), s.data.excitation.begin(), s.data.excitation.begin() + n);
-            r.force.insert(r.force.end(), s.data.muscle_force.begin(), s.data.muscle_force.begin() + n);
-            r.length.insert(r.length.end(), s.data.muscle_length.begin(), s.data.muscle_length.begin() + n);
-            r.gh_force.insert(r.gh_force.end(), s.data.gh_force.begin(), s.data.gh_force.end());
-            r.gh_stab.push_back(s.data.gh_stab);
-            r.gh_angles.push_back(s.data.gh_theta);
-            r.gh_angles.push_back(s.data.gh_phi);
-            r.hand.insert(r.hand.end(), s.data.hand_position.begin(), s.data.hand_position.end());
-            thorax_humerus_angles(s.model, x + iq, angles);
-            r.th_angles.insert(r.th_angles.end(), angles, angles + 3);
-            r.tet.push_back(tet_ns);
+          struct Ctx { InterruptCheck* check; bool* interrupted; } ctx{&check, &interrupted};
+          auto stop = [](void* p) {
+            auto* c = static_cast<Ctx*>(p);
+            return *c->interrupted = c->check->interrupted();
           };
-          // Outputs of a step describe its starting state, so each recorded row is one consistent
-          // time point; the final state is recorded after one more output evaluation.
-          // Only a recorded step keeps a copy of its start state (its outputs describe that state).
-          std::vector<double> x0(state_size(s.model));
-          for (long k = 0; k < n_steps; ++k) {
-            const double* uk = u + (held ? 0 : k) * n;
-            for (int i = 0; i < n; ++i) s.data.excitation[i] = uk[i];
-            const bool rec = k % record_every == 0;
-            const double t0 = s.data.time;
-            if (rec) std::copy(s.data.x.begin(), s.data.x.begin() + x0.size(), x0.begin());
-            if (!s.step(rec)) break;
-            ++steps_done;
-            if (rec) record(x0.data(), t0, s.data.tet.last_ns);
-            if (check.interrupted()) { interrupted = true; break; }
-          }
-          if (!interrupted && s.data.status == Status::kOk && n_steps % record_every == 0) {
-            s.evaluate_outputs();
-            record(s.data.x.data(), s.data.time, 0.0);
-          }
+          steps_done = simulate_recorded(s, excitation.data(), excitation.shape(0) == 1, n_steps, record_every, r, stop, &ctx);
         }
         if (interrupted) throw py::error_already_set();
         raise_if_failed(s);
-        const py::ssize_t T = static_cast<py::ssize_t>(r.t.size());
+        const py::ssize_t T = static_cast<py::ssize_t>(r.rows());
         auto arr = [T](const std::vector<double>& v, py::ssize_t w) {
           Array a(w == 0 ? std::vector<py::ssize_t>{T} : std::vector<py::ssize_t>{T, w});
           std::copy(v.begin(), v.end(), a.mutable_data());
           return a;
         };
         py::dict out;
-        out["time"] = arr(r.t, 0);
+        out["time"] = arr(r.time, 0);
         out["q"] = arr(r.q, nq);
-        out["qdot"] = arr(r.qd, nq);
+        out["qdot"] = arr(r.qdot, nq);
         out["lce"] = arr(r.lce, n);
-        out["activation"] = arr(r.act, n);
+        out["activation"] = arr(r.activation, n);
         out["excitation"] = arr(r.excitation, n);
-        out["muscle_force"] = arr(r.force, n);
-        out["muscle_length"] = arr(r.length, n);
+        out["muscle_force"] = arr(r.muscle_force, n);
+        out["muscle_length"] = arr(r.muscle_length, n);
         out["gh_force"] = arr(r.gh_force, 3);
         out["gh_stab"] = arr(r.gh_stab, 0);
         out["gh_angles"] = arr(r.gh_angles, 2);
-        out["hand_position"] = arr(r.hand, 3);
-        out["thorax_humerus"] = arr(r.th_angles, 3);
-        out["tet_ns"] = arr(r.tet, 0);
+        out["hand_position"] = arr(r.hand_position, 3);
+        out["thorax_humerus"] = arr(r.thorax_humerus, 3);
+        out["tet_ns"] = arr(r.tet_ns, 0);
         out["steps"] = steps_done;
         return out;
       }, py::arg("excitation"), py::arg("n_steps"), py::arg("record_every") = 1)

@@ -485,7 +485,10 @@ class Arm:
 
     @property
     def max_activation(self) -> np.ndarray:
-        """Per-element maximum activation in [0, 1] (0 = paralysed): excitations are capped at it."""
+        """Per-element maximum activation in [0, 1] (0 = paralysed): excitations are capped at it, and so
+        every activation reached from then on. Lowered during a run, it does not cut the present activation:
+        that decays to the new bound with the element's deactivation dynamics (tdeact, tens of ms), as a
+        muscle does when its drive drops; reset() starts within the bound."""
         return self._sim.get_max_activation()
 
     @max_activation.setter

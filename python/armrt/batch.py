@@ -82,10 +82,10 @@ class ArmBatch:
         self.n_dofs, self.n_elements = len(self.dof_names), a.n_elements
         self.threads = threads
         self._errors: dict[int, str] = {}
-        nd, ne = self.n_dofs, self.n_elements
         state = self._raw.state
-        views = {"q": state[:, 0:nd], "qdot": state[:, nd:2 * nd], "lce": state[:, 2 * nd:2 * nd + ne],
-                 "activation": state[:, 2 * nd + ne:2 * nd + 2 * ne], "time": self._raw.time}
+        # The state layout is the engine's (data.h), read from it: {block: (offset, size)}.
+        views = {k: state[:, o:o + size] for k, (o, size) in self.info["state_layout"].items()}
+        views["time"] = self._raw.time
         for name in ("hand_position", "gh_force", "gh_stab", "gh_theta", "gh_phi", "muscle_force",
                      "muscle_length", "qddot"):
             views[name] = getattr(self._raw, name)

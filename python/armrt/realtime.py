@@ -1,7 +1,7 @@
 """Real-time sessions and the patient-in-the-loop UDP protocol (docs/realtime.md).
 
 RealtimeSession runs the model at a fixed rate on a C++ thread (SCHED_FIFO when permitted) without
-the GIL; UdpClient is a controller's end of the UDP link: it sends excitations (102 element values,
+the GIL; UdpClient is a controller's end of the UDP link: it sends excitations (one value per element,
 or muscle / group / channel values through a named mapping) and receives state packets.
 
     with RealtimeSession(listen="127.0.0.1:0", duration=5) as s:
@@ -219,9 +219,9 @@ class State:
 # ---------------------------------------------------------------------------------------- mappings
 @dataclass
 class GroupMapping:
-    """How a controller's values become the 102 element excitations.
+    """How a controller's values become the model's element excitations (das2: 102).
 
-    kind "elements": 102 values (dicts may name elements, muscles or groups);
+    kind "elements": one value per element (dicts may name elements, muscles or groups);
     "muscles" / "groups": one value per muscle / group of the model, in the model's order;
     "channels": one value per configured name (element, muscle or group) - the runner must be started
     with the same names (armrt-rt --channels / RealtimeSession(channels=...)).
@@ -284,7 +284,7 @@ class GroupMapping:
         return arr
 
     def to_elements(self, values) -> np.ndarray:
-        """The 102 element excitations the runner applies for these values (for checks and plots)."""
+        """The element excitations the runner applies for these values (for checks and plots)."""
         v = self.values(values)
         if self.kind == "elements":
             return np.clip(v, 0, 1)

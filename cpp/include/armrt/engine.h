@@ -6,7 +6,7 @@
 //     external_loads.cc  q, hand load -> tau_ext
 //     skeleton.cc        q, qd, tau -> M(q), qdd
 //     gh_reaction.cc     q, qd, qdd, forces, hand load -> GH force and stability
-//   integrate.cc     fixed-step Euler, RK4 and ROS2, with TET measured every step
+//   integrate.cc     fixed-step Euler, RK4 and ROS2 (TET: Simulator::step, simulator.cc)
 //   rosenbrock.cc    the linearly implicit ROS2 step: structured Jacobian, Schur-complement solve
 //   cvode.cc         SUNDIALS CVODE (BDF), the accurate reference
 //   kinematics.cc    outputs derived from q: thorax-humerus angles
@@ -64,7 +64,7 @@ void gh_stability(const ModelDef& def, const double* force, double* theta, doubl
 // ---- integrate.cc
 // Advances d by one step of dt with the fixed-step integrator; with record, the outputs of d describe
 // the state at the start of the step. Returns false (and sets d.status) if the state became
-// non-finite or a joint moved faster than m.max_joint_speed. Adds the step's wall time to d.tet.
+// non-finite or a joint moved faster than m.max_joint_speed. (TET is measured by Simulator::step.)
 bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record = true);
 bool check_state(const Model& m, Data& d);
 // Real stability interval [-limit, 0] of an explicit integrator (Euler 2, RK4 2.785; infinity otherwise).

@@ -31,6 +31,8 @@ inline constexpr double kCompressForceAtMin = 4.0;
 // kActivationTolerance for round-off); joints at most kJointRangeMargin beyond their range of motion,
 // where the passive joint moment is already 5000 N m/rad^2 * 0.35^2 = 610 N m.
 inline constexpr double kMaxPeeForce = 9.0;
+// A relaxed slack fibre at rest (muscle_equilibrium_lce) leaves its tendon slack by this fraction of lslack.
+inline constexpr double kRestTendonSlack = 0.002;
 inline constexpr double kActivationTolerance = 1e-6;
 inline constexpr double kJointRangeMargin = 0.35;  // rad (20 deg)
 inline constexpr double kFibreDamping = 10.0;      // N/(m/s), parallel to the contractile element

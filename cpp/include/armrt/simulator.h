@@ -35,7 +35,7 @@ class Simulator {
  public:
   Simulator(const ModelDef& def, Integrator integrator, double dt, int substeps = 1);
 
-  // Joint angles (5, rad; nullptr: rest posture), velocities (nullptr: zero) and activations
+  // Joint angles (num_dofs, rad; nullptr: rest posture), velocities (nullptr: zero) and activations
   // (nullptr: zero); contractile elements start in static equilibrium at those activations.
   void reset(const double* q, const double* qd, const double* activation);
   // One control step; false on divergence (see data.status). Never allocates except with CVODE. With
