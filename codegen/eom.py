@@ -2,7 +2,8 @@
 
 The chain is scapula -[gh: y, z, y body-fixed rotations]-> humerus -[hu pin]-> ulna -[ur pin]-> radius
 -[weld]-> hand (das2: 5 DOFs; each joint may also be a weld or a pin, so a model file can free any
-subset of them, e.g. a one-DOF elbow pendulum). Every revolute (the three GH rotations count as three revolutes through massless
+subset of them, e.g. a one-DOF elbow pendulum; a weld may carry a fixed `rotation`, a DOF fixed at a
+posture: the elbow-forearm models weld the humerus at fixed GH angles). Every revolute (the three GH rotations count as three revolutes through massless
 intermediate frames at one point) contributes a partial angular velocity s_j (its axis, scapula
 frame) and partial velocities s_j x (P - o_j) for points P distal to it. Kane's equations
 F_r + F*_r = 0 then give
@@ -109,6 +110,9 @@ def derive(model: dict) -> ChainExprs:
         # origin acceleration at qdd = 0: carried by the parent's rotation
         a_origin = a0[parent] + alpha0[parent].cross(r_loc) + wp.cross(wp.cross(r_loc))
         Rc = Rp
+        if jt.get("rotation") is not None:
+            # A joint fixed at a posture: its child frame is rotated, and nothing moves at it.
+            Rc = Rc * _mat(jt["rotation"])
         wc, alc = wp, alpha0[parent]
         joints = list(joints_upto[parent])
         for axis, dof in zip(jt["axes"], jt["dofs"]):

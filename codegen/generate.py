@@ -163,6 +163,14 @@ def validate(model) -> dict:
                 raise ModelFileError(f"model file: field '{jw}.axes[{k}]' must be a unit vector")
         jd = _list(jt, "dofs", jw, naxes)
         used_dofs.extend(jd)
+        if jt.get("rotation") is not None:
+            # A DOF fixed at a posture (elbow-forearm models weld the humerus at fixed GH angles).
+            Rj = _array(jt["rotation"], (3, 3), f"{jw}.rotation")
+            err = max(abs(sum(Rj[k][r] * Rj[k][c] for k in range(3)) - (r == c)) for r in range(3) for c in range(3))
+            det = (Rj[0][0] * (Rj[1][1] * Rj[2][2] - Rj[1][2] * Rj[2][1]) - Rj[0][1] * (Rj[1][0] * Rj[2][2] - Rj[1][2] * Rj[2][0])
+                   + Rj[0][2] * (Rj[1][0] * Rj[2][1] - Rj[1][1] * Rj[2][0]))
+            if err > 1e-9 or det < 0:
+                raise ModelFileError(f"model file: field '{jw}.rotation' must be a rotation matrix (orthonormal, det +1)")
     if used_dofs != dof_names:
         raise ModelFileError(f"model file: field 'bodies[].joint.dofs' must be {dof_names} in chain order, "
                              f"got {used_dofs}")
@@ -189,34 +197,11 @@ def validate(model) -> dict:
                              f"{MAX_ELEMENTS}")
     el_names = []
     for i, e in enumerate(elements):
-        w = f"elements[{i}]"
-        el_names.append(_string(e, "name", w))
-        _string(e, "muscle", w)
-        for k in ("fmax", "lceopt", "lslack", "vmax", "tact", "tdeact", "peeslack", "mass"):
-            _number(e, k, w, positive=True)
-        _number(e, "pennopt", w, nonneg=True)
-        edofs = _list(e, "dofs", w)
-        if not edofs or any(d not in dof_names for d in edofs):
-            raise ModelFileError(f"model file: field '{w}.dofs' must name DOFs from {dof_names}")
-        cgh = _get(e, "crosses_gh", w)
-        if not isinstance(cgh, bool):
-            raise ModelFileError(f"model file: field '{w}.crosses_gh' must be true/false")
-        lp = _get(e, "length_poly", w)
-        lpd = _list(lp, "dofs", f"{w}.length_poly")
-        if any(d not in dof_names for d in lpd) or len(set(lpd)) != len(lpd):
-            raise ModelFileError(f"model file: field '{w}.length_poly.dofs' must name distinct DOFs from {dof_names}")
-        _poly(lp, f"{w}.length_poly", len(lpd))
-        gd = _get(e, "gh_direction", w)
-        if cgh:
-            if not isinstance(gd, dict):
-                raise ModelFileError(f"model file: field '{w}.gh_direction' must be an object for a GH-crossing element")
-            gdd = _list(gd, "dofs", f"{w}.gh_direction")
-            if any(d not in dof_names for d in gdd) or len(set(gdd)) != len(gdd):
-                raise ModelFileError(f"model file: field '{w}.gh_direction.dofs' must name distinct DOFs")
-            for c in "xyz":
-                _poly(_get(gd, c, f"{w}.gh_direction"), f"{w}.gh_direction.{c}", len(gdd))
-        elif gd is not None:
-            raise ModelFileError(f"model file: field '{w}.gh_direction' must be null for an element not crossing GH")
+        try:
+            _validate_element(e, i, dof_names, el_names)
+        except ModelFileError as exc:
+            name = e.get("name") if isinstance(e, dict) else None
+            raise ModelFileError(f"{exc} (element {name!r})" if isinstance(name, str) else str(exc)) from None
     if len(set(el_names)) != len(el_names):
         raise ModelFileError("model file: field 'elements' has repeated names")
 
@@ -237,6 +222,43 @@ def validate(model) -> dict:
             raise ModelFileError(f"model file: field 'groups.{g}' must list muscle names")
     check_sense(model)
     return model
+
+
+def _validate_element(e, i, dof_names, el_names):
+    """Schema checks of elements[i]; ModelFileError names the field (validate() adds the element name)."""
+    w = f"elements[{i}]"
+    el_names.append(_string(e, "name", w))
+    _string(e, "muscle", w)
+    if e.get("max_activation") is not None:
+        # The participant's `maxact` (0 = paralysed, 1 = intact); absent means 1.
+        _number(e, "max_activation", w, nonneg=True)
+        if e["max_activation"] > 1.0:
+            raise ModelFileError(f"model file: field '{w}.max_activation' must lie in [0, 1], got {e['max_activation']!r}")
+    for k in ("fmax", "lceopt", "lslack", "vmax", "tact", "tdeact", "peeslack", "mass"):
+        _number(e, k, w, positive=True)
+    _number(e, "pennopt", w, nonneg=True)
+    edofs = _list(e, "dofs", w)
+    if not edofs or any(d not in dof_names for d in edofs):
+        raise ModelFileError(f"model file: field '{w}.dofs' must name DOFs from {dof_names}")
+    cgh = _get(e, "crosses_gh", w)
+    if not isinstance(cgh, bool):
+        raise ModelFileError(f"model file: field '{w}.crosses_gh' must be true/false")
+    lp = _get(e, "length_poly", w)
+    lpd = _list(lp, "dofs", f"{w}.length_poly")
+    if any(d not in dof_names for d in lpd) or len(set(lpd)) != len(lpd):
+        raise ModelFileError(f"model file: field '{w}.length_poly.dofs' must name distinct DOFs from {dof_names}")
+    _poly(lp, f"{w}.length_poly", len(lpd))
+    gd = _get(e, "gh_direction", w)
+    if cgh:
+        if not isinstance(gd, dict):
+            raise ModelFileError(f"model file: field '{w}.gh_direction' must be an object for a GH-crossing element")
+        gdd = _list(gd, "dofs", f"{w}.gh_direction")
+        if any(d not in dof_names for d in gdd) or len(set(gdd)) != len(gdd):
+            raise ModelFileError(f"model file: field '{w}.gh_direction.dofs' must name distinct DOFs")
+        for c in "xyz":
+            _poly(_get(gd, c, f"{w}.gh_direction"), f"{w}.gh_direction.{c}", len(gdd))
+    elif gd is not None:
+        raise ModelFileError(f"model file: field '{w}.gh_direction' must be null for an element not crossing GH")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -322,25 +344,36 @@ def check_sense(model: dict) -> None:
         if not gl[k] < math.pi / 2:
             _fail(f"glenoid.{k}", f"is {gl[k]} rad; a rim half-angle is below pi/2")
     for i, e in enumerate(model["elements"]):
-        w = f"elements[{i}]"
-        for k, (lo, hi) in ELEMENT_BOUNDS.items():
-            if not lo <= e[k] <= hi:
-                _fail(f"{w}.{k}", f"is {e[k]}, outside the physical range [{lo}, {hi}]")
-        if not e["pennopt"] < math.pi / 2:
-            _fail(f"{w}.pennopt", f"is {e['pennopt']} rad; pennation is below pi/2")
-        if set(e["length_poly"]["dofs"]) - set(e["dofs"]):
-            _fail(f"{w}.length_poly.dofs", f"{e['length_poly']['dofs']} include DOFs the element does not cross "
-                                           f"({e['dofs']})")
-        polys = [("length_poly", e["length_poly"])]
-        if e["gh_direction"]:
-            polys += [(f"gh_direction.{c}", e["gh_direction"][c]) for c in "xyz"]
-        for name, poly in polys:
-            if len(poly["exponents"]) > MAX_POLY_TERMS:
-                _fail(f"{w}.{name}.exponents", f"has {len(poly['exponents'])} terms (at most {MAX_POLY_TERMS})")
-            for t, row in enumerate(poly["exponents"]):
-                if sum(row) > MAX_POLY_DEGREE:
-                    _fail(f"{w}.{name}.exponents[{t}]", f"has degree {sum(row)} (at most {MAX_POLY_DEGREE}; "
-                                                        f"the path fits use up to 9)")
+        try:
+            _check_element_sense(e, i)
+        except ModelFileError as exc:
+            raise ModelFileError(f"{exc} (element {e['name']!r})") from None
+    _check_partition(model)
+
+
+def _check_element_sense(e: dict, i: int) -> None:
+    w = f"elements[{i}]"
+    for k, (lo, hi) in ELEMENT_BOUNDS.items():
+        if not lo <= e[k] <= hi:
+            _fail(f"{w}.{k}", f"is {e[k]}, outside the physical range [{lo}, {hi}]")
+    if not e["pennopt"] < math.pi / 2:
+        _fail(f"{w}.pennopt", f"is {e['pennopt']} rad; pennation is below pi/2")
+    if set(e["length_poly"]["dofs"]) - set(e["dofs"]):
+        _fail(f"{w}.length_poly.dofs", f"{e['length_poly']['dofs']} include DOFs the element does not cross "
+                                       f"({e['dofs']})")
+    polys = [("length_poly", e["length_poly"])]
+    if e["gh_direction"]:
+        polys += [(f"gh_direction.{c}", e["gh_direction"][c]) for c in "xyz"]
+    for name, poly in polys:
+        if len(poly["exponents"]) > MAX_POLY_TERMS:
+            _fail(f"{w}.{name}.exponents", f"has {len(poly['exponents'])} terms (at most {MAX_POLY_TERMS})")
+        for t, row in enumerate(poly["exponents"]):
+            if sum(row) > MAX_POLY_DEGREE:
+                _fail(f"{w}.{name}.exponents[{t}]", f"has degree {sum(row)} (at most {MAX_POLY_DEGREE}; "
+                                                    f"the path fits use up to 9)")
+
+
+def _check_partition(model: dict) -> None:
     # Element and muscle tables must describe the same partition.
     owner: dict[str, str] = {}
     for i, m in enumerate(model["muscles"]):
@@ -655,7 +688,8 @@ def model_source(model: dict, ns: str, digest: str) -> str:
                      f".lceopt = {f(e['lceopt'])}, .lslack = {f(e['lslack'])}, .pennopt = {f(e['pennopt'])}, "
                      f".vmax = {f(e['vmax'])}, .tact = {f(e['tact'])}, .tdeact = {f(e['tdeact'])}, "
                      f".peeslack = {f(e['peeslack'])}, .mass = {f(e['mass'])}, "
-                     f".crosses_gh = {1 if e['crosses_gh'] else 0}, .dof_mask = {mask}}},")
+                     f".crosses_gh = {1 if e['crosses_gh'] else 0}, .dof_mask = {mask}, "
+                     f".max_activation = {f(e.get('max_activation', 1.0))}}},")
     lines.append("};")
     lines.append("")
 

@@ -279,22 +279,85 @@ def write_model(model: dict, path: Path):
     path.write_text(json.dumps(model, indent=1, sort_keys=False) + "\n")
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(prog="python -m codegen.import_das3", description=__doc__.split("\n\n")[0])
-    ap.add_argument("--das3", type=Path, default=Path(__file__).resolve().parents[1] / ".." / "shared" / "reference" / "das3",
-                    help="folder with model_struct.mat, equilibrium.mat, das3.osim")
-    ap.add_argument("--out", type=Path, default=Path("models/das2.json"))
-    ap.add_argument("--paths", choices=["opensim", "das3"], default="opensim")
+DEFAULT_DAS3 = Path(__file__).resolve().parents[1] / ".." / "shared" / "reference" / "das3"
+
+
+def is_das2_call(mat: Path, free: list[str], posture: dict) -> bool:
+    """The paper's model: the DAS3 release (das3.osim and equilibrium.mat beside model_struct.mat) with
+    the five arm DOFs free and the default posture. It keeps its OpenSim-based path (build_model)."""
+    return (mat.name == "model_struct.mat" and (mat.parent / "das3.osim").exists()
+            and (mat.parent / "equilibrium.mat").exists() and sorted(free) == sorted(src.ARM_DOFS) and not posture)
+
+
+def import_any(mat: Path, free: list[str], out: Path, name: str | None = None, posture: dict | None = None,
+               equilibrium: Path | None = None, paths: str | None = None, cache_dir: Path | None = None,
+               seed: int = 0, command: str = "") -> dict:
+    """One entry for every DAS-format file (`armrt model import` and `python -m codegen.import_das3`):
+    das2 when is_das2_call(), else import_reduced.build_reduced_model. Writes `out`; returns the model."""
+    from .import_reduced import build_reduced_model
+    mat = Path(mat)
+    if not mat.exists():
+        raise ModelInputError(f"missing input file {mat}")
+    if is_das2_call(mat, free, posture or {}):
+        model = build_model(mat.parent, paths=paths or "opensim", cache_dir=cache_dir, seed=seed)
+        if name is not None and name != model["name"]:
+            raise ModelInputError(f"--name: the DAS3 release with the five arm DOFs free is das2 (got {name!r})")
+    else:
+        if paths == "opensim":
+            raise ModelInputError("--paths opensim: OpenSim-fitted paths exist for das2 only (the DAS3 release with "
+                                  "GHy,GHz,GHyy,ELx,PSy free); other imports use the file's own polynomials")
+        if equilibrium is None:
+            for cand in (mat.parent / "equilibrium.mat", DEFAULT_DAS3 / "equilibrium.mat"):
+                if cand.exists():
+                    equilibrium = cand
+                    break
+        default_name = mat.stem.replace("model_struct", "model").strip("_") or "model"
+        model = build_reduced_model(mat, free, name or default_name, posture=posture,
+                                    equilibrium_path=equilibrium, command=command)
+    write_model(model, out)
+    return model
+
+
+def main(argv=None, prog="python -m codegen.import_das3"):
+    ap = argparse.ArgumentParser(prog=prog, description=__doc__.split("\n\n")[0] + " Any DAS-format "
+                                 "model_struct*.mat with chosen free DOFs (docs/model_schema.md).")
+    ap.add_argument("mat", nargs="?", type=Path, help="DAS-format model_struct*.mat (default: --das3/model_struct.mat)")
+    ap.add_argument("--das3", type=Path, default=DEFAULT_DAS3,
+                    help="folder with model_struct.mat, equilibrium.mat, das3.osim (used when MAT is not given)")
+    ap.add_argument("--free", default=",".join(src.ARM_DOFS),
+                    help="comma-separated free DOFs (default: the paper's five, GHy,GHz,GHyy,ELx,PSy)")
+    ap.add_argument("--posture", action="append", default=[], metavar="NAME=RAD[,...]",
+                    help="fixed angles in radians overriding the default posture (repeatable)")
+    ap.add_argument("--posture-deg", action="append", default=[], metavar="NAME=DEG[,...]",
+                    help="the same in degrees")
+    ap.add_argument("--equilibrium", type=Path, default=None,
+                    help="equilibrium.mat for the default posture (default: beside MAT, else the DAS3 release's)")
+    ap.add_argument("--name", default=None, help="model name (a C identifier; default das2 for das2, else from MAT)")
+    ap.add_argument("-o", "--out", type=Path, default=Path("models/das2.json"))
+    ap.add_argument("--paths", choices=["opensim", "das3"], default=None,
+                    help="das2 only: fit paths against OpenSim (default) or keep the DAS3 polynomials")
     ap.add_argument("--cache", type=Path, default=Path("build"), help="where OpenSim samples are cached")
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args(argv)
+    from .import_reduced import posture_angles
+    mat = args.mat if args.mat is not None else args.das3 / "model_struct.mat"
     try:
-        model = build_model(args.das3, paths=args.paths, cache_dir=args.cache, seed=args.seed)
+        posture = posture_angles(args.posture)
+        posture.update(posture_angles(args.posture_deg, degrees=True))
+        free = [f.strip() for f in args.free.split(",") if f.strip()]
+        # The same command whichever entry ran it (armrt model import calls this main), so both write
+        # the same bytes.
+        cmd = f"python -m codegen.import_das3 {mat.name} --free {','.join(free)}" + "".join(f" --posture {p}" for p in args.posture) \
+            + "".join(f" --posture-deg {p}" for p in args.posture_deg) + (f" --name {args.name}" if args.name else "")
+        model = import_any(mat, free, args.out, name=args.name, posture=posture, equilibrium=args.equilibrium,
+                           paths=args.paths, cache_dir=args.cache, seed=args.seed, command=cmd)
     except ModelInputError as exc:
-        print(f"import_das3: {exc}", file=sys.stderr)
+        print(f"{prog.split()[-1]}: {exc}", file=sys.stderr)
         return 2
-    write_model(model, args.out)
-    print(f"wrote {args.out}: {len(model['elements'])} elements, {len(model['muscles'])} muscles")
+    dropped = model["source"].get("dropped_elements", [])
+    print(f"wrote {args.out}: {model['name']}, {len(model['dofs'])} DOFs, {len(model['elements'])} elements, "
+          f"{len(model['muscles'])} muscles" + (f"; dropped {len(dropped)} elements crossing no free DOF: "
+                                                  f"{', '.join(dropped)}" if dropped else ""))
     return 0
 
 

@@ -86,7 +86,7 @@ void model_init(Model& m, const ModelDef& def) {
   for (int k = 0; k < 3; ++k) m.gravity_scapula[k] = def.gravity_scapula[k];
   for (int i = 0; i < m.num_elements; ++i) {
     m.element[i].strength_scale = 1.0;
-    m.element[i].max_activation = 1.0;
+    m.element[i].max_activation = def.elements[i].max_activation;
   }
   model_update_derived(m);
 }

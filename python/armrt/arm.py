@@ -499,6 +499,26 @@ class Arm:
             # The held excitation is what the dynamics use: keep it under the new bound.
             self._sim.excitation[:] = np.minimum(self._sim.excitation, m)
 
+    def apply_profile(self, path_or_name, reference=None):
+        """Set strength and max_activation element by element from a participant file, by element
+        name (OpenSim force names as aliases): a DAS-format `.mat` (its `fmax`, `maxact`), an armrt
+        model file, or a model name (models/<name>.json). strength = fmax(profile) / fmax(reference),
+        the reference being `reference=` or the intact file beside the profile (model_struct_A_FES.mat
+        -> model_struct_A.mat); without one, the profile's fmax are absolute (divided by this model's).
+        Elements the profile does not name keep their values.
+
+        arm = armrt.Arm("das2"); report = arm.apply_profile("../shared/reference/participant_A/model_struct_A_FES.mat")
+
+        Returns a ProfileReport (prints as a summary): elements set, profile names this arm lacks
+        (`unmatched`), arm elements left unchanged (`untouched`). Raises FileNotFoundError for a
+        missing file or unknown name, ValueError for an unreadable file or values out of range."""
+        from .profile import profile_values
+        s, m, report = profile_values(self, path_or_name, reference)
+        with self._exclusive():
+            self._sim.set_strength_and_max_activation(s, m)
+            self._sim.excitation[:] = np.minimum(self._sim.excitation, m)
+        return report
+
     # ------------------------------------------------------------------ state
     @property
     def q(self) -> np.ndarray:

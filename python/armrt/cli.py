@@ -102,6 +102,11 @@ def cmd_simulate(args) -> int:
 
 
 def cmd_experiments(args) -> int:
+    if args.model != "das2":
+        # The participant experiment (armrt/participant.py): Fig. 1 at full stimulation, four variants.
+        from .arm import known_model
+        from .participant import run_all as run_participant
+        return run_participant(model=known_model(args.model), out_dir=args.out, quick=args.quick)
     from .experiments import run_all
     return run_all(out_dir=args.out, quick=args.quick)
 
@@ -151,9 +156,14 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("experiments", help="the paper's experiments: figures and tables", formatter_class=_formatter)
     p.add_argument("--out", default="results", help="output folder")
     p.add_argument("--quick", action="store_true", help="shorter runs (for tests)")
+    p.add_argument("--model", default="das2",
+                   help="das2: the paper's experiments; participant_A (or another compiled model): the Fig. 1 "
+                        "sequence at full stimulation for participant A's intact, injured, paralysed and FES variants")
     p.set_defaults(func=cmd_experiments)
     from .view import add_cli
     add_cli(sub, _formatter)  # view, animate, export (viser is imported only when `view` runs)
+    from .model_cli import add_cli as add_model_cli
+    add_model_cli(sub, _formatter)  # model import (codegen from the source checkout)
     return ap
 
 

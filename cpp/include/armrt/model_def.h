@@ -22,6 +22,8 @@ struct ElementParams {
   double mass;             // kg
   int crosses_gh;          // 0/1
   int dof_mask;            // bit j set if the element crosses DOF j
+  double max_activation;   // [0, 1], the model's default cap on excitation and activation (1 = intact;
+                           // a participant's `maxact`); Model::element[i].max_activation starts here
 };
 
 struct DofParams {

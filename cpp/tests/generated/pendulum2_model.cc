@@ -15,11 +15,11 @@ const DofParams kDofs[2] = {
 };
 
 const ElementParams kElements[5] = {
-    {.name = "flexor1", .muscle = "flexor", .osim_name = "flexor1", .fmax = 300.0, .lceopt = 0.10000000000000001, .lslack = 0.14999999999999999, .pennopt = 0.0, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 1},
-    {.name = "flexor2", .muscle = "flexor", .osim_name = "flexor2", .fmax = 200.0, .lceopt = 0.089999999999999997, .lslack = 0.14999999999999999, .pennopt = 0.10000000000000001, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 1},
-    {.name = "extensor1", .muscle = "extensor", .osim_name = "extensor1", .fmax = 400.0, .lceopt = 0.10000000000000001, .lslack = 0.13, .pennopt = 0.0, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 1},
-    {.name = "pronator1", .muscle = "pronator", .osim_name = "pronator1", .fmax = 100.0, .lceopt = 0.040000000000000001, .lslack = 0.035000000000000003, .pennopt = 0.0, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 2},
-    {.name = "supinator1", .muscle = "supinator", .osim_name = "supinator1", .fmax = 100.0, .lceopt = 0.040000000000000001, .lslack = 0.035000000000000003, .pennopt = 0.0, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 2},
+    {.name = "flexor1", .muscle = "flexor", .osim_name = "flexor1", .fmax = 300.0, .lceopt = 0.10000000000000001, .lslack = 0.14999999999999999, .pennopt = 0.0, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 1, .max_activation = 1.0},
+    {.name = "flexor2", .muscle = "flexor", .osim_name = "flexor2", .fmax = 200.0, .lceopt = 0.089999999999999997, .lslack = 0.14999999999999999, .pennopt = 0.10000000000000001, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 1, .max_activation = 1.0},
+    {.name = "extensor1", .muscle = "extensor", .osim_name = "extensor1", .fmax = 400.0, .lceopt = 0.10000000000000001, .lslack = 0.13, .pennopt = 0.0, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 1, .max_activation = 1.0},
+    {.name = "pronator1", .muscle = "pronator", .osim_name = "pronator1", .fmax = 100.0, .lceopt = 0.040000000000000001, .lslack = 0.035000000000000003, .pennopt = 0.0, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 2, .max_activation = 1.0},
+    {.name = "supinator1", .muscle = "supinator", .osim_name = "supinator1", .fmax = 100.0, .lceopt = 0.040000000000000001, .lslack = 0.035000000000000003, .pennopt = 0.0, .vmax = 10.0, .tact = 0.02, .tdeact = 0.059999999999999998, .peeslack = 1.0, .mass = 0.02, .crosses_gh = 0, .dof_mask = 2, .max_activation = 1.0},
 };
 
 const int kMuscle0[2] = {0, 1};

@@ -1,0 +1,24 @@
+// GENERATED FILE - DO NOT EDIT BY HAND.
+// Written by `python -m codegen.generate --model models/participant_A.json --out cpp/generated`
+// from the model file participant_A.json (sha256 a16b40f11dac3788bfbcead1d42799439af7374618332248e40139a73b438068).
+// Change the model file or the generator and regenerate instead.
+#pragma once
+
+#include "armrt/model_def.h"
+
+namespace armrt::generated::participant_A {
+
+const armrt::ModelDef& model_def();
+
+void mass_matrix(const double* q, double* M);
+void bias_force(const double* q, const double* qd, const double* g_scapula, double* b);
+void dynamics(const double* q, const double* qd, const double* g_scapula, double* M, double* b);
+void hand_position(const double* q, double* p);
+void hand_jacobian(const double* q, double* Jv, double* Jw);
+void arm_momentum_rate(const double* q, const double* qd, double* A, double* c);
+void body_poses(const double* q, double* R, double* p);
+void muscle_lengths(const double* q, double* L);
+void muscle_paths(const double* q, double* L, double* moment_arm);
+void gh_directions(const double* q, double* d);
+
+}  // namespace armrt::generated::participant_A
