@@ -1,6 +1,7 @@
 """The Python API: `Arm` drives one simulated arm; arrays in, arrays out, SI units and radians."""
 from __future__ import annotations
 
+import copy
 import numbers
 import operator
 import threading
@@ -313,9 +314,13 @@ class Arm:
     result = arm.simulate(lambda t: {"elbow_flexors": 0.2 if t > 1 else 0.0}, duration=3.0)
     """
 
-    def __init__(self, model: str = "das2", integrator: str = DEFAULT_INTEGRATOR, dt: float = 1e-3,
+    def __init__(self, model="das2", integrator: str = DEFAULT_INTEGRATOR, dt: float = 1e-3,
                  substeps: int | None = None):
-        """dt is the control step (s: inputs held, outputs reported, TET measured per dt); fixed-step
+        """model: a registered model's name (armrt.models(); "das2" is built in), a model file path
+        (built on demand and cached, see armrt.Model.load) or an armrt.Model; `arm.model` is the
+        armrt.Model, `arm.data` the armrt.Data this arm steps.
+
+        dt is the control step (s: inputs held, outputs reported, TET measured per dt); fixed-step
         integrators take `substeps` steps of dt / substeps inside it. Default integrator: "ros2", the
         linearly implicit ROS2 with one step per 1 ms control step, within 0.1 deg of CVODE on the
         paper's tasks (0.013 deg at worst, docs/engine.md). Default substeps: enough for a step of at most
@@ -345,10 +350,14 @@ class Arm:
             warnings.warn(StepSizeWarning(f"integration step {step * 1e3:g} ms is above the {DEFAULT_MAX_STEP[integrator] * 1e3:g} ms "
                           f"validated for {integrator!r} against CVODE (docs/engine.md); expect errors of degrees or "
                           f"divergence; leave substeps=None for the validated step"), stacklevel=2)
-        self._sim = _core.Simulator(model, integrator, dt, substeps)
+        from .data import Data
+        from .model import Model
+        self.model = Model(model)  # a name, a model file (built on demand) or a Model
+        self._sim = _core.Simulator(self.model._def, integrator, dt, substeps)
+        self.data = Data._wrap(self.model, self._sim)
         # One thread at a time: the engine's Data is a single workspace (see _exclusive).
         self._lock = threading.RLock()
-        info = _core.model_info(model)
+        info = self.model.info
         self.model_name = info["name"]
         self.info = info
         self.dof_names = [d["name"] for d in info["dofs"]]
@@ -362,13 +371,9 @@ class Arm:
         self._index.update({m: list(ix) for m, ix in info["muscles"]})
         self._index.update({g: list(ix) for g, ix in info["groups"]})
         self.n_elements = len(self.element_names)
-        n = self.n_elements
-        state = self._sim.state
         self.n_dofs = len(self.dof_names)
-        # The state layout is the engine's (data.h), read from it: {block: (offset, size)}.
-        self._views = {k: state[o:o + size] for k, (o, size) in info["state_layout"].items()}
-        for v in self._views.values():
-            v.flags.writeable = False
+        # The state views are Data's, from the engine's state layout (data.h via model_info).
+        self._views = self.data._views
 
     @contextmanager
     def _exclusive(self):
@@ -611,6 +616,46 @@ class Arm:
         if not np.all(np.isfinite(a)):
             raise ValueError(f"{what} contains NaN or infinite values")
         return a
+
+    # ------------------------------------------------------------------ snapshots
+    def get_state(self):
+        """An armrt.State: time, q, qdot, lce (fibre lengths), activations, the held excitation and the
+        hand force and moment, as copies. set_state(s) later and the same steps give bit for bit the
+        same trajectory (fixed-step integrators; CVODE restarts its history at a restored state)."""
+        with self._exclusive():
+            return self.data.get_state()
+
+    def set_state(self, state) -> None:
+        """Restores an armrt.State from get_state() of an arm of the same model (ValueError otherwise).
+        The excitation is capped at this arm's max_activation; a divergence error is cleared. Strength,
+        max_activation, gravity and the integrator are the arm's own, not part of the State."""
+        with self._exclusive():
+            self.data.set_state(state)
+            self._sim.excitation[:] = np.minimum(self._sim.excitation, self._sim.get_max_activation())
+
+    def __deepcopy__(self, memo):
+        """An independent Arm: same model, integrator, dt, substeps, strength, max_activation, gravity,
+        joint-speed bound and state (a diverged arm's state is copied as is, its error cleared); its
+        own engine, lock and TET statistics. Attributes added to the arm are deep-copied."""
+        with self._exclusive():
+            new = type(self).__new__(type(self))
+            memo[id(self)] = new
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", StepSizeWarning)  # warned when this arm was made
+                Arm.__init__(new, self.model, self.integrator, self.dt, self.substeps)
+            new._sim.set_strength_and_max_activation(self._sim.get_strength(), self._sim.get_max_activation())
+            new._sim.gravity = np.asarray(self._sim.gravity)
+            new._sim.max_joint_speed = self._sim.max_joint_speed
+            new.data._load(self._sim.state, self._sim.excitation, self._sim.hand_force, self._sim.hand_moment,
+                           self._sim.time)
+            for k, v in self.__dict__.items():
+                if k not in new.__dict__:
+                    new.__dict__[k] = copy.deepcopy(v, memo)
+            return new
+
+    def __copy__(self):
+        """Same as copy.deepcopy: two Arms never share an engine."""
+        return self.__deepcopy__({})
 
     # ------------------------------------------------------------------ stepping
     def step(self, n: int = 1, progress: bool | None = None) -> None:
