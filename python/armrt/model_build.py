@@ -238,9 +238,10 @@ def build(path, force: bool = False, jobs: int | None = None) -> BuildResult:
         raise FileNotFoundError(2, "no such model file", str(path)) from None
     source_hash = hashlib.sha256(data).hexdigest()
     cfg = build_config()
-    compiler = find_compiler(cfg)
     gen = generator()
-    key = cache_key(source_hash, cfg, compiler, gen)
+    # The compiler as configured (not looked up): a cached library loads without any compiler.
+    configured = shlex.split(os.environ["CXX"]) if os.environ.get("CXX") else [cfg.get("cxx") or "c++"]
+    key = cache_key(source_hash, cfg, configured, gen)
     entry = cache_dir() / "models" / key[:24]
     library, meta_path, log_path = entry / LIBRARY_NAME, entry / "model.json", entry / "build.log"
 
@@ -253,7 +254,8 @@ def build(path, force: bool = False, jobs: int | None = None) -> BuildResult:
     hit = cached()
     if hit is not None:
         return hit
-    model, _ = validate_file(path)
+    model, _ = validate_file(path)  # a broken file is the first thing to fix, compiler or not
+    compiler = find_compiler(cfg)
     with _locked(entry):
         hit = cached()  # another process may have built it while we waited
         if hit is not None:
