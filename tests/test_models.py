@@ -309,6 +309,15 @@ def test_model_built_on_demand_runs_like_the_built_in_one(tmp_path, cache, capsy
     batch.step(50), ref_batch.step(50)
     np.testing.assert_array_equal(batch.q, ref_batch.q)
 
+    # The real-time runner: `armrt-rt --model FILE.json` loads the cached library, then runs it by name.
+    from armrt.realtime import RealtimeSession, runner_args, runner_path
+    args = runner_args(["--rate", "1000", "--model", str(path)])
+    assert args == ["--rate", "1000", "--model-library", str(libs[0]), "--model", "das2_on_demand"]
+    rt = subprocess.run([runner_path(), *args, "--duration", "0.05", "--no-rt", "--no-mlock"],
+                        capture_output=True, text=True, timeout=60)
+    assert rt.returncode == 0 and "das2_on_demand" in rt.stdout, rt.stderr
+    assert RealtimeSession(model=m, duration=0.05).config["model"] == "das2_on_demand"
+
     # A new process finds it in the cache: nothing is generated, compiled or rewritten.
     stamps = {p: p.stat().st_mtime_ns for p in libs[0].parent.iterdir()}
     code = (f"import time, armrt; t = time.perf_counter(); m = armrt.Model.load({str(path)!r}); "
