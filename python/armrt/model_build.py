@@ -179,7 +179,11 @@ def validate_file(path) -> tuple[dict, str]:
     if str(root) not in sys.path:
         sys.path.insert(0, str(root))
     import importlib
-    gen = importlib.import_module(module)
+    try:
+        gen = importlib.import_module(module)
+    except ModuleNotFoundError as exc:
+        raise ModelBuildError(f"building a model needs the code generator's dependency {exc.name!r}: "
+                              f"pip install {exc.name}") from None
     try:
         return gen.load_model(path)
     except gen.ModelFileError as exc:
