@@ -106,8 +106,8 @@ def rad(x):
 
 
 def known_model(name) -> str:
-    """`name` if it is a model compiled into this build; ValueError otherwise (so a name read from a
-    file can never become a path)."""
+    """`name` if it is a registered model (built in, or loaded in this process); ValueError otherwise
+    (so a name read from a file can never become a path)."""
     if not isinstance(name, str):
         raise ValueError(f"model must be a model name, got {type(name).__name__}")
     try:
@@ -270,7 +270,7 @@ class Result:
     def load(cls, path) -> "Result":
         """A Result saved with save(). ValueError (one line, naming the file) for a file that is not
         a readable .npz, lacks the result arrays, has arrays of the wrong shape, or names a model that
-        is not compiled into this build; FileNotFoundError if absent."""
+        is not registered (load its model file first: armrt.Model.load); FileNotFoundError if absent."""
         import zipfile
         path = str(path)
         try:
@@ -298,7 +298,8 @@ class Result:
             known_model(meta["model"])
         except ValueError:
             raise ValueError(f"{path}: the result's model field {meta['model'][:80]!r} is not a known model "
-                             f"(compiled in: {_core.model_names()})") from None
+                             f"(registered: {_core.model_names()}; a model built on demand: armrt.Model.load(its file) "
+                             f"first)") from None
         T = fields["time"].shape[0] if fields["time"].ndim == 1 else -1
         bad = [k for k, v in fields.items() if v.ndim == 0 or v.shape[0] != T]
         if T < 0 or bad:
