@@ -330,3 +330,45 @@ def test_model_built_on_demand_runs_like_the_built_in_one(tmp_path, cache, capsy
     assert name == "das2_on_demand"
     assert {p: p.stat().st_mtime_ns for p in libs[0].parent.iterdir()} == stamps
     print(f"on-demand build of das2 under another name: first {first:.1f} s, cached load {float(seconds) * 1e3:.1f} ms")
+
+
+def test_a_model_of_another_size_builds_and_runs(cache):
+    """tests/data/pendulum2.json (2 DOF, 5 elements, constant moment arms): built on demand, then the
+    whole API on it: geometry from the file, Arm, snapshots, copies, a batch, shapes in errors."""
+    path = ROOT / "tests" / "data" / "pendulum2.json"
+    m = armrt.Model.load(path)
+    assert (m.name, m.n_dofs, m.n_elements, m.n_muscles) == ("pendulum2", 2, 5, 4)
+    assert m.dof_names == ("ELx", "PSy") and "pendulum2" in armrt.models()
+    doc = json.loads(path.read_text())
+    expected = np.zeros((5, 2))
+    for i, e in enumerate(doc["elements"]):
+        poly = e["length_poly"]
+        for exps, c in zip(poly["exponents"], poly["coefs"]):
+            if sum(exps) == 1:  # L = c0 + c1 q: moment arm -c1 on that DOF
+                expected[i, m.dof_names.index(poly["dofs"][exps.index(1)])] = -c
+    for q in (m.rest_posture, np.array([0.7, -0.4])):
+        np.testing.assert_allclose(m.moment_arms(q), expected, atol=1e-15)
+    M = m.mass_matrix(np.array([0.3, 0.2]))
+    assert M.shape == (2, 2) and np.allclose(M, M.T) and np.all(np.linalg.eigvalsh(M) > 0)
+    with pytest.raises(ValueError, match=r"shape \(2,\)"):
+        m.moment_arms(np.zeros(5))
+
+    arm = armrt.Arm(m)
+    with pytest.raises(ValueError, match=r"q must have shape \(2,\) \(ELx, PSy\)"):
+        arm.reset(q=np.zeros(5))
+    arm.reset(q=[0.5, 0.1])
+    arm.set_excitation({"flexor": 0.3, "pronator": 0.2})
+    arm.step(100)
+    res = arm.simulate({"extensor": 0.4}, duration=0.2)
+    assert res.q.shape == (201, 2) and res.activation.shape == (201, 5) and np.all(np.isfinite(res.q))
+    s = arm.get_state()
+    twin = copy.deepcopy(arm)
+    arm.step(150)
+    twin.step(150)
+    assert twin.get_state() == arm.get_state()
+    arm.set_state(s)
+    arm.step(150)
+    assert twin.get_state() == arm.get_state()
+    batch = armrt.ArmBatch(2, model="pendulum2", threads=1)
+    batch.step(5)
+    assert batch.q.shape == (2, 2)

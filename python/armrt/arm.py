@@ -117,9 +117,9 @@ def known_model(name) -> str:
     return name
 
 
-def _row_bytes(n_elements: int) -> int:
-    """Bytes of one recorded row of a Result: 5 per-element channels, 24 other values, float64."""
-    return 8 * (5 * n_elements + 24)
+def _row_bytes(n_elements: int, n_dofs: int = 5) -> int:
+    """Bytes of one recorded row of a Result: 5 per-element channels, q and qdot, 14 other values, float64."""
+    return 8 * (5 * n_elements + 2 * n_dofs + 14)
 
 
 def _recorded_rows(n_steps: int, record_every: int) -> int:
@@ -142,8 +142,8 @@ class Result:
     repr() is one line; to_dataframe() gives a pandas DataFrame (pandas optional), plot() a figure."""
 
     time: np.ndarray            # (T,) s
-    q: np.ndarray               # (T, 5) rad
-    qdot: np.ndarray            # (T, 5) rad/s
+    q: np.ndarray               # (T, ndof) rad
+    qdot: np.ndarray            # (T, ndof) rad/s
     lce: np.ndarray             # (T, n) m, contractile-element lengths
     activation: np.ndarray      # (T, n)
     excitation: np.ndarray      # (T, n)
@@ -308,7 +308,7 @@ class Result:
 
 
 class Arm:
-    """One simulated arm: the paper's fixed-scapula, 5-DOF, 102-element model.
+    """One simulated arm of a model (default das2: the paper's fixed-scapula, 5-DOF, 102-element model).
 
     arm = Arm(model="das2", integrator="ros2", dt=1e-3)
     arm.set_excitation({"rotator_cuff": 0.05, "bicb": 0.3})
@@ -562,7 +562,7 @@ class Arm:
         return self._sim.substeps
 
     def reset(self, q=None, qdot=None, activation=None, time: float = 0.0) -> None:
-        """Back to a state: q (5, rad; default the rest posture), qdot (default 0), activations (n,
+        """Back to a state: q (ndof, rad; default the rest posture), qdot (default 0), activations (n,
         default 0, or a dict of names; capped at max_activation with a RuntimeWarning); contractile
         elements start in static equilibrium.
         time: finite, s. Raises ValueError for NaN/infinite values, TypeError for non-numbers."""
@@ -683,7 +683,7 @@ class Arm:
         """Memory (bytes) of the Result simulate(duration, record_every=...) returns."""
         n_steps = self._n_steps(real_scalar(duration, "duration"))
         rows = _recorded_rows(n_steps, count(record_every, "record_every", minimum=1))
-        return rows * _row_bytes(self.n_elements)
+        return rows * _row_bytes(self.n_elements, self.n_dofs)
 
     def _n_steps(self, duration: float) -> int:
         if not (np.isfinite(duration) and duration >= 0):
@@ -713,7 +713,7 @@ class Arm:
         record_every = count(record_every, "record_every", minimum=1)
         rows = _recorded_rows(n_steps, record_every)
         limit = RESULT_MEMORY_LIMIT if max_bytes is None else real_scalar(max_bytes, "max_bytes")
-        need = rows * _row_bytes(self.n_elements)
+        need = rows * _row_bytes(self.n_elements, self.n_dofs)
         if need > limit:
             fit = int(np.ceil(need / limit)) * record_every
             raise MemoryError(
@@ -786,7 +786,7 @@ class Arm:
     # ------------------------------------------------------------------ outputs
     def outputs(self) -> dict:
         """Outputs at the current state: qddot, muscle_force (N), muscle_length (m), moment_arm
-        (n x 5, m), fibre_velocity, torques, hand_position (thorax frame), gh_force (scapula frame),
+        (n x ndof, m), fibre_velocity, torques, hand_position (thorax frame), gh_force (scapula frame),
         gh_theta, gh_phi, gh_stab."""
         with self._exclusive():
             self._sim.evaluate_outputs()
@@ -807,7 +807,7 @@ class Arm:
 
     # ------------------------------------------------------------------ model at any pose
     def moment_arms(self, q) -> np.ndarray:
-        """(n, 5) moment arms (m) at pose q: -dL/dq of the path polynomials."""
+        """(n, ndof) moment arms (m) at pose q: -dL/dq of the path polynomials."""
         return self._sim.muscle_paths(self._dof_vector(q, "q"))[1]
 
     def muscle_lengths(self, q) -> np.ndarray:
