@@ -372,3 +372,18 @@ def test_a_model_of_another_size_builds_and_runs(cache):
     batch = armrt.ArmBatch(2, model="pendulum2", threads=1)
     batch.step(5)
     assert batch.q.shape == (2, 2)
+
+
+def test_the_package_carries_what_a_build_needs():
+    """An installed armrt finds the engine headers, the generator and the build flags beside itself (a
+    checkout run with PYTHONPATH=python uses cpp/include and codegen/)."""
+    inc = model_build.include_dir()
+    assert (inc / "armrt" / "model_def.h").is_file() and (inc / "armrt" / "fast_math.h").is_file()
+    module, root = model_build.generator()
+    assert (root.joinpath(*module.split(".")[:-1]) / "generate.py").is_file()
+    cfg = model_build.build_config()
+    assert cfg["abi_version"] == armrt._core.MODEL_ABI_VERSION and "-O" in cfg["flags"]
+    installed = model_build.HERE != ROOT / "python" / "armrt"
+    if installed:
+        assert inc == model_build.HERE / "include" and module == "armrt.codegen.generate"
+        assert (model_build.HERE / "build_config.json").is_file()
