@@ -154,6 +154,10 @@ def test_several_data_per_model_are_independent():
         a.data.q[0] = 1.0  # read-only views
     out = a.data.outputs()
     assert out["moment_arm"].shape == (102, 5) and np.isfinite(out["gh_stab"])
+    d3 = copy.deepcopy(a.data)
+    assert d3.get_state() == a.data.get_state() and d3.model is m
+    a.step(5)
+    assert d3.time == pytest.approx(0.02)
 
 
 @pytest.mark.parametrize("integrator", ["ros2", "rk4", "euler"])
@@ -387,3 +391,21 @@ def test_the_package_carries_what_a_build_needs():
     if installed:
         assert inc == model_build.HERE / "include" and module == "armrt.codegen.generate"
         assert (model_build.HERE / "build_config.json").is_file()
+
+
+def test_an_arm_pickles_with_its_settings_and_state():
+    import pickle
+    arm = armrt.Arm(integrator="rk4")
+    arm.strength = {"bicb": 0.4}
+    arm.set_excitation({"elbow_flexors": 0.3})
+    arm.set_hand_load(force=(0.0, -3.0, 0.0))
+    arm.step(20)
+    arm.label = "subject 7"
+    back = pickle.loads(pickle.dumps(arm))
+    assert back.get_state() == arm.get_state() and back.label == "subject 7" and back.model is arm.model
+    np.testing.assert_array_equal(back.strength, arm.strength)
+    back.step(30)
+    arm.step(30)
+    assert back.get_state() == arm.get_state()
+    s = pickle.loads(pickle.dumps(arm.get_state()))
+    assert s == arm.get_state()

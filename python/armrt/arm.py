@@ -375,6 +375,8 @@ class Arm:
         self.n_dofs = len(self.dof_names)
         # The state views are Data's, from the engine's state layout (data.h via model_info).
         self._views = self.data._views
+        # What Arm itself sets; anything else on an arm is the user's, carried by copies and pickles.
+        self._base_attributes = frozenset(self.__dict__) | {"_base_attributes"}
 
     @contextmanager
     def _exclusive(self):
@@ -634,29 +636,50 @@ class Arm:
             self.data.set_state(state)
             self._sim.excitation[:] = np.minimum(self._sim.excitation, self._sim.get_max_activation())
 
+    def _snapshot(self) -> tuple[dict, tuple]:
+        """(settings, raw state): what a copy or an unpickled arm is rebuilt from (call under _exclusive)."""
+        settings = dict(integrator=self.integrator, dt=self.dt, substeps=self.substeps,
+                        strength=self._sim.get_strength(), max_activation=self._sim.get_max_activation(),
+                        gravity=np.array(self._sim.gravity), max_joint_speed=self._sim.max_joint_speed)
+        raw = (np.array(self._sim.state), self._sim.excitation.copy(), self._sim.hand_force.copy(),
+               self._sim.hand_moment.copy(), self._sim.time)
+        return settings, raw
+
+    @classmethod
+    def _rebuild(cls, model, settings: dict, raw: tuple) -> "Arm":
+        new = cls.__new__(cls)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", StepSizeWarning)  # warned when the original was made
+            Arm.__init__(new, model, settings["integrator"], settings["dt"], settings["substeps"])
+        new._sim.set_strength_and_max_activation(settings["strength"], settings["max_activation"])
+        new._sim.gravity = np.asarray(settings["gravity"], dtype=float)
+        new._sim.max_joint_speed = settings["max_joint_speed"]
+        new.data._load(*raw)
+        return new
+
     def __deepcopy__(self, memo):
         """An independent Arm: same model, integrator, dt, substeps, strength, max_activation, gravity,
         joint-speed bound and state (a diverged arm's state is copied as is, its error cleared); its
         own engine, lock and TET statistics. Attributes added to the arm are deep-copied."""
         with self._exclusive():
-            new = type(self).__new__(type(self))
+            new = self._rebuild(self.model, *self._snapshot())
             memo[id(self)] = new
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", StepSizeWarning)  # warned when this arm was made
-                Arm.__init__(new, self.model, self.integrator, self.dt, self.substeps)
-            new._sim.set_strength_and_max_activation(self._sim.get_strength(), self._sim.get_max_activation())
-            new._sim.gravity = np.asarray(self._sim.gravity)
-            new._sim.max_joint_speed = self._sim.max_joint_speed
-            new.data._load(self._sim.state, self._sim.excitation, self._sim.hand_force, self._sim.hand_moment,
-                           self._sim.time)
             for k, v in self.__dict__.items():
-                if k not in new.__dict__:
+                if k not in self._base_attributes:
                     new.__dict__[k] = copy.deepcopy(v, memo)
             return new
 
     def __copy__(self):
         """Same as copy.deepcopy: two Arms never share an engine."""
         return self.__deepcopy__({})
+
+    def __reduce__(self):
+        """Pickling (multiprocessing, Ray): the model (its name, or its model file, built or found in the
+        cache where it is unpickled), the settings and the state of deepcopy; added attributes too."""
+        with self._exclusive():
+            settings, raw = self._snapshot()
+        extras = {k: v for k, v in self.__dict__.items() if k not in self._base_attributes}
+        return (_unpickle_arm, (type(self), self.model, settings, raw, extras))
 
     # ------------------------------------------------------------------ stepping
     def step(self, n: int = 1, progress: bool | None = None) -> None:
@@ -831,3 +854,9 @@ class Arm:
         if f.shape != (3,) or not np.all(np.isfinite(f)):
             raise ValueError(f"force must be 3 finite values, got {force!r}")
         return self._sim.gh_stability(f)
+
+
+def _unpickle_arm(cls, model, settings: dict, raw: tuple, extras: dict) -> Arm:
+    arm = cls._rebuild(model, settings, raw)
+    arm.__dict__.update(extras)
+    return arm

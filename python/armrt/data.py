@@ -94,6 +94,19 @@ class Data:
     def __repr__(self) -> str:
         return f"Data({self.model.name}, t = {self.time:g} s)"
 
+    def __deepcopy__(self, memo):
+        """An independent Data: the same Model, state, inputs, per-arm settings (strength, maximum
+        activation, gravity) and integrator workspace configuration, in a new engine."""
+        s = self._sim
+        sim = _core.Simulator(self.model._def, s.integrator, s.dt, s.substeps)
+        sim.set_strength_and_max_activation(s.get_strength(), s.get_max_activation())
+        sim.gravity = np.asarray(s.gravity, dtype=float)
+        sim.max_joint_speed = s.max_joint_speed
+        new = Data._wrap(self.model, sim)
+        new._load(np.array(s.state), s.excitation, s.hand_force, s.hand_moment, s.time)
+        memo[id(self)] = new
+        return new
+
     # ------------------------------------------------------------------ state
     @property
     def time(self) -> float:
