@@ -84,10 +84,10 @@ class Data:
     def _attach(self, model, sim) -> None:
         self.model = model
         self._sim = sim
-        nd, n = model.n_dofs, model.n_elements
         state = sim.state
-        self._views = {"q": state[0:nd], "qdot": state[nd:2 * nd], "lce": state[2 * nd:2 * nd + n],
-                       "activation": state[2 * nd + n:2 * nd + 2 * n], "state": state[:]}
+        # Offsets from the engine (data.h defines the layout once; model_info exports it).
+        self._views = {k: state[o:o + n] for k, (o, n) in model.state_layout.items()}
+        self._views["state"] = state[:]
         for v in self._views.values():
             v.flags.writeable = False
 
@@ -181,8 +181,10 @@ class Data:
                 raise ValueError(f"State.{k} contains NaN or infinite values")
         if not np.isfinite(state.time):
             raise ValueError(f"State.time must be finite, got {state.time}")
-        self._load(np.concatenate([state.q, state.qdot, state.lce, state.activation]), state.excitation,
-                   state.hand_force, state.hand_moment, state.time)
+        x = np.empty(self._sim.state.shape)
+        for k, (o, n) in self.model.state_layout.items():
+            x[o:o + n] = getattr(state, k)
+        self._load(x, state.excitation, state.hand_force, state.hand_moment, state.time)
 
     def _load(self, x, excitation, hand_force, hand_moment, time: float) -> None:
         """Writes a state as is (set_state validates first; Arm.__deepcopy__ copies a diverged state too)."""

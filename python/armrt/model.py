@@ -173,6 +173,11 @@ class Model:
         return len(self._info["muscles"])
 
     @property
+    def state_layout(self) -> MappingProxyType:
+        """{"q", "qdot", "lce", "activation": (offset, size)} in the engine's state vector (Data.state)."""
+        return MappingProxyType({k: tuple(v) for k, v in self._info["state_layout"].items()})
+
+    @property
     def dof_names(self) -> tuple[str, ...]:
         return tuple(d["name"] for d in self._info["dofs"])
 
