@@ -376,6 +376,7 @@ def test_a_model_of_another_size_builds_and_runs(cache):
     batch = armrt.ArmBatch(2, model="pendulum2", threads=1)
     batch.step(5)
     assert batch.q.shape == (2, 2)
+    assert armrt.ArmBatch(1, model=m, threads=1).model is m and armrt.ArmBatch(1, model=path).model is m
 
 
 def test_the_package_carries_what_a_build_needs():

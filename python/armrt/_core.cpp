@@ -172,7 +172,6 @@ PYBIND11_MODULE(_core, mod) {
              return std::make_unique<Simulator>(model, parse_integrator(integrator), dt, substeps);
            }),
            py::arg("model"), py::arg("integrator"), py::arg("dt"), py::arg("substeps") = 1)
-      .def_property_readonly("model_def", [](const Simulator& s) { return s.model.def; }, py::return_value_policy::reference)
       .def_property_readonly("substeps", [](const Simulator& s) { return s.substeps; })
       .def_property_readonly("num_elements", [](const Simulator& s) { return s.model.num_elements; })
       .def_property_readonly("num_dofs", [](const Simulator& s) { return s.model.num_dofs; })
