@@ -373,6 +373,9 @@ def test_a_model_of_another_size_builds_and_runs(cache):
     arm.set_state(s)
     arm.step(150)
     assert twin.get_state() == arm.get_state()
+    import pickle
+    back = pickle.loads(pickle.dumps(arm))  # the model travels as its file: found in the cache
+    assert back.model is m and back.get_state() == arm.get_state()
     batch = armrt.ArmBatch(2, model="pendulum2", threads=1)
     batch.step(5)
     assert batch.q.shape == (2, 2)
