@@ -336,7 +336,7 @@ def test_model_built_on_demand_runs_like_the_built_in_one(tmp_path, cache, capsy
     print(f"on-demand build of das2 under another name: first {first:.1f} s, cached load {float(seconds) * 1e3:.1f} ms")
 
 
-def test_a_model_of_another_size_builds_and_runs(cache):
+def test_a_model_of_another_size_builds_and_runs(cache, tmp_path):
     """tests/data/pendulum2.json (2 DOF, 5 elements, constant moment arms): built on demand, then the
     whole API on it: geometry from the file, Arm, snapshots, copies, a batch, shapes in errors."""
     path = ROOT / "tests" / "data" / "pendulum2.json"
@@ -365,6 +365,17 @@ def test_a_model_of_another_size_builds_and_runs(cache):
     arm.step(100)
     res = arm.simulate({"extensor": 0.4}, duration=0.2)
     assert res.q.shape == (201, 2) and res.activation.shape == (201, 5) and np.all(np.isfinite(res.q))
+    assert res.model == "pendulum2" and res.model_hash == m.source_hash
+    # A later session reopens the result's model from the cache (by name and hash; nothing is built).
+    res.save(tmp_path / "run.npz")
+    code = (f"import armrt; r = armrt.Result.load({str(tmp_path / 'run.npz')!r}); "
+            f"print(r.model, armrt.Model(r.model).n_dofs, armrt.models())")
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
+                       env={**os.environ, "ARMRT_CACHE_DIR": str(cache)})
+    assert p.stdout.split()[:2] == ["pendulum2", "2"], p.stderr
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       env={**os.environ, "ARMRT_CACHE_DIR": str(tmp_path / "empty-cache")})
+    assert p.returncode != 0 and "not a known model" in p.stderr
     s = arm.get_state()
     twin = copy.deepcopy(arm)
     arm.step(150)

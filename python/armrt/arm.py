@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import copy
 import numbers
+import re
 import operator
 import threading
 import warnings
@@ -161,6 +162,7 @@ class Result:
     dt: float = 0.0             # control step (s)
     substeps: int = 1           # integration steps per control step
     model: str = ""
+    model_hash: str = ""        # SHA-256 of the model file (reopens a model built on demand from the cache)
 
     ARRAYS = ("time", "q", "qdot", "lce", "activation", "excitation", "muscle_force", "muscle_length",
               "gh_force", "gh_stab", "gh_angles", "hand_position", "thorax_humerus", "tet_ns")
@@ -264,7 +266,8 @@ class Result:
         """Saves to a compressed .npz (load with Result.load)."""
         np.savez_compressed(path, **{k: getattr(self, k) for k in self.ARRAYS},
                             dof_names=np.array(self.dof_names), element_names=np.array(self.element_names),
-                            integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model)
+                            integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model,
+                            model_hash=self.model_hash)
 
     @classmethod
     def load(cls, path) -> "Result":
@@ -291,12 +294,21 @@ class Result:
                             element_names=[str(s) for s in z["element_names"]],
                             integrator=str(z["integrator"]) if "integrator" in z.files else "",
                             dt=float(z["dt"]) if "dt" in z.files else 0.0,
-                            substeps=int(z["substeps"]) if "substeps" in z.files else 1, model=str(z["model"]))
+                            substeps=int(z["substeps"]) if "substeps" in z.files else 1, model=str(z["model"]),
+                            model_hash=str(z["model_hash"]) if "model_hash" in z.files else "")
             except (OSError, ValueError, TypeError, zipfile.BadZipFile, EOFError) as exc:
                 raise ValueError(f"{path}: corrupt armrt result: {exc}") from None
         try:
             known_model(meta["model"])
         except ValueError:
+            # A model built on demand in an earlier session: reopened from the cache (never rebuilt
+            # from a path: a result file names a model, it does not point at code to compile).
+            from .model import Model
+            reopened = (Model.from_cache(meta["model"], meta["model_hash"])
+                        if re.fullmatch(r"[0-9a-f]{64}", meta["model_hash"]) else None)
+        else:
+            reopened = True
+        if reopened is None:
             raise ValueError(f"{path}: the result's model field {meta['model'][:80]!r} is not a known model "
                              f"(registered: {_core.model_names()}; a model built on demand: armrt.Model.load(its file) "
                              f"first)") from None
@@ -804,7 +816,8 @@ class Arm:
                     pbar.update((k1 - k0) * self.dt)
         assert row == rows, (row, rows)
         return Result(**out, dof_names=list(self.dof_names), element_names=list(self.element_names),
-                      integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model_name)
+                      integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model_name,
+                      model_hash=self.model.source_hash)
 
     # ------------------------------------------------------------------ outputs
     def outputs(self) -> dict:

@@ -125,6 +125,23 @@ class Model:
         m = cls._of(d, Path(path).resolve(), res.library)
         return m
 
+    @classmethod
+    def from_cache(cls, name: str, source_hash: str) -> "Model | None":
+        """The registered model of that name and hash, else the one already built into the cache from
+        such a model file (loaded and registered), else None. Builds nothing and reads no model file:
+        how a saved Result reopens a model built on demand in an earlier session."""
+        d = _core.find_model(name)
+        if d is not None:
+            return cls._of(d) if d.source_hash == source_hash else None
+        from .model_build import cached_library
+        lib = cached_library(name, source_hash)
+        if lib is None:
+            return None
+        d = _core.load_model_library(str(lib))
+        _register_elsewhere(lib)
+        meta = json.loads((lib.parent / "model.json").read_text())
+        return cls._of(d, Path(meta["model_file"]) if Path(meta["model_file"]).is_file() else None, lib)
+
     def __setattr__(self, name, value):
         raise AttributeError(f"armrt.Model is immutable (set {name!r} on an Arm: strength, max_activation, gravity)")
 

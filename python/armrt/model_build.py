@@ -164,6 +164,27 @@ def cache_key(source_hash: str, cfg: dict, compiler: list[str], gen: tuple[str, 
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()
 
 
+def cache_entry(source_hash: str, cfg: dict | None = None, gen: tuple[str, Path] | None = None) -> Path:
+    """The cache folder of the model file with that SHA-256 for this engine, generator and compiler
+    configuration (the compiler as configured, not looked up: a cached library loads without any)."""
+    cfg = cfg or build_config()
+    gen = gen or generator()
+    configured = shlex.split(os.environ["CXX"]) if os.environ.get("CXX") else [cfg.get("cxx") or "c++"]
+    return cache_dir() / "models" / cache_key(source_hash, cfg, configured, gen)[:24]
+
+
+def cached_library(name: str, source_hash: str) -> Path | None:
+    """The library already built for the model file of that name and SHA-256 with this configuration,
+    or None. Used to reopen a result's model without its file; builds nothing."""
+    entry = cache_entry(source_hash)
+    try:
+        meta = json.loads((entry / "model.json").read_text())
+    except (OSError, ValueError):
+        return None
+    ok = meta.get("name") == name and meta.get("source_hash") == source_hash
+    return entry / LIBRARY_NAME if ok and (entry / LIBRARY_NAME).is_file() else None
+
+
 # ------------------------------------------------------------------------------------ validation
 _LISTS = {"elements": "element", "dofs": "DOF", "muscles": "muscle", "bodies": "body"}
 
@@ -243,10 +264,7 @@ def build(path, force: bool = False, jobs: int | None = None) -> BuildResult:
     source_hash = hashlib.sha256(data).hexdigest()
     cfg = build_config()
     gen = generator()
-    # The compiler as configured (not looked up): a cached library loads without any compiler.
-    configured = shlex.split(os.environ["CXX"]) if os.environ.get("CXX") else [cfg.get("cxx") or "c++"]
-    key = cache_key(source_hash, cfg, configured, gen)
-    entry = cache_dir() / "models" / key[:24]
+    entry = cache_entry(source_hash, cfg, gen)
     library, meta_path, log_path = entry / LIBRARY_NAME, entry / "model.json", entry / "build.log"
 
     def cached() -> BuildResult | None:
