@@ -72,8 +72,9 @@ class Data:
     def __init__(self, model="das2"):
         from .arm import DEFAULT_INTEGRATOR
         from .model import Model
-        self._attach(Model(model), _core.Simulator(Model(model)._def, DEFAULT_INTEGRATOR, 1e-3,
-                                                   _core.default_substeps(DEFAULT_INTEGRATOR, 1e-3)))
+        model = Model(model)
+        self._attach(model, _core.Simulator(model._def, DEFAULT_INTEGRATOR, 1e-3,
+                                            _core.default_substeps(DEFAULT_INTEGRATOR, 1e-3)))
 
     @classmethod
     def _wrap(cls, model, sim) -> "Data":
