@@ -438,3 +438,15 @@ def test_das2_json_itself_built_on_demand_equals_the_built_in_das2(cache):
         ref, got = run("das2", integrator, 0.3), run(m, integrator, 0.3)
         for k in ("q", "qdot", "lce", "activation", "muscle_force"):
             np.testing.assert_array_equal(getattr(ref, k), getattr(got, k), err_msg=f"{integrator} {k}")
+
+
+def test_two_processes_building_one_model_build_it_once(cache):
+    path = ROOT / "tests" / "data" / "pendulum2.json"
+    env = {**os.environ, "ARMRT_CACHE_DIR": str(cache)}
+    cmd = [sys.executable, "-m", "armrt.cli", "model", "build", str(path)]
+    procs = [subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env) for _ in range(2)]
+    outs = [p.communicate(timeout=300) for p in procs]
+    assert [p.returncode for p in procs] == [0, 0], outs
+    said = sorted("found in the cache" in out for out, _ in outs)
+    assert said == [False, True], outs  # one built it, the other waited for the lock and found it
+    assert len(list(cache.glob("models/*/libarmrt_model.so"))) == 1
