@@ -294,6 +294,9 @@ def test_model_built_on_demand_runs_like_the_built_in_one(tmp_path, cache, capsy
     assert main(["model", "build", str(path)]) == 0
     assert "found in the cache" in capsys.readouterr().out
     assert "das2_on_demand" in armrt.models()
+    assert main(["model", "list"]) == 0
+    listed = capsys.readouterr().out
+    assert f"das2_on_demand: {path}" in listed and "for another armrt" not in listed
     assert main(["info", "--model", str(path)]) == 0
     assert capsys.readouterr().out.startswith("model das2_on_demand: 5 DOF, 22 muscles, 102 elements")
 

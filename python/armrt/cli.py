@@ -116,11 +116,25 @@ def cmd_model_build(args) -> int:
 
 
 def cmd_model_list(args) -> int:
+    import json
     from .model import Model, models
-    from .model_build import cache_dir
+    from .model_build import cache_dir, cache_entry
     for name in models():
         print(repr(Model(name)))
-    print(f"models built on demand are cached in {cache_dir() / 'models'}")
+    folder = cache_dir() / "models"
+    built = []
+    for meta_path in sorted(folder.glob("*/model.json")):
+        try:
+            meta = json.loads(meta_path.read_text())
+            # An entry of another armrt, generator or compiler configuration is never used by this one.
+            stale = cache_entry(meta["source_hash"]) != meta_path.parent
+            built.append(f"  {meta['name']}: {meta['model_file']} (sha256 {meta['source_hash'][:12]}..., built "
+                         f"{meta['built']} in {meta['seconds']} s{'; for another armrt, generator or compiler: unused' if stale else ''})")
+        except (OSError, ValueError, KeyError):
+            continue
+    print(f"built on demand, in {folder}:" + ("" if built else " none"))
+    if built:
+        print("\n".join(built))
     return 0
 
 
@@ -183,7 +197,8 @@ def build_parser() -> argparse.ArgumentParser:
     m.add_argument("file", metavar="FILE.json", help="model file (docs/model_schema.md)")
     m.add_argument("--force", action="store_true", help="rebuild even if the cache has it")
     m.set_defaults(func=cmd_model_build)
-    m = msub.add_parser("list", help="the registered models and the cache folder", formatter_class=_formatter)
+    m = msub.add_parser("list", help="the registered models and the models built into the cache",
+                        formatter_class=_formatter)
     m.set_defaults(func=cmd_model_list)
 
     p = sub.add_parser("experiments", help="the paper's experiments: figures and tables", formatter_class=_formatter)
