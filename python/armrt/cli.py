@@ -128,8 +128,9 @@ def cmd_model_list(args) -> int:
             meta = json.loads(meta_path.read_text())
             # An entry of another armrt, generator or compiler configuration is never used by this one.
             stale = cache_entry(meta["source_hash"]) != meta_path.parent
+            note = "; for another armrt, generator or compiler: unused" if stale else ""
             built.append(f"  {meta['name']}: {meta['model_file']} (sha256 {meta['source_hash'][:12]}..., built "
-                         f"{meta['built']} in {meta['seconds']} s{'; for another armrt, generator or compiler: unused' if stale else ''})")
+                         f"{meta['built']} in {meta['seconds']} s{note})")
         except (OSError, ValueError, KeyError):
             continue
     print(f"built on demand, in {folder}:" + ("" if built else " none"))
