@@ -83,7 +83,10 @@ def test_model_names_groups_parameters_provenance():
     assert list(m.dof_names) == arm.dof_names and list(m.element_names) == arm.element_names
     assert list(m.muscle_names) == arm.muscle_names and list(m.group_names) == arm.group_names
     assert sorted(m.groups["elbow_flexors"]) == sorted(arm.indices("elbow_flexors"))
-    assert m.muscles["bicb"] == tuple(arm.indices("bicb"))
+    assert m.muscles["bicb"] == tuple(arm.indices("bicb")) == m.indices("bicb")
+    assert m.indices("delt_scap_1") == (m.element_names.index("deltscap1"),) and m.dof_index("EL_x") == 3
+    with pytest.raises(KeyError, match="unknown element, muscle or group name 'bicp' .did you mean"):
+        m.indices("bicp")
     assert m.parameters["fmax"].shape == (102,) and m.parameters["fmax"][0] == arm.info["elements"][0]["fmax"]
     assert m.dof_ranges.shape == (5, 2) and np.all(m.dof_ranges[:, 0] < m.dof_ranges[:, 1])
     p = m.provenance

@@ -317,6 +317,18 @@ class Model:
         """The engine's description of the model (what Arm.info holds): a fresh dict."""
         return _core.model_info(self._def)
 
+    # ------------------------------------------------------------------ names (the C++ name service)
+    def indices(self, name: str) -> tuple[int, ...]:
+        """Element indices of an element, muscle or group name, or an OpenSim force or muscle name
+        (delt_scap_1, delt_scap); KeyError with close matches otherwise."""
+        if not isinstance(name, str):
+            raise KeyError(f"element, muscle or group names must be strings, got {name!r}")
+        return tuple(_core.find_elements(self.name, name))
+
+    def dof_index(self, name: str) -> int:
+        """Index of a DOF by armrt name (GHy) or OpenSim coordinate name (GH_y); KeyError with close matches."""
+        return _core.find_dof(self.name, str(name))
+
     # ------------------------------------------------------------------ functions of a pose
     def _q(self, q, what: str = "q") -> np.ndarray:
         from .arm import real_array
