@@ -191,8 +191,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("-o", "--out", metavar="FILE.npz", help="save the result (.npz)")
     p.set_defaults(func=cmd_simulate)
 
-    p = sub.add_parser("model", help="models built on demand: build FILE, list", formatter_class=_formatter)
-    msub = p.add_subparsers(dest="model_command", required=True, metavar="ACTION", help="build or list")
+    p = sub.add_parser("model", help="model files: import a DAS-format .mat, build FILE on demand, list",
+                       formatter_class=_formatter)
+    msub = p.add_subparsers(dest="model_command", required=True, metavar="MODEL_COMMAND",
+                            help="import: a DAS-format .mat to a model file; build: compile a model file into "
+                                 "the cache; list: registered and cached models")
     m = msub.add_parser("build", formatter_class=_formatter,
                         help="generate and compile a model file into the user cache (as armrt.Model.load does)")
     m.add_argument("file", metavar="FILE.json", help="model file (docs/model_schema.md)")
@@ -212,7 +215,7 @@ def build_parser() -> argparse.ArgumentParser:
     from .view import add_cli
     add_cli(sub, _formatter)  # view, animate, export (viser is imported only when `view` runs)
     from .model_cli import add_cli as add_model_cli
-    add_model_cli(sub, _formatter)  # model import (codegen from the source checkout)
+    add_model_cli(sub, _formatter, msub)  # model import (codegen from the source checkout), beside build and list
     return ap
 
 
