@@ -774,9 +774,26 @@ def model_source(model: dict, ns: str, digest: str) -> str:
     return "\n".join(lines)
 
 
-def generate(model_path, out_dir, verbose=False, command: str | None = None) -> dict:
+def entry_source(ns: str) -> str:
+    """The extern "C" entry point of a model built as a shared library on demand (armrt/model_build.py):
+    the engine dlopens the library, checks the ModelDef layout version and registers the model
+    (cpp/src/registry.cc). Not part of the engine's own build: built-in models are registered by name."""
+    return f"""#include "{ns}.h"
+
+extern "C" __attribute__((visibility("default"))) int armrt_model_abi_version() {{
+  return armrt::kModelDefAbiVersion;
+}}
+
+extern "C" __attribute__((visibility("default"))) const armrt::ModelDef* armrt_model_def() {{
+  return &armrt::generated::{ns}::model_def();
+}}
+"""
+
+
+def generate(model_path, out_dir, verbose=False, command: str | None = None, entry_point=False) -> dict:
     """Write the generated sources for the model file into out_dir; returns {file name: bytes written}.
-    command: the command line the banner names (default: the das2 one, models/NAME -> cpp/generated)."""
+    command: the command line the banner names (default: the das2 one, models/NAME -> cpp/generated).
+    entry_point: also write <name>_entry.cc, the entry point of a model library built on demand."""
     t0 = time.perf_counter()
     model, digest = load_model(model_path)
     ns = model["name"]
@@ -788,6 +805,8 @@ def generate(model_path, out_dir, verbose=False, command: str | None = None) -> 
         f"{ns}_dynamics.cc": banner + "\n" + dyn,
         f"{ns}_paths.cc": banner + "\n" + paths_source(model, ns),
     }
+    if entry_point:
+        files[f"{ns}_entry.cc"] = banner + "\n" + entry_source(ns)
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     written = {}
@@ -808,13 +827,19 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--model", required=True, help="model file, e.g. models/das2.json")
     ap.add_argument("--out", required=True, help="output directory, e.g. cpp/generated")
+    ap.add_argument("--entry-point", action="store_true",
+                    help="also write <name>_entry.cc, the extern \"C\" entry point of a model library "
+                         "built on demand (armrt model build)")
     args = ap.parse_args(argv)
     try:
         # The banner names the standard command for the project's models (whatever paths were typed, so
-        # regeneration stays byte-identical), and the command as typed for any other model file.
+        # regeneration stays byte-identical), and the command as typed for any other model file or an
+        # on-demand build (--entry-point).
         in_models = Path(args.model).resolve().parent == Path(__file__).resolve().parents[1] / "models"
+        command = f"python -m codegen.generate --model {args.model} --out {args.out}"
         generate(args.model, args.out, verbose=True,
-                 command=None if in_models else f"python -m codegen.generate --model {args.model} --out {args.out}")
+                 command=None if in_models and not args.entry_point else
+                 command + (" --entry-point" if args.entry_point else ""), entry_point=args.entry_point)
     except ModelFileError as exc:
         print(f"codegen.generate: {exc}", file=sys.stderr)
         return 2

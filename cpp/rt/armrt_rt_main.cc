@@ -78,7 +78,12 @@ int main(int argc, char** argv) {
                                                  "(armrt::parse_integrator; not cvode)")->capture_default_str();
   app.add_option("--dt", cfg.dt, "largest integration step, s (<= 1/rate); each cycle takes ceil(1/rate / dt) substeps "
                                   "(default: ros2 0.001, rk4 0.00017, euler 0.0001)");
-  app.add_option("--model", cfg.model, "compiled-in model")->capture_default_str();
+  std::vector<std::string> model_libraries;
+  app.add_option("--model", cfg.model, "registered model: das2 (built in) or one loaded with --model-library")
+      ->capture_default_str();
+  app.add_option("--model-library", model_libraries, "load a model built on demand (the library `armrt model build` "
+                                                     "prints; repeatable); `armrt-rt --model FILE.json` does both")
+      ->take_all();
   app.add_option("--q0", cfg.q0, "initial joint angles, rad, one per DOF of the model in its order, comma-separated "
                                   "(das2: GHy,GHz,GHyy,ELx,PSy; default: rest posture)")
       ->delimiter(',')->expected(1, armrt::kMaxDofs);
@@ -116,6 +121,7 @@ int main(int argc, char** argv) {
     cfg.lock_memory = !no_mlock;
     if (cfg.require_rt && !cfg.realtime) throw std::invalid_argument("--require-rt and --no-rt contradict each other");
     if (!key_file.empty()) cfg.key = armrt::rt::read_key_file(key_file);
+    for (const auto& lib : model_libraries) armrt::load_model_library(lib);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help
     std::fprintf(stderr, "armrt-rt: %s (armrt-rt --help)\n", e.what());

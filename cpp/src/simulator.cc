@@ -8,21 +8,8 @@
 #include <stdexcept>
 
 #include "armrt/clock.h"
-#include "das2.h"
-#include "participant_A.h"
 
 namespace armrt {
-
-// Built-in models. participant_A: participant A's elbow-forearm model (ELx, PSy; models/participant_A.json);
-// its injured, paralysed and FES variants share its geometry and are applied as profiles
-// (Arm.apply_profile), so they need no code of their own.
-const ModelDef* find_model(const std::string& name) {
-  if (name == "das2") return &generated::das2::model_def();
-  if (name == "participant_A") return &generated::participant_A::model_def();
-  return nullptr;
-}
-
-std::string model_names() { return "das2, participant_A"; }
 
 Integrator parse_integrator(const std::string& name) {
   if (name == "euler") return Integrator::kEuler;

@@ -5,11 +5,15 @@ integrated in C++; see armrt.Arm.
 """
 from .arm import Arm, Result, SimulationError, StepSizeWarning, deg, rad
 from .batch import ArmBatch
+from .data import Data, State
+from .model import Model, models
+from .model_build import CompilerNotFoundError, ModelBuildError, ModelFileError
 from .sweeps import sweep
 
-__all__ = ["Arm", "Result", "SimulationError", "deg", "rad", "ArmBatch", "sweep", "RealtimeSession", "UdpClient"]
+__all__ = ["Arm", "Result", "SimulationError", "deg", "rad", "ArmBatch", "sweep", "Model", "Data", "State",
+           "models", "ModelFileError", "ModelBuildError", "CompilerNotFoundError", "RealtimeSession", "UdpClient"]
 try:  # the packet layout comes from armrt._rt: without that extension the rest of armrt still works
     from .realtime import RealtimeSession, UdpClient
 except ImportError:  # pragma: no cover (an incomplete build: PYTHONPATH=python with only _core copied)
-    __all__ = __all__[:7]
+    __all__ = __all__[:-2]
 __version__ = "0.1.0"

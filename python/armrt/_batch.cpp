@@ -29,7 +29,7 @@ py::array arm_view(Batch& b, const double* field_of_arm0, py::ssize_t width, py:
 
 const ModelDef& require_model(const std::string& name) {
   const ModelDef* def = find_model(name);
-  if (!def) throw py::value_error("unknown model '" + name + "' (compiled-in models: " + model_names() + ")");
+  if (!def) throw py::value_error("unknown model '" + name + "' (registered models: " + model_names() + ")");
   return *def;
 }
 
@@ -54,6 +54,9 @@ std::vector<int> arm_indices(Batch& b, const IndexArray& idx) {
 PYBIND11_MODULE(_batch, mod) {
   mod.doc() = "armrt batch bindings (use armrt.ArmBatch)";
   mod.def("default_threads", &batch_default_threads);
+  // This module links its own copy of the engine, so its own model registry: armrt.model registers a
+  // model library built on demand here too (the same dlopen handle, the same ModelDef).
+  mod.def("load_model_library", [](const std::string& path) { load_model_library(path); }, py::arg("path"));
 
   py::class_<Batch>(mod, "Batch")
       .def(py::init([](const std::string& model, int n, const std::string& integrator, double dt, int substeps) {

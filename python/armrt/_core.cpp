@@ -45,7 +45,7 @@ void raise_if_failed(const Simulator& s) {
 
 const ModelDef& require_model(const std::string& name) {
   const ModelDef* def = find_model(name);
-  if (!def) throw py::value_error("unknown model '" + name + "' (compiled-in models: " + model_names() + ")");
+  if (!def) throw py::value_error("unknown model '" + name + "' (registered models: " + model_names() + ")");
   return *def;
 }
 
@@ -125,11 +125,15 @@ class InterruptCheck {
 
 }  // namespace
 
+void bind_model(py::module_& mod);  // _core_model.cpp
+
 PYBIND11_MODULE(_core, mod) {
   mod.doc() = "armrt engine bindings (use armrt.Arm)";
   mod.attr("MAX_DOFS") = kMaxDofs;
   mod.attr("MAX_ELEMENTS") = kMaxElements;
+  bind_model(mod);
   mod.def("model_info", [](const std::string& name) { return model_info(require_model(name)); });
+  mod.def("model_info", [](const ModelDef& def) { return model_info(def); });
   mod.def("default_max_step", [](const std::string& integrator) { return default_max_step(parse_integrator(integrator)); },
           "Largest integration step (s) the integrator takes by default inside a control step (inf: CVODE).");
   mod.def("default_substeps", [](const std::string& integrator, double dt) { return default_substeps(parse_integrator(integrator), dt); },
@@ -162,6 +166,10 @@ PYBIND11_MODULE(_core, mod) {
   py::class_<Simulator>(mod, "Simulator")
       .def(py::init([](const std::string& model, const std::string& integrator, double dt, int substeps) {
              return std::make_unique<Simulator>(require_model(model), parse_integrator(integrator), dt, substeps);
+           }),
+           py::arg("model"), py::arg("integrator"), py::arg("dt"), py::arg("substeps") = 1)
+      .def(py::init([](const ModelDef& model, const std::string& integrator, double dt, int substeps) {
+             return std::make_unique<Simulator>(model, parse_integrator(integrator), dt, substeps);
            }),
            py::arg("model"), py::arg("integrator"), py::arg("dt"), py::arg("substeps") = 1)
       .def_property_readonly("substeps", [](const Simulator& s) { return s.substeps; })

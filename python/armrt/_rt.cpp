@@ -93,6 +93,8 @@ py::dict stats_dict(const RtLoop& loop) {
 
 PYBIND11_MODULE(_rt, m) {
   m.doc() = "armrt real-time loop (C++ thread, SCHED_FIFO when permitted) with UDP I/O";
+  // Its own copy of the engine's model registry (see _batch.cpp): armrt.model registers on-demand models here too.
+  m.def("load_model_library", [](const std::string& path) { armrt::load_model_library(path); }, py::arg("path"));
   // The packet layout, defined once in cpp/rt/packet.h; armrt.realtime builds its codec from it.
   m.attr("MAGIC") = py::bytes(reinterpret_cast<const char*>(kMagic), 4);
   m.attr("VERSION") = static_cast<int>(kVersion);

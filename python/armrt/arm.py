@@ -1,7 +1,9 @@
 """The Python API: `Arm` drives one simulated arm; arrays in, arrays out, SI units and radians."""
 from __future__ import annotations
 
+import copy
 import numbers
+import re
 import operator
 import threading
 import warnings
@@ -105,8 +107,8 @@ def rad(x):
 
 
 def known_model(name) -> str:
-    """`name` if it is a model compiled into this build; ValueError otherwise (so a name read from a
-    file can never become a path)."""
+    """`name` if it is a registered model (built in, or loaded in this process); ValueError otherwise
+    (so a name read from a file can never become a path)."""
     if not isinstance(name, str):
         raise ValueError(f"model must be a model name, got {type(name).__name__}")
     try:
@@ -116,9 +118,9 @@ def known_model(name) -> str:
     return name
 
 
-def _row_bytes(n_elements: int) -> int:
-    """Bytes of one recorded row of a Result: 5 per-element channels, 24 other values, float64."""
-    return 8 * (5 * n_elements + 24)
+def _row_bytes(n_elements: int, n_dofs: int = 5) -> int:
+    """Bytes of one recorded row of a Result: 5 per-element channels, q and qdot, 14 other values, float64."""
+    return 8 * (5 * n_elements + 2 * n_dofs + 14)
 
 
 def _recorded_rows(n_steps: int, record_every: int) -> int:
@@ -141,8 +143,8 @@ class Result:
     repr() is one line; to_dataframe() gives a pandas DataFrame (pandas optional), plot() a figure."""
 
     time: np.ndarray            # (T,) s
-    q: np.ndarray               # (T, 5) rad
-    qdot: np.ndarray            # (T, 5) rad/s
+    q: np.ndarray               # (T, ndof) rad
+    qdot: np.ndarray            # (T, ndof) rad/s
     lce: np.ndarray             # (T, n) m, contractile-element lengths
     activation: np.ndarray      # (T, n)
     excitation: np.ndarray      # (T, n)
@@ -160,6 +162,7 @@ class Result:
     dt: float = 0.0             # control step (s)
     substeps: int = 1           # integration steps per control step
     model: str = ""
+    model_hash: str = ""        # SHA-256 of the model file (reopens a model built on demand from the cache)
 
     ARRAYS = ("time", "q", "qdot", "lce", "activation", "excitation", "muscle_force", "muscle_length",
               "gh_force", "gh_stab", "gh_angles", "hand_position", "thorax_humerus", "tet_ns")
@@ -263,13 +266,14 @@ class Result:
         """Saves to a compressed .npz (load with Result.load)."""
         np.savez_compressed(path, **{k: getattr(self, k) for k in self.ARRAYS},
                             dof_names=np.array(self.dof_names), element_names=np.array(self.element_names),
-                            integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model)
+                            integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model,
+                            model_hash=self.model_hash)
 
     @classmethod
     def load(cls, path) -> "Result":
         """A Result saved with save(). ValueError (one line, naming the file) for a file that is not
         a readable .npz, lacks the result arrays, has arrays of the wrong shape, or names a model that
-        is not compiled into this build; FileNotFoundError if absent."""
+        is not registered (load its model file first: armrt.Model.load); FileNotFoundError if absent."""
         import zipfile
         path = str(path)
         try:
@@ -290,14 +294,24 @@ class Result:
                             element_names=[str(s) for s in z["element_names"]],
                             integrator=str(z["integrator"]) if "integrator" in z.files else "",
                             dt=float(z["dt"]) if "dt" in z.files else 0.0,
-                            substeps=int(z["substeps"]) if "substeps" in z.files else 1, model=str(z["model"]))
+                            substeps=int(z["substeps"]) if "substeps" in z.files else 1, model=str(z["model"]),
+                            model_hash=str(z["model_hash"]) if "model_hash" in z.files else "")
             except (OSError, ValueError, TypeError, zipfile.BadZipFile, EOFError) as exc:
                 raise ValueError(f"{path}: corrupt armrt result: {exc}") from None
         try:
             known_model(meta["model"])
         except ValueError:
+            # A model built on demand in an earlier session: reopened from the cache (never rebuilt
+            # from a path: a result file names a model, it does not point at code to compile).
+            from .model import Model
+            reopened = (Model.from_cache(meta["model"], meta["model_hash"])
+                        if re.fullmatch(r"[0-9a-f]{64}", meta["model_hash"]) else None)
+        else:
+            reopened = True
+        if reopened is None:
             raise ValueError(f"{path}: the result's model field {meta['model'][:80]!r} is not a known model "
-                             f"(compiled in: {_core.model_names()})") from None
+                             f"(registered: {_core.model_names()}; a model built on demand: armrt.Model.load(its file) "
+                             f"first)") from None
         T = fields["time"].shape[0] if fields["time"].ndim == 1 else -1
         bad = [k for k, v in fields.items() if v.ndim == 0 or v.shape[0] != T]
         if T < 0 or bad:
@@ -306,16 +320,20 @@ class Result:
 
 
 class Arm:
-    """One simulated arm: the paper's fixed-scapula, 5-DOF, 102-element model.
+    """One simulated arm of a model (default das2: the paper's fixed-scapula, 5-DOF, 102-element model).
 
     arm = Arm(model="das2", integrator="ros2", dt=1e-3)
     arm.set_excitation({"rotator_cuff": 0.05, "bicb": 0.3})
     result = arm.simulate(lambda t: {"elbow_flexors": 0.2 if t > 1 else 0.0}, duration=3.0)
     """
 
-    def __init__(self, model: str = "das2", integrator: str = DEFAULT_INTEGRATOR, dt: float = 1e-3,
+    def __init__(self, model="das2", integrator: str = DEFAULT_INTEGRATOR, dt: float = 1e-3,
                  substeps: int | None = None):
-        """dt is the control step (s: inputs held, outputs reported, TET measured per dt); fixed-step
+        """model: a registered model's name (armrt.models(); "das2" is built in), a model file path
+        (built on demand and cached, see armrt.Model.load) or an armrt.Model; `arm.model` is the
+        armrt.Model, `arm.data` the armrt.Data this arm steps.
+
+        dt is the control step (s: inputs held, outputs reported, TET measured per dt); fixed-step
         integrators take `substeps` steps of dt / substeps inside it. Default integrator: "ros2", the
         linearly implicit ROS2 with one step per 1 ms control step, within 0.1 deg of CVODE on the
         paper's tasks (0.013 deg at worst, docs/engine.md). Default substeps: enough for a step of at most
@@ -345,10 +363,14 @@ class Arm:
             warnings.warn(StepSizeWarning(f"integration step {step * 1e3:g} ms is above the {DEFAULT_MAX_STEP[integrator] * 1e3:g} ms "
                           f"validated for {integrator!r} against CVODE (docs/engine.md); expect errors of degrees or "
                           f"divergence; leave substeps=None for the validated step"), stacklevel=2)
-        self._sim = _core.Simulator(model, integrator, dt, substeps)
+        from .data import Data
+        from .model import Model
+        self.model = Model(model)  # a name, a model file (built on demand) or a Model
+        self._sim = _core.Simulator(self.model._def, integrator, dt, substeps)
+        self.data = Data._wrap(self.model, self._sim)
         # One thread at a time: the engine's Data is a single workspace (see _exclusive).
         self._lock = threading.RLock()
-        info = _core.model_info(model)
+        info = self.model.info
         self.model_name = info["name"]
         self.info = info
         self.dof_names = [d["name"] for d in info["dofs"]]
@@ -362,13 +384,11 @@ class Arm:
         self._index.update({m: list(ix) for m, ix in info["muscles"]})
         self._index.update({g: list(ix) for g, ix in info["groups"]})
         self.n_elements = len(self.element_names)
-        n = self.n_elements
-        state = self._sim.state
         self.n_dofs = len(self.dof_names)
-        # The state layout is the engine's (data.h), read from it: {block: (offset, size)}.
-        self._views = {k: state[o:o + size] for k, (o, size) in info["state_layout"].items()}
-        for v in self._views.values():
-            v.flags.writeable = False
+        # The state views are Data's, from the engine's state layout (data.h via model_info).
+        self._views = self.data._views
+        # What Arm itself sets; anything else on an arm is the user's, carried by copies and pickles.
+        self._base_attributes = frozenset(self.__dict__) | {"_base_attributes"}
 
     @contextmanager
     def _exclusive(self):
@@ -556,7 +576,7 @@ class Arm:
         return self._sim.substeps
 
     def reset(self, q=None, qdot=None, activation=None, time: float = 0.0) -> None:
-        """Back to a state: q (5, rad; default the rest posture), qdot (default 0), activations (n,
+        """Back to a state: q (ndof, rad; default the rest posture), qdot (default 0), activations (n,
         default 0, or a dict of names; capped at max_activation with a RuntimeWarning); contractile
         elements start in static equilibrium.
         time: finite, s. Raises ValueError for NaN/infinite values, TypeError for non-numbers."""
@@ -612,6 +632,67 @@ class Arm:
             raise ValueError(f"{what} contains NaN or infinite values")
         return a
 
+    # ------------------------------------------------------------------ snapshots
+    def get_state(self):
+        """An armrt.State: time, q, qdot, lce (fibre lengths), activations, the held excitation and the
+        hand force and moment, as copies. set_state(s) later and the same steps give bit for bit the
+        same trajectory (fixed-step integrators; CVODE restarts its history at a restored state)."""
+        with self._exclusive():
+            return self.data.get_state()
+
+    def set_state(self, state) -> None:
+        """Restores an armrt.State from get_state() of an arm of the same model (ValueError otherwise).
+        The excitation is capped at this arm's max_activation; a divergence error is cleared. Strength,
+        max_activation, gravity and the integrator are the arm's own, not part of the State."""
+        with self._exclusive():
+            self.data.set_state(state)
+            self._sim.excitation[:] = np.minimum(self._sim.excitation, self._sim.get_max_activation())
+
+    def _snapshot(self) -> tuple[dict, tuple]:
+        """(settings, raw state): what a copy or an unpickled arm is rebuilt from (call under _exclusive)."""
+        settings = dict(integrator=self.integrator, dt=self.dt, substeps=self.substeps,
+                        strength=self._sim.get_strength(), max_activation=self._sim.get_max_activation(),
+                        gravity=np.array(self._sim.gravity), max_joint_speed=self._sim.max_joint_speed)
+        raw = (np.array(self._sim.state), self._sim.excitation.copy(), self._sim.hand_force.copy(),
+               self._sim.hand_moment.copy(), self._sim.time)
+        return settings, raw
+
+    @classmethod
+    def _rebuild(cls, model, settings: dict, raw: tuple) -> "Arm":
+        new = cls.__new__(cls)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", StepSizeWarning)  # warned when the original was made
+            Arm.__init__(new, model, settings["integrator"], settings["dt"], settings["substeps"])
+        new._sim.set_strength_and_max_activation(settings["strength"], settings["max_activation"])
+        new._sim.gravity = np.asarray(settings["gravity"], dtype=float)
+        new._sim.max_joint_speed = settings["max_joint_speed"]
+        new.data._load(*raw)
+        return new
+
+    def __deepcopy__(self, memo):
+        """An independent Arm: same model, integrator, dt, substeps, strength, max_activation, gravity,
+        joint-speed bound and state (a diverged arm's state is copied as is, its error cleared); its
+        own engine, lock and TET statistics. Attributes added to the arm are deep-copied."""
+        with self._exclusive():
+            new = self._rebuild(self.model, *self._snapshot())
+            memo[id(self)] = new
+            for k, v in self.__dict__.items():
+                if k not in self._base_attributes:
+                    new.__dict__[k] = copy.deepcopy(v, memo)
+            return new
+
+    def __copy__(self):
+        """Same as copy.deepcopy: two Arms never share an engine."""
+        return self.__deepcopy__({})
+
+    def __reduce__(self):
+        """Pickling (multiprocessing, Ray): the model (its name, or its model file, built or found in the
+        cache where it is unpickled), the settings and the state of deepcopy; added attributes too."""
+        with self._exclusive():
+            settings, raw = self._snapshot()
+        extras = {k: v for k, v in self.__dict__.items() if k not in self._base_attributes}
+        return (_unpickle_arm, (type(self), self.model, settings, raw, extras))
+
     # ------------------------------------------------------------------ stepping
     def step(self, n: int = 1, progress: bool | None = None) -> None:
         """Advances n control steps (an integer >= 0) with the current excitation and load (loop in
@@ -637,7 +718,7 @@ class Arm:
         """Memory (bytes) of the Result simulate(duration, record_every=...) returns."""
         n_steps = self._n_steps(real_scalar(duration, "duration"))
         rows = _recorded_rows(n_steps, count(record_every, "record_every", minimum=1))
-        return rows * _row_bytes(self.n_elements)
+        return rows * _row_bytes(self.n_elements, self.n_dofs)
 
     def _n_steps(self, duration: float) -> int:
         if not (np.isfinite(duration) and duration >= 0):
@@ -667,7 +748,7 @@ class Arm:
         record_every = count(record_every, "record_every", minimum=1)
         rows = _recorded_rows(n_steps, record_every)
         limit = RESULT_MEMORY_LIMIT if max_bytes is None else real_scalar(max_bytes, "max_bytes")
-        need = rows * _row_bytes(self.n_elements)
+        need = rows * _row_bytes(self.n_elements, self.n_dofs)
         if need > limit:
             fit = int(np.ceil(need / limit)) * record_every
             raise MemoryError(
@@ -735,12 +816,13 @@ class Arm:
                     pbar.update((k1 - k0) * self.dt)
         assert row == rows, (row, rows)
         return Result(**out, dof_names=list(self.dof_names), element_names=list(self.element_names),
-                      integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model_name)
+                      integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model_name,
+                      model_hash=self.model.source_hash)
 
     # ------------------------------------------------------------------ outputs
     def outputs(self) -> dict:
         """Outputs at the current state: qddot, muscle_force (N), muscle_length (m), moment_arm
-        (n x 5, m), fibre_velocity, torques, hand_position (thorax frame), gh_force (scapula frame),
+        (n x ndof, m), fibre_velocity, torques, hand_position (thorax frame), gh_force (scapula frame),
         gh_theta, gh_phi, gh_stab."""
         with self._exclusive():
             self._sim.evaluate_outputs()
@@ -761,7 +843,7 @@ class Arm:
 
     # ------------------------------------------------------------------ model at any pose
     def moment_arms(self, q) -> np.ndarray:
-        """(n, 5) moment arms (m) at pose q: -dL/dq of the path polynomials."""
+        """(n, ndof) moment arms (m) at pose q: -dL/dq of the path polynomials."""
         return self._sim.muscle_paths(self._dof_vector(q, "q"))[1]
 
     def muscle_lengths(self, q) -> np.ndarray:
@@ -785,3 +867,9 @@ class Arm:
         if f.shape != (3,) or not np.all(np.isfinite(f)):
             raise ValueError(f"force must be 3 finite values, got {force!r}")
         return self._sim.gh_stability(f)
+
+
+def _unpickle_arm(cls, model, settings: dict, raw: tuple, extras: dict) -> Arm:
+    arm = cls._rebuild(model, settings, raw)
+    arm.__dict__.update(extras)
+    return arm

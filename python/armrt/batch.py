@@ -60,9 +60,10 @@ class ArmBatch:
     from another thread meanwhile would race with the engine (as with Arm).
     """
 
-    def __init__(self, n: int, model: str = "das2", integrator: str | None = None, dt: float | None = None,
+    def __init__(self, n: int, model="das2", integrator: str | None = None, dt: float | None = None,
                  substeps: int | None = None, threads: int | None = None):
-        """n: number of arms (>= 1). integrator, dt (control step, s) and substeps: as for `Arm`
+        """n: number of arms (>= 1). model: a name, a model file or an armrt.Model, as for `Arm`.
+        integrator, dt (control step, s) and substeps: as for `Arm`
         (None: Arm's defaults). threads: OpenMP threads for step() (None: OMP_NUM_THREADS if set,
         else the cores available).
         Raises ValueError for a bad n, integrator, dt, substeps or threads."""
@@ -72,8 +73,10 @@ class ArmBatch:
         # A single Arm resolves the defaults and validates exactly as Arm does, and gives the names.
         self._arm = Arm(model=model, **kw)
         a = self._arm
-        self._raw = _batch.Batch(model, int(n), a.integrator, a.dt, a.substeps)
+        # By name: Arm has registered a model file or Model in the batch extension's registry too.
+        self._raw = _batch.Batch(a.model_name, int(n), a.integrator, a.dt, a.substeps)
         self.n = int(n)
+        self.model = a.model  # armrt.Model
         self.model_name = a.model_name
         self.info = a.info
         self.dof_names, self.element_names = list(a.dof_names), list(a.element_names)

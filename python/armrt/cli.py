@@ -1,4 +1,4 @@
-"""Command line: `armrt info | simulate | experiments | view | animate | export`.
+"""Command line: `armrt info | simulate | model | experiments | view | animate | export`.
 
 Units: radians in the API and in files; a flag takes degrees only when its name says so (`--q-deg`).
 A user mistake (unknown name, missing file, bad value, unsupported format) prints one line
@@ -101,6 +101,44 @@ def cmd_simulate(args) -> int:
     return 0
 
 
+def cmd_model_build(args) -> int:
+    from .model import Model
+    from .model_build import build
+    res = build(args.file, force=args.force)
+    model = Model.load(args.file)  # loads what was just built: the library is usable, not only compiled
+    how = "found in the cache" if res.cached else "built"
+    print(f"model {model.name}: {model.n_dofs} DOF, {model.n_muscles} muscles, {model.n_elements} elements; "
+          f"{how} in {res.seconds:.2f} s")
+    print(f"library {res.library}")
+    if not res.cached:
+        print(f"build log {res.log}")
+    return 0
+
+
+def cmd_model_list(args) -> int:
+    import json
+    from .model import Model, models
+    from .model_build import cache_dir, cache_entry
+    for name in models():
+        print(repr(Model(name)))
+    folder = cache_dir() / "models"
+    built = []
+    for meta_path in sorted(folder.glob("*/model.json")):
+        try:
+            meta = json.loads(meta_path.read_text())
+            # An entry of another armrt, generator or compiler configuration is never used by this one.
+            stale = cache_entry(meta["source_hash"]) != meta_path.parent
+            note = "; for another armrt, generator or compiler: unused" if stale else ""
+            built.append(f"  {meta['name']}: {meta['model_file']} (sha256 {meta['source_hash'][:12]}..., built "
+                         f"{meta['built']} in {meta['seconds']} s{note})")
+        except (OSError, ValueError, KeyError):
+            continue
+    print(f"built on demand, in {folder}:" + ("" if built else " none"))
+    if built:
+        print("\n".join(built))
+    return 0
+
+
 def cmd_experiments(args) -> int:
     if args.model != "das2":
         # The participant experiment (armrt/participant.py): Fig. 1 at full stimulation, four variants.
@@ -126,14 +164,14 @@ def build_parser() -> argparse.ArgumentParser:
     ap.add_argument("--traceback", action="store_true", help="show the Python traceback on errors")
     sub = ap.add_subparsers(dest="command", required=True, metavar="COMMAND")
     p = sub.add_parser("info", help="describe the model: DOFs, ranges, muscles, groups", formatter_class=_formatter)
-    p.add_argument("--model", default="das2", help="compiled-in model name")
+    p.add_argument("--model", default="das2", help="model name, or a model file (.json, built on demand)")
     p.set_defaults(func=cmd_info)
 
     p = sub.add_parser("simulate", formatter_class=_formatter,
                        help="run with constant excitations, e.g. elbow_flexors=0.3 rotator_cuff=0.05")
     p.add_argument("excitation", nargs="*", metavar="NAME=VALUE",
                    help="excitation in [0, 1] of an element, muscle or group (armrt or OpenSim name); others 0")
-    p.add_argument("--model", default="das2", help="compiled-in model name")
+    p.add_argument("--model", default="das2", help="model name, or a model file (.json, built on demand)")
     p.add_argument("--integrator", default=DEFAULT_INTEGRATOR, choices=list(INTEGRATORS),
                    help="integration method (ros2: one linearly implicit step per 1 ms)")
     p.add_argument("--dt", type=float, default=1e-3, help="control step, s")
@@ -153,6 +191,20 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("-o", "--out", metavar="FILE.npz", help="save the result (.npz)")
     p.set_defaults(func=cmd_simulate)
 
+    p = sub.add_parser("model", help="model files: import a DAS-format .mat, build FILE on demand, list",
+                       formatter_class=_formatter)
+    msub = p.add_subparsers(dest="model_command", required=True, metavar="MODEL_COMMAND",
+                            help="import: a DAS-format .mat to a model file; build: compile a model file into "
+                                 "the cache; list: registered and cached models")
+    m = msub.add_parser("build", formatter_class=_formatter,
+                        help="generate and compile a model file into the user cache (as armrt.Model.load does)")
+    m.add_argument("file", metavar="FILE.json", help="model file (docs/model_schema.md)")
+    m.add_argument("--force", action="store_true", help="rebuild even if the cache has it")
+    m.set_defaults(func=cmd_model_build)
+    m = msub.add_parser("list", help="the registered models and the models built into the cache",
+                        formatter_class=_formatter)
+    m.set_defaults(func=cmd_model_list)
+
     p = sub.add_parser("experiments", help="the paper's experiments: figures and tables", formatter_class=_formatter)
     p.add_argument("--out", default="results", help="output folder")
     p.add_argument("--quick", action="store_true", help="shorter runs (for tests)")
@@ -163,14 +215,14 @@ def build_parser() -> argparse.ArgumentParser:
     from .view import add_cli
     add_cli(sub, _formatter)  # view, animate, export (viser is imported only when `view` runs)
     from .model_cli import add_cli as add_model_cli
-    add_model_cli(sub, _formatter)  # model import (codegen from the source checkout)
+    add_model_cli(sub, _formatter, msub)  # model import (codegen from the source checkout), beside build and list
     return ap
 
 
 def main(argv=None) -> int:
     ap = build_parser()
     args = ap.parse_args(argv)
-    prog = f"armrt {args.command}"
+    prog = f"armrt {args.command}" + (f" {args.model_command}" if getattr(args, "model_command", None) else "")
     import warnings
 
     def one_line_warning(message, category, filename, lineno, file=None, line=None):

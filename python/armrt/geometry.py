@@ -39,11 +39,15 @@ SEGMENTS = (("humerus", "gh", "elbow"), ("ulna", "elbow", "ulna_distal"),
 
 
 def find_model_file(model: str) -> Path | None:
-    """The model file models/<model>.json: in $ARMRT_MODEL_DIR, installed beside the package
-    (armrt/models/), or in the source checkout (python/armrt/../../models); None if absent."""
+    """The model file models/<model>.json: the file a model was loaded from (armrt.Model.load), in
+    $ARMRT_MODEL_DIR, installed beside the package (armrt/models/), or in the source checkout
+    (python/armrt/../../models); None if absent."""
     # A model name is a plain identifier: never a path (a result file's `model` field reaches here).
     if not isinstance(model, str) or not model.replace("_", "").isalnum() or not model.isascii():
         raise ValueError(f"model name must be letters, digits and '_', got {str(model)[:80]!r}")
+    from .model import _LOADED
+    if model in _LOADED:  # loaded from a file in this process (armrt.Model.load)
+        return _LOADED[model][0]
     here = Path(__file__).resolve().parent
     dirs = [Path(os.environ["ARMRT_MODEL_DIR"])] if os.environ.get("ARMRT_MODEL_DIR") else []
     dirs += [here / "models", here.parents[1] / "models"]

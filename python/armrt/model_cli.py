@@ -42,10 +42,13 @@ def cmd_model_import(args) -> int:
     return imp.main(argv, prog="armrt model import")
 
 
-def add_cli(sub, formatter) -> None:
-    p = sub.add_parser("model", help="model files: import a DAS-format .mat", formatter_class=formatter)
-    msub = p.add_subparsers(dest="model_command", required=True, metavar="MODEL_COMMAND",
-                            help="import: a DAS-format .mat to a model file")
+def add_cli(sub, formatter, msub=None) -> None:
+    """Adds `armrt model import` to msub, the `armrt model` actions (cli.py also puts build and list
+    there); without msub, creates `armrt model` in sub."""
+    if msub is None:
+        p = sub.add_parser("model", help="model files: import a DAS-format .mat", formatter_class=formatter)
+        msub = p.add_subparsers(dest="model_command", required=True, metavar="MODEL_COMMAND",
+                                help="import: a DAS-format .mat to a model file")
     q = msub.add_parser("import", formatter_class=formatter,
                         help="DAS-format model_struct*.mat -> model file with chosen free DOFs (docs/model_schema.md)")
     q.add_argument("mat", type=Path, help="DAS-format model_struct*.mat")

@@ -489,6 +489,9 @@ class RealtimeSession:
 
     def __init__(self, **config):
         from . import _rt
+        if "model" in config and not isinstance(config["model"], str) or str(config.get("model", "")).endswith(".json"):
+            from .model import Model
+            config["model"] = Model(config["model"]).name  # a Model or a model file: loaded and registered
         if "q0" in config and config["q0"] is not None:
             config["q0"] = [float(x) for x in np.asarray(config["q0"], dtype=float).ravel()]
         elif "q0" in config:
@@ -569,10 +572,34 @@ def runner_path() -> str:
     raise FileNotFoundError("armrt-rt not found: install armrt (pip install .) or build it with CMake (target armrt-rt)")
 
 
+def runner_args(argv: list[str]) -> list[str]:
+    """The runner's arguments: `--model FILE.json` (or --model=FILE.json) becomes the model built on demand
+    (armrt.Model.load, cached) as `--model-library LIB --model NAME`; everything else is passed as is."""
+    out, k = [], 0
+    while k < len(argv):
+        a = argv[k]
+        value = a.split("=", 1)[1] if a.startswith("--model=") else argv[k + 1] if a == "--model" and k + 1 < len(argv) else None
+        if value is not None and (value.endswith(".json") or os.sep in value):
+            from .model_build import build
+            res = build(value)
+            out += ["--model-library", str(res.library), "--model", res.name]
+            k += 1 if a.startswith("--model=") else 2
+            continue
+        out.append(a)
+        k += 1
+    return out
+
+
 def rt_main() -> None:
-    """Console entry point `armrt-rt`: runs the shipped C++ runner with the same arguments."""
+    """Console entry point `armrt-rt`: runs the shipped C++ runner with the same arguments (a model file
+    given to --model is built on demand first)."""
     exe = runner_path()
-    os.execv(exe, [exe, *sys.argv[1:]])
+    try:
+        args = runner_args(sys.argv[1:])
+    except (OSError, ValueError, RuntimeError) as exc:
+        print(f"armrt-rt: {exc}", file=sys.stderr)
+        sys.exit(2)
+    os.execv(exe, [exe, *args])
 
 
 if __name__ == "__main__":

@@ -7,6 +7,11 @@
 
 namespace armrt {
 
+// Layout version of the structs below. A model library built on demand (cpp/src/registry.cc) reports the
+// version it was compiled against and is refused if it differs: bump it whenever a field is added,
+// removed, reordered or changes meaning. It is also part of the on-demand build cache key.
+inline constexpr int kModelDefAbiVersion = 1;
+
 struct ElementParams {
   const char* name;        // DAS3 element name, e.g. "deltscap1"
   const char* muscle;      // parent muscle, e.g. "deltscap"

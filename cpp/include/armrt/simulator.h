@@ -8,13 +8,9 @@
 #include "armrt/data.h"
 #include "armrt/engine.h"
 #include "armrt/model.h"
+#include "armrt/registry.h"
 
 namespace armrt {
-
-// Generated models compiled into this build, by name ("das2"); nullptr if unknown.
-const ModelDef* find_model(const std::string& name);
-// Comma-separated names of the compiled-in models, for error messages.
-std::string model_names();
 
 Integrator parse_integrator(const std::string& name);  // "ros2", "ros2_adaptive", "euler", "rk4", "cvode"; throws std::invalid_argument
 const char* integrator_name(Integrator integrator);

@@ -1,0 +1,119 @@
+// Bindings of the model registry and of a ModelDef's functions at any pose (armrt/model.py wraps them).
+// A ModelDef is static data of the engine or of a model library that is never unloaded, so Python holds
+// plain pointers to it (py::nodelete).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "armrt/model_def.h"
+#include "armrt/registry.h"
+
+namespace py = pybind11;
+using namespace armrt;
+
+namespace {
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using Shape = std::vector<py::ssize_t>;
+
+// Leading (batch) shape of q: () for one pose (ndof,), (k,) for k poses (k, ndof).
+Shape batch_shape(const Array& q, int ndof, const char* what) {
+  if (q.ndim() == 1 && q.shape(0) == ndof) return {};
+  if (q.ndim() == 2 && q.shape(1) == ndof) return {q.shape(0)};
+  std::string got = "(";
+  for (py::ssize_t k = 0; k < q.ndim(); ++k) got += (k ? ", " : "") + std::to_string(q.shape(k));
+  throw py::value_error(std::string(what) + " must have shape (" + std::to_string(ndof) + ",) or (k, " +
+                        std::to_string(ndof) + "), got " + got + (q.ndim() == 1 ? ",)" : ")"));
+}
+
+Shape concat(const Shape& a, Shape b) {
+  Shape s = a;
+  s.insert(s.end(), b.begin(), b.end());
+  return s;
+}
+
+py::ssize_t count_of(const Shape& s) {
+  py::ssize_t n = 1;
+  for (auto v : s) n *= v;
+  return n;
+}
+
+// Applies f(q_k, out_k...) to every pose; outputs have shape batch + tails[i].
+template <class F>
+std::vector<Array> per_pose(const ModelDef& def, const Array& q, const std::vector<Shape>& tails, F f) {
+  const Shape batch = batch_shape(q, def.num_dofs, "q");
+  const py::ssize_t k = count_of(batch);
+  std::vector<Array> out;
+  std::vector<py::ssize_t> stride;
+  for (const Shape& t : tails) {
+    out.emplace_back(concat(batch, t));
+    stride.push_back(count_of(t));
+  }
+  std::vector<double*> ptr(out.size());
+  for (py::ssize_t i = 0; i < k; ++i) {
+    for (size_t j = 0; j < out.size(); ++j) ptr[j] = out[j].mutable_data() + i * stride[j];
+    f(q.data() + i * def.num_dofs, ptr.data());
+  }
+  return out;
+}
+
+}  // namespace
+
+void bind_model(py::module_& mod) {
+  py::class_<ModelDef, std::unique_ptr<ModelDef, py::nodelete>>(mod, "ModelDef",
+      "A generated model's tables and functions (engine side of armrt.Model).")
+      .def_property_readonly("name", [](const ModelDef& d) { return std::string(d.name); })
+      .def_property_readonly("source_hash", [](const ModelDef& d) { return std::string(d.source_hash); })
+      .def_property_readonly("num_dofs", [](const ModelDef& d) { return d.num_dofs; })
+      .def_property_readonly("num_elements", [](const ModelDef& d) { return d.num_elements; })
+      .def_property_readonly("address", [](const ModelDef& d) { return reinterpret_cast<std::uintptr_t>(&d); })
+      // Shapes: q is (ndof,) or (k, ndof); outputs gain the same leading k. Frames: scapula.
+      .def("muscle_paths", [](const ModelDef& d, const Array& q) {
+        const py::ssize_t n = d.num_elements;
+        auto o = per_pose(d, q, {{n}, {n, d.num_dofs}}, [&](const double* qk, double** out) { d.muscle_paths(qk, out[0], out[1]); });
+        return py::make_tuple(o[0], o[1]);
+      }, py::arg("q"))
+      .def("muscle_lengths", [](const ModelDef& d, const Array& q) {
+        return per_pose(d, q, {{d.num_elements}}, [&](const double* qk, double** out) { d.muscle_lengths(qk, out[0]); })[0];
+      }, py::arg("q"))
+      .def("gh_directions", [](const ModelDef& d, const Array& q) {
+        return per_pose(d, q, {{d.num_elements, 3}}, [&](const double* qk, double** out) { d.gh_directions(qk, out[0]); })[0];
+      }, py::arg("q"))
+      .def("mass_matrix", [](const ModelDef& d, const Array& q) {
+        return per_pose(d, q, {{d.num_dofs, d.num_dofs}}, [&](const double* qk, double** out) { d.mass_matrix(qk, out[0]); })[0];
+      }, py::arg("q"))
+      .def("hand_position", [](const ModelDef& d, const Array& q) {
+        return per_pose(d, q, {{3}}, [&](const double* qk, double** out) { d.hand_position(qk, out[0]); })[0];
+      }, py::arg("q"))
+      .def("hand_jacobian", [](const ModelDef& d, const Array& q) {
+        auto o = per_pose(d, q, {{3, d.num_dofs}, {3, d.num_dofs}}, [&](const double* qk, double** out) { d.hand_jacobian(qk, out[0], out[1]); });
+        return py::make_tuple(o[0], o[1]);
+      }, py::arg("q"))
+      .def("body_poses", [](const ModelDef& d, const Array& q) {
+        auto o = per_pose(d, q, {{4, 3, 3}, {4, 3}}, [&](const double* qk, double** out) { d.body_poses(qk, out[0], out[1]); });
+        return py::make_tuple(o[0], o[1]);
+      }, py::arg("q"))
+      .def("bias_force", [](const ModelDef& d, const Array& q, const Array& qd, const Array& g) {
+        if (qd.size() != d.num_dofs || g.size() != 3 || q.ndim() != 1)
+          throw py::value_error("bias_force takes one pose: q and qdot of " + std::to_string(d.num_dofs) + ", gravity of 3");
+        return per_pose(d, q, {{d.num_dofs}}, [&](const double* qk, double** out) { d.bias_force(qk, qd.data(), g.data(), out[0]); })[0];
+      }, py::arg("q"), py::arg("qdot"), py::arg("gravity_scapula"));
+
+  mod.attr("MODEL_ABI_VERSION") = kModelDefAbiVersion;
+  mod.def("find_model", [](const std::string& name) -> const ModelDef* { return find_model(name); },
+          py::return_value_policy::reference, "The registered model of that name, or None.");
+  mod.def("registered_models", []() { return registered_models(); }, py::return_value_policy::reference,
+          "Every registered model (built in first, then in load order).");
+  mod.def("load_model_library", [](const std::string& path) -> const ModelDef* {
+    try {
+      return &load_model_library(path);
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error(e.what());
+    }
+  }, py::arg("path"), py::return_value_policy::reference,
+     "Loads (dlopen) and registers a model library built by `armrt model build`; it is never unloaded.");
+}

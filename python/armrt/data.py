@@ -1,0 +1,200 @@
+"""armrt.Data: the changing part of one simulated arm (like mjData / pinocchio.Data): state, inputs,
+outputs and the integrator's workspace, for one armrt.Model. Several Data (several Arms) share one Model.
+
+    model = armrt.Model("das2")
+    data = armrt.Data(model)            # at the rest posture, time 0, no excitation
+    data.q, data.activation             # read-only views that follow the simulation
+    s = data.get_state()                # armrt.State: a copy of everything a continuation depends on
+    data.set_state(s)
+
+Arm (armrt/arm.py) steps a Data with an integrator; Arm.data is its Data.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+from . import _core
+
+
+@dataclass(frozen=True, eq=False)
+class State:
+    """A snapshot of a simulated arm: everything its continuation depends on. Arrays are read-only copies.
+    Restoring it (Arm.set_state / Data.set_state) and stepping gives bit for bit the trajectory the arm
+    had from that point (fixed-step integrators; CVODE restarts its history at a restored state)."""
+
+    model: str                # model name
+    source_hash: str          # SHA-256 of the model file: a State fits only the same model
+    time: float               # s
+    q: np.ndarray             # (ndof,) rad
+    qdot: np.ndarray          # (ndof,) rad/s
+    lce: np.ndarray           # (n,) m, contractile-element (fibre) lengths
+    activation: np.ndarray    # (n,)
+    excitation: np.ndarray    # (n,) the held neural excitation in [0, 1]
+    hand_force: np.ndarray    # (3,) N, thorax frame
+    hand_moment: np.ndarray   # (3,) N m, thorax frame
+
+    _ARRAYS = ("q", "qdot", "lce", "activation", "excitation", "hand_force", "hand_moment")
+
+    def __post_init__(self):
+        for k in self._ARRAYS:
+            a = np.array(getattr(self, k), dtype=float)
+            a.flags.writeable = False
+            object.__setattr__(self, k, a)
+        object.__setattr__(self, "time", float(self.time))
+
+    def __eq__(self, other) -> bool:
+        """Exactly equal (every bit of every value)."""
+        if not isinstance(other, State):
+            return NotImplemented
+        return (self.model, self.source_hash, self.time) == (other.model, other.source_hash, other.time) and all(
+            np.array_equal(getattr(self, k), getattr(other, k)) for k in self._ARRAYS)
+
+    __hash__ = None
+
+    def as_dict(self) -> dict:
+        """Plain dict (e.g. for np.savez(**state.as_dict()); State(**d) rebuilds it)."""
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+
+class Data:
+    """State, inputs and outputs of one arm of `model` (an armrt.Model, or what Model() accepts).
+
+    State (read-only views that follow the simulation): time (s), q, qdot ((ndof,) rad, rad/s), lce ((n,) m),
+    activation ((n,)), state (the whole engine state vector [q, qdot, lce, activation]).
+    Inputs: excitation ((n,), a copy), hand_force, hand_moment ((3,) N, N m, thorax frame; copies).
+    Outputs: outputs() evaluates them at the current state.
+    Snapshots: get_state() -> State, set_state(State).
+    Data(model) starts at the rest posture, time 0, no excitation; Arm(model) creates the Data it steps
+    (Arm.data), with the workspace of its integrator."""
+
+    def __init__(self, model="das2"):
+        from .arm import DEFAULT_INTEGRATOR
+        from .model import Model
+        model = Model(model)
+        self._attach(model, _core.Simulator(model._def, DEFAULT_INTEGRATOR, 1e-3,
+                                            _core.default_substeps(DEFAULT_INTEGRATOR, 1e-3)))
+
+    @classmethod
+    def _wrap(cls, model, sim) -> "Data":
+        d = object.__new__(cls)
+        d._attach(model, sim)
+        return d
+
+    def _attach(self, model, sim) -> None:
+        self.model = model
+        self._sim = sim
+        state = sim.state
+        # Offsets from the engine (data.h defines the layout once; model_info exports it).
+        self._views = {k: state[o:o + n] for k, (o, n) in model.state_layout.items()}
+        self._views["state"] = state[:]
+        for v in self._views.values():
+            v.flags.writeable = False
+
+    def __repr__(self) -> str:
+        return f"Data({self.model.name}, t = {self.time:g} s)"
+
+    def __deepcopy__(self, memo):
+        """An independent Data: the same Model, state, inputs, per-arm settings (strength, maximum
+        activation, gravity) and integrator workspace configuration, in a new engine."""
+        s = self._sim
+        sim = _core.Simulator(self.model._def, s.integrator, s.dt, s.substeps)
+        sim.set_strength_and_max_activation(s.get_strength(), s.get_max_activation())
+        sim.gravity = np.asarray(s.gravity, dtype=float)
+        sim.max_joint_speed = s.max_joint_speed
+        new = Data._wrap(self.model, sim)
+        new._load(np.array(s.state), s.excitation, s.hand_force, s.hand_moment, s.time)
+        memo[id(self)] = new
+        return new
+
+    # ------------------------------------------------------------------ state
+    @property
+    def time(self) -> float:
+        return self._sim.time
+
+    @property
+    def q(self) -> np.ndarray:
+        return self._views["q"]
+
+    @property
+    def qdot(self) -> np.ndarray:
+        return self._views["qdot"]
+
+    @property
+    def lce(self) -> np.ndarray:
+        return self._views["lce"]
+
+    @property
+    def activation(self) -> np.ndarray:
+        return self._views["activation"]
+
+    @property
+    def state(self) -> np.ndarray:
+        """(2 ndof + 2 n,) the engine's state vector [q | qdot | lce | activation], read-only view."""
+        return self._views["state"]
+
+    # ------------------------------------------------------------------ inputs
+    @property
+    def excitation(self) -> np.ndarray:
+        return self._sim.excitation.copy()
+
+    @property
+    def hand_force(self) -> np.ndarray:
+        return self._sim.hand_force.copy()
+
+    @property
+    def hand_moment(self) -> np.ndarray:
+        return self._sim.hand_moment.copy()
+
+    # ------------------------------------------------------------------ outputs
+    def outputs(self) -> dict:
+        """Outputs at the current state: qddot, muscle_force (N), muscle_length (m), moment_arm (n x ndof,
+        m), fibre_velocity, muscle/passive/external torque, hand_position (thorax frame), gh_force
+        (scapula frame), gh_theta, gh_phi, gh_stab."""
+        self._sim.evaluate_outputs()
+        return self._sim.outputs()
+
+    # ------------------------------------------------------------------ snapshots
+    def get_state(self) -> State:
+        """A State: time, q, qdot, lce, activation, excitation, hand force and moment (copies)."""
+        return State(model=self.model.name, source_hash=self.model.source_hash, time=self._sim.time,
+                     q=self.q, qdot=self.qdot, lce=self.lce, activation=self.activation,
+                     excitation=self._sim.excitation, hand_force=self._sim.hand_force,
+                     hand_moment=self._sim.hand_moment)
+
+    def set_state(self, state: State) -> None:
+        """Restores a State taken from an arm of the same model (ValueError otherwise, or for arrays of
+        the wrong shape or with NaN). Clears a divergence error; restarts CVODE's history."""
+        if not isinstance(state, State):
+            raise TypeError(f"set_state takes an armrt.State (from get_state()), got {type(state).__name__}")
+        if state.source_hash != self.model.source_hash:
+            raise ValueError(f"this State is of model {state.model!r} (sha256 {state.source_hash[:12]}...), "
+                             f"not of {self.model.name!r} (sha256 {self.model.source_hash[:12]}...)")
+        nd, n = self.model.n_dofs, self.model.n_elements
+        shapes = {"q": (nd,), "qdot": (nd,), "lce": (n,), "activation": (n,), "excitation": (n,),
+                  "hand_force": (3,), "hand_moment": (3,)}
+        for k, shape in shapes.items():
+            a = getattr(state, k)
+            if a.shape != shape:
+                raise ValueError(f"State.{k} must have shape {shape}, got {a.shape}")
+            if not np.all(np.isfinite(a)):
+                raise ValueError(f"State.{k} contains NaN or infinite values")
+        if not np.isfinite(state.time):
+            raise ValueError(f"State.time must be finite, got {state.time}")
+        x = np.empty(self._sim.state.shape)
+        for k, (o, n) in self.model.state_layout.items():
+            x[o:o + n] = getattr(state, k)
+        self._load(x, state.excitation, state.hand_force, state.hand_moment, state.time)
+
+    def _load(self, x, excitation, hand_force, hand_moment, time: float) -> None:
+        """Writes a state as is (set_state validates first; Arm.__deepcopy__ copies a diverged state too)."""
+        self._sim.state[:] = x
+        self._sim.excitation[:] = excitation
+        self._sim.hand_force[:] = hand_force
+        self._sim.hand_moment[:] = hand_moment
+        self._sim.time = time
+        self._sim.clear_error()
+        # CVODE keeps a history of past steps: start it afresh from the restored state.
+        if self._sim.integrator == "cvode":
+            self._sim.set_integrator("cvode", self._sim.dt, self._sim.substeps)
