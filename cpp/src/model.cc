@@ -5,7 +5,6 @@
 
 #include "armrt/data.h"
 #include "armrt/engine.h"
-#include "armrt/muscle_kernel.h"
 
 namespace armrt {
 
@@ -21,11 +20,8 @@ void find_rest_fibre_rate(Model& m) {
   for (int i = 0; i < m.num_elements; ++i) {
     const ElementConstants& e = m.element[i];
     const double lce = muscle_equilibrium_lce(e, m.fibre_damping, L[i], 0.0);
-    double force, velocity;
     MuscleDerivatives der;
-    muscle_kernel_derivatives(e.fmax, e.inv_lceopt, e.lslack, e.thickness, e.min_lce, e.vmax, e.k_see, e.k_pee,
-                              e.pee_slack, e.compress_length, e.k_compress, e.ecc_c, e.damping_slope,
-                              m.fibre_damping, L[i], lce, 0.0, &force, &velocity, &der);
+    muscle_element_derivatives(e, m.fibre_damping, L[i], lce, 0.0, &der);
     if (der.dvel_dlce < m.rest_fibre_rate) {
       m.rest_fibre_rate = der.dvel_dlce;
       m.rest_fibre_element = i;

@@ -55,6 +55,15 @@ MuscleOut muscle_element(const ElementConstants& e, double b, double L, double l
   return out;
 }
 
+MuscleOut muscle_element_derivatives(const ElementConstants& e, double b, double L, double lce, double a,
+                                     MuscleDerivatives* der) {
+  MuscleOut out;
+  muscle_kernel_derivatives(e.fmax, e.inv_lceopt, e.lslack, e.thickness, e.min_lce, e.vmax, e.k_see, e.k_pee,
+                            e.pee_slack, e.compress_length, e.k_compress, e.ecc_c, e.damping_slope, b, L, lce, a,
+                            &out.force, &out.fibre_velocity, der);
+  return out;
+}
+
 double muscle_equilibrium_lce(const ElementConstants& e, double b, double L, double a) {
   // The CE velocity falls monotonically as lce grows (the tendon slackens); bisect on its sign.
   // A muscle of zero strength carries no force at any length: its fibre rests at its slack length.

@@ -206,8 +206,7 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
     const double lce_along = std::sqrt(lce * lce - th2);
     const double cos_pen = lce_along / lce;
     const double v_drag = L_rate[i] > 0.0 ? L_rate[i] * cos_pen : 0.0;
-    const double missing_damping = mc.damping_slope[i] * (kLowActivation - F0 / mc.fmax[i]);
-    const double b_drag = b0 + (missing_damping > 0.0 ? missing_damping : 0.0);
+    const double b_drag = b0 + damping_floor(mc.damping_slope[i], F0 / mc.fmax[i]);
     const double fibre_force = F0 + b_drag * v_drag + pee_force(mc.k_pee[i], mc.pee_slack[i], lce) -
                                compressive_force(mc.k_compress[i], mc.compress_length[i], lce);
     const double F_op = (fibre_force > 0.0 ? fibre_force : 0.0) * cos_pen;

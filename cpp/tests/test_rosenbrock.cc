@@ -29,9 +29,9 @@ struct KernelOut {
 
 KernelOut kernel(const ElementConstants& e, double b0, double L, double lce, double a) {
   KernelOut o;
-  muscle_kernel_derivatives(e.fmax, e.inv_lceopt, e.lslack, e.thickness, e.min_lce, e.vmax, e.k_see, e.k_pee,
-                            e.pee_slack, e.compress_length, e.k_compress, e.ecc_c, e.damping_slope, b0, L, lce, a,
-                            &o.force, &o.velocity, &o.der);
+  const MuscleOut out = muscle_element_derivatives(e, b0, L, lce, a, &o.der);
+  o.force = out.force;
+  o.velocity = out.fibre_velocity;
   return o;
 }
 

@@ -143,15 +143,14 @@ def find_baseline(arm: Arm | None = None, progress: Progress | None = None) -> B
                         axial_reference=passive.axial)
 
     # A common level that is just stable: the neutral reference and the optimiser's start.
-    scan = {0.0: passive.gh_stab_tail}
-    settled_at = {0.0: passive}
+    settled_at = {0.0: passive}  # common cuff level -> settled arm
 
     def common_margin(level):
         evals[0] += 1
         if progress:
             progress.tick(f"common cuff level {level:.3f} (evaluation {evals[0]})")
         s = settle(arm, cuff_excitation(arm, [level] * 4))
-        scan[float(level)], settled_at[float(level)] = s.gh_stab_tail, s
+        settled_at[float(level)] = s
         return s.gh_stab_tail - GH_LIMIT
     hi = 0.02
     while hi < 1.0 and common_margin(hi) > 0:
@@ -159,6 +158,7 @@ def find_baseline(arm: Arm | None = None, progress: Progress | None = None) -> B
     if hi >= 1.0 and common_margin(1.0) > 0:
         # No cuff level meets the constraint (in DAS3 the cuff's lines of action are far from the glenoid
         # normal, docs/experiments.md): report it and keep the level with the lowest GHstab.
+        scan = {level: s.gh_stab_tail for level, s in settled_at.items()}
         best = min(scan, key=scan.get)
         if progress:
             progress.step("baseline rotator-cuff activations (GHstab < 0.5 not reachable)")

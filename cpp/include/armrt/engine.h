@@ -14,6 +14,7 @@
 
 #include "armrt/data.h"
 #include "armrt/model.h"
+#include "armrt/muscle_kernel.h"
 
 namespace armrt {
 
@@ -24,6 +25,9 @@ struct MuscleOut {
 };
 // One element: muscle-tendon length L (m), contractile-element length lce (m), activation a.
 MuscleOut muscle_element(const ElementConstants& e, double fibre_damping, double L, double lce, double a);
+// The same with the kernel's derivatives (muscle_kernel.h), for scalar uses outside the vectorised loop.
+MuscleOut muscle_element_derivatives(const ElementConstants& e, double fibre_damping, double L, double lce, double a,
+                                     MuscleDerivatives* der);
 // Contractile-element length at which the element is in static equilibrium (zero fibre velocity)
 // at muscle-tendon length L and activation a; used to start simulations without transients.
 double muscle_equilibrium_lce(const ElementConstants& e, double fibre_damping, double L, double a);

@@ -21,6 +21,14 @@ struct MuscleDerivatives {
   double dvel_da;       // m/s
 };
 
+// Damping the damper gains below kLowActivation (muscle.cc), N s/m: it tops the damper up to the CE's own
+// damping at a = 0.02 and optimal length, and is zero once the CE carries more than 2 % of fmax
+// isometrically. afl = F0 / fmax = a f(lce).
+inline double damping_floor(double damping_slope, double afl) {
+  const double missing = damping_slope * (kLowActivation - afl);
+  return missing > 0 ? missing : 0.0;
+}
+
 // Inputs: constants of one element, the fixed damper b0 (N s/m), muscle-tendon length L (m), CE
 // length lce (m), activation a. Outputs: tendon force (N), CE velocity (m/s, lengthening positive) and
 // their derivatives (used by the linearly implicit integrator's Jacobian, rosenbrock.cc).
@@ -61,9 +69,9 @@ inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lsl
   const double afl = a * fl;  // F0 / fmax
   const double F0 = fmax * afl;
   // Damping floor (muscle.cc): the CE's own damping at v = 0 is F0 (1+A)/(A vmax) = F0 damping_slope/fmax.
-  const double missing_damping = damping_slope * (kLowActivation - afl);
-  const bool floor_active = missing_damping > 0;
-  const double b = b0 + (floor_active ? missing_damping : 0.0);
+  const double floor_damping = damping_floor(damping_slope, afl);
+  const bool floor_active = floor_damping > 0;
+  const double b = b0 + floor_damping;
 
   // Concentric (F <= F0): (b/A) u^2 + beta_c u - gamma_c = 0 with v = -u; eccentric (F > F0):
   // b u^2 + beta_e u - gamma_e = 0 with v = u. One quadratic with the branch's coefficients, its
