@@ -37,7 +37,7 @@ def runs() -> dict[str, np.ndarray]:
 
 if __name__ == "__main__":
     import sys
-    if len(sys.argv) != 2:
+    if len(sys.argv) != 2 or sys.argv[1].startswith("-"):  # `--help` must not rewrite the reference
         sys.exit('usage: python -m tests.regression_runs "why the physics changed"')
     np.savez_compressed(FILE, reason=np.array(sys.argv[1]), **runs())
     print(f"wrote {FILE}")
