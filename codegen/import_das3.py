@@ -289,16 +289,34 @@ def is_das2_call(mat: Path, free: list[str], posture: dict) -> bool:
             and (mat.parent / "equilibrium.mat").exists() and sorted(free) == sorted(src.ARM_DOFS) and not posture)
 
 
+def is_das3_call(mat: Path, free: list[str], posture: dict) -> bool:
+    """The 11-DOF shoulder-girdle model: the DAS3 release with all 11 DOFs free (thorax fixed) and the
+    default posture. Built by import_das3_girdle.build_das3_model from models/das3_paths.json."""
+    return (mat.name == "model_struct.mat" and (mat.parent / "das3.osim").exists()
+            and (mat.parent / "equilibrium.mat").exists() and sorted(free) == sorted(src.ALL_DOFS) and not posture)
+
+
 def import_any(mat: Path, free: list[str], out: Path, name: str | None = None, posture: dict | None = None,
                equilibrium: Path | None = None, paths: str | None = None, cache_dir: Path | None = None,
                seed: int = 0, command: str = "") -> dict:
     """One entry for every DAS-format file (`armrt model import` and `python -m codegen.import_das3`):
-    das2 when is_das2_call(), else import_reduced.build_reduced_model. Writes `out`; returns the model."""
+    das2 when is_das2_call(), das3 when is_das3_call(), else import_reduced.build_reduced_model. Writes
+    `out`; returns the model."""
     from .import_reduced import build_reduced_model
     mat = Path(mat)
     if not mat.exists():
         raise ModelInputError(f"missing input file {mat}")
-    if is_das2_call(mat, free, posture or {}):
+    if is_das3_call(mat, free, posture or {}):
+        from .import_das3_girdle import build_das3_model
+        if paths is not None:
+            raise ModelInputError(f"--paths {paths}: das3 takes its paths, already fitted against das3.osim, from "
+                                  "models/das3_paths.json (python -m codegen.das3_fit refits them)")
+        if equilibrium is not None and Path(equilibrium).resolve() != (mat.parent / "equilibrium.mat").resolve():
+            raise ModelInputError("--equilibrium: das3 rests at the equilibrium.mat beside model_struct.mat")
+        model = build_das3_model(mat.parent)
+        if name is not None and name != model["name"]:
+            raise ModelInputError(f"--name: the DAS3 release with all 11 DOFs free is das3 (got {name!r})")
+    elif is_das2_call(mat, free, posture or {}):
         model = build_model(mat.parent, paths=paths or "opensim", cache_dir=cache_dir, seed=seed)
         if name is not None and name != model["name"]:
             raise ModelInputError(f"--name: the DAS3 release with the five arm DOFs free is das2 (got {name!r})")
@@ -333,7 +351,8 @@ def main(argv=None, prog="python -m codegen.import_das3"):
     ap.add_argument("--equilibrium", type=Path, default=None,
                     help="equilibrium.mat for the default posture (default: beside MAT, else the DAS3 release's)")
     ap.add_argument("--name", default=None, help="model name (a C identifier; default das2 for das2, else from MAT)")
-    ap.add_argument("-o", "--out", type=Path, default=Path("models/das2.json"))
+    ap.add_argument("-o", "--out", type=Path, default=None,
+                    help="model file to write (default: models/das3.json for all 11 DOFs, else models/das2.json)")
     ap.add_argument("--paths", choices=["opensim", "das3"], default=None,
                     help="das2 only: fit paths against OpenSim (default) or keep the DAS3 polynomials")
     ap.add_argument("--cache", type=Path, default=Path("build"), help="where OpenSim samples are cached")
@@ -345,6 +364,8 @@ def main(argv=None, prog="python -m codegen.import_das3"):
         posture = posture_angles(args.posture)
         posture.update(posture_angles(args.posture_deg, degrees=True))
         free = [f.strip() for f in args.free.split(",") if f.strip()]
+        if args.out is None:
+            args.out = Path("models/das3.json" if sorted(free) == sorted(src.ALL_DOFS) else "models/das2.json")
         # The same command whichever entry ran it (armrt model import calls this main), so both write
         # the same bytes.
         cmd = f"python -m codegen.import_das3 {mat.name} --free {','.join(free)}" + "".join(f" --posture {p}" for p in args.posture) \
