@@ -7,7 +7,9 @@ the arm's bodies and joints from das3.osim, the Hill parameters of the 102 eleme
 and muscle paths. `--paths opensim` (the default) fits length and line-of-action polynomials against
 OpenSim path geometry (codegen/fit_paths.py; needs `pip install opensim`); `--paths das3` keeps the
 DAS3 release polynomials with the girdle angles substituted, which needs no OpenSim but does not
-match das3.osim for a fixed girdle (see docs/path_accuracy.md).
+match das3.osim for a fixed girdle (see docs/path_accuracy.md). With all 11 DOFs free (`--free
+SCy,SCz,SCx,ACy,ACz,ACx,GHy,GHz,GHyy,ELx,PSy`) it builds the shoulder-girdle model das3
+(codegen/import_das3_girdle.py); other DOF sets go to codegen/import_reduced.py.
 """
 from __future__ import annotations
 

@@ -59,6 +59,13 @@ def test_the_importer_command_reproduces_the_shipped_file(das3_dir, tmp_path, ca
     assert "das3, 11 DOFs, 138 elements, 28 muscles" in capsys.readouterr().out
 
 
+def test_default_output_is_das3_json_not_das2(das3_dir, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert main([str(das3_dir / "model_struct.mat"), "--free", FREE]) == 0
+    assert (tmp_path / "models" / "das3.json").read_bytes() == SHIPPED.read_bytes()
+    assert not (tmp_path / "models" / "das2.json").exists()
+
+
 def test_dispatch_das3_only_with_all_eleven_free(das3_dir):
     mat = das3_dir / "model_struct.mat"
     assert is_das3_call(mat, FREE.split(","), {}) and not is_das2_call(mat, FREE.split(","), {})

@@ -52,7 +52,8 @@ def add_cli(sub, formatter, msub=None) -> None:
     q = msub.add_parser("import", formatter_class=formatter,
                         help="DAS-format model_struct*.mat -> model file with chosen free DOFs (docs/model_schema.md)")
     q.add_argument("mat", type=Path, help="DAS-format model_struct*.mat")
-    q.add_argument("--free", required=True, help="comma-separated free DOFs, e.g. ELx,PSy (das2: GHy,GHz,GHyy,ELx,PSy)")
+    q.add_argument("--free", required=True, help="comma-separated free DOFs, e.g. ELx,PSy (das2: GHy,GHz,GHyy,ELx,PSy; "
+                        "das3: SCy,SCz,SCx,ACy,ACz,ACx,GHy,GHz,GHyy,ELx,PSy)")
     q.add_argument("--posture", action="append", default=[], metavar="NAME=RAD[,...]",
                    help="fixed DOF angles in rad (default: equilibrium.mat where it names every DOF, else the arm "
                         "hanging at the side)")
