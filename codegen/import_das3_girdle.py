@@ -130,6 +130,12 @@ def read_paths(paths_file: Path, struct: src.Das3Struct) -> dict[str, dict]:
     return data
 
 
+# Source data kept as published although no rigid body has it (codegen/generate.py check_sense asks why).
+INERTIA_NOTES = {"clavicle": "das3.osim clavicle_r as published: its principal moments (1.26e-6, 2.26e-5, "
+                             "3.31e-5 kg m^2) break the triangle inequality by 38 %; kept so that the dynamics "
+                             "equal OpenSim's (tests/test_das3_dynamics.py)"}
+
+
 def build_das3_model(das3_dir: Path, paths_file: Path = DAS3_PATHS) -> dict:
     """The model-file dict of `das3` (docs/model_schema.md, `base: thorax`) from the DAS3 release folder
     (model_struct.mat, equilibrium.mat, das3.osim) and the fitted paths `paths_file`. Raises
@@ -146,19 +152,27 @@ def build_das3_model(das3_dir: Path, paths_file: Path = DAS3_PATHS) -> dict:
     by_name = {e["name"]: e for e in paths["elements"]}
     rom = paths.get("rom") or {}
     try:
-        ranges = {d: [float(v) for v in rom["das3_range"][d]] for d in src.GIRDLE_DOFS}
+        # The girdle's passive-moment range is the region its paths were fitted over (rom.girdle_range):
+        # DAS3's ranges widened to contain the equilibrium.mat posture, whose ACz and ACx lie below them
+        # (docs/das3.md). With DAS3's own ranges the resting scapula would be pushed by ~14 N m at ACz.
+        ranges = {d: [float(v) for v in rom["girdle_range"][d]] for d in src.GIRDLE_DOFS}
         ranges.update({d: [float(v) for v in rom["arm_range"][d]] for d in src.ARM_DOFS})
+        das3_ranges = {d: [float(v) for v in rom["das3_range"][d]] for d in src.GIRDLE_DOFS}
     except (KeyError, TypeError, ValueError) as exc:
         raise ModelInputError(f"{files['das3_paths.json'].name}: field 'rom' lacks a DOF range ({exc})") from None
     for d in src.GIRDLE_DOFS:
-        if ranges[d] != [float(v) for v in struct.dof_ranges[d]]:
-            raise ModelInputError(f"{files['das3_paths.json'].name}: rom.das3_range.{d} {ranges[d]} differs from "
+        if das3_ranges[d] != [float(v) for v in struct.dof_ranges[d]]:
+            raise ModelInputError(f"{files['das3_paths.json'].name}: rom.das3_range.{d} {das3_ranges[d]} differs from "
                                   f"model_struct.mat's {list(struct.dof_ranges[d])}")
+        if not ranges[d][0] <= posture[d] <= ranges[d][1]:
+            raise ModelInputError(f"{files['das3_paths.json'].name}: rom.girdle_range.{d} {ranges[d]} does not contain "
+                                  f"the equilibrium.mat angle {posture[d]}")
 
     bodies = []
     for b in das3_bodies(files["das3.osim"]):
         j = b["joint"]
-        bodies.append({**{k: b[k] for k in ("name", "osim_name", "parent", "mass", "com", "inertia")},
+        note = {"inertia_note": INERTIA_NOTES[b["name"]]} if b["name"] in INERTIA_NOTES else {}
+        bodies.append({**{k: b[k] for k in ("name", "osim_name", "parent", "mass", "com", "inertia")}, **note,
                        "joint": {"name": j["name"], "type": JOINT_TYPES[j["name"]],
                                  "location_in_parent": j["location_in_parent"], "axes": j["axes"], "dofs": j["dofs"]}})
     named = {b["name"]: b for b in bodies}
@@ -204,9 +218,11 @@ def build_das3_model(das3_dir: Path, paths_file: Path = DAS3_PATHS) -> dict:
             "The DAS3 shoulder-girdle model: thorax fixed, 11 DOF (SC 3, AC 3, GH 3, elbow flexion, forearm "
             "pronation), 28 muscles in 138 Hill-type elements, with the scapulothoracic contact of TS and AI on "
             "the thorax ellipsoid and the conoid ligament (girdle_forces), from the DAS3 release. Ranges "
-            "(dofs[].range, the passive joint limits): the DAS3 ranges for SCy..ACx; das2's ranges (the "
+            "(dofs[].range, the passive joint limits): for SCy..ACx the region the girdle paths were fitted over "
+            "(das3_paths.json rom.girdle_range: the DAS3 ranges, dofs[].das3_range, widened to contain the "
+            "equilibrium.mat posture, where ACz and ACx lie 0.053 and 0.017 rad below them); das2's ranges (the "
             "fixed-scapula range of motion of docs/path_accuracy.md) for GHy, GHz, GHyy, ELx, PSy. The rest "
-            "posture is equilibrium.mat, where ACz and ACx lie 0.053 and 0.017 rad below their DAS3 ranges. "
+            "posture is equilibrium.mat. "
             "Muscle paths: length and GH line-of-action polynomials fitted against das3.osim over the girdle-"
             "and-arm range of docs/das3.md, read from models/das3_paths.json (codegen/das3_fit.py, "
             "codegen/das3_directions.py; docs/das3_path_accuracy.md). Groups: das2's, plus trapezius "
