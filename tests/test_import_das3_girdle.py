@@ -86,7 +86,8 @@ def test_dofs_elements_and_order(model, das3_dir):
     for d in model["dofs"]:
         assert d["das3_range"] == list(st.dof_ranges[d["name"]])
         if d["name"] in src.GIRDLE_DOFS:
-            assert d["range"] == rom["das3_range"][d["name"]]
+            assert d["range"] == rom["girdle_range"][d["name"]]
+            assert d["range"][0] <= d["rest"] <= d["range"][1]
     assert model["dofs"][6:] == das2["dofs"]   # the arm DOFs as das2 (range, das3_range, rest)
     for k in ("schema_version", "gravity_thorax", "passive_joint", "hand_point", "glenoid"):
         assert model[k] == das2[k], k
@@ -101,7 +102,10 @@ def test_bodies_are_das3_osim_chain(model, das3_dir):
     for b, r in zip(model["bodies"], ref):
         j = dict(b["joint"])
         assert j.pop("type") == types[r["joint"]["name"]]
+        note = b.pop("inertia_note", None)
         assert {**b, "joint": j} == r
+        # A published inertia no rigid body has is kept only with its reason (the clavicle's).
+        assert (note is not None) == (b["name"] == "clavicle")
     # The arm bodies are das2's, unchanged.
     das2 = json.loads((ROOT / "models" / "das2.json").read_text())
     assert model["bodies"][2:] == das2["bodies"]
