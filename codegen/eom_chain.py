@@ -349,6 +349,72 @@ def point_and_jacobian(links, E, link, point, ndof):
     return p, J
 
 
+def angular_jacobian(links, E, link, ndof):
+    """d(omega)/d(qd) (3 x ndof, base coordinates) of `link`: column j is the axis of every revolute above it."""
+    R, _ = body_poses(links, E)
+    J = [[0.0] * ndof for _ in range(3)]
+    j = link
+    while j >= 0:
+        lj = links[j]
+        if lj.dof is not None:
+            col = mv(R[j], lj.axis)
+            for i in range(3):
+                J[i][lj.dof] = col[i]
+        j = lj.parent
+    return J
+
+
+def velocity_product_accelerations(links, E, qd):
+    """Acceleration of every link's centre of mass (base coordinates) at qdd = 0 without gravity: the
+    velocity-product part (Jdot qd) of each COM acceleration, by the forward pass of RNEA."""
+    R, _ = body_poses(links, E)
+    n = len(links)
+    w, wd, a, out = [None] * n, [None] * n, [None] * n, [None] * n
+    zero = [0.0, 0.0, 0.0]
+    for i, l in enumerate(links):
+        wp, wdp, ap = (zero, zero, zero) if l.parent < 0 else (w[l.parent], wd[l.parent], a[l.parent])
+        r = l.offset
+        a[i] = mtv(E[i], vadd(ap, vadd(cross(wdp, r), cross(wp, cross(wp, r)))))
+        w0, wd0 = mtv(E[i], wp), mtv(E[i], wdp)
+        if l.axis is None:
+            w[i], wd[i] = w0, wd0
+        else:
+            sq = vscale(qd[l.dof], l.axis)
+            w[i], wd[i] = vadd(w0, sq), vadd(wd0, cross(w0, sq))
+        c = list(l.com)
+        out[i] = mv(R[i], vadd(a[i], vadd(cross(wd[i], c), cross(w[i], cross(w[i], c)))))
+    return out
+
+
+def momentum_rate(links, E, qd, link_set, ndof):
+    """sum over the links in `link_set` of m a_com = A qdd + c (base coordinates): (A (3 x ndof), c (3))."""
+    A = [[0.0] * ndof for _ in range(3)]
+    c = [0.0, 0.0, 0.0]
+    acc = velocity_product_accelerations(links, E, qd)
+    for i in sorted(link_set):
+        l = links[i]
+        if l.mass == 0.0:
+            continue
+        _, J = point_and_jacobian(links, E, i, list(l.com), ndof)
+        for r in range(3):
+            c[r] = c[r] + l.mass * acc[i][r]
+            for j in range(ndof):
+                A[r][j] = A[r][j] + l.mass * J[r][j]
+    return A, c
+
+
+def links_below(links, body_link, body):
+    """Indices of the links of `body` and of every body distal to it (its joint's massless links included)."""
+    first = body_link[body]
+    while links[first].parent >= 0 and links[links[first].parent].body is None:
+        first = links[first].parent
+    below = {first}
+    for i in range(first + 1, len(links)):
+        if links[i].parent in below:
+            below.add(i)
+    return below
+
+
 # ----------------------------------------------------------------------------- numeric reference
 
 class NumericChain:

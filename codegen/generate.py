@@ -23,8 +23,13 @@ SCHEMA = "armrt-model"
 SCHEMA_VERSION = 1
 MAX_DOFS = 16        # the engine's capacities (cpp/include/armrt/model.h kMaxDofs, kMaxElements)
 MAX_ELEMENTS = 160
+MAX_CONTACT_POINTS = 4   # cpp/include/armrt/model_def.h kMaxContactPoints
 BODY_CHAIN = [("humerus", "scapula"), ("ulna", "humerus"), ("radius", "ulna"), ("hand", "radius")]
-JOINT_AXES = {"gimbal_yzy": 3, "pin": 1, "weld": 0}
+# The base frame and the body chain it carries: "scapula" (das2: girdle fixed, the scapula is the base) or
+# "thorax" (das3: clavicle and scapula move; the girdle forces hold the scapula on the thorax).
+BODY_CHAINS = {"scapula": BODY_CHAIN,
+               "thorax": [("clavicle", "thorax"), ("scapula", "clavicle")] + BODY_CHAIN}
+JOINT_AXES = {"gimbal_yzy": 3, "gimbal_yzx": 3, "pin": 1, "weld": 0}
 
 
 MAX_FILE_BYTES = 64 * 1024**2
@@ -135,13 +140,20 @@ def validate(model) -> dict:
     if len(set(dof_names)) != len(dof_names):
         raise ModelFileError("model file: field 'dofs' has repeated names")
 
-    scap = _get(model, "scapula", "")
-    _array(_get(scap, "rotation_in_thorax", "scapula"), (3, 3), "scapula.rotation_in_thorax")
-    _vector(scap, "origin_in_thorax", "scapula")
+    base = model.get("base", "scapula")
+    if base not in BODY_CHAINS:
+        raise ModelFileError(f"model file: field 'base' is {base!r}, expected one of {sorted(BODY_CHAINS)}")
+    chain = BODY_CHAINS[base]
+    if base == "scapula":
+        scap = _get(model, "scapula", "")
+        _array(_get(scap, "rotation_in_thorax", "scapula"), (3, 3), "scapula.rotation_in_thorax")
+        _vector(scap, "origin_in_thorax", "scapula")
+    else:
+        _validate_girdle_forces(_get(model, "girdle_forces", ""))
 
-    bodies = _list(model, "bodies", "", len(BODY_CHAIN))
+    bodies = _list(model, "bodies", "", len(chain))
     used_dofs = []
-    for i, (b, (bname, parent)) in enumerate(zip(bodies, BODY_CHAIN)):
+    for i, (b, (bname, parent)) in enumerate(zip(bodies, chain)):
         w = f"bodies[{i}]"
         if _string(b, "name", w) != bname:
             raise ModelFileError(f"model file: field '{w}.name' must be {bname!r}")
@@ -176,7 +188,7 @@ def validate(model) -> dict:
                              f"got {used_dofs}")
 
     hp = _get(model, "hand_point", "")
-    if _string(hp, "body", "hand_point") not in [b for b, _ in BODY_CHAIN]:
+    if _string(hp, "body", "hand_point") not in [b for b, _ in chain]:
         raise ModelFileError("model file: field 'hand_point.body' must name a body")
     _vector(hp, "point", "hand_point")
 
@@ -222,6 +234,37 @@ def validate(model) -> dict:
             raise ModelFileError(f"model file: field 'groups.{g}' must list muscle names")
     check_sense(model)
     return model
+
+
+def _validate_girdle_forces(gf):
+    """The scapulothoracic contact and conoid ligament of a thorax-based model (docs/das3.md)."""
+    w = "girdle_forces"
+    el = _get(gf, "thorax_ellipsoid", w)
+    _vector(el, "centre", f"{w}.thorax_ellipsoid")
+    radii = _vector(el, "radii", f"{w}.thorax_ellipsoid")
+    if any(not r > 0 for r in radii):
+        raise ModelFileError(f"model file: field '{w}.thorax_ellipsoid.radii' must be positive (m)")
+    ct = _get(gf, "contact", w)
+    _number(ct, "stiffness", f"{w}.contact", positive=True)
+    _number(ct, "eps", f"{w}.contact", positive=True)
+    pts = _list(ct, "points", f"{w}.contact")
+    if not 1 <= len(pts) <= MAX_CONTACT_POINTS:
+        raise ModelFileError(f"model file: field '{w}.contact.points' has {len(pts)} entries; 1 to "
+                             f"{MAX_CONTACT_POINTS} allowed")
+    for k, pt in enumerate(pts):
+        pw = f"{w}.contact.points[{k}]"
+        _string(pt, "name", pw)
+        if _string(pt, "body", pw) != "scapula":
+            raise ModelFileError(f"model file: field '{pw}.body' must be 'scapula' (the points glide on the thorax)")
+        _vector(pt, "point", pw)
+    co = _get(gf, "conoid", w)
+    for end, body in (("origin", "clavicle"), ("insertion", "scapula")):
+        ew = f"{w}.conoid.{end}"
+        if _string(_get(co, end, f"{w}.conoid"), "body", ew) != body:
+            raise ModelFileError(f"model file: field '{ew}.body' must be {body!r}")
+        _vector(co[end], "point", ew)
+    for k in ("length", "stiffness", "eps"):
+        _number(co, k, f"{w}.conoid", positive=True)
 
 
 def _validate_element(e, i, dof_names, el_names):
@@ -322,7 +365,9 @@ def check_sense(model: dict) -> None:
         lam = _eigvalsh3(inertia)
         if lam[0] <= 0:
             _fail(f"{w}.inertia", f"is not positive definite (principal moments {[f'{x:.3g}' for x in lam]} kg m^2)")
-        if lam[2] > lam[0] + lam[1] + 1e-9 * scale:
+        # A source model's own data may break it (das3.osim's clavicle, by 38 %); such a body must say why
+        # it is kept (`inertia_note`); M(q) stays positive definite as long as the inertia is.
+        if lam[2] > lam[0] + lam[1] + 1e-9 * scale and not isinstance(b.get("inertia_note"), str):
             _fail(f"{w}.inertia", f"violates the triangle inequality (principal moments "
                                   f"{[f'{x:.3g}' for x in lam]} kg m^2: no rigid body has them)")
         axes = b["joint"]["axes"]
@@ -601,7 +646,74 @@ def paths_source(model: dict, ns: str) -> str:
             + f"using {vt} = double __attribute__((vector_size({8 * W})));\n\n" + "\n".join(out) + f"\n}}  // namespace armrt::generated::{ns}\n")
 
 
+def chain_dynamics_source(model: dict, ns: str) -> tuple[str, dict]:
+    """The equations of motion and kinematics of a thorax-based chain (das3) as unrolled recursive
+    algorithms (codegen/eom_chain.py; docs/das3.md says why not Kane's method at 11 DOFs)."""
+    from . import eom_chain as ec
+    dof_names = [d["name"] for d in model["dofs"]]
+    n = len(dof_names)
+    links = ec.links_of(dof_names, model["bodies"], "thorax")
+    body_link = {l.body: i for i, l in enumerate(links) if l.body}
+    body_names = [b["name"] for b in model["bodies"]]
+    hp = model["hand_point"]
+    arm_links = ec.links_below(links, body_link, "humerus")
+    gf = model["girdle_forces"]
+    points = ([(p["name"], p["body"], p["point"]) for p in gf["contact"]["points"]]
+              + [("conoid_origin", gf["conoid"]["origin"]["body"], gf["conoid"]["origin"]["point"]),
+                 ("conoid_insertion", gf["conoid"]["insertion"]["body"], gf["conoid"]["insertion"]["point"])])
+
+    def E_of(s):
+        return ec._rotations(links, s["sin"], s["cos"])
+
+    def M_of(s):
+        M = ec.crba(links, E_of(s), n)
+        return [M[i][j] for i in range(n) for j in range(n)]
+
+    def b_of(s):
+        return [-t for t in ec.rnea(links, E_of(s), s["qd"], s["g"])]
+
+    def hand(s):
+        return ec.point_and_jacobian(links, E_of(s), body_link[hp["body"]], [float(v) for v in hp["point"]], n)
+
+    def poses(s):
+        R, p = ec.body_poses(links, E_of(s))
+        return [("R", [x for b in body_names for row in R[body_link[b]] for x in row]),
+                ("p", [x for b in body_names for x in p[body_link[b]]])]
+
+    def momentum(s):
+        A, c = ec.momentum_rate(links, E_of(s), s["qd"], arm_links, n)
+        return [("A", [x for row in A for x in row]), ("c", c)]
+
+    q_in, qd_in, g_in = ("q", n, True), ("qd", n, False), ("g_base", 3, False)
+    fns, stats = [], {}
+    for name, sig, inputs, build in [
+        ("mass_matrix", "void mass_matrix(const double* q, double* M)", [q_in], lambda s: [("M", M_of(s))]),
+        ("bias_force", "void bias_force(const double* q, const double* qd, const double* g_base, double* b)",
+         [q_in, qd_in, g_in], lambda s: [("b", b_of({**s, "g": s["g_base"]}))]),
+        ("dynamics", "void dynamics(const double* q, const double* qd, const double* g_base, double* M, double* b)",
+         [q_in, qd_in, g_in], lambda s: [("M", M_of(s)), ("b", b_of({**s, "g": s["g_base"]}))]),
+        ("hand_position", "void hand_position(const double* q, double* p)", [q_in], lambda s: [("p", hand(s)[0])]),
+        ("hand_jacobian", "void hand_jacobian(const double* q, double* Jv, double* Jw)", [q_in],
+         lambda s: [("Jv", [x for row in hand(s)[1] for x in row]),
+                    ("Jw", [x for row in ec.angular_jacobian(links, E_of(s), body_link[hp["body"]], n) for x in row])]),
+        ("arm_momentum_rate", "void arm_momentum_rate(const double* q, const double* qd, double* A, double* c)",
+         [q_in, qd_in], momentum),
+        ("body_poses", "void body_poses(const double* q, double* R, double* p)", [q_in], poses),
+        ("girdle_points", "void girdle_points(const double* q, double* p, double* J)", [q_in],
+         lambda s: ec._points_outputs(links, E_of(s), body_link, points, n)),
+    ]:
+        text, ops = ec._function(sig, inputs, build)
+        stats[name] = ops
+        fns.append(text)
+    src = ("#include <cmath>\n\n#include \"armrt/fast_math.h\"\n#include \"" + ns + ".h\"\n\n"
+           "// Unrolled composite-rigid-body and recursive Newton-Euler algorithms (codegen/eom_chain.py).\n"
+           f"namespace armrt::generated::{ns} {{\n\n" + "\n".join(fns) + f"\n}}  // namespace armrt::generated::{ns}\n")
+    return src, stats
+
+
 def dynamics_source(model: dict, ns: str) -> tuple[str, dict]:
+    if model.get("base", "scapula") == "thorax":
+        return chain_dynamics_source(model, ns)
     NDOF = len(model["dofs"])
     ex = eom.derive(model)
     q, qd, g = ex.q, ex.qd, ex.g
@@ -616,11 +728,11 @@ def dynamics_source(model: dict, ns: str) -> tuple[str, dict]:
     M = ex.mass_matrix
     fn("mass_matrix", "void mass_matrix(const double* q, double* M)", [("q", q)],
        [("M", [M[i, j] for i in range(NDOF) for j in range(NDOF)])])
-    fn("bias_force", "void bias_force(const double* q, const double* qd, const double* g_scapula, double* b)",
-       [("q", q), ("qd", qd), ("g_scapula", g)], [("b", list(ex.bias_force))])
+    fn("bias_force", "void bias_force(const double* q, const double* qd, const double* g_base, double* b)",
+       [("q", q), ("qd", qd), ("g_base", g)], [("b", list(ex.bias_force))])
     # M and b together share their sines, cosines and common subexpressions: the engine's hot path.
-    fn("dynamics", "void dynamics(const double* q, const double* qd, const double* g_scapula, double* M, double* b)",
-       [("q", q), ("qd", qd), ("g_scapula", g)],
+    fn("dynamics", "void dynamics(const double* q, const double* qd, const double* g_base, double* M, double* b)",
+       [("q", q), ("qd", qd), ("g_base", g)],
        [("M", [M[i, j] for i in range(NDOF) for j in range(NDOF)]), ("b", list(ex.bias_force))])
     fn("hand_position", "void hand_position(const double* q, double* p)", [("q", q)],
        [("p", list(ex.hand_position))])
@@ -647,8 +759,8 @@ namespace armrt::generated::{ns} {{
 const armrt::ModelDef& model_def();
 
 void mass_matrix(const double* q, double* M);
-void bias_force(const double* q, const double* qd, const double* g_scapula, double* b);
-void dynamics(const double* q, const double* qd, const double* g_scapula, double* M, double* b);
+void bias_force(const double* q, const double* qd, const double* g_base, double* b);
+void dynamics(const double* q, const double* qd, const double* g_base, double* M, double* b);
 void hand_position(const double* q, double* p);
 void hand_jacobian(const double* q, double* Jv, double* Jw);
 void arm_momentum_rate(const double* q, const double* qd, double* A, double* c);
@@ -656,6 +768,7 @@ void body_poses(const double* q, double* R, double* p);
 void muscle_lengths(const double* q, double* L);
 void muscle_paths(const double* q, double* L, double* moment_arm);
 void gh_directions(const double* q, double* d);
+void girdle_points(const double* q, double* p, double* J);  // thorax-based models only
 
 }}  // namespace armrt::generated::{ns}
 """
@@ -721,12 +834,37 @@ def model_source(model: dict, ns: str, digest: str) -> str:
         groups_ptr = "nullptr"
     lines.append("")
 
-    R = model["scapula"]["rotation_in_thorax"]
+    base = model.get("base", "scapula")
+    if base == "scapula":
+        R, origin = model["scapula"]["rotation_in_thorax"], model["scapula"]["origin_in_thorax"]
+    else:
+        R, origin = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], [0.0, 0.0, 0.0]
     gt = model["gravity_thorax"]
-    g_scap = [math.fsum(R[i][k] * gt[i] for i in range(3)) for k in range(3)]   # R^T g
+    g_base = [math.fsum(R[i][k] * gt[i] for i in range(3)) for k in range(3)]   # R^T g
     gl = model["glenoid"]
     pj = model["passive_joint"]
-    arm_mass = math.fsum(b["mass"] for b in model["bodies"])
+    body_names = [b["name"] for b in model["bodies"]]
+    humerus = body_names.index("humerus")
+    arm_mass = math.fsum(b["mass"] for b in model["bodies"][humerus:])
+    lines.append(f"const char* const kBodyNames[{len(body_names)}] = {{{', '.join(cxx.cstr(b) for b in body_names)}}};")
+    if base == "thorax":
+        gf = model["girdle_forces"]
+        el, ct, co = gf["thorax_ellipsoid"], gf["contact"], gf["conoid"]
+        pts = ct["points"]
+        lines += [
+            f"const char* const kContactPointNames[{len(pts)}] = {{{', '.join(cxx.cstr(p['name']) for p in pts)}}};",
+            "",
+            "const GirdleDef kGirdle = {",
+            f"    .thorax = {{.centre = {_arr(el['centre'])}, .radii = {_arr(el['radii'])}, "
+            f".k = {f(ct['stiffness'])}, .eps = {f(ct['eps'])}}},",
+            f"    .num_contact_points = {len(pts)},",
+            "    .contact_point_names = kContactPointNames,",
+            f"    .conoid = {{.origin = {_arr(co['origin']['point'])}, .insertion = {_arr(co['insertion']['point'])}, "
+            f".length = {f(co['length'])}, .stiffness = {f(co['stiffness'])}, .eps = {f(co['eps'])}}},",
+            "    .points = &girdle_points,",
+            "};",
+        ]
+    lines.append("")
     lines += [
         "const ModelDef kModel = {",
         f"    .name = {cxx.cstr(model['name'])},",
@@ -739,9 +877,15 @@ def model_source(model: dict, ns: str, digest: str) -> str:
         "    .muscles = kMuscles,",
         f"    .num_groups = {len(groups)},",
         f"    .groups = {groups_ptr},",
-        f"    .gravity_scapula = {_arr(g_scap)},",
-        f"    .scapula_rotation_in_thorax = {_arr([x for row in R for x in row])},",
-        f"    .scapula_origin_in_thorax = {_arr(model['scapula']['origin_in_thorax'])},",
+        f"    .base_body = {cxx.cstr(base)},",
+        f"    .gravity_base = {_arr(g_base)},",
+        f"    .base_rotation_in_thorax = {_arr([x for row in R for x in row])},",
+        f"    .base_origin_in_thorax = {_arr(origin)},",
+        f"    .num_bodies = {len(body_names)},",
+        "    .body_names = kBodyNames,",
+        f"    .scapula_body = {body_names.index('scapula') if 'scapula' in body_names else -1},",
+        f"    .humerus_body = {humerus},",
+        f"    .girdle = {'&kGirdle' if base == 'thorax' else 'nullptr'},",
         f"    .gh_centre = {_arr(gl['gh_centre'])},",
         f"    .glenoid_normal = {_arr(gl['normal'])},",
         f"    .glenoid_major_axis = {_arr(gl['major_axis'])},",

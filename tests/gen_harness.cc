@@ -34,8 +34,8 @@ const char* h_group_name(int i) { return md().groups[i].name; }
 int h_group_size(int i) { return md().groups[i].num_elements; }
 int h_group_element(int i, int k) { return md().groups[i].elements[k]; }
 double h_arm_mass() { return md().arm_mass; }
-void h_gravity_scapula(double* g) { std::memcpy(g, md().gravity_scapula, sizeof(double) * 3); }
-void h_scapula_rotation(double* R) { std::memcpy(R, md().scapula_rotation_in_thorax, sizeof(double) * 9); }
+void h_gravity_base(double* g) { std::memcpy(g, md().gravity_base, sizeof(double) * 3); }
+void h_scapula_rotation(double* R) { std::memcpy(R, md().base_rotation_in_thorax, sizeof(double) * 9); }
 
 void h_mass_matrix(const double* q, double* M) { md().mass_matrix(q, M); }
 void h_bias_force(const double* q, const double* qd, const double* g, double* b) { md().bias_force(q, qd, g, b); }

@@ -105,9 +105,9 @@ class GenModel:
         self.lib.h_gh_directions(_ptr(self._q(q)), _ptr(d))
         return d
 
-    def gravity_scapula(self):
+    def gravity_base(self):
         g = np.zeros(3)
-        self.lib.h_gravity_scapula(_ptr(g))
+        self.lib.h_gravity_base(_ptr(g))
         return g
 
 

@@ -39,7 +39,7 @@ def test_mass_matrix_and_bias_vs_newton_euler(gen_model, ref):
         np.testing.assert_array_equal(M, M.T)
         assert np.all(np.linalg.eigvalsh(M) > 0)
         worst["b"] = max(worst["b"], rel_err(gen_model.bias_force(q, qd, g), ref.bias_force(q, qd, g)))
-        gs = gen_model.gravity_scapula()
+        gs = gen_model.gravity_base()
         worst["b"] = max(worst["b"], rel_err(gen_model.bias_force(q, qd, gs), ref.bias_force(q, qd, gs)))
     print(f"max relative error vs Newton-Euler: {worst}")
     assert worst["M"] < RTOL and worst["b"] < RTOL
@@ -148,7 +148,7 @@ def _energy(gen_model, ref, q, qd, g):
 
 def test_energy_conservation_passive_pendulum(gen_model, ref):
     """Muscle-free, undamped arm under gravity: RK4 on M qdd = b conserves kinetic + potential energy."""
-    g = gen_model.gravity_scapula()
+    g = gen_model.gravity_base()
 
     def f(x):
         q, qd = x[:5], x[5:]
@@ -231,7 +231,7 @@ def test_dynamics_vs_opensim(gen_model, osim_arm):
         UD = state.getUDot()
         udot = np.array([UD.get(k) for k in range(UD.size())])
         b_osim = (Mfull @ udot)[uidx]
-        worst["b"] = max(worst["b"], rel_err(gen_model.bias_force(q, qd, gen_model.gravity_scapula()), b_osim))
+        worst["b"] = max(worst["b"], rel_err(gen_model.bias_force(q, qd, gen_model.gravity_base()), b_osim))
         # and OpenSim's inverse-dynamics residual M*0 + C - 0 is minus our velocity terms
         res = osim.Vector()
         matter.calcResidualForceIgnoringConstraints(state, osim.Vector(0, 0.0), osim.VectorOfSpatialVec(),

@@ -64,7 +64,7 @@ def test_model_is_immutable_and_shared():
     m = armrt.Model("das2")
     with pytest.raises(AttributeError, match="immutable"):
         m.name = "x"
-    for a in (m.dof_ranges, m.rest_posture, m.parameters["fmax"], m.crosses_gh, m.gravity_scapula):
+    for a in (m.dof_ranges, m.rest_posture, m.parameters["fmax"], m.crosses_gh, m.gravity_base):
         with pytest.raises(ValueError):
             a[0] = 0
     with pytest.raises(TypeError):
@@ -110,7 +110,7 @@ def test_model_geometry_at_any_pose_matches_the_arm():
     R, p = m.body_poses(q, frame="scapula")
     np.testing.assert_allclose(p[0], m.glenoid["gh_centre"], atol=1e-12)
     Rt, pt = m.body_poses(q)
-    np.testing.assert_allclose(pt[0], m.scapula_rotation_in_thorax @ p[0] + m.scapula_origin_in_thorax, atol=1e-15)
+    np.testing.assert_allclose(pt[0], m.base_rotation_in_thorax @ p[0] + m.base_origin_in_thorax, atol=1e-15)
     np.testing.assert_allclose(Rt[3].T @ Rt[3], np.eye(3), atol=1e-12)
     # Hand Jacobian against a finite difference of the hand position.
     Jv, _ = m.hand_jacobian(q)

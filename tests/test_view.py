@@ -60,7 +60,7 @@ def test_segment_lengths_are_the_models(geom):
 def test_static_girdle(geom):
     st = geom.static()
     assert {"clavicle_r", "scapula_r", "midline"} <= set(st)
-    np.testing.assert_allclose(st["clavicle_r"][1], geom.info["scapula_origin_in_thorax"])
+    np.testing.assert_allclose(st["clavicle_r"][1], geom.info["base_origin_in_thorax"])
     gh = geom.to_thorax(geom.gh_centre_scapula)
     assert gh[0] > 0.1 and abs(gh[1]) < 0.1          # right shoulder, near IJ height
     seg, idx = geom.gh_lines_of_action(geom.rest)

@@ -453,7 +453,7 @@ void mass_matrix(const double* q, double* M) {
   M[24] = x314*(0.00063869999999999997*x309 + 0.00063869999999999997*x311 + 0.00063869999999999997*x313) + x314*(0.0030585*x309 + 0.0030585*x311 + 0.0030585*x313) + x318*(0.00063869999999999997*x315 + 0.00063869999999999997*x316 + 0.00063869999999999997*x317) + x318*(0.0030585*x315 + 0.0030585*x316 + 0.0030585*x317) + x322*(0.00019039999999999999*x319 + 0.00019039999999999999*x320 + 0.00019039999999999999*x321) + x322*(0.00045324999999999999*x319 + 0.00045324999999999999*x320 + 0.00045324999999999999*x321) + 0.5464*x325*x325 + 0.5464*x327*x327 + 0.52500000000000002*x330*x330 + 0.52500000000000002*x332*x332 + 0.5464*x377*x377 + 0.52500000000000002*x378*x378;
 }
 
-void bias_force(const double* q, const double* qd, const double* g_scapula, double* b) {
+void bias_force(const double* q, const double* qd, const double* g_base, double* b) {
   const double q0 = q[0];
   const double q1 = q[1];
   const double q2 = q[2];
@@ -464,9 +464,9 @@ void bias_force(const double* q, const double* qd, const double* g_scapula, doub
   const double qd2 = qd[2];
   const double qd3 = qd[3];
   const double qd4 = qd[4];
-  const double g0 = g_scapula[0];
-  const double g1 = g_scapula[1];
-  const double g2 = g_scapula[2];
+  const double g0 = g_base[0];
+  const double g1 = g_base[1];
+  const double g2 = g_base[2];
   double s_q0, c_q0;
   armrt::sin_cos(q0, &s_q0, &c_q0);
   double s_q1, c_q1;
@@ -867,7 +867,7 @@ void bias_force(const double* q, const double* qd, const double* g_scapula, doub
   b[4] = -x188*x380 - x191*x380 - x200*x381 - x202*x381 - x206*x382 - x207*x382 + x286*(x138*x274 - x142*x280) + x291*(-x138*x272 + x149*x280) + x317*(x138*x377 - x142*x378) + x325*(-x138*x379 + x149*x378) + x354*(x142*x272 - x149*x274) + x356*(x142*x379 - x149*x377);
 }
 
-void dynamics(const double* q, const double* qd, const double* g_scapula, double* M, double* b) {
+void dynamics(const double* q, const double* qd, const double* g_base, double* M, double* b) {
   const double q0 = q[0];
   const double q1 = q[1];
   const double q2 = q[2];
@@ -878,9 +878,9 @@ void dynamics(const double* q, const double* qd, const double* g_scapula, double
   const double qd2 = qd[2];
   const double qd3 = qd[3];
   const double qd4 = qd[4];
-  const double g0 = g_scapula[0];
-  const double g1 = g_scapula[1];
-  const double g2 = g_scapula[2];
+  const double g0 = g_base[0];
+  const double g1 = g_base[1];
+  const double g2 = g_base[2];
   double s_q0, c_q0;
   armrt::sin_cos(q0, &s_q0, &c_q0);
   double s_q1, c_q1;

@@ -192,6 +192,8 @@ const GroupDef kGroups[9] = {
     {.name = "pectoralis_major", .num_elements = 8, .elements = kGroup8},
 };
 
+const char* const kBodyNames[4] = {"humerus", "ulna", "radius", "hand"};
+
 const ModelDef kModel = {
     .name = "das2",
     .source_hash = "973b99849a1cad41d71742fa7ae6c48046a52e88e4b91a74e1b104b72a56dc57",
@@ -203,9 +205,15 @@ const ModelDef kModel = {
     .muscles = kMuscles,
     .num_groups = 9,
     .groups = kGroups,
-    .gravity_scapula = {1.9151805406858844, -9.4078806812419753, -1.9985616844601333},
-    .scapula_rotation_in_thorax = {0.93779623202356432, 0.12184584092939055, 0.3251027810564136, -0.19529406481172312, 0.95933684604242797, 0.20379657522804764, -0.28705131153109059, -0.25461030394227269, 0.9234582490154627},
-    .scapula_origin_in_thorax = {0.18412016703277295, 0.0058219860086753932, 0.10332838735285975},
+    .base_body = "scapula",
+    .gravity_base = {1.9151805406858844, -9.4078806812419753, -1.9985616844601333},
+    .base_rotation_in_thorax = {0.93779623202356432, 0.12184584092939055, 0.3251027810564136, -0.19529406481172312, 0.95933684604242797, 0.20379657522804764, -0.28705131153109059, -0.25461030394227269, 0.9234582490154627},
+    .base_origin_in_thorax = {0.18412016703277295, 0.0058219860086753932, 0.10332838735285975},
+    .num_bodies = 4,
+    .body_names = kBodyNames,
+    .scapula_body = -1,
+    .humerus_body = 0,
+    .girdle = nullptr,
     .gh_centre = {0.002, -0.023, -0.043900000000000002},
     .glenoid_normal = {-0.99192631324681679, 0.072419590912111156, -0.10410375565127088},
     .glenoid_major_axis = {0.075486086245136821, 0.9968125288727907, -0.025819238285113719},

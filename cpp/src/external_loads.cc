@@ -8,7 +8,7 @@ bool external_load(const Model& m, const double* q, const double* hand_force, co
                    double* f_ext, double* t_ext, double* tau_ext) {
   const ModelDef& def = *m.def;
   const int nq = m.num_dofs;
-  const double* Rs = def.scapula_rotation_in_thorax;  // columns = scapula axes in thorax
+  const double* Rs = def.base_rotation_in_thorax;  // columns = scapula axes in thorax
   for (int k = 0; k < 3; ++k) {
     f_ext[k] = Rs[0 * 3 + k] * hand_force[0] + Rs[1 * 3 + k] * hand_force[1] + Rs[2 * 3 + k] * hand_force[2];
     t_ext[k] = Rs[0 * 3 + k] * hand_moment[0] + Rs[1 * 3 + k] * hand_moment[1] + Rs[2 * 3 + k] * hand_moment[2];
@@ -25,11 +25,11 @@ bool external_load(const Model& m, const double* q, const double* hand_force, co
 
 void hand_position_in_thorax(const Model& m, const double* q, double* p_thorax) {
   const ModelDef& def = *m.def;
-  const double* Rs = def.scapula_rotation_in_thorax;
+  const double* Rs = def.base_rotation_in_thorax;
   double p[3];
   def.hand_position(q, p);
   for (int k = 0; k < 3; ++k)
-    p_thorax[k] = def.scapula_origin_in_thorax[k] + Rs[k * 3 + 0] * p[0] + Rs[k * 3 + 1] * p[1] + Rs[k * 3 + 2] * p[2];
+    p_thorax[k] = def.base_origin_in_thorax[k] + Rs[k * 3 + 0] * p[0] + Rs[k * 3 + 1] * p[1] + Rs[k * 3 + 2] * p[2];
 }
 
 }  // namespace armrt

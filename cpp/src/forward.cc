@@ -4,6 +4,7 @@
 //   muscles         u, L, R, lce, a -> da/dt, dlce/dt, F, tau_muscle        muscles.cc
 //   passive joints  q, qd -> tau_passive                                   passive_joints.cc
 //   external loads  q, hand force/moment -> tau_ext                        external_loads.cc
+//   girdle          q -> tau_girdle: scapulothoracic contact, conoid        girdle.cc (das3 only)
 //   skeleton        q, qd, tau -> M(q), qdd from M qdd = tau + b(q, qd, g)  skeleton.cc
 //   GH reaction     q, qd, qdd, F, hand load -> GH force, GHstab           gh_reaction.cc (record only)
 #include <algorithm>
@@ -40,9 +41,14 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
   double f_ext[3], t_ext[3], tau_ext[kMaxDofs];
   external_load(m, q, d.hand_force.data(), d.hand_moment.data(), f_ext, t_ext, tau_ext);
 
+  // Girdle.
+  double tau_girdle[kMaxDofs];
+  if (def.girdle) girdle_forces(m, q, tau_girdle, jac ? jac->dtau_girdle_dq.data() : nullptr, record ? &d.girdle : nullptr);
+  else std::fill(tau_girdle, tau_girdle + nq, 0.0);
+
   // Skeleton.
   double tau[kMaxDofs];
-  for (int j = 0; j < nq; ++j) tau[j] = tau_muscle[j] + tau_passive[j] + tau_ext[j];
+  for (int j = 0; j < nq; ++j) tau[j] = tau_muscle[j] + tau_passive[j] + tau_ext[j] + tau_girdle[j];
   double M[kMaxDofs * kMaxDofs];
   double qdd[kMaxDofs];
   skeleton_dynamics(m, q, qd, tau, M, qdd);
@@ -61,6 +67,7 @@ void forward(const Model& m, Data& d, const double* x, double* xdot, bool record
     d.muscle_torque[j] = tau_muscle[j];
     d.passive_torque[j] = tau_passive[j];
     d.external_torque[j] = tau_ext[j];
+    d.girdle_torque[j] = tau_girdle[j];
     d.qdd[j] = qdd[j];
   }
   hand_position_in_thorax(m, q, d.hand_position.data());

@@ -1,6 +1,8 @@
 // Stage: GH reaction. (q, qd, qdd, tendon forces F, hand load) -> force of the humeral head on the
 // glenoid (scapula frame) and its stability: the muscle forces along their lines of action, the hand
-// load, the arm's weight minus its mass times acceleration (docs/conventions.md).
+// load, the arm's weight minus its mass times acceleration (docs/conventions.md). The lines of action are
+// in the scapula frame already; the load, weight and inertial force are in the base frame and, when the
+// scapula moves (das3), are turned into the scapula's frame at q.
 #include <cmath>
 
 #include "armrt/engine.h"
@@ -21,18 +23,28 @@ void gh_stability(const ModelDef& def, const double* f, double* theta, double* p
 }
 
 void gh_reaction(const Model& m, const double* q, const double* qd, const double* qdd, const double* force,
-                 const double* f_ext_scapula, double* gh_force, double* theta, double* phi, double* stab) {
+                 const double* f_ext_base, double* gh_force, double* theta, double* phi, double* stab) {
   const ModelDef& def = *m.def;
   const int nq = m.num_dofs, n = m.num_elements;
   double dir[kMaxElements * 3];
   def.gh_directions(q, dir);
   double A[3 * kMaxDofs], c[3];
   def.arm_momentum_rate(q, qd, A, c);
+  double f_base[3];
   for (int k = 0; k < 3; ++k) {
     double Aqdd = 0.0;
     for (int j = 0; j < nq; ++j) Aqdd += A[k * nq + j] * qdd[j];
-    const double inertial = Aqdd + c[k];
-    double fk = f_ext_scapula[k] + def.arm_mass * m.gravity_scapula[k] - inertial;
+    f_base[k] = f_ext_base[k] + def.arm_mass * m.gravity_base[k] - (Aqdd + c[k]);
+  }
+  double f_scapula[3] = {f_base[0], f_base[1], f_base[2]};
+  if (def.scapula_body >= 0) {
+    double R[kMaxBodies * 9], p[kMaxBodies * 3];
+    def.body_poses(q, R, p);
+    const double* Rs = R + 9 * def.scapula_body;  // columns = scapula axes in the base frame
+    for (int k = 0; k < 3; ++k) f_scapula[k] = Rs[k] * f_base[0] + Rs[3 + k] * f_base[1] + Rs[6 + k] * f_base[2];
+  }
+  for (int k = 0; k < 3; ++k) {
+    double fk = f_scapula[k];
     for (int i = 0; i < n; ++i) fk += force[i] * dir[i * 3 + k];
     gh_force[k] = fk;
   }

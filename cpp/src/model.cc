@@ -76,10 +76,19 @@ void model_init(Model& m, const ModelDef& def) {
   if (def.num_elements < 1 || def.num_elements > kMaxElements)
     throw std::invalid_argument("model '" + name + "' has " + std::to_string(def.num_elements) +
                                 " elements; the engine takes 1 to " + std::to_string(kMaxElements));
+  if (def.num_bodies < 1 || def.num_bodies > kMaxBodies || def.humerus_body < 0 || def.humerus_body >= def.num_bodies ||
+      def.scapula_body >= def.num_bodies)
+    throw std::invalid_argument("model '" + name + "' has " + std::to_string(def.num_bodies) +
+                                " bodies (humerus " + std::to_string(def.humerus_body) + "); the engine takes 1 to " +
+                                std::to_string(kMaxBodies) + " with the humerus among them");
+  if (def.girdle && (def.girdle->num_contact_points < 1 || def.girdle->num_contact_points > kMaxContactPoints ||
+                     def.scapula_body < 0 || !def.girdle->points))
+    throw std::invalid_argument("model '" + name + "': girdle forces need a moving scapula, 1 to " +
+                                std::to_string(kMaxContactPoints) + " contact points and their points function");
   m.def = &def;
   m.num_dofs = def.num_dofs;
   m.num_elements = def.num_elements;
-  for (int k = 0; k < 3; ++k) m.gravity_scapula[k] = def.gravity_scapula[k];
+  for (int k = 0; k < 3; ++k) m.gravity_base[k] = def.gravity_base[k];
   for (int i = 0; i < m.num_elements; ++i) {
     m.element[i].strength_scale = 1.0;
     m.element[i].max_activation = def.elements[i].max_activation;

@@ -32,6 +32,10 @@ void add_row(Recording& r, const Simulator& s, const double* x, double time, dou
   thorax_humerus_angles(m, x + q_offset(m), angles);
   put(r.thorax_humerus, angles, 3);
   r.tet_ns.push_back(tet_ns);
+  if (r.num_contact_points > 0) {
+    put(r.contact_distance, d.girdle.contact_distance.data(), r.num_contact_points);
+    r.conoid_tension.push_back(d.girdle.conoid_tension);
+  }
 }
 
 }  // namespace
@@ -41,12 +45,15 @@ long simulate_recorded(Simulator& s, const double* u, bool held, long n_steps, l
   const int n = s.model.num_elements, nq = s.model.num_dofs;
   r.num_dofs = nq;
   r.num_elements = n;
+  r.num_contact_points = s.model.def->girdle ? s.model.def->girdle->num_contact_points : 0;
   const long n_rec = n_steps / record_every + 1;
   for (auto* v : {&r.time, &r.gh_stab, &r.tet_ns}) v->reserve(n_rec);
   for (auto* v : {&r.q, &r.qdot}) v->reserve(n_rec * nq);
   for (auto* v : {&r.lce, &r.activation, &r.excitation, &r.muscle_force, &r.muscle_length}) v->reserve(n_rec * n);
   for (auto* v : {&r.gh_force, &r.hand_position, &r.thorax_humerus}) v->reserve(n_rec * 3);
   r.gh_angles.reserve(n_rec * 2);
+  r.contact_distance.reserve(n_rec * r.num_contact_points);
+  r.conoid_tension.reserve(r.num_contact_points > 0 ? n_rec : 0);
   // Only a recorded step keeps a copy of its start state (its outputs describe that state).
   std::vector<double> x0(state_size(s.model));
   long done = 0;

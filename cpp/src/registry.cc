@@ -8,18 +8,20 @@
 
 #include "armrt/model.h"
 #include "das2.h"
+#include "das3.h"
 #include "participant_A.h"
 
 namespace armrt {
 
 namespace {
 
-// Built-in models. participant_A: participant A's elbow-forearm model (ELx, PSy; models/participant_A.json);
+// Built-in models. das3: the 11-DOF shoulder-girdle model (models/das3.json, docs/das3.md). participant_A: participant A's elbow-forearm model (ELx, PSy; models/participant_A.json);
 // its injured, paralysed and FES variants share its geometry and are applied as profiles
 // (Arm.apply_profile), so they need no code of their own.
 struct Registry {
   std::mutex mutex;
-  std::vector<const ModelDef*> models{&generated::das2::model_def(), &generated::participant_A::model_def()};
+  std::vector<const ModelDef*> models{&generated::das2::model_def(), &generated::das3::model_def(),
+                                      &generated::participant_A::model_def()};
 };
 
 Registry& registry() {
@@ -92,6 +94,11 @@ bool model_fits_engine(const ModelDef& def, std::string* why) {
   if (!def.mass_matrix || !def.bias_force || !def.dynamics || !def.hand_position || !def.hand_jacobian ||
       !def.arm_momentum_rate || !def.body_poses || !def.muscle_lengths || !def.muscle_paths || !def.gh_directions)
     return fail("a model function is missing");
+  if (!def.base_body || !def.body_names) return fail("the base or body names are missing");
+  for (int b = 0; b < def.num_bodies && b < kMaxBodies; ++b)
+    if (!def.body_names[b]) return fail("body " + std::to_string(b) + " has no name");
+  if (def.girdle && (!def.girdle->points || !def.girdle->contact_point_names))
+    return fail("the girdle forces' points function or contact point names are missing");
   return true;
 }
 

@@ -83,7 +83,8 @@ void jacobian_factor_n(const Model& m, StepJacobian& jac, double hg) {
     jac.lce_from_q[i] = hg * jac.dvel_dL[i] * jac.inv_lce[i];
     jac.series_stiffness[i] = jac.dforce_dL[i] + jac.dforce_dlce[i] * jac.lce_from_q[i];
   }
-  // K_eff = diag(dtau_passive/dq) - R^T diag(series_stiffness) R (symmetric: build the upper half).
+  // K_eff = diag(dtau_passive/dq) + dtau_girdle/dq - R^T diag(series_stiffness) R (symmetric: build the
+  // upper half of the muscle part).
   double K[nq * nq] = {};  // local: the compiler keeps it in registers (no aliasing with jac's arrays)
   for (int i = 0; i < n; ++i) {
     const double* r = R + i * nq;
@@ -95,6 +96,8 @@ void jacobian_factor_n(const Model& m, StepJacobian& jac, double hg) {
     K[a * nq + a] += jac.dtau_passive_dq[a];
     for (int b = 0; b < a; ++b) K[a * nq + b] = K[b * nq + a];
   }
+  if (m.def->girdle)
+    for (int k = 0; k < nq * nq; ++k) K[k] += jac.dtau_girdle_dq[k];
   std::copy(K, K + nq * nq, jac.stiffness.begin());
   // Schur complement S = M - hg diag(dtau_passive/dqd) - hg^2 K_eff.
   double* S = jac.schur_lu.data();

@@ -49,7 +49,7 @@ void solve_spd(const double* A, const double* b, int n, double* x) {
 void skeleton_dynamics(const Model& m, const double* q, const double* qd, const double* tau, double* M, double* qdd) {
   const int nq = m.num_dofs;
   double rhs[kMaxDofs];
-  m.def->dynamics(q, qd, m.gravity_scapula.data(), M, rhs);
+  m.def->dynamics(q, qd, m.gravity_base.data(), M, rhs);
   for (int j = 0; j < nq; ++j) rhs[j] += tau[j];
   solve_spd(M, rhs, nq, qdd);
 }

@@ -119,9 +119,9 @@ TEST_CASE("rotator_cuff = infra + termin + supra + subscap") {
 
 TEST_CASE("gravity magnitude 9.80665, scapula rotation orthonormal, gravity = R^T g_thorax") {
   const ModelDef& def = armrt_test::das2();
-  const double* g = def.gravity_scapula;
+  const double* g = def.gravity_base;
   CHECK(std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) == doctest::Approx(9.80665).epsilon(1e-12));
-  const double* R = def.scapula_rotation_in_thorax;
+  const double* R = def.base_rotation_in_thorax;
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) {
       double s = 0;
@@ -132,7 +132,7 @@ TEST_CASE("gravity magnitude 9.80665, scapula rotation orthonormal, gravity = R^
   for (int k = 0; k < 3; ++k) CHECK(g[k] == doctest::Approx(R[1 * 3 + k] * -9.80665).epsilon(1e-9));
   Model m;
   model_init(m, def);
-  for (int k = 0; k < 3; ++k) CHECK(m.gravity_scapula[k] == g[k]);
+  for (int k = 0; k < 3; ++k) CHECK(m.gravity_base[k] == g[k]);
 }
 
 TEST_CASE("mass matrix symmetric positive definite; moment arms = -dL/dq") {

@@ -89,7 +89,7 @@ TEST_CASE("mass matrix, gravity and moment arms match the closed form") {
     for (double q1 : {-1.0, 0.3}) {
       const double q[2] = {q0, q1}, qd[2] = {0.7, -2.0};
       double M[4], b[2];
-      def.dynamics(q, qd, def.gravity_scapula, M, b);
+      def.dynamics(q, qd, def.gravity_base, M, b);
       CHECK(M[0] == doctest::Approx(kInertiaEl).epsilon(1e-12));
       CHECK(M[3] == doctest::Approx(kInertiaPs).epsilon(1e-12));
       CHECK(std::fabs(M[1]) < 1e-14);

@@ -179,7 +179,7 @@ int main(int argc, char** argv) {
     items.push_back(time_it("muscle_lengths", nmax, reps, [&] { def->muscle_lengths(q, L); sink = L[0]; }));
     items.push_back(time_it("mass_matrix", nmax, reps, [&] { def->mass_matrix(q, M); sink = M[6]; }));
     items.push_back(time_it("dynamics", nmax, reps, [&] {
-      def->dynamics(q, q + qd_offset(s->model), s->model.gravity_scapula.data(), M, b);
+      def->dynamics(q, q + qd_offset(s->model), s->model.gravity_base.data(), M, b);
       sink = M[6] + b[2];
     }));
   }

@@ -93,9 +93,31 @@ py::dict model_info(const ModelDef& def) {
   info["muscles"] = muscles;
   info["groups"] = groups;
   info["arm_mass"] = def.arm_mass;
-  info["gravity_scapula"] = std::vector<double>(def.gravity_scapula, def.gravity_scapula + 3);
-  info["scapula_rotation_in_thorax"] = std::vector<double>(def.scapula_rotation_in_thorax, def.scapula_rotation_in_thorax + 9);
-  info["scapula_origin_in_thorax"] = std::vector<double>(def.scapula_origin_in_thorax, def.scapula_origin_in_thorax + 3);
+  info["base_body"] = std::string(def.base_body);
+  {
+    py::list bodies;
+    for (int b = 0; b < def.num_bodies; ++b) bodies.append(def.body_names[b]);
+    info["body_names"] = bodies;
+  }
+  info["scapula_body"] = def.scapula_body;
+  info["humerus_body"] = def.humerus_body;
+  if (def.girdle) {
+    const GirdleDef& g = *def.girdle;
+    py::list names;
+    for (int k = 0; k < g.num_contact_points; ++k) names.append(g.contact_point_names[k]);
+    info["girdle"] = py::dict(
+        py::arg("contact_points") = names,
+        py::arg("thorax_centre") = std::vector<double>(g.thorax.centre, g.thorax.centre + 3),
+        py::arg("thorax_radii") = std::vector<double>(g.thorax.radii, g.thorax.radii + 3),
+        py::arg("contact_stiffness") = g.thorax.k, py::arg("contact_eps") = g.thorax.eps,
+        py::arg("conoid_length") = g.conoid.length, py::arg("conoid_stiffness") = g.conoid.stiffness,
+        py::arg("conoid_eps") = g.conoid.eps);
+  } else {
+    info["girdle"] = py::none();
+  }
+  info["gravity_base"] = std::vector<double>(def.gravity_base, def.gravity_base + 3);
+  info["base_rotation_in_thorax"] = std::vector<double>(def.base_rotation_in_thorax, def.base_rotation_in_thorax + 9);
+  info["base_origin_in_thorax"] = std::vector<double>(def.base_origin_in_thorax, def.base_origin_in_thorax + 3);
   info["gh_centre"] = std::vector<double>(def.gh_centre, def.gh_centre + 3);
   info["glenoid_normal"] = std::vector<double>(def.glenoid_normal, def.glenoid_normal + 3);
   info["glenoid_major_axis"] = std::vector<double>(def.glenoid_major_axis, def.glenoid_major_axis + 3);
@@ -238,6 +260,14 @@ PYBIND11_MODULE(_core, mod) {
         o["gh_theta"] = s.data.gh_theta;
         o["gh_phi"] = s.data.gh_phi;
         o["gh_stab"] = s.data.gh_stab;
+        if (const GirdleDef* g = s.model.def->girdle) {
+          const int P = g->num_contact_points;
+          o["girdle_torque"] = copy(s.data.girdle_torque.data(), {nq});
+          o["contact_distance"] = copy(s.data.girdle.contact_distance.data(), {P});
+          o["contact_force"] = copy(s.data.girdle.contact_force.data(), {P});
+          o["conoid_length"] = s.data.girdle.conoid_length;
+          o["conoid_tension"] = s.data.girdle.conoid_tension;
+        }
         return o;
       })
       .def("tet_stats", [](const Simulator& s) {
@@ -265,8 +295,8 @@ PYBIND11_MODULE(_core, mod) {
         }
         model_update_derived(s.model);
       })
-      .def_property("gravity", [](const Simulator& s) { return std::vector<double>(s.model.gravity_scapula.begin(), s.model.gravity_scapula.end()); },
-                    [](Simulator& s, const Array& g) { const double* p = checked(g, 3, "gravity"); for (int k = 0; k < 3; ++k) s.model.gravity_scapula[k] = p[k]; })
+      .def_property("gravity", [](const Simulator& s) { return std::vector<double>(s.model.gravity_base.begin(), s.model.gravity_base.end()); },
+                    [](Simulator& s, const Array& g) { const double* p = checked(g, 3, "gravity"); for (int k = 0; k < 3; ++k) s.model.gravity_base[k] = p[k]; })
       .def_property("max_joint_speed", [](const Simulator& s) { return s.model.max_joint_speed; },
                     [](Simulator& s, double v) { s.model.max_joint_speed = v; })
       // simulate: excitation is (T, n) (one row per step) or (1, n) (held); the loop runs without the GIL.
@@ -311,6 +341,10 @@ PYBIND11_MODULE(_core, mod) {
         out["hand_position"] = arr(r.hand_position, 3);
         out["thorax_humerus"] = arr(r.thorax_humerus, 3);
         out["tet_ns"] = arr(r.tet_ns, 0);
+        if (r.num_contact_points > 0) {
+          out["contact_distance"] = arr(r.contact_distance, r.num_contact_points);
+          out["conoid_tension"] = arr(r.conoid_tension, 0);
+        }
         out["steps"] = steps_done;
         return out;
       }, py::arg("excitation"), py::arg("n_steps"), py::arg("record_every") = 1)
@@ -335,11 +369,12 @@ PYBIND11_MODULE(_core, mod) {
       })
       .def("bias_force", [](const Simulator& s, const Array& q, const Array& qd) {
         Array b({s.model.num_dofs});
-        s.model.def->bias_force(checked(q, s.model.num_dofs, "q"), checked(qd, s.model.num_dofs, "qdot"), s.model.gravity_scapula.data(), b.mutable_data());
+        s.model.def->bias_force(checked(q, s.model.num_dofs, "q"), checked(qd, s.model.num_dofs, "qdot"), s.model.gravity_base.data(), b.mutable_data());
         return b;
       })
       .def("body_poses", [](const Simulator& s, const Array& q) {
-        Array R({4, 3, 3}), p({4, 3});
+        const int nb = s.model.def->num_bodies;
+        Array R({nb, 3, 3}), p({nb, 3});
         s.model.def->body_poses(checked(q, s.model.num_dofs, "q"), R.mutable_data(), p.mutable_data());
         return py::make_tuple(R, p);
       })

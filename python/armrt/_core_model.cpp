@@ -94,14 +94,14 @@ void bind_model(py::module_& mod) {
         return py::make_tuple(o[0], o[1]);
       }, py::arg("q"))
       .def("body_poses", [](const ModelDef& d, const Array& q) {
-        auto o = per_pose(d, q, {{4, 3, 3}, {4, 3}}, [&](const double* qk, double** out) { d.body_poses(qk, out[0], out[1]); });
+        auto o = per_pose(d, q, {{d.num_bodies, 3, 3}, {d.num_bodies, 3}}, [&](const double* qk, double** out) { d.body_poses(qk, out[0], out[1]); });
         return py::make_tuple(o[0], o[1]);
       }, py::arg("q"))
       .def("bias_force", [](const ModelDef& d, const Array& q, const Array& qd, const Array& g) {
         if (qd.size() != d.num_dofs || g.size() != 3 || q.ndim() != 1)
           throw py::value_error("bias_force takes one pose: q and qdot of " + std::to_string(d.num_dofs) + ", gravity of 3");
         return per_pose(d, q, {{d.num_dofs}}, [&](const double* qk, double** out) { d.bias_force(qk, qd.data(), g.data(), out[0]); })[0];
-      }, py::arg("q"), py::arg("qdot"), py::arg("gravity_scapula"));
+      }, py::arg("q"), py::arg("qdot"), py::arg("gravity_base"));
 
   mod.attr("MODEL_ABI_VERSION") = kModelDefAbiVersion;
   mod.def("find_model", [](const std::string& name) -> const ModelDef* { return find_model(name); },

@@ -163,9 +163,14 @@ class Result:
     substeps: int = 1           # integration steps per control step
     model: str = ""
     model_hash: str = ""        # SHA-256 of the model file (reopens a model built on demand from the cache)
+    # Models whose scapula moves (das3) only, else None: first-order signed distance of each girdle
+    # contact point (TS, AI) from the thorax surface (negative: inside), and the conoid ligament's tension.
+    contact_distance: np.ndarray | None = None  # (T, P) m
+    conoid_tension: np.ndarray | None = None    # (T,) N
 
     ARRAYS = ("time", "q", "qdot", "lce", "activation", "excitation", "muscle_force", "muscle_length",
               "gh_force", "gh_stab", "gh_angles", "hand_position", "thorax_humerus", "tet_ns")
+    OPTIONAL_ARRAYS = ("contact_distance", "conoid_tension")
 
     @property
     def q_deg(self) -> np.ndarray:
@@ -265,6 +270,7 @@ class Result:
     def save(self, path) -> None:
         """Saves to a compressed .npz (load with Result.load)."""
         np.savez_compressed(path, **{k: getattr(self, k) for k in self.ARRAYS},
+                            **{k: getattr(self, k) for k in self.OPTIONAL_ARRAYS if getattr(self, k) is not None},
                             dof_names=np.array(self.dof_names), element_names=np.array(self.element_names),
                             integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model,
                             model_hash=self.model_hash)
@@ -290,6 +296,7 @@ class Result:
                 raise ValueError(f"{path}: not an armrt result, missing arrays {missing}")
             try:
                 fields = {k: np.asarray(z[k], dtype=float) for k in cls.ARRAYS}
+                fields.update({k: np.asarray(z[k], dtype=float) for k in cls.OPTIONAL_ARRAYS if k in z.files})
                 meta = dict(dof_names=[str(s) for s in z["dof_names"]],
                             element_names=[str(s) for s in z["element_names"]],
                             integrator=str(z["integrator"]) if "integrator" in z.files else "",

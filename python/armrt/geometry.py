@@ -73,8 +73,8 @@ class ArmGeometry:
         self.model = model
         self.info = _core.model_info(model)
         self._sim = _core.Simulator(model, "euler", 1e-3)
-        self.R_scapula = np.array(self.info["scapula_rotation_in_thorax"], dtype=float).reshape(3, 3)
-        self.o_scapula = np.array(self.info["scapula_origin_in_thorax"], dtype=float)
+        self.R_scapula = np.array(self.info["base_rotation_in_thorax"], dtype=float).reshape(3, 3)
+        self.o_scapula = np.array(self.info["base_origin_in_thorax"], dtype=float)
         self.gh_centre_scapula = np.array(self.info["gh_centre"], dtype=float)
         self.rest = np.array([d["rest"] for d in self.info["dofs"]])
         self.dof_names = [d["name"] for d in self.info["dofs"]]

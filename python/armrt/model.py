@@ -264,19 +264,19 @@ class Model:
         return float(self._info["arm_mass"])
 
     @property
-    def gravity_scapula(self) -> np.ndarray:
+    def gravity_base(self) -> np.ndarray:
         """(3,) m/s^2, gravity in the scapula frame (an Arm may change its own)."""
-        return _readonly(self._info["gravity_scapula"])
+        return _readonly(self._info["gravity_base"])
 
     @property
-    def scapula_rotation_in_thorax(self) -> np.ndarray:
+    def base_rotation_in_thorax(self) -> np.ndarray:
         """(3, 3): columns are the scapula axes in thorax coordinates."""
-        return _readonly(np.reshape(self._info["scapula_rotation_in_thorax"], (3, 3)))
+        return _readonly(np.reshape(self._info["base_rotation_in_thorax"], (3, 3)))
 
     @property
-    def scapula_origin_in_thorax(self) -> np.ndarray:
+    def base_origin_in_thorax(self) -> np.ndarray:
         """(3,) m."""
-        return _readonly(self._info["scapula_origin_in_thorax"])
+        return _readonly(self._info["base_origin_in_thorax"])
 
     @property
     def glenoid(self) -> MappingProxyType:
@@ -365,7 +365,7 @@ class Model:
         R, p = self._def.body_poses(self._q(q))
         if self._frame(frame) == "scapula":
             return R, p
-        Rs, os_ = self.scapula_rotation_in_thorax, self.scapula_origin_in_thorax
+        Rs, os_ = self.base_rotation_in_thorax, self.base_origin_in_thorax
         return np.einsum("ij,...bjk->...bik", Rs, R), p @ Rs.T + os_
 
     def hand_position(self, q, frame: str = "thorax") -> np.ndarray:
@@ -374,7 +374,7 @@ class Model:
         p = self._def.hand_position(self._q(q))
         if self._frame(frame) == "scapula":
             return p
-        return p @ self.scapula_rotation_in_thorax.T + self.scapula_origin_in_thorax
+        return p @ self.base_rotation_in_thorax.T + self.base_origin_in_thorax
 
     def hand_jacobian(self, q, frame: str = "thorax") -> tuple[np.ndarray, np.ndarray]:
         """(Jv (3, ndof) m/rad, Jw (3, ndof) 1): hand point velocity and hand angular velocity per joint
@@ -382,7 +382,7 @@ class Model:
         Jv, Jw = self._def.hand_jacobian(self._q(q))
         if self._frame(frame) == "scapula":
             return Jv, Jw
-        Rs = self.scapula_rotation_in_thorax
+        Rs = self.base_rotation_in_thorax
         return np.einsum("ij,...jk->...ik", Rs, Jv), np.einsum("ij,...jk->...ik", Rs, Jw)
 
     @staticmethod

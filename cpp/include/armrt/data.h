@@ -50,6 +50,7 @@ struct StepJacobian {
   std::array<double, kMaxDofs * kMaxDofs> mass_matrix{};     // kg m^2, num_dofs x num_dofs row-major
   std::array<double, kMaxDofs> dtau_passive_dq{};   // N m/rad, diagonal
   std::array<double, kMaxDofs> dtau_passive_dqd{};  // N m s/rad, diagonal
+  std::array<double, kMaxDofs * kMaxDofs> dtau_girdle_dq{};  // N m/rad, girdle contact and conoid (girdle.cc)
 
   // Factorisation of I - h gamma J for one h gamma (rosenbrock.cc).
   double hg = 0;                                    // s, h * gamma it was built for
@@ -59,8 +60,17 @@ struct StepJacobian {
   std::array<double, kMaxElements> series_stiffness{};  // N/m, dforce_dL + dforce_dlce * lce_from_q
   std::array<double, kMaxDofs * kMaxDofs> schur_lu{};   // LU of the num_dofs x num_dofs Schur complement
   std::array<int, kMaxDofs> schur_perm{};               // its row permutation
-  std::array<double, kMaxDofs * kMaxDofs> stiffness{};  // N m/rad, K_eff = diag(dtau_passive_dq) - R^T diag(series_stiffness) R
+  std::array<double, kMaxDofs * kMaxDofs> stiffness{};  // N m/rad, K_eff = diag(dtau_passive_dq) + dtau_girdle_dq - R^T diag(series_stiffness) R
   std::array<double, kMaxElements> tmp{};               // scratch of one solve
+};
+
+// The girdle stage's outputs (girdle.cc), for models whose scapula moves.
+struct GirdleState {
+  std::array<double, kMaxContactPoints> contact_distance{};  // m, first-order signed distance of TS, AI from
+                                                             // the thorax surface (negative: penetrating)
+  std::array<double, kMaxContactPoints> contact_force{};     // N, magnitude of each contact force
+  double conoid_length = 0;   // m
+  double conoid_tension = 0;  // N
 };
 
 // kOutOfDomain: a CE length outside [min_lce, max_lce], an activation outside [0, 1] or a joint more than
@@ -94,6 +104,9 @@ struct Data {
   // External loads (external_loads.cc).
   std::array<double, kMaxDofs> external_torque{};    // N m, from the hand force and moment
   std::array<double, 3> hand_position{};             // m, thorax frame
+  // Girdle forces (girdle.cc; zero for a fixed girdle).
+  std::array<double, kMaxDofs> girdle_torque{};      // N m
+  GirdleState girdle{};
   // Skeleton (skeleton.cc).
   std::array<double, kMaxDofs> qdd{};                // rad/s^2
   // GH reaction (gh_reaction.cc).

@@ -4,6 +4,7 @@
 //     muscles.cc         excitation, paths, CE state -> activation/CE rates, forces, tau_muscle
 //     passive_joints.cc  q, qd -> tau_passive
 //     external_loads.cc  q, hand load -> tau_ext
+//     girdle.cc          q -> tau_girdle (scapulothoracic contact, conoid ligament; das3)
 //     skeleton.cc        q, qd, tau -> M(q), qdd
 //     gh_reaction.cc     q, qd, qdd, forces, hand load -> GH force and stability
 //   integrate.cc     fixed-step Euler, RK4 and ROS2 (TET: Simulator::step, simulator.cc)
@@ -48,20 +49,25 @@ void generalised_force(const double* moment_arm, const double* force, int n, int
 void passive_joint_torque(const ModelDef& def, const double* q, const double* qd, double* tau);
 // Their derivatives (diagonal): d tau / dq (N m/rad) and d tau / dqd (N m s/rad).
 void passive_joint_stiffness(const ModelDef& def, const double* q, double* dtau_dq, double* dtau_dqd);
-// external_loads.cc. The hand force (N) and moment (N m), thorax frame, in the scapula frame (f_ext,
+// external_loads.cc. The hand force (N) and moment (N m), thorax frame, in the base frame (f_ext,
 // t_ext) and as generalised forces tau_ext (N m); false (tau_ext zero) when there is no load.
 bool external_load(const Model& m, const double* q, const double* hand_force, const double* hand_moment,
                    double* f_ext, double* t_ext, double* tau_ext);
 // The hand point (m) in the thorax frame at q.
 void hand_position_in_thorax(const Model& m, const double* q, double* p_thorax);
+// girdle.cc. Generalised forces tau (N m) of the girdle's contact and conoid forces at q (zero for a model
+// with a fixed girdle); with a non-null stiffness also d tau/dq (n x n row-major, N m/rad), with a
+// non-null state the contact distances and forces and the conoid's length and tension.
+void girdle_forces(const Model& m, const double* q, double* tau, double* stiffness, GirdleState* state);
 // skeleton.cc. M(q) (n x n, row-major, kg m^2) and qdd (rad/s^2) from M qdd = tau + b(q, qd, g).
 void skeleton_dynamics(const Model& m, const double* q, const double* qd, const double* tau, double* M, double* qdd);
 // Solves A x = b for a symmetric positive definite n x n A (row-major, n <= kMaxDofs), e.g. M(q) qdd = tau.
 void solve_spd(const double* A, const double* b, int n, double* x);
-// gh_reaction.cc. Force of the humeral head on the glenoid (N, scapula frame) from the tendon forces F,
-// the hand load f_ext (scapula frame) and the arm's weight and acceleration; its angles and GHstab.
+// gh_reaction.cc. Force of the humeral head on the glenoid (N, scapula frame, which moves with q when the
+// girdle does) from the tendon forces F, the hand load f_ext (base frame) and the arm's weight and
+// acceleration; its angles and GHstab.
 void gh_reaction(const Model& m, const double* q, const double* qd, const double* qdd, const double* force,
-                 const double* f_ext_scapula, double* gh_force, double* theta, double* phi, double* stab);
+                 const double* f_ext_base, double* gh_force, double* theta, double* phi, double* stab);
 // GH stability of a force of the humeral head on the glenoid (scapula frame).
 void gh_stability(const ModelDef& def, const double* force, double* theta, double* phi, double* stab);
 

@@ -80,7 +80,7 @@ struct Model {
   int num_elements = 0;   // muscle elements (<= kMaxElements)
   std::array<ElementConstants, kMaxElements> element{};
   MuscleArrays muscles{};  // derived from element[] by model_update_derived()
-  std::array<double, 3> gravity_scapula{};  // m/s^2, may be changed (e.g. a lying posture)
+  std::array<double, 3> gravity_base{};  // m/s^2, may be changed (e.g. a lying posture)
   double fibre_damping = kFibreDamping;     // N/(m/s)
   double max_joint_speed = 100.0;           // rad/s; faster means the simulation diverged
   // The stiffest CE mode at the rest posture with zero activation (model_update_derived): its eigenvalue

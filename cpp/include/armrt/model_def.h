@@ -5,12 +5,19 @@
 // Arrays are row-major; frames and sign conventions are in docs/conventions.md.
 #pragma once
 
+#include "armrt/girdle_forces.h"
+
 namespace armrt {
 
 // Layout version of the structs below. A model library built on demand (cpp/src/registry.cc) reports the
 // version it was compiled against and is refused if it differs: bump it whenever a field is added,
 // removed, reordered or changes meaning. It is also part of the on-demand build cache key.
-inline constexpr int kModelDefAbiVersion = 1;
+inline constexpr int kModelDefAbiVersion = 2;
+
+// Capacity of GirdleDef's contact points (das3: TS and AI).
+inline constexpr int kMaxContactPoints = 4;
+// Capacity of the bodies moved by q (das3: clavicle, scapula, humerus, ulna, radius, hand).
+inline constexpr int kMaxBodies = 8;
 
 struct ElementParams {
   const char* name;        // DAS3 element name, e.g. "deltscap1"
@@ -45,6 +52,19 @@ struct GroupDef {
   const int* elements;           // element indices
 };
 
+// The shoulder girdle's passive forces of a model whose clavicle and scapula move (das3; docs/das3.md):
+// the scapula's contact points glide on the thorax ellipsoid, the conoid ligament ties the scapula to
+// the clavicle. The base frame of such a model is the thorax, so all points are in thorax coordinates.
+struct GirdleDef {
+  ThoraxEllipsoid thorax;            // ellipsoid and contact penalty (girdle_forces.h)
+  int num_contact_points;            // P (das3: 2)
+  const char* const* contact_point_names;  // "TS", "AI"
+  ConoidLigament conoid;             // slack length, stiffness, eps (its points are computed by points())
+  // Positions p[(P + 2) * 3] (m, thorax frame) of the contact points, then the conoid's origin (clavicle)
+  // and insertion (scapula), and their Jacobians J[(P + 2) * 3 * n] = dp/dq (m/rad), row-major.
+  void (*points)(const double* q, double* p, double* J);
+};
+
 struct ModelDef {
   const char* name;              // "das2"
   const char* source_hash;       // SHA-256 of the model file it was generated from
@@ -57,31 +77,39 @@ struct ModelDef {
   int num_groups;
   const GroupDef* groups;        // named groups (rotator_cuff, elbow_flexors, ...)
 
-  double gravity_scapula[3];     // m/s^2, gravity in the scapula frame
-  double scapula_rotation_in_thorax[9];  // columns = scapula axes in thorax coordinates
-  double scapula_origin_in_thorax[3];    // m
+  // The base frame, fixed to the thorax, in which q = 0 and the chain start: the scapula for das2 (the
+  // girdle fixed at the equilibrium.mat posture), the thorax itself for das3 (the girdle moves).
+  const char* base_body;         // "scapula" or "thorax"
+  double gravity_base[3];        // m/s^2, gravity in the base frame
+  double base_rotation_in_thorax[9];  // columns = base axes in thorax coordinates
+  double base_origin_in_thorax[3];    // m
+  int num_bodies;                // bodies moved by q, proximal to distal (das2: 4, das3: 6)
+  const char* const* body_names; // "clavicle", "scapula" (das3), "humerus", "ulna", "radius", "hand"
+  int scapula_body;              // index of the scapula in body_poses; -1 when the scapula is the base
+  int humerus_body;              // index of the humerus; the arm (GH reaction, arm_mass) is it and all after
+  const GirdleDef* girdle;       // nullptr when the girdle is fixed
   double gh_centre[3];           // m, scapula frame
   double glenoid_normal[3];      // unit, scapula frame, GH centre -> glenoid centre
   double glenoid_major_axis[3];  // unit, superior-inferior axis of the glenoid ellipse
   double glenoid_minor_axis[3];  // unit, normal x major
   double rim_half_angle_major;   // rad
   double rim_half_angle_minor;   // rad
-  double arm_mass;               // kg, humerus + ulna + radius + hand
+  double arm_mass;               // kg, humerus + ulna + radius + hand (the bodies the GH reaction holds)
   double passive_stiffness_inside;   // N m/rad
   double passive_stiffness_outside;  // N m/rad^2
   double passive_damping;            // N m s/rad
 
-  // Dynamics: M(q) qdd = tau + bias_force(q, qd, g).
+  // Dynamics: M(q) qdd = tau + bias_force(q, qd, g). Everything in the base frame.
   void (*mass_matrix)(const double* q, double* M);                       // M[n*n]
-  void (*bias_force)(const double* q, const double* qd, const double* g_scapula,
+  void (*bias_force)(const double* q, const double* qd, const double* g_base,
                      double* b);                                         // b[n]: gravity and Coriolis/centrifugal generalised forces
-  void (*dynamics)(const double* q, const double* qd, const double* g_scapula,
+  void (*dynamics)(const double* q, const double* qd, const double* g_base,
                    double* M, double* b);                                // both at once, sharing subexpressions
-  void (*hand_position)(const double* q, double* p);                     // p[3], m, scapula frame
+  void (*hand_position)(const double* q, double* p);                     // p[3], m, base frame
   void (*hand_jacobian)(const double* q, double* Jv, double* Jw);        // 3 x n each: hand point velocity, hand angular velocity
   void (*arm_momentum_rate)(const double* q, const double* qd,
-                            double* A, double* c);                       // sum_b m_b a_b = A qdd + c; A[3*n], c[3]
-  void (*body_poses)(const double* q, double* R, double* p);             // R[4*9], p[4*3]: humerus, ulna, radius, hand in scapula frame
+                            double* A, double* c);                       // arm bodies: sum_b m_b a_b = A qdd + c; A[3*n], c[3]
+  void (*body_poses)(const double* q, double* R, double* p);             // R[num_bodies*9], p[num_bodies*3] in the base frame
   // Muscle paths (polynomials): lengths, moment arms -dL/dq, lines of action at GH.
   void (*muscle_lengths)(const double* q, double* L);                    // L[E], m
   void (*muscle_paths)(const double* q, double* L, double* moment_arm);  // L[E], moment_arm[E*n], m

@@ -118,14 +118,14 @@ void mass_matrix(const double* q, double* M) {
   M[3] = x73*(0.001124509418656318*x68 + 0.001124509418656318*x70 + 0.001124509418656318*x72) + x73*(0.0050569724186673853*x68 + 0.0050569724186673853*x70 + 0.0050569724186673853*x72) + x77*(0.001124509418656318*x74 + 0.001124509418656318*x75 + 0.001124509418656318*x76) + x77*(0.0050569724186673853*x74 + 0.0050569724186673853*x75 + 0.0050569724186673853*x76) + x81*(0.00033522247269792224*x78 + 0.00033522247269792224*x79 + 0.00033522247269792224*x80) + x81*(0.00074941074015399446*x78 + 0.00074941074015399446*x79 + 0.00074941074015399446*x80) + 0.96200398677597021*x84*x84 + 0.96200398677597021*x86*x86 + 0.96200398677597021*x87*x87 + 0.92432667104206512*x90*x90 + 0.92432667104206512*x92*x92 + 0.92432667104206512*x93*x93;
 }
 
-void bias_force(const double* q, const double* qd, const double* g_scapula, double* b) {
+void bias_force(const double* q, const double* qd, const double* g_base, double* b) {
   const double q0 = q[0];
   const double q1 = q[1];
   const double qd0 = qd[0];
   const double qd1 = qd[1];
-  const double g0 = g_scapula[0];
-  const double g1 = g_scapula[1];
-  const double g2 = g_scapula[2];
+  const double g0 = g_base[0];
+  const double g1 = g_base[1];
+  const double g2 = g_base[2];
   double s_q0, c_q0;
   armrt::sin_cos(q0, &s_q0, &c_q0);
   double s_q1, c_q1;
@@ -317,14 +317,14 @@ void bias_force(const double* q, const double* qd, const double* g_scapula, doub
   b[1] = -x108*x180 - x112*x180 - x116*x181 - x118*x181 + x145*(x132*x41 - x138*x21) + x149*(x131*x21 - x132*x34) + x151*(-x131*x41 + x138*x34) + x170*(x177*x41 - x179*x21) + x175*(-x177*x34 + x178*x21) + x176*(-x178*x41 + x179*x34) - x182*x93 - x182*x98;
 }
 
-void dynamics(const double* q, const double* qd, const double* g_scapula, double* M, double* b) {
+void dynamics(const double* q, const double* qd, const double* g_base, double* M, double* b) {
   const double q0 = q[0];
   const double q1 = q[1];
   const double qd0 = qd[0];
   const double qd1 = qd[1];
-  const double g0 = g_scapula[0];
-  const double g1 = g_scapula[1];
-  const double g2 = g_scapula[2];
+  const double g0 = g_base[0];
+  const double g1 = g_base[1];
+  const double g2 = g_base[2];
   double s_q0, c_q0;
   armrt::sin_cos(q0, &s_q0, &c_q0);
   double s_q1, c_q1;

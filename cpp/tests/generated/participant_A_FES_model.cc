@@ -101,6 +101,8 @@ const GroupDef kGroups[6] = {
     {.name = "triceps", .num_elements = 14, .elements = kGroup5},
 };
 
+const char* const kBodyNames[4] = {"humerus", "ulna", "radius", "hand"};
+
 const ModelDef kModel = {
     .name = "participant_A_FES",
     .source_hash = "17e8e25d99f33bc075e15c19a20e3aab8e9c0b38092473af66cc730c1c346606",
@@ -112,9 +114,15 @@ const ModelDef kModel = {
     .muscles = kMuscles,
     .num_groups = 6,
     .groups = kGroups,
-    .gravity_scapula = {1.9151805406858846, -9.4078806812419753, -1.9985616844601326},
-    .scapula_rotation_in_thorax = {0.93779623202356455, 0.12184584092939058, 0.32510278105641355, -0.19529406481172315, 0.95933684604242786, 0.20379657522804756, -0.28705131153109059, -0.25461030394227263, 0.92345824901546281},
-    .scapula_origin_in_thorax = {0.20346771515840928, 0.010903376262320115, 0.11569828084786157},
+    .base_body = "scapula",
+    .gravity_base = {1.9151805406858846, -9.4078806812419753, -1.9985616844601326},
+    .base_rotation_in_thorax = {0.93779623202356455, 0.12184584092939058, 0.32510278105641355, -0.19529406481172315, 0.95933684604242786, 0.20379657522804756, -0.28705131153109059, -0.25461030394227263, 0.92345824901546281},
+    .base_origin_in_thorax = {0.20346771515840928, 0.010903376262320115, 0.11569828084786157},
+    .num_bodies = 4,
+    .body_names = kBodyNames,
+    .scapula_body = -1,
+    .humerus_body = 0,
+    .girdle = nullptr,
     .gh_centre = {0.0019292302570501929, -0.022102996186110207, -0.042267248431348436},
     .glenoid_normal = {-0.99136982462603673, 0.070107126094706124, -0.11077392153246805},
     .glenoid_major_axis = {0.073371473657725186, 0.99697433274955283, -0.025667229922172925},

@@ -11,8 +11,8 @@ namespace armrt::generated::pendulum2 {
 const armrt::ModelDef& model_def();
 
 void mass_matrix(const double* q, double* M);
-void bias_force(const double* q, const double* qd, const double* g_scapula, double* b);
-void dynamics(const double* q, const double* qd, const double* g_scapula, double* M, double* b);
+void bias_force(const double* q, const double* qd, const double* g_base, double* b);
+void dynamics(const double* q, const double* qd, const double* g_base, double* M, double* b);
 void hand_position(const double* q, double* p);
 void hand_jacobian(const double* q, double* Jv, double* Jw);
 void arm_momentum_rate(const double* q, const double* qd, double* A, double* c);
@@ -20,5 +20,6 @@ void body_poses(const double* q, double* R, double* p);
 void muscle_lengths(const double* q, double* L);
 void muscle_paths(const double* q, double* L, double* moment_arm);
 void gh_directions(const double* q, double* d);
+void girdle_points(const double* q, double* p, double* J);  // thorax-based models only
 
 }  // namespace armrt::generated::pendulum2

@@ -26,13 +26,13 @@ void mass_matrix(const double* q, double* M) {
   M[3] = x2*(0.00020000000000000001*x0 + 0.00020000000000000001*x1) + x2*(0.00029999999999999997*x0 + 0.00029999999999999997*x1);
 }
 
-void bias_force(const double* q, const double* qd, const double* g_scapula, double* b) {
+void bias_force(const double* q, const double* qd, const double* g_base, double* b) {
   const double q0 = q[0];
   const double q1 = q[1];
   const double qd0 = qd[0];
   const double qd1 = qd[1];
-  const double g0 = g_scapula[0];
-  const double g1 = g_scapula[1];
+  const double g0 = g_base[0];
+  const double g1 = g_base[1];
   double s_q0, c_q0;
   armrt::sin_cos(q0, &s_q0, &c_q0);
   double s_q1, c_q1;
@@ -57,13 +57,13 @@ void bias_force(const double* q, const double* qd, const double* g_scapula, doub
   b[1] = 0.0;
 }
 
-void dynamics(const double* q, const double* qd, const double* g_scapula, double* M, double* b) {
+void dynamics(const double* q, const double* qd, const double* g_base, double* M, double* b) {
   const double q0 = q[0];
   const double q1 = q[1];
   const double qd0 = qd[0];
   const double qd1 = qd[1];
-  const double g0 = g_scapula[0];
-  const double g1 = g_scapula[1];
+  const double g0 = g_base[0];
+  const double g1 = g_base[1];
   double s_q0, c_q0;
   armrt::sin_cos(q0, &s_q0, &c_q0);
   double s_q1, c_q1;

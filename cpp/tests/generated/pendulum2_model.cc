@@ -42,6 +42,8 @@ const GroupDef kGroups[2] = {
     {.name = "forearm", .num_elements = 2, .elements = kGroup1},
 };
 
+const char* const kBodyNames[4] = {"humerus", "ulna", "radius", "hand"};
+
 const ModelDef kModel = {
     .name = "pendulum2",
     .source_hash = "2718c0e45e068edd42892f9941382c2ce55fbc1c7f7eee6ca80b24523a8d3c96",
@@ -53,9 +55,15 @@ const ModelDef kModel = {
     .muscles = kMuscles,
     .num_groups = 2,
     .groups = kGroups,
-    .gravity_scapula = {0.0, -9.8066499999999994, 0.0},
-    .scapula_rotation_in_thorax = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0},
-    .scapula_origin_in_thorax = {0.0, 0.0, 0.0},
+    .base_body = "scapula",
+    .gravity_base = {0.0, -9.8066499999999994, 0.0},
+    .base_rotation_in_thorax = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0},
+    .base_origin_in_thorax = {0.0, 0.0, 0.0},
+    .num_bodies = 4,
+    .body_names = kBodyNames,
+    .scapula_body = -1,
+    .humerus_body = 0,
+    .girdle = nullptr,
     .gh_centre = {0.0, 0.0, 0.0},
     .glenoid_normal = {-1.0, 0.0, 0.0},
     .glenoid_major_axis = {0.0, 1.0, 0.0},

@@ -1,0 +1,25 @@
+// GENERATED FILE - DO NOT EDIT BY HAND.
+// Written by `python -m codegen.generate --model models/das3.json --out cpp/generated`
+// from the model file das3.json (sha256 0f674927e0fc296ed25b403711106e5fecdfde98bb37ed4ed146458c848d9487).
+// Change the model file or the generator and regenerate instead.
+#pragma once
+
+#include "armrt/model_def.h"
+
+namespace armrt::generated::das3 {
+
+const armrt::ModelDef& model_def();
+
+void mass_matrix(const double* q, double* M);
+void bias_force(const double* q, const double* qd, const double* g_base, double* b);
+void dynamics(const double* q, const double* qd, const double* g_base, double* M, double* b);
+void hand_position(const double* q, double* p);
+void hand_jacobian(const double* q, double* Jv, double* Jw);
+void arm_momentum_rate(const double* q, const double* qd, double* A, double* c);
+void body_poses(const double* q, double* R, double* p);
+void muscle_lengths(const double* q, double* L);
+void muscle_paths(const double* q, double* L, double* moment_arm);
+void gh_directions(const double* q, double* d);
+void girdle_points(const double* q, double* p, double* J);  // thorax-based models only
+
+}  // namespace armrt::generated::das3
