@@ -591,6 +591,9 @@ def paths_source(model: dict, ns: str) -> str:
         tree[m] = (j, parent)
         pending.append(parent)
     order = sorted(tree, key=lambda m: (sum(m), m))
+    if NDOF > 7:
+        out.append(_blocked_paths(els, lengths, dof_index, order, tree, NDOF))
+        return _paths_file(ns, out, els, dof_index, NDOF, 8)
     gname = {(0,) * NDOF: "g_one"}
     pname = {(0,) * NDOF: "1.0"}
     for k, m in enumerate(order):
@@ -620,7 +623,79 @@ def paths_source(model: dict, ns: str) -> str:
     head = [f"  const double q{j} = q[{j}];" for j in sorted(qs)] or ["  (void)q;"]
     out.append("void muscle_paths(const double* q, double* L, double* moment_arm) {\n"
                + "\n".join(head + lines + body) + "\n}\n")
+    return _paths_file(ns, out, els, dof_index, NDOF, W)
 
+
+def _split_point(els, dof_index, NDOF):
+    """k such that DOFs [0, k) and [k, NDOF) each fit one 8-lane block with the value lane and the fewest
+    (element, block) pairs are needed (das3: k = 6, the girdle from the arm)."""
+    best = None
+    for k in range(max(1, NDOF - 7), min(7, NDOF - 1) + 1):
+        pairs = sum(any(dof_index[d] < k for d in e["dofs"]) + any(dof_index[d] >= k for d in e["dofs"]) for e in els)
+        if best is None or pairs < best[0]:
+            best = (pairs, k)
+    return best[1]
+
+
+def _blocked_paths(els, lengths, dof_index, order, tree, NDOF):
+    """muscle_paths for more than 7 DOFs: two 8-lane blocks instead of one 16-lane vector. Block 0 holds
+    -dm/dq for DOFs [0, k) and m, block 1 those of [k, NDOF) and m again; an element whose DOFs all lie in
+    one block sums that block only (das3: the girdle-only and the arm-only elements), so most terms cost
+    one 8-wide multiply-add instead of a 16-wide one. Same products and sums per lane as the one-vector
+    form, so the same results."""
+    k = _split_point(els, dof_index, NDOF)
+    sizes = [k, NDOF - k]
+    lane = [(0, j) if j < k else (1, j - k) for j in range(NDOF)]
+    lines = []
+    for b in range(2):
+        lines.append(f"  const v8d g_one_{b} = {{" + ", ".join(["0.0"] * sizes[b] + ["1.0"] + ["0.0"] * (7 - sizes[b])) + "};")
+    for j in range(NDOF):
+        b, l = lane[j]
+        lines.append(f"  const v8d e{j} = {{" + ", ".join("1.0" if x == l else "0.0" for x in range(8)) + "};")
+    gname = {(0,) * NDOF: ["g_one_0", "g_one_1"]}
+    pname = {(0,) * NDOF: "1.0"}
+    for n, m in enumerate(order):
+        gname[m], pname[m] = [f"g{n}_0", f"g{n}_1"], f"p{n}"
+    parents = {tree[m][1] for m in order}
+    qs = set()
+    for m in order:
+        j, parent = tree[m]
+        qs.add(j)
+        if m in parents:
+            lines.append(f"  const double {pname[m]} = " + (f"q{j}*{pname[parent]};" if any(parent) else f"q{j};"))
+        for b in range(2):
+            own = lane[j][0] == b
+            if any(parent):
+                rhs = f"q{j}*{gname[parent][b]}" + (f" - {pname[parent]}*e{j}" if own else "")
+            else:
+                rhs = f"q{j}*g_one_{b}" + (f" - e{j}" if own else "")
+            lines.append(f"  const v8d {gname[m][b]} = {rhs};")
+    body = []
+    for i, (e, t) in enumerate(zip(els, lengths)):
+        blocks = [b for b in range(2) if any(lane[dof_index[d]][0] == b for d in e["dofs"])]
+        home = blocks[0]
+        stmts = []
+        for b in blocks:
+            parts = [f"{cxx.fmt(c)}*{gname[m][b]}" for c, m in t if c != 0.0]
+            halves = [" + ".join(parts[0::2]) or f"0.0*g_one_{b}", " + ".join(parts[1::2]) or f"0.0*g_one_{b}"]
+            stmts.append(f"const v8d a{b} = ({halves[0]}) + ({halves[1]});")
+        out_lines = []
+        offset = [i * NDOF, i * NDOF + k]
+        for b in range(2):
+            if b in blocks:
+                out_lines.append(f"std::memcpy(moment_arm + {offset[b]}, &a{b}, {sizes[b]} * sizeof(double));")
+            else:
+                out_lines.append(f"std::memset(moment_arm + {offset[b]}, 0, {sizes[b]} * sizeof(double));")
+        body.append("  { " + " ".join(stmts))
+        body.append("    " + " ".join(out_lines) + f" L[{i}] = a{home}[{sizes[home]}]; }}")
+    head = [f"  const double q{j} = q[{j}];" for j in sorted(qs)] or ["  (void)q;"]
+    return ("void muscle_paths(const double* q, double* L, double* moment_arm) {\n"
+            f"  // DOFs 0..{k - 1} in block 0, {k}..{NDOF - 1} in block 1 (_blocked_paths).\n"
+            + "\n".join(head + lines + body) + "\n}\n")
+
+
+def _paths_file(ns, out, els, dof_index, NDOF, W):
+    vt = f"v{W}d"
     # gh_directions
     mono = _Monomials(NDOF)
     body = []
@@ -642,7 +717,9 @@ def paths_source(model: dict, ns: str) -> str:
     return ("#include <cmath>\n#include <cstring>\n\n#include \"" + ns + ".h\"\n\n"
             f"namespace armrt::generated::{ns} {{\n\n"
             + ("// Eight doubles, one SIMD register with AVX-512 (two with AVX2): a length and its moment arms.\n"
-               if W == 8 else "// Sixteen doubles (two AVX-512 registers): a length and its moment arms.\n")
+               if NDOF <= 7 else "// Eight doubles, one SIMD register with AVX-512 (two with AVX2): one block of an "
+               "element's moment arms and its length.\n" if W == 8 else
+               "// Sixteen doubles (two AVX-512 registers): a length and its moment arms.\n")
             + f"using {vt} = double __attribute__((vector_size({8 * W})));\n\n" + "\n".join(out) + f"\n}}  // namespace armrt::generated::{ns}\n")
 
 

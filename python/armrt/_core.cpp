@@ -378,6 +378,25 @@ PYBIND11_MODULE(_core, mod) {
         s.model.def->body_poses(checked(q, s.model.num_dofs, "q"), R.mutable_data(), p.mutable_data());
         return py::make_tuple(R, p);
       })
+      .def("arm_momentum_rate", [](const Simulator& s, const Array& q, const Array& qd) {
+        const int nq = s.model.num_dofs;
+        Array A({3, nq}), c({3});
+        s.model.def->arm_momentum_rate(checked(q, nq, "q"), checked(qd, nq, "qdot"), A.mutable_data(), c.mutable_data());
+        return py::make_tuple(A, c);
+      })
+      .def("girdle_forces", [](const Simulator& s, const Array& q) {
+        const int nq = s.model.num_dofs;
+        Array tau({nq}), K({nq, nq});
+        GirdleState st;
+        girdle_forces(s.model, checked(q, nq, "q"), tau.mutable_data(), K.mutable_data(), &st);
+        const int P = s.model.def->girdle ? s.model.def->girdle->num_contact_points : 0;
+        Array dist({P}), force({P});
+        std::copy(st.contact_distance.begin(), st.contact_distance.begin() + P, dist.mutable_data());
+        std::copy(st.contact_force.begin(), st.contact_force.begin() + P, force.mutable_data());
+        return py::dict(py::arg("tau") = tau, py::arg("stiffness") = K, py::arg("contact_distance") = dist,
+                        py::arg("contact_force") = force, py::arg("conoid_length") = st.conoid_length,
+                        py::arg("conoid_tension") = st.conoid_tension);
+      })
       .def("thorax_humerus_angles", [](const Simulator& s, const Array& q) {
         Array a({3});
         thorax_humerus_angles(s.model, checked(q, s.model.num_dofs, "q"), a.mutable_data());

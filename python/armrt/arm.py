@@ -864,6 +864,14 @@ class Arm:
     def mass_matrix(self, q) -> np.ndarray:
         return self._sim.mass_matrix(self._dof_vector(q, "q"))
 
+    def girdle_forces(self, q) -> dict:
+        """The girdle stage at pose q (docs/das3.md; zeros for a model with a fixed girdle): 'tau' (ndof,)
+        N m, the generalised forces of the scapulothoracic contact and the conoid ligament; 'stiffness'
+        (ndof, ndof) N m/rad, J^T dF/dp J (the ROS2 Jacobian's part; the dJ/dq term is left out);
+        'contact_distance' (P,) m, first-order signed distance of each contact point (TS, AI) from the
+        thorax surface, negative inside; 'contact_force' (P,) N; 'conoid_length' m; 'conoid_tension' N."""
+        return self._sim.girdle_forces(self._dof_vector(q, "q"))
+
     def thorax_humerus_angles(self, q) -> np.ndarray:
         """Plane of elevation, elevation, axial rotation (rad) of the humerus relative to the thorax."""
         return self._sim.thorax_humerus_angles(self._dof_vector(q, "q"))
