@@ -1,7 +1,7 @@
 """Benchmark harness: one command for every comparison, results under bench/results/.
 
     python -m bench all [--quick]     # engine, integrators, OpenSim, MuJoCo/MyoSuite, scaling, batch, then the report
-    python -m bench engine|integrators|opensim|mujoco|scaling|batch|guard|report
+    python -m bench engine|integrators|das3|opensim|mujoco|scaling|batch|guard|report
 
 Needs `armrt` importable (pip install ., or PYTHONPATH=python with _core*.so copied there), the C++
 tools built (ninja armrt_bench armrt_bench_scaling) for the engine and scaling figures, opensim and
@@ -118,8 +118,8 @@ def report() -> int:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python -m bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", choices=["all", "engine", "integrators", "opensim", "mujoco", "scaling", "batch", "guard",
-                                     "report"])
+    ap.add_argument("what", choices=["all", "engine", "integrators", "das3", "opensim", "mujoco", "scaling", "batch",
+                                     "guard", "report"])
     ap.add_argument("--quick", action="store_true", help="shorter runs (smoke test; figures noisier)")
     args = ap.parse_args(argv)
     if str(ROOT) not in sys.path:
@@ -136,10 +136,12 @@ def main(argv=None) -> int:
         "guard": lambda: __import__("bench.ci_guard", fromlist=["main"]).main([]),
         "integrators": lambda: __import__("bench.bench_integrators", fromlist=["main"]).main(
             ["--quick"] if q else []),
+        "das3": lambda: __import__("bench.bench_das3", fromlist=["main"]).main(
+            ["--reps", "2000", "--duration", "2"] if q else []),
     }
     if args.what == "report":
         return report()
-    names = ["engine", "integrators", "opensim", "mujoco", "scaling", "batch"] if args.what == "all" else [args.what]
+    names = ["engine", "integrators", "das3", "opensim", "mujoco", "scaling", "batch"] if args.what == "all" else [args.what]
     rc = 0
     for name in names:
         print(f"\n=== {name} ===", flush=True)

@@ -88,6 +88,10 @@ struct Model {
   // interval cannot hold the resting arm (integrate.cc refuses it).
   double rest_fibre_rate = 0;
   int rest_fibre_element = 0;
+  // The span of DOFs each element crosses (first and last index of its dof_mask): its moment arms are zero
+  // outside it, so the ROS2 stiffness R^T diag(k) R only sums over that block (das3: the girdle-only and
+  // arm-only elements touch a 6x6 or 5x5 block of the 11x11 matrix; rosenbrock.cc).
+  std::array<int, kMaxElements> dof_first{}, dof_last{};
 };
 
 // Builds a Model from generated tables. Never allocates; throws std::invalid_argument if the model's
