@@ -185,3 +185,17 @@ def test_ros2_at_1ms_follows_cvode_from_the_settled_arm(settled):
     assert err < 0.1, err
     # The girdle really moved (scapular elevation and upward rotation), by tens of degrees.
     assert np.degrees(np.abs(out["cvode"].q[-1, :6] - out["cvode"].q[0, :6]).max()) > 10
+
+
+def test_a_scapula_pushed_into_the_thorax_is_refused_by_name():
+    """ACy 0.14 rad below equilibrium.mat puts AI 27 mm inside the thorax ellipsoid: the first step stops
+    with an error naming a contact point and its depth (kMaxContactPenetration = 20 mm), not with the speed
+    at which the contact throws the scapula out."""
+    a = armrt.Arm(model="das3")
+    q = a.model.rest_posture.copy()
+    q[a.model.dof_index("ACy")] -= 0.14
+    assert a.girdle_forces(q)["contact_distance"].min() < -0.02
+    with pytest.warns(RuntimeWarning, match="beyond the joint limits"):   # ACy leaves its range too
+        a.reset(q=q)
+    with pytest.raises(armrt.SimulationError, match=r"girdle contact point (TS|AI) is \d+\.\d mm inside the thorax \(more than 20 mm\)"):
+        a.step()

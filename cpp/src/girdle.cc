@@ -38,13 +38,8 @@ void girdle_forces(const Model& m, const double* q, double* tau, double* stiffne
     const double f = scapulothoracic_contact(g->thorax, p + 3 * k, F, stiffness ? dF : nullptr);
     apply(J + 3 * nq * k, F, dF);
     if (state) {
-      // First-order signed distance f / |grad f| from the surface (m; negative inside the thorax).
-      double grad2 = 0;
-      for (int i = 0; i < 3; ++i) {
-        const double gi = 2.0 * (p[3 * k + i] - g->thorax.centre[i]) / (g->thorax.radii[i] * g->thorax.radii[i]);
-        grad2 += gi * gi;
-      }
-      state->contact_distance[k] = f / std::sqrt(grad2);
+      (void)f;
+      state->contact_distance[k] = thorax_signed_distance(g->thorax, p + 3 * k);
       state->contact_force[k] = std::sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
     }
   }

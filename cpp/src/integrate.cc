@@ -28,6 +28,22 @@ bool check_state(const Model& m, Data& d) {
       return false;
     }
   }
+  // A scapula driven into the thorax is ejected fast: name the cause before the speed it caused.
+  if (const GirdleDef* g = m.def->girdle) {
+    double p[(kMaxContactPoints + 2) * 3], J[(kMaxContactPoints + 2) * 3 * kMaxDofs];
+    g->points(&d.x[q_offset(m)], p, J);
+    for (int k = 0; k < g->num_contact_points; ++k) {
+      const double dist = thorax_signed_distance(g->thorax, p + 3 * k);
+      if (dist < -kMaxContactPenetration) {
+        d.status = Status::kOutOfDomain;
+        d.bad_index = -1;
+        d.bad_contact = k;
+        d.bad_contact_distance = dist;
+        d.bad_time = d.time;
+        return false;
+      }
+    }
+  }
   const int iqd = qd_offset(m);
   for (int j = 0; j < m.num_dofs; ++j) {
     if (std::fabs(d.x[iqd + j]) > m.max_joint_speed) {

@@ -117,20 +117,26 @@ std::string Simulator::domain_error_message() const {
   char name[96];
   char what[192];
   const int k = data.bad_index, n = model.num_elements, ia = act_offset(model), il = lce_offset(model);
-  const double value = data.x[k];
-  state_name(model, k, name, sizeof name);
-  if (k < qd_offset(model)) {
-    const DofParams& dof = model.def->dofs[k];
-    std::snprintf(what, sizeof what, "%s = %.4g rad is more than %.2g rad beyond its range [%.4g, %.4g] rad", name,
-                  value, kJointRangeMargin, dof.range_min, dof.range_max);
-  } else if (k >= il && k < il + n) {
-    const ElementConstants& e = model.element[k - il];
-    std::snprintf(what, sizeof what, "fibre length %s = %.4g m is outside its physical range [%.4g, %.4g] m", name,
-                  value, e.min_lce, e.max_lce);
-  } else if (k >= ia) {
-    std::snprintf(what, sizeof what, "%s = %.6g is outside [0, 1]", name, value);
+  if (data.bad_contact >= 0) {
+    const GirdleDef& g = *model.def->girdle;
+    std::snprintf(what, sizeof what, "girdle contact point %s is %.1f mm inside the thorax (more than %.0f mm)",
+                  g.contact_point_names[data.bad_contact], -1e3 * data.bad_contact_distance, 1e3 * kMaxContactPenetration);
   } else {
-    std::snprintf(what, sizeof what, "%s = %.4g", name, value);
+    const double value = data.x[k];
+    state_name(model, k, name, sizeof name);
+    if (k < qd_offset(model)) {
+      const DofParams& dof = model.def->dofs[k];
+      std::snprintf(what, sizeof what, "%s = %.4g rad is more than %.2g rad beyond its range [%.4g, %.4g] rad", name,
+                    value, kJointRangeMargin, dof.range_min, dof.range_max);
+    } else if (k >= il && k < il + n) {
+      const ElementConstants& e = model.element[k - il];
+      std::snprintf(what, sizeof what, "fibre length %s = %.4g m is outside its physical range [%.4g, %.4g] m", name,
+                    value, e.min_lce, e.max_lce);
+    } else if (k >= ia) {
+      std::snprintf(what, sizeof what, "%s = %.6g is outside [0, 1]", name, value);
+    } else {
+      std::snprintf(what, sizeof what, "%s = %.4g", name, value);
+    }
   }
   char buf[384];
   std::snprintf(buf, sizeof buf,

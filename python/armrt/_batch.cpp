@@ -137,6 +137,7 @@ PYBIND11_MODULE(_batch, mod) {
           Simulator& s = b.arm(idx[r]);
           s.data.status = Status::kOk;
           s.data.bad_index = -1;
+          s.data.bad_contact = -1;
           s.reset(qp ? qp + r * nq : nullptr, qdp ? qdp + r * nq : nullptr, ap ? ap + r * ne : nullptr);
           s.data.time = 0.0;
           s.evaluate_outputs();

@@ -237,7 +237,7 @@ PYBIND11_MODULE(_core, mod) {
         if (interrupted) throw py::error_already_set();
         raise_if_failed(s);
       }, py::arg("n") = 1)
-      .def("clear_error", [](Simulator& s) { s.data.status = Status::kOk; s.data.bad_index = -1; })
+      .def("clear_error", [](Simulator& s) { s.data.status = Status::kOk; s.data.bad_index = -1; s.data.bad_contact = -1; })
       .def("evaluate_outputs", &Simulator::evaluate_outputs)
       .def("outputs", [](Simulator& s) {
         const int n = s.model.num_elements, nq = s.model.num_dofs;

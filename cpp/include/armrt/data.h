@@ -73,8 +73,9 @@ struct GirdleState {
   double conoid_tension = 0;  // N
 };
 
-// kOutOfDomain: a CE length outside [min_lce, max_lce], an activation outside [0, 1] or a joint more than
-// kJointRangeMargin beyond its range (model.h): the step left the model's physical domain.
+// kOutOfDomain: a CE length outside [min_lce, max_lce], an activation outside [0, 1], a joint more than
+// kJointRangeMargin beyond its range or a girdle contact point more than kMaxContactPenetration inside the
+// thorax (model.h): the step left the model's physical domain.
 // kUnstableStep: an explicit step (Euler, RK4) beyond its stability limit for the stiffest CE mode of the
 // model at rest (Model::rest_fibre_rate): refused before it is taken (integrate.cc).
 enum class Status { kOk = 0, kNonFinite = 1, kTooFast = 2, kCvodeFailed = 3, kOutOfDomain = 4, kUnstableStep = 5 };
@@ -117,6 +118,8 @@ struct Data {
   // Errors: set by step(), never thrown in the hot path.
   Status status = Status::kOk;
   int bad_index = -1;  // state index that went bad
+  int bad_contact = -1;  // kOutOfDomain by a girdle contact point (index) too deep in the thorax, else -1
+  double bad_contact_distance = 0;  // m, its signed distance
   double bad_time = 0;
 
   // Statistics.

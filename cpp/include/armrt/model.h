@@ -35,6 +35,9 @@ inline constexpr double kMaxPeeForce = 9.0;
 inline constexpr double kRestTendonSlack = 0.002;
 inline constexpr double kActivationTolerance = 1e-6;
 inline constexpr double kJointRangeMargin = 0.35;  // rad (20 deg)
+// A scapula contact point (TS, AI) 2 cm inside the thorax ellipsoid carries about 3 kN of contact force
+// (das3; docs/das3.md): no physiological load gets there, so the state is refused as out of domain.
+inline constexpr double kMaxContactPenetration = 0.02;  // m
 inline constexpr double kFibreDamping = 10.0;      // N/(m/s), parallel to the contractile element
 inline constexpr double kLowActivation = 0.02;     // below it the damper adds the CE damping that is lost
 
