@@ -83,28 +83,32 @@ void jacobian_factor_n(const Model& m, StepJacobian& jac, double hg) {
     jac.lce_from_q[i] = hg * jac.dvel_dL[i] * jac.inv_lce[i];
     jac.series_stiffness[i] = jac.dforce_dL[i] + jac.dforce_dlce[i] * jac.lce_from_q[i];
   }
-  // K_eff = diag(dtau_passive/dq) + dtau_girdle/dq - R^T diag(series_stiffness) R (symmetric: build the
-  // upper half of the muscle part).
+  // K_eff = diag(dtau_passive/dq) + dtau_girdle/dq - R^T diag(series_stiffness) R.
   double K[nq * nq] = {};  // local: the compiler keeps it in registers (no aliasing with jac's arrays)
-  for (int i = 0; i < n; ++i) {
-    const double* r = R + i * nq;
-    const double c = jac.series_stiffness[i];
-    if constexpr (nq <= 7) {
-      // Small models: the fixed-size loop unrolls and is faster than skipping zeros.
+  if constexpr (nq <= 7) {
+    // Small models (das2): the upper half in a fixed-size loop that unrolls, then mirrored.
+    for (int i = 0; i < n; ++i) {
+      const double* r = R + i * nq;
+      const double c = jac.series_stiffness[i];
       for (int a = 0; a < nq; ++a)
         for (int b = a; b < nq; ++b) K[a * nq + b] -= c * r[a] * r[b];
-    } else {
-      // Only the block of DOFs the element crosses (outside it the terms are exact zeros): das3's
-      // girdle-only and arm-only elements touch 21 or 15 of the 66 entries.
-      const int lo = m.dof_first[i], hi = m.dof_last[i];
-      for (int a = lo; a <= hi; ++a)
-        for (int b = a; b <= hi; ++b) K[a * nq + b] -= c * r[a] * r[b];
+    }
+    for (int a = 0; a < nq; ++a)
+      for (int b = 0; b < a; ++b) K[a * nq + b] = K[b * nq + a];
+  } else {
+    // Larger models (das3): only the rows of the DOFs the element crosses (its moment arms are exact
+    // zeros elsewhere; das3's girdle-only and arm-only elements touch 6 or at most 5 of the 11 rows),
+    // whole rows (the two halves agree to rounding; the LU below does not need exact symmetry).
+    for (int i = 0; i < n; ++i) {
+      const double* r = R + i * nq;
+      const double c = jac.series_stiffness[i];
+      for (int a = m.dof_first[i]; a <= m.dof_last[i]; ++a) {
+        const double cr = c * r[a];
+        for (int b = 0; b < nq; ++b) K[a * nq + b] -= cr * r[b];
+      }
     }
   }
-  for (int a = 0; a < nq; ++a) {
-    K[a * nq + a] += jac.dtau_passive_dq[a];
-    for (int b = 0; b < a; ++b) K[a * nq + b] = K[b * nq + a];
-  }
+  for (int a = 0; a < nq; ++a) K[a * nq + a] += jac.dtau_passive_dq[a];
   if (m.def->girdle)
     for (int k = 0; k < nq * nq; ++k) K[k] += jac.dtau_girdle_dq[k];
   std::copy(K, K + nq * nq, jac.stiffness.begin());
