@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "armrt/registry.h"
 #include "armrt/simulator.h"
 #include "pendulum2.h"
 #include "test_util.h"
@@ -76,6 +77,29 @@ TEST_CASE("no heap allocation during 1000 steps of a second model (the 2-DOF pen
     auto sim = std::make_unique<Simulator>(generated::pendulum2::model_def(), integ, dt);
     armrt_test::set_group_excitation(*sim, "elbow", 0.3);
     armrt_test::set_group_excitation(*sim, "pronator", 0.2);
+    sim->data.hand_force = {0.0, -9.81, 0.0};
+    bool ok = true;
+    const long before = g_allocations.load();
+    for (int k = 0; k < 1000; ++k) ok &= sim->step();
+    sim->evaluate_outputs();
+    const long after = g_allocations.load();
+    CHECK(ok);
+    CHECK(after - before == 0);
+  }
+}
+
+}  // TEST_SUITE
+
+TEST_SUITE("realtime") {
+
+TEST_CASE("no heap allocation during 1000 steps of the moving-girdle model (das3: girdle stage, 11 DOFs)") {
+  const ModelDef* def = find_model("das3");
+  REQUIRE(def != nullptr);
+  for (Integrator integ : {Integrator::kRos2, Integrator::kRos2Adaptive}) {
+    CAPTURE(integrator_name(integ));
+    auto sim = std::make_unique<Simulator>(*def, integ, default_max_step(integ));
+    armrt_test::set_group_excitation(*sim, "serratus_anterior", 0.3);
+    armrt_test::set_group_excitation(*sim, "deltoid", 0.2);
     sim->data.hand_force = {0.0, -9.81, 0.0};
     bool ok = true;
     const long before = g_allocations.load();
