@@ -14,15 +14,13 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import subprocess
 import sys
-import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
 
-from .bench_engine import find_cpp_bench
+from .bench_engine import run_cpp
 
 ROOT = Path(__file__).resolve().parents[1]
 RESULTS = ROOT / "bench" / "results"
@@ -33,18 +31,8 @@ STAGES = [("muscle_paths", "paths (polynomials)"), ("stage_muscles", "muscles"),
 
 
 def cpp_costs(model: str, reps: int) -> dict | None:
-    exe = find_cpp_bench()
-    if exe is None:
-        print("armrt_bench not built: C++ stage costs skipped", file=sys.stderr)
-        return None
-    with tempfile.TemporaryDirectory() as tmp:
-        out = Path(tmp) / "b.json"
-        proc = subprocess.run([str(exe), "--model", model, "--reps", str(reps), "--json", str(out)],
-                              capture_output=True, text=True)
-        if proc.returncode != 0:
-            print(f"{exe} --model {model} failed: {proc.stderr[-500:]}", file=sys.stderr)
-            return None
-        return json.loads(out.read_text())["cpp"]
+    data = run_cpp(reps, model)
+    return data["cpp"] if data else None
 
 
 def simulate_rtf(model: str, duration: float) -> dict:

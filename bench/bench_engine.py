@@ -34,14 +34,16 @@ def find_cpp_bench() -> Path | None:
     return Path(on_path) if on_path else None
 
 
-def run_cpp(reps: int) -> dict | None:
+def run_cpp(reps: int, model: str = "das2") -> dict | None:
+    """armrt_bench's JSON for `model` (None, with a message, if the tool is missing or fails)."""
     exe = find_cpp_bench()
     if exe is None:
         print("armrt_bench not built (cmake ... && ninja -C build/cmake armrt_bench): C++ figures skipped", file=sys.stderr)
         return None
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "cpp.json"
-        proc = subprocess.run([str(exe), "--json", str(out), "--reps", str(reps)], capture_output=True, text=True)
+        proc = subprocess.run([str(exe), "--model", model, "--json", str(out), "--reps", str(reps)],
+                              capture_output=True, text=True)
         if proc.returncode != 0:
             print(f"{exe} failed ({proc.returncode}):\n{proc.stderr}", file=sys.stderr)
             return None

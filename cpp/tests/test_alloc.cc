@@ -4,7 +4,9 @@
 
 #include <atomic>
 #include <cstdlib>
+#include <initializer_list>
 #include <new>
+#include <utility>
 
 #include "armrt/registry.h"
 #include "armrt/simulator.h"
@@ -51,22 +53,26 @@ TEST_CASE("the counting operator new is in effect") {
   CHECK(after == before + 1);
 }
 
+// Steps `sim` 1000 times under a hand load and stimulation and counts the heap allocations, which must be none.
+void check_1000_steps_allocate_nothing(Simulator& sim, std::initializer_list<std::pair<const char*, double>> groups) {
+  for (const auto& [group, u] : groups) armrt_test::set_group_excitation(sim, group, u);
+  sim.data.hand_force = {0.0, -9.81, 0.0};  // exercises the hand Jacobian branch too
+  bool ok = true;
+  const long before = g_allocations.load();
+  for (int k = 0; k < 1000; ++k) ok &= sim.step();
+  sim.evaluate_outputs();
+  const long after = g_allocations.load();
+  CHECK(ok);
+  CHECK(after - before == 0);
+}
+
 TEST_CASE("no heap allocation during 1000 steps (euler, rk4, ros2, ros2_adaptive)") {
   for (Integrator integ : {Integrator::kEuler, Integrator::kRk4, Integrator::kRos2, Integrator::kRos2Adaptive}) {
     CAPTURE(integrator_name(integ));
+    // (RK4 at 2.5e-4 s: stable for this stimulation; the cost per step does not depend on dt.)
     const double dt = integ == Integrator::kEuler ? 1e-4 : integ == Integrator::kRk4 ? 2.5e-4 : default_max_step(integ);
     auto sim = std::make_unique<Simulator>(armrt_test::das2(), integ, dt);
-    // (RK4 at 2.5e-4 s: stable for this stimulation; the cost per step does not depend on dt.)
-    armrt_test::set_group_excitation(*sim, "elbow_flexors", 0.3);
-    armrt_test::set_group_excitation(*sim, "rotator_cuff", 0.05);
-    sim->data.hand_force = {0.0, -9.81, 0.0};  // exercises the hand Jacobian branch too
-    bool ok = true;
-    const long before = g_allocations.load();
-    for (int k = 0; k < 1000; ++k) ok &= sim->step();
-    sim->evaluate_outputs();
-    const long after = g_allocations.load();
-    CHECK(ok);
-    CHECK(after - before == 0);
+    check_1000_steps_allocate_nothing(*sim, {{"elbow_flexors", 0.3}, {"rotator_cuff", 0.05}});
   }
 }
 
@@ -75,22 +81,9 @@ TEST_CASE("no heap allocation during 1000 steps of a second model (the 2-DOF pen
     CAPTURE(integrator_name(integ));
     const double dt = integ == Integrator::kEuler ? 2e-5 : integ == Integrator::kRk4 ? 1e-4 : default_max_step(integ);
     auto sim = std::make_unique<Simulator>(generated::pendulum2::model_def(), integ, dt);
-    armrt_test::set_group_excitation(*sim, "elbow", 0.3);
-    armrt_test::set_group_excitation(*sim, "pronator", 0.2);
-    sim->data.hand_force = {0.0, -9.81, 0.0};
-    bool ok = true;
-    const long before = g_allocations.load();
-    for (int k = 0; k < 1000; ++k) ok &= sim->step();
-    sim->evaluate_outputs();
-    const long after = g_allocations.load();
-    CHECK(ok);
-    CHECK(after - before == 0);
+    check_1000_steps_allocate_nothing(*sim, {{"elbow", 0.3}, {"pronator", 0.2}});
   }
 }
-
-}  // TEST_SUITE
-
-TEST_SUITE("realtime") {
 
 TEST_CASE("no heap allocation during 1000 steps of the moving-girdle model (das3: girdle stage, 11 DOFs)") {
   const ModelDef* def = find_model("das3");
@@ -98,16 +91,7 @@ TEST_CASE("no heap allocation during 1000 steps of the moving-girdle model (das3
   for (Integrator integ : {Integrator::kRos2, Integrator::kRos2Adaptive}) {
     CAPTURE(integrator_name(integ));
     auto sim = std::make_unique<Simulator>(*def, integ, default_max_step(integ));
-    armrt_test::set_group_excitation(*sim, "serratus_anterior", 0.3);
-    armrt_test::set_group_excitation(*sim, "deltoid", 0.2);
-    sim->data.hand_force = {0.0, -9.81, 0.0};
-    bool ok = true;
-    const long before = g_allocations.load();
-    for (int k = 0; k < 1000; ++k) ok &= sim->step();
-    sim->evaluate_outputs();
-    const long after = g_allocations.load();
-    CHECK(ok);
-    CHECK(after - before == 0);
+    check_1000_steps_allocate_nothing(*sim, {{"serratus_anterior", 0.3}, {"deltoid", 0.2}});
   }
 }
 
