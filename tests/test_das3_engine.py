@@ -199,3 +199,21 @@ def test_a_scapula_pushed_into_the_thorax_is_refused_by_name():
         a.reset(q=q)
     with pytest.raises(armrt.SimulationError, match=r"girdle contact point (TS|AI) is \d+\.\d mm inside the thorax \(more than 20 mm\)"):
         a.step()
+
+
+def test_the_built_in_dynamics_equal_the_chain_checked_against_opensim(arm, chain):
+    """das3's compiled M(q), b(q, qd, g), hand point and Jacobians equal codegen/eom_chain.py's numeric
+    chain, which tests/test_das3_dynamics.py checks against OpenSim's calcM and inverse dynamics on
+    das3.osim (1e-15): so the engine's equations of motion are OpenSim's."""
+    rng = np.random.default_rng(6)
+    m = arm.model
+    hand = MODEL["hand_point"]
+    for q in random_postures(10, seed=7, spread=0.5):
+        qd = rng.uniform(-4, 4, len(DOFS))
+        M = chain.mass_matrix(q)
+        np.testing.assert_allclose(arm.mass_matrix(q), M, rtol=1e-12, atol=1e-14)
+        np.testing.assert_allclose(arm._sim.bias_force(q, qd), chain.bias_force(q, qd, m.gravity_base),
+                                   rtol=1e-11, atol=1e-11)
+        p, J = chain.point(q, hand["body"], hand["point"])
+        np.testing.assert_allclose(m.hand_position(q), p, atol=1e-14)
+        np.testing.assert_allclose(m.hand_jacobian(q)[0], J, atol=1e-13)
