@@ -1,14 +1,14 @@
 """Benchmark harness: one command for every comparison, results under bench/results/.
 
-    python -m bench all [--quick]     # engine, integrators, OpenSim, MuJoCo/MyoSuite, scaling, batch, then the report
-    python -m bench engine|integrators|das3|opensim|mujoco|scaling|batch|guard|report
+    python -m bench all [--quick]     # engine, integrators, das3, OpenSim (das2, das3), MuJoCo/MyoSuite, scaling, batch, then the report
+    python -m bench engine|integrators|das3|opensim|opensim-das3|mujoco|scaling|batch|guard|report
 
 Needs `armrt` importable (pip install ., or PYTHONPATH=python with _core*.so copied there), the C++
 tools built (ninja armrt_bench armrt_bench_scaling) for the engine and scaling figures, opensim and
 ../shared/reference for the OpenSim comparison, mujoco + myo-sim (+ myosuite --no-deps) for MuJoCo.
 A part whose requirements are missing is skipped with a message; the report uses whatever JSON exists.
 
-Writes bench/results/{engine,opensim,mujoco,scaling}.json, summary.json, summary.md (the markdown
+Writes bench/results/{engine,opensim,opensim_das3,mujoco,scaling}.json (+ opensim_das3.npz), summary.json, summary.md (the markdown
 tables), opensim.png (joint-angle trajectories, armrt against OpenSim) and scaling.png.
 """
 from __future__ import annotations
@@ -95,6 +95,16 @@ def report() -> int:
             md += ["![trajectories](opensim.png)", ""]
         except Exception as exc:  # noqa: BLE001
             print(f"plot failed: {exc}", file=sys.stderr)
+    osd3 = _load("opensim_das3")
+    if osd3:
+        from bench.bench_opensim_das3 import markdown as osd3_md
+
+        summary["opensim_das3"] = {"duration_s": osd3["duration_s"],
+                                   "real_time_factor": {k: v["real_time_factor"] for k, v in osd3["runs"].items()},
+                                   "armrt": {k: v for k, v in (osd3.get("armrt") or {}).items()
+                                             if k in ("armrt_model", "speed_ratio", "max_abs_deg", "error")}}
+        md += ["## das3 against OpenSim 4.6 (das3.osim, girdle free, conoid and scapulothoracic contact added)", "",
+               osd3_md(osd3), ""]
     if mj:
         from bench.bench_mujoco import markdown as mj_md
 
@@ -118,8 +128,8 @@ def report() -> int:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python -m bench", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", choices=["all", "engine", "integrators", "das3", "opensim", "mujoco", "scaling", "batch",
-                                     "guard", "report"])
+    ap.add_argument("what", choices=["all", "engine", "integrators", "das3", "opensim", "opensim-das3", "mujoco",
+                                     "scaling", "batch", "guard", "report"])
     ap.add_argument("--quick", action="store_true", help="shorter runs (smoke test; figures noisier)")
     args = ap.parse_args(argv)
     if str(ROOT) not in sys.path:
@@ -129,6 +139,7 @@ def main(argv=None) -> int:
     steps = {
         "engine": lambda: __import__("bench.bench_engine", fromlist=["main"]).main(["--reps", "2000" if q else "20000"]),
         "opensim": lambda: __import__("bench.bench_opensim", fromlist=["main"]).main(["--quick"] if q else []),
+        "opensim-das3": lambda: __import__("bench.bench_opensim_das3", fromlist=["main"]).main(["--quick"] if q else []),
         "mujoco": lambda: __import__("bench.bench_mujoco", fromlist=["main"]).main(["--reps", "2" if q else "5"]),
         "scaling": lambda: __import__("bench.bench_scaling", fromlist=["main"]).main(
             ["--reps", "3000" if q else "20000"] + (["--no-subsets"] if q else [])),
@@ -141,7 +152,8 @@ def main(argv=None) -> int:
     }
     if args.what == "report":
         return report()
-    names = ["engine", "integrators", "das3", "opensim", "mujoco", "scaling", "batch"] if args.what == "all" else [args.what]
+    names = (["engine", "integrators", "das3", "opensim", "opensim-das3", "mujoco", "scaling", "batch"]
+             if args.what == "all" else [args.what])
     rc = 0
     for name in names:
         print(f"\n=== {name} ===", flush=True)
@@ -151,7 +163,7 @@ def main(argv=None) -> int:
             print(f"{name}: failed: {type(exc).__name__}: {exc}", file=sys.stderr)
             r = 1
         rc = rc or (r or 0)
-    if args.what in ("all", "engine", "integrators", "opensim", "mujoco", "scaling"):
+    if args.what in ("all", "engine", "integrators", "opensim", "opensim-das3", "mujoco", "scaling"):
         print("\n=== report ===")
         report()
     return rc
