@@ -1,7 +1,7 @@
 """OpenSim 4.6 on das3.osim with the shoulder girdle free, for the same excitation (issue 15 item 6).
 
     python -m bench opensim-das3                     # or: python -m bench.bench_opensim_das3 [options]
-    python -m bench.bench_opensim_das3 [--duration 0.2] [--reps 1] [--json bench/results/opensim_das3.json]
+    python -m bench.bench_opensim_das3 [--duration 0.5] [--reps 1] [--json bench/results/opensim_das3.json]
                                        [--osim ../shared/reference/das3/das3.osim] [--quick] [--armrt MODEL]
 
 OpenSim side: das3.osim with all 11 coordinates unlocked and unclamped (SC, AC, GH, elbow, forearm; the
@@ -330,19 +330,45 @@ def run_opensim(duration: float, fixed_dt: float | None, osim_path: Path = DEFAU
         col = table.getDependentColumn(lab)
         q[:, j] = [col[i] for i in range(col.size())]
     # Explicit fixed steps can diverge without an exception (the state turns NaN): keep the finite part
-    finite = (np.isfinite(q) & (np.abs(q) < 1e3)).all(axis=1)
+    # (no DAS3 range reaches 4 rad: beyond 10 rad the integration has blown up)
+    finite = (np.isfinite(q) & (np.abs(q) < 10.0)).all(axis=1)
     if not finite.all():
         bad = int(np.argmin(finite))
-        error = error or (f"diverged: non-finite or > 1e3 rad coordinates from step {bad} (t = {times[bad]:.6g} s)")
+        error = error or (f"diverged: non-finite or > 10 rad coordinates from step {bad} (t = {times[bad]:.6g} s)")
         times, q = times[:bad], q[:bad]
     t_end = float(times[-1]) if len(times) else 0.0
     grid = np.arange(0.0, t_end + 1e-9, SAMPLE_DT)
     q_grid = (np.column_stack([np.interp(grid, times, q[:, j]) for j in range(q.shape[1])]) if len(times)
               else np.zeros((0, len(DAS3_COORDS))))
     del mgr  # before the model it refers to
+    contact_f = scapulothoracic_f(m, q_grid)
     return {"wall_s": wall, "steps": max(len(times) - 1, 0), "simulated_s": t_end, "time": times, "q": q,
             "t_grid": grid, "q_grid": q_grid, "rtf": t_end / wall if wall > 0 else float("nan"),
-            "info": info, "error": error}
+            "contact_f": contact_f, "info": info, "error": error}
+
+
+def scapulothoracic_f(m, q_poses: np.ndarray, params: dict | None = None) -> dict:
+    """At each pose (rows of q_poses, DAS3_COORDS order, rad): the ellipsoid function f of TS and AI
+    (< 0 inside the thorax) and f / |grad f|, the distance from the surface to first order (m, < 0 inside).
+    Returns {"TS": (n, 2) array, "AI": (n, 2) array}."""
+    import opensim as osim
+
+    params = params or das3_parameters()
+    c, r = np.asarray(params["thorax_center"]), np.asarray(params["thorax_radii"])
+    state = m.initSystem()
+    cs = m.getCoordinateSet()
+    thorax, scap = m.getBodySet().get("thorax"), m.getBodySet().get("scapula_r")
+    out = {label: np.zeros((len(q_poses), 2)) for label in ("TS", "AI")}
+    for k, q in enumerate(q_poses):
+        for name, v in zip(DAS3_COORDS, q):
+            cs.get(name).setValue(state, float(v), False)
+        m.realizePosition(state)
+        for label in ("TS", "AI"):
+            v = scap.findStationLocationInAnotherFrame(state, osim.Vec3(*params[label]), thorax)
+            p = np.array([v.get(i) for i in range(3)])
+            f = float(np.sum(((p - c) / r) ** 2) - 1)
+            out[label][k] = (f, f / np.linalg.norm(2 * (p - c) / r ** 2))
+    return out
 
 
 # ---------------------------------------------------------------------------------------------- armrt
@@ -396,7 +422,7 @@ def compare_with_armrt(arm_factory, duration: float = 0.2, opensim_run: dict | N
 # ---------------------------------------------------------------------------------------------- main
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--duration", type=float, default=0.2, help="simulated seconds (both sides)")
+    ap.add_argument("--duration", type=float, default=0.5, help="simulated seconds (both sides)")
     ap.add_argument("--reps", type=int, default=1, help="OpenSim repeats per integrator (median)")
     ap.add_argument("--osim", type=Path, default=DEFAULT_OSIM)
     ap.add_argument("--json", type=Path, default=DEFAULT_JSON)
@@ -441,15 +467,20 @@ def main(argv=None) -> int:
     for name, r in runs.items():
         out["runs"][name] = {"wall_s": r["wall_s"], "wall_all_s": r["wall_all_s"], "simulated_s": r["simulated_s"],
                              "real_time_factor": r["rtf"], "steps": r["steps"], "error": r["error"],
-                             "final_q_deg": np.degrees(r["q"][-1]).tolist(),
+                             "final_q_deg": np.degrees(r["q"][-1]).tolist() if len(r["q"]) else None,
+                             "scapulothoracic_distance_mm": {  # first order, < 0 inside the thorax
+                                 label: {"min": float(1e3 * f[:, 1].min()), "max": float(1e3 * f[:, 1].max())}
+                                 for label, f in r["contact_f"].items() if len(f)},
                              "q_1ms_rad": r["q_grid"].round(9).tolist()}
         arrays[f"{name}_t"] = r["t_grid"]
         arrays[f"{name}_q"] = r["q_grid"]
+        for label, f in r["contact_f"].items():
+            arrays[f"{name}_{label}_f_and_distance_m"] = f
     a = runs["opensim_default"]
     out["vs_opensim_default_max_abs_deg"] = {}
     for name, b in runs.items():
         n = min(len(a["t_grid"]), len(b["t_grid"]))
-        if name != "opensim_default" and n > 0:
+        if name != "opensim_default" and n > 0 and not b["error"]:
             out["vs_opensim_default_max_abs_deg"][name] = dict(zip(DAS3_COORDS, np.degrees(
                 np.abs(a["q_grid"][:n] - b["q_grid"][:n]).max(axis=0)).tolist()))
     if args.armrt != "none":
@@ -481,6 +512,12 @@ def markdown(out: dict) -> str:
         lines.append(f"| {name} | {r['wall_s']:.4g} | {r['simulated_s']:.4g} | {r['real_time_factor']:.3g} | "
                      f"{r['steps']} |" + (f" failed: {r['error']}" if r["error"] else ""))
     g = out["girdle_forces_at_rest"]
+    for name, r in out["runs"].items():
+        d = r.get("scapulothoracic_distance_mm") or {}
+        if d and not r["error"]:
+            lines.append("")
+            lines.append(f"{name}: TS {d['TS']['min']:.2f} to {d['TS']['max']:.2f} mm, AI {d['AI']['min']:.2f} to "
+                         f"{d['AI']['max']:.2f} mm from the thorax surface (< 0 inside) over the run.")
     lines += ["", f"At rest: conoid {g['conoid']['tension_N']:.1f} N (armrt formula {g['conoid']['armrt_tension_N']:.1f} N), "
               f"TS {np.linalg.norm(g['TS']['force_N']):.1f} N, AI {np.linalg.norm(g['AI']['force_N']):.1f} N."]
     a = out.get("armrt")
