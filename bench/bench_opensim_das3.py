@@ -25,8 +25,9 @@ cpp/include/armrt/girdle_forces.h) are added from OpenSim 4.6's stock components
 - passive joint moments: an ExpressionBasedCoordinateForce per coordinate with armrt's law
   (cpp/src/passive_joints.cc): -k_in (q - rest) - c qdot - k_out e |e|, e the excursion beyond the range.
   Rest postures, ranges and constants come from armrt's das3 model when it is registered
-  (armrt.Arm(model="das3").info), otherwise rest = equilibrium.mat, arm ranges from models/das2.json,
-  girdle ranges from das3.osim, and das2's constants (the "passive_source" field says which).
+  (armrt.Model("das3").info), else from models/das3.json, else rest = equilibrium.mat, arm ranges from
+  models/das2.json, girdle ranges from das3.osim and das2's constants (the "passive_source" field says
+  which).
 
 Same excitation protocol as bench_opensim (rotator cuff 0.05, elbow flexors 0.3, constant, element names
 from models/das2.json mapped to das3.osim's muscle names; every other muscle 0) through a
@@ -54,6 +55,7 @@ ROOT = Path(__file__).resolve().parent.parent
 DAS3_DIR = ROOT.parent / "shared" / "reference" / "das3"
 DEFAULT_OSIM = DAS3_DIR / "das3.osim"
 DEFAULT_JSON = ROOT / "bench" / "results" / "opensim_das3.json"
+DAS3_JSON = ROOT / "models" / "das3.json"
 DAS3_COORDS = ["SC_y", "SC_z", "SC_x", "AC_y", "AC_z", "AC_x", "GH_y", "GH_z", "GH_yy", "EL_x", "PS_y"]
 SAMPLE_DT = 1e-3  # s, the trajectory grid
 # Manager runs: the default (RKM, accuracy 1e-5, variable step), fixed-step RKM at 1 ms (the das2 bench's;
@@ -98,18 +100,30 @@ def passive_joints(osim_model=None) -> dict:
     """{"source", "stiffness_inside", "stiffness_outside", "damping", "dofs": {osim_name: (rest, lo, hi)}}
     of the passive joint law: armrt's registered das3 model when there is one, else the fallback in the
     module docstring (osim_model: an opensim.Model for the girdle ranges)."""
+    def from_model(info: dict, source: str) -> dict | None:
+        pj = info.get("passive_joint") or {}
+        dofs = {d["osim_name"]: (float(d["rest"]), float(d["range"][0]), float(d["range"][1])) for d in info["dofs"]}
+        if set(dofs) != set(DAS3_COORDS) or not {"stiffness_inside", "stiffness_outside", "damping"} <= set(pj):
+            return None
+        return {"source": source, **{k: float(pj[k]) for k in ("stiffness_inside", "stiffness_outside", "damping")},
+                "dofs": dofs}
+
     try:
         import armrt
 
-        info = armrt.Model("das3").info
-        pj = info.get("passive_joint") or {}
-        dofs = {d["osim_name"]: (float(d["rest"]), float(d["range"][0]), float(d["range"][1])) for d in info["dofs"]}
-        if set(dofs) == set(DAS3_COORDS) and {"stiffness_inside", "stiffness_outside", "damping"} <= set(pj):
-            return {"source": "armrt das3 model", **{k: float(pj[k]) for k in
-                                                     ("stiffness_inside", "stiffness_outside", "damping")},
-                    "dofs": dofs}
-    except Exception:  # noqa: BLE001 - no armrt, or no das3 in it yet: use the documented fallback
+        got = from_model(armrt.Model("das3").info, "armrt das3 model (armrt.Model('das3').info)")
+        if got:
+            return got
+    except Exception:  # noqa: BLE001 - no armrt, or no das3 in it yet: the model file, else the fallback
         pass
+    if DAS3_JSON.exists():
+        got = from_model(json.loads(DAS3_JSON.read_text()), "models/das3.json")
+        if got:
+            return got
+    if osim_model is None:
+        import opensim as osim
+
+        osim_model = osim.Model(str(DEFAULT_OSIM))
     das2 = json.loads((ROOT / "models" / "das2.json").read_text())
     pj = das2["passive_joint"]
     q0 = dict(zip(DAS3_COORDS, equilibrium_q()))
