@@ -3,6 +3,7 @@
     python -m bench opensim-das3                     # or: python -m bench.bench_opensim_das3 [options]
     python -m bench.bench_opensim_das3 [--duration 0.5] [--reps 1] [--json bench/results/opensim_das3.json]
                                        [--osim ../shared/reference/das3/das3.osim] [--quick] [--armrt MODEL]
+    python -m bench.bench_opensim_das3 --stability   # why fixed-step RKM at 1 ms diverges (about 1 min)
 
 OpenSim side: das3.osim with all 11 coordinates unlocked and unclamped (SC, AC, GH, elbow, forearm; the
 thorax stays welded to ground), the 138 muscles, the metabolics probe removed, the arm and girdle at
@@ -385,6 +386,44 @@ def scapulothoracic_f(m, q_poses: np.ndarray, params: dict | None = None) -> dic
     return out
 
 
+def fixed_step_stability(dts=(1e-3, 2e-4, 1e-4, 5e-5), duration: float = 0.02) -> dict:
+    """Why fixed-step RKM fails at 1 ms: for each step size (s) and each of the full model, no passive
+    joint forces, no girdle forces and neither, the first recorded step with a non-finite or > 10 rad
+    coordinate (None: finite over `duration`), and the largest eigenvalues of M^-1 at rest (1/(kg m^2))
+    with the coordinates of the extreme mode. Explicit RKM's damping limit is h < about 3 / (c lambda)."""
+    import opensim as osim
+
+    out = {"duration_s": duration, "diverged_at_step": {}}
+    for label, kw in {"full": {}, "no passive": {"passive": False}, "no girdle forces": {"girdle_forces": False},
+                      "neither": {"passive": False, "girdle_forces": False}}.items():
+        row = {}
+        for dt in dts:
+            m, state, _ = build_opensim(**kw)
+            mgr = osim.Manager(m)
+            mgr.setIntegratorMethod(osim.Manager.IntegratorMethod_RungeKuttaMerson)
+            mgr.setIntegratorFixedStepSize(dt)
+            state.setTime(0.0)
+            mgr.initialize(state)
+            mgr.integrate(duration)
+            table = mgr.getStatesTable()
+            mat = table.getMatrix().to_numpy()
+            labels = list(table.getColumnLabels())
+            cols = [labels.index(next(lbl for lbl in labels if lbl.endswith(f"/{n}/value"))) for n in DAS3_COORDS]
+            bad = np.flatnonzero(~(np.isfinite(mat[:, cols]) & (np.abs(mat[:, cols]) < 10.0)).all(axis=1))
+            row[f"{dt:g}"] = int(bad[0]) if len(bad) else None
+            del mgr
+        out["diverged_at_step"][label] = row
+    m, state, _ = build_opensim(equilibrate=False)
+    m.realizePosition(state)
+    M = osim.Matrix()
+    m.getMatterSubsystem().calcM(state, M)
+    M = np.array([[M.get(i, j) for j in range(M.ncol())] for i in range(M.nrow())])
+    w, V = np.linalg.eigh(np.linalg.inv(M))
+    out["Minv_largest_eigenvalues"] = w[-3:][::-1].tolist()
+    out["Minv_extreme_mode"] = dict(zip(DAS3_COORDS, np.round(V[:, -1], 3).tolist()))
+    return out
+
+
 # ---------------------------------------------------------------------------------------------- armrt
 def compare_with_armrt(arm_factory, duration: float = 0.2, opensim_run: dict | None = None,
                        reps: int = 3, fixed_dt: float | None = None) -> dict:
@@ -441,6 +480,8 @@ def main(argv=None) -> int:
     ap.add_argument("--osim", type=Path, default=DEFAULT_OSIM)
     ap.add_argument("--json", type=Path, default=DEFAULT_JSON)
     ap.add_argument("--quick", action="store_true", help="0.02 s, one repeat (smoke test)")
+    ap.add_argument("--stability", action="store_true",
+                    help="only the fixed-step stability diagnosis (fixed_step_stability), printed as JSON")
     ap.add_argument("--armrt", default="das3",
                     help="armrt model to compare with (das3; das2 on its 5 arm coordinates; none to skip)")
     args = ap.parse_args(argv)
@@ -454,6 +495,9 @@ def main(argv=None) -> int:
     if not args.osim.exists():
         print(f"bench_opensim_das3: {args.osim} not found (needs ../shared/reference)", file=sys.stderr)
         return 2
+    if args.stability:
+        print(json.dumps(fixed_step_stability(), indent=1))
+        return 0
     dur = args.duration
     stim, exc = das2_stimulation()
     m, state, info = build_opensim(args.osim, exc)
