@@ -60,6 +60,35 @@ def plot_opensim(osr: dict, path: Path) -> None:
     plt.close(fig)
 
 
+def plot_opensim_das3(npz_path: Path, path: Path) -> None:
+    """The 11 das3 coordinates: OpenSim (default integrator) and armrt, from opensim_das3.npz."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    d = np.load(npz_path)
+    names = [str(n) for n in d["coordinates"]]
+    fig, axes = plt.subplots(3, 4, figsize=(14, 8), sharex=True)
+    for j, ax in enumerate(axes.flat):
+        if j >= len(names):
+            ax.axis("off")
+            continue
+        ax.plot(d["opensim_default_t"], np.degrees(d["opensim_default_q"][:, j]), "-", lw=1.4,
+                label="OpenSim 4.6 (RKM default)")
+        if "armrt_q" in d and d["armrt_q"].shape[1] == len(names):
+            ax.plot(d["armrt_t"], np.degrees(d["armrt_q"][:, j]), "--", lw=1.0, label="armrt das3")
+        ax.set_title(names[j])
+        ax.grid(alpha=0.3)
+    for ax in axes[-1]:
+        ax.set_xlabel("t (s)")
+    axes[0, 0].set_ylabel("angle (deg)")
+    fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="upper center", ncol=2)
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+
+
 def report() -> int:
     eng, osr, mj, sc = _load("engine"), _load("opensim"), _load("mujoco"), _load("scaling")
     summary: dict = {"timestamp": time.strftime("%Y-%m-%dT%H:%M:%S"), "cpus": os.cpu_count(),
@@ -105,6 +134,11 @@ def report() -> int:
                                              if k in ("armrt_model", "speed_ratio", "max_abs_deg", "error")}}
         md += ["## das3 against OpenSim 4.6 (das3.osim, girdle free, conoid and scapulothoracic contact added)", "",
                osd3_md(osd3), ""]
+        try:
+            plot_opensim_das3(RESULTS / "opensim_das3.npz", RESULTS / "opensim_das3.png")
+            md += ["![das3 trajectories](opensim_das3.png)", ""]
+        except Exception as exc:  # noqa: BLE001
+            print(f"das3 plot failed: {exc}", file=sys.stderr)
     if mj:
         from bench.bench_mujoco import markdown as mj_md
 

@@ -192,10 +192,11 @@ def conoid_tension(p: dict, L: float) -> float:
 
 # ---------------------------------------------------------------------------------------------- OpenSim
 def build_opensim(osim_path: Path = DEFAULT_OSIM, excitations: dict | None = None, girdle_forces: bool = True,
-                  passive: bool = True, equilibrate: bool = True):
+                  passive: bool = True, equilibrate: bool = True, passive_damping: float | None = None):
     """das3.osim with the girdle free and armrt's girdle and passive joint forces added.
 
-    excitations: {das3.osim muscle name: constant excitation}, default the das2 protocol. Returns
+    excitations: {das3.osim muscle name: constant excitation}, default the das2 protocol.
+    passive_damping: overrides the passive joint damping (N m s/rad; for fixed_step_stability). Returns
     (opensim.Model, initialised State at equilibrium.mat, info dict). Raises KeyError for an excitation
     naming no muscle of the model, FileNotFoundError when das3.osim or the DAS3 .mat files are missing."""
     import opensim as osim
@@ -225,6 +226,8 @@ def build_opensim(osim_path: Path = DEFAULT_OSIM, excitations: dict | None = Non
         raise KeyError(f"excitations name muscles that das3.osim does not have: {unknown[:5]}")
     added = []
     pj = passive_joints(m) if passive else None
+    if pj is not None and passive_damping is not None:
+        pj = {**pj, "damping": float(passive_damping), "source": pj["source"] + f", damping {passive_damping}"}
     if passive:
         for name in DAS3_COORDS:
             rest, lo, hi = pj["dofs"][name]
@@ -394,7 +397,8 @@ def fixed_step_stability(dts=(1e-3, 2e-4, 1e-4, 5e-5), duration: float = 0.02) -
     import opensim as osim
 
     out = {"duration_s": duration, "diverged_at_step": {}}
-    for label, kw in {"full": {}, "no passive": {"passive": False}, "no girdle forces": {"girdle_forces": False},
+    for label, kw in {"full": {}, "no passive": {"passive": False}, "passive without damping": {"passive_damping": 0.0},
+                      "no girdle forces": {"girdle_forces": False},
                       "neither": {"passive": False, "girdle_forces": False}}.items():
         row = {}
         for dt in dts:
@@ -517,7 +521,8 @@ def main(argv=None) -> int:
         runs[name] = tries[len(tries) // 2]
         runs[name]["wall_all_s"] = [r["wall_s"] for r in tries]
     out = {"duration_s": dur, "stimulation": stim, "reps_opensim": args.reps,
-           "command": "python -m bench.bench_opensim_das3 " + " ".join(argv if argv is not None else sys.argv[1:]),
+           "command": " ".join(["python -m bench.bench_opensim_das3",
+                                *(argv if argv is not None else sys.argv[1:])]),
            "timestamp_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()),
            "machine": {"cpus": os.cpu_count(), "load_avg": os.getloadavg(), "note": "shared machine, 2 cores"},
            "opensim_model": info, "girdle_forces_at_rest": at_rest, "coordinates": DAS3_COORDS, "runs": {}}
@@ -552,6 +557,12 @@ def main(argv=None) -> int:
                 name: (r["wall_s"] / r["simulated_s"]) / (cmp["armrt_wall_s"] / dur)
                 for name, r in runs.items() if not r["error"] and r["simulated_s"] > 0}
             arrays["armrt_t"], arrays["armrt_q"] = cmp["t_grid"], cmp["q_armrt"]
+            if cmp["coordinates"] == DAS3_COORDS:  # armrt's scapula against the same thorax, same geometry
+                m, _, _ = build_opensim(args.osim, exc)
+                f = scapulothoracic_f(m, cmp["q_armrt"])
+                del m
+                out["armrt"]["scapulothoracic_distance_mm"] = {
+                    label: {"min": float(1e3 * v[:, 1].min()), "max": float(1e3 * v[:, 1].max())} for label, v in f.items()}
         except Exception as exc_:  # noqa: BLE001 - no armrt or no such model yet: say so in the results
             out["armrt"] = {"error": f"{type(exc_).__name__}: {exc_}"}
             print(f"armrt comparison skipped: {out['armrt']['error']}", file=sys.stderr)
@@ -586,6 +597,10 @@ def markdown(out: dict) -> str:
                   "", "| coordinate | max abs diff (deg) | RMS (deg) |", "|---|---:|---:|"]
         lines += [f"| {c} | {a['max_abs_deg_per_coordinate'][c]:.3g} | {a['rms_deg_per_coordinate'][c]:.3g} |"
                   for c in a["coordinates"]]
+        d = a.get("scapulothoracic_distance_mm")
+        if d:
+            lines += ["", f"armrt: TS {d['TS']['min']:.2f} to {d['TS']['max']:.2f} mm, AI {d['AI']['min']:.2f} to "
+                      f"{d['AI']['max']:.2f} mm from the thorax surface over the run (das3.osim geometry)."]
     elif a:
         lines += ["", f"armrt comparison not run: {a['error']}"]
     return "\n".join(lines)
