@@ -1,6 +1,7 @@
 """Benchmark harness: one command for every comparison, results under bench/results/.
 
-    python -m bench all [--quick]     # engine, integrators, das3, OpenSim (das2, das3), MuJoCo/MyoSuite, scaling, batch, then the report
+    python -m bench all [--quick]     # engine, integrators, das3, OpenSim (das2, das3), MuJoCo/MyoSuite,
+                                      # scaling, batch, then the report
     python -m bench engine|integrators|das3|opensim|opensim-das3|mujoco|scaling|batch|guard|report
 
 Needs `armrt` importable (pip install ., or PYTHONPATH=python with _core*.so copied there), the C++
@@ -8,8 +9,9 @@ tools built (ninja armrt_bench armrt_bench_scaling) for the engine and scaling f
 ../shared/reference for the OpenSim comparison, mujoco + myo-sim (+ myosuite --no-deps) for MuJoCo.
 A part whose requirements are missing is skipped with a message; the report uses whatever JSON exists.
 
-Writes bench/results/{engine,opensim,opensim_das3,mujoco,scaling}.json (+ opensim_das3.npz), summary.json, summary.md (the markdown
-tables), opensim.png (joint-angle trajectories, armrt against OpenSim) and scaling.png.
+Writes bench/results/{engine,opensim,opensim_das3,mujoco,scaling}.json (+ opensim_das3.npz), summary.json,
+summary.md (the markdown tables), opensim.png and opensim_das3.png (joint-angle trajectories, armrt against
+OpenSim) and scaling.png.
 """
 from __future__ import annotations
 

@@ -465,7 +465,8 @@ def compare_with_armrt(arm_factory, duration: float = 0.2, opensim_run: dict | N
     diff = np.degrees(qa - qo)
     wall = float(np.median(walls))
     # OpenSim's wall scaled to the compared duration when it ran longer (its cost per simulated second)
-    os_wall = opensim_run["wall_s"] * duration / opensim_run["simulated_s"] if opensim_run["simulated_s"] > 0 else float("nan")
+    sim = opensim_run["simulated_s"]
+    os_wall = opensim_run["wall_s"] * duration / sim if sim > 0 else float("nan")
     return {"armrt_model": arm.model_name, "integrator": arm.integrator, "dt": arm.dt, "substeps": arm.substeps,
             "duration_s": duration, "coordinates": common, "armrt_wall_s": wall, "armrt_wall_all_s": walls,
             "armrt_rtf": duration / wall, "opensim_wall_s": os_wall, "speed_ratio": os_wall / wall,
@@ -562,7 +563,8 @@ def main(argv=None) -> int:
                 f = scapulothoracic_f(m, cmp["q_armrt"])
                 del m
                 out["armrt"]["scapulothoracic_distance_mm"] = {
-                    label: {"min": float(1e3 * v[:, 1].min()), "max": float(1e3 * v[:, 1].max())} for label, v in f.items()}
+                    label: {"min": float(1e3 * v[:, 1].min()), "max": float(1e3 * v[:, 1].max())}
+                    for label, v in f.items()}
         except Exception as exc_:  # noqa: BLE001 - no armrt or no such model yet: say so in the results
             out["armrt"] = {"error": f"{type(exc_).__name__}: {exc_}"}
             print(f"armrt comparison skipped: {out['armrt']['error']}", file=sys.stderr)
@@ -587,12 +589,14 @@ def markdown(out: dict) -> str:
             lines.append("")
             lines.append(f"{name}: TS {d['TS']['min']:.2f} to {d['TS']['max']:.2f} mm, AI {d['AI']['min']:.2f} to "
                          f"{d['AI']['max']:.2f} mm from the thorax surface (< 0 inside) over the run.")
-    lines += ["", f"At rest: conoid {g['conoid']['tension_N']:.1f} N (armrt formula {g['conoid']['armrt_tension_N']:.1f} N), "
+    lines += ["", f"At rest: conoid {g['conoid']['tension_N']:.1f} N "
+              f"(armrt formula {g['conoid']['armrt_tension_N']:.1f} N), "
               f"TS {np.linalg.norm(g['TS']['force_N']):.1f} N, AI {np.linalg.norm(g['AI']['force_N']):.1f} N."]
     a = out.get("armrt")
     if a and "error" not in a:
         lines += ["", f"armrt {a['armrt_model']} ({a['integrator']}, dt {a['dt']} s): wall {a['armrt_wall_s']:.4g} s, "
-                  f"real-time factor {a['armrt_rtf']:.3g}, speed ratio (OpenSim default / armrt) {a['speed_ratio']:.0f}, "
+                  f"real-time factor {a['armrt_rtf']:.3g}, "
+                  f"speed ratio (OpenSim default / armrt) {a['speed_ratio']:.0f}, "
                   f"max difference {a['max_abs_deg']:.3g} deg",
                   "", "| coordinate | max abs diff (deg) | RMS (deg) |", "|---|---:|---:|"]
         lines += [f"| {c} | {a['max_abs_deg_per_coordinate'][c]:.3g} | {a['rms_deg_per_coordinate'][c]:.3g} |"
