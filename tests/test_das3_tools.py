@@ -279,6 +279,18 @@ def test_lsl_state_stream_names_das3_coordinates():
     assert labels[12] == "SCy_dot" and len(labels) == len(set(labels))
 
 
+def test_lsl_bridge_command_takes_the_model(monkeypatch, capsys):
+    from armrt import lsl_bridge
+    seen = {}
+
+    def fake(*args, **kwargs):
+        seen.update(kwargs)
+        raise ValueError("stopped here by the test")
+    monkeypatch.setattr(lsl_bridge, "LslBridge", fake)
+    assert lsl_bridge.main(["--model", "das3", "--runner", "127.0.0.1:45100"]) == 2
+    assert seen["model"] == "das3" and "stopped here" in capsys.readouterr().err
+
+
 # ---------------------------------------------------------------- profiles, batch, gym
 def test_weakness_profile_on_das3_matches_das2_element_by_element():
     a2, a3 = armrt.Arm(model="das2"), armrt.Arm(model="das3")
