@@ -271,6 +271,29 @@ def test_runner_runs_das3_over_udp_and_fails_safe(tmp_path):
     assert 0 < stats["tet_ns"]["mean"] <= stats["tet_ns"]["max"]
 
 
+def test_state_packets_of_another_model_are_refused_not_misread():
+    """A das2 client (or viewer) on a das3 runner, and the reverse, counts the packets as bad with the
+    reason, instead of decoding das3's 30 values as das2's 18 (wrong angles, silently)."""
+    from armrt import realtime as rt
+    n3, n2 = armrt.Model("das3").n_elements, armrt.Model("das2").n_elements
+    f2, f3 = rt.state_fields("das2"), rt.state_fields("das3")
+    plain3 = rt.decode_packet(rt.encode_packet(rt.STATE, 1, np.zeros(len(f3))))
+    with_exc3 = rt.decode_packet(rt.encode_packet(rt.STATE, 1, np.zeros(len(f3) + n3), flags=rt.FLAG_EXCITATION))
+    with_exc2 = rt.decode_packet(rt.encode_packet(rt.STATE, 1, np.zeros(len(f2) + n2), flags=rt.FLAG_EXCITATION))
+    assert rt.State.from_packet(plain3, f3, n3).q.shape == (11,)
+    assert rt.State.from_packet(with_exc3, f3, n3).excitation.shape == (n3,)
+    for packet, fields, n in ((plain3, f2, n2), (with_exc3, f2, n2), (with_exc2, f3, n3)):
+        with pytest.raises(rt.PacketError, match="another model"):
+            rt.State.from_packet(packet, fields, n)
+    with rt.RealtimeSession(listen="127.0.0.1:0", model="das3", state_rate_hz=200) as s, \
+            rt.UdpClient(s.port, mapping="elements", model="das2") as c:
+        c.join()
+        c.sock.sendto(rt.encode_packet(rt.EXC_ELEMENTS, 99, np.zeros(n3), session=c.session), c.address)
+        assert c.recv_state(timeout=0.3) is None
+        assert c.bad_packets > 0 and "another model" in c.last_error
+        s.stop()
+
+
 def test_lsl_state_stream_names_das3_coordinates():
     pytest.importorskip("pylsl", reason="pylsl is not installed")
     from armrt.lsl_bridge import state_channels

@@ -251,6 +251,7 @@ class UdpSource:
         self._thread: threading.Thread | None = None
         self.packets = 0
         self.bad_packets = 0
+        self.last_error = ""   # why the last bad datagram was refused (e.g. a runner of another model)
 
     def _run(self) -> None:
         rt = self._realtime
@@ -260,13 +261,15 @@ class UdpSource:
             except OSError:
                 continue
             try:
-                s = rt.State.from_packet(rt.decode_packet(data, self._key), self._state_fields)
+                s = rt.State.from_packet(rt.decode_packet(data, self._key), self._state_fields,
+                                         len(self.element_names))
                 self._frame = Frame(time=s.time, q=np.asarray(s.q, dtype=float), activation=s.excitation,
                                     gh_stab=s.gh_stab, lag=s.lag, overrun=s.overrun, timed_out=s.timed_out,
                                     kind="excitation received")
                 self.packets += 1
-            except Exception:
+            except Exception as exc:
                 self.bad_packets += 1
+                self.last_error = str(exc)
     def start(self) -> None:
         if self._thread is None:
             self._thread = threading.Thread(target=self._run, name="armrt-udp", daemon=True)
