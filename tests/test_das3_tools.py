@@ -5,7 +5,6 @@ Gymnasium environments take it. das2's behaviour is covered by the tests of each
 from __future__ import annotations
 
 import json
-import os
 import subprocess
 import time
 
@@ -175,6 +174,58 @@ def test_viewer_moves_the_girdle(result):
         assert "clavicle elevation" in html and "scapula lateral rotation" in html
     finally:
         v.server.stop()
+
+
+def test_live_page_shows_the_girdle_moving(tmp_path):
+    """The served page in headless Chromium: the girdle's pixels (the difference between the page with
+    the girdle shown and hidden, the simulation paused) are there, and elsewhere a second later."""
+    import test_view as tv
+    if tv._chromium() is None:
+        pytest.skip("chromium is not installed (Debian package 'chromium')")
+    pytest.importorskip("viser", reason="viser is not installed (pip install viser)")
+    from armrt.view import SimulationSource, serve
+
+    def excitation(t):
+        return {"serratus_anterior": 0.25 * (1 + np.sin(2 * np.pi * 0.5 * t)), "trapezius": 0.15,
+                "rotator_cuff": 0.08, "deltoid": 0.1}
+    v = serve(SimulationSource(model="das3", excitation=excitation), host="127.0.0.1", port=tv._free_port(),
+              fps=30, block=False)
+    out_dir = tmp_path / "shots"
+    out_dir.mkdir()
+
+    def girdle_pixels(page, k):
+        v.source.set_paused(True)
+        time.sleep(0.6)
+        shown, png = page.screenshot()
+        (out_dir / f"das3_{k}.png").write_bytes(png)
+        v._girdle.visible = False
+        for c in v._contacts:
+            c.visible = False
+        time.sleep(0.6)
+        hidden, _ = page.screenshot()
+        v._girdle.visible = True
+        for c in v._contacts:
+            c.visible = True
+        v.source.set_paused(False)
+        h, w, _ = shown.shape
+        region = (slice(int(0.15 * h), h), slice(0, int(0.64 * w)))   # the 3D view, not the panel
+        return np.abs(shown[region].astype(int) - hidden[region].astype(int)).max(axis=2) > 40
+    try:
+        with tv._chromium_page(v.url, tmp_path) as page:
+            deadline = time.monotonic() + 30
+            while not page.eval("!!document.querySelector('canvas') && document.body.innerText.includes('GHstab')"):
+                assert time.monotonic() < deadline, "the page never showed the scene and the GHstab panel"
+                time.sleep(0.3)
+            time.sleep(1.5)
+            m0 = girdle_pixels(page, 0)
+            time.sleep(1.0)
+            m1 = girdle_pixels(page, 1)
+            assert "clavicle elevation" in page.eval("document.body.innerText")
+    finally:
+        v.stop()
+    assert v.source.restarts == 0 and v.source.error is None
+    assert m0.sum() > 300 and m1.sum() > 300, (m0.sum(), m1.sum())
+    assert (m0 ^ m1).sum() > 50, "the girdle did not move between the two screenshots"
 
 
 # ---------------------------------------------------------------- .mot export

@@ -30,7 +30,7 @@ BONE_COLOURS = {  # distinct, saturated: the browser test finds the arm by these
     "humerus": (255, 128, 0), "ulna": (0, 160, 255), "radius": (0, 90, 255), "hand": (200, 0, 200)}
 STATIC_COLOUR = (120, 120, 120)
 # A thorax-based model's moving girdle (ArmGeometry.girdle): clavicle, scapula blade and glenoid rim.
-GIRDLE_COLOURS = {"clavicle_r": (0, 160, 96), "scapula_r": (160, 90, 44), "glenoid": (160, 90, 44)}
+GIRDLE_COLOURS = {"clavicle_r": (0, 160, 96), "scapula_r": (140, 60, 20), "glenoid": (140, 60, 20)}
 CONTACT_COLOUR = (212, 160, 0)   # TS, AI: the points held on the thorax ellipsoid
 STAB_OK, STAB_BAD = (40, 180, 60), (230, 30, 30)
 
