@@ -59,6 +59,20 @@ def test_girdle_dofs_are_sc_and_ac(model):
     assert model.body_names == ("clavicle", "scapula", *BONES) and model.base_body == "thorax"
 
 
+def test_model_scapula_frame_moves_with_the_girdle(model):
+    rng = np.random.default_rng(5)
+    Q = _poses(rng, model, 4)
+    R, p = model.body_poses(Q, frame="scapula")
+    for k in range(len(Q)):
+        np.testing.assert_allclose(R[k, 1], np.eye(3), atol=1e-12)                  # the scapula itself
+        np.testing.assert_allclose(p[k, 2], model.glenoid["gh_centre"], atol=1e-12)  # GH, fixed in it
+    Rt, pt = model.body_poses(Q)
+    h_s = model.hand_position(Q, frame="scapula")
+    np.testing.assert_allclose(np.einsum("kij,kj->ki", Rt[:, 1], h_s) + pt[:, 1], model.hand_position(Q), atol=1e-12)
+    with pytest.raises(ValueError, match="thorax frame only"):
+        model.hand_jacobian(Q[0], frame="scapula")
+
+
 def test_geometry_follows_the_engine_bodies(geom, model):
     """Bones, clavicle, scapula, contact points and GH lines of action come from the body poses of
     each pose: humerus origin = GH, clavicle from the SC to the AC joint, the scapula carried rigidly."""
