@@ -5,6 +5,7 @@ Gymnasium environments take it. das2's behaviour is covered by the tests of each
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import time
 
@@ -365,6 +366,53 @@ def test_lsl_state_stream_names_das3_coordinates():
     labels, _, _ = state_channels("das3")
     assert labels[1:12] == ["SCy", "SCz", "SCx", "ACy", "ACz", "ACx", "GHy", "GHz", "GHyy", "ELx", "PSy"]
     assert labels[12] == "SCy_dot" and len(labels) == len(set(labels))
+
+
+def test_lsl_bridge_loopback_with_das3():
+    """The LSL bridge between an excitation outlet and a das3 session: das3's state channels come back,
+    the scapular channel is forwarded and moves the girdle."""
+    import test_realtime as tr
+    pylsl = tr._pylsl()
+    from armrt import realtime as rt
+    from armrt.lsl_bridge import LslBridge, channel_labels, state_channels
+    source = f"armrt-test-das3-{os.getpid()}"
+    bridge = LslBridge(runner_port=0, mapping="groups", model="das3", source_id=source,
+                       excitation_name=f"exc-{source}", state_rate_hz=200)
+    with rt.RealtimeSession(listen="127.0.0.1:0", model="das3", state_rate_hz=200,
+                            state_to=f"127.0.0.1:{bridge.state_port}") as s:
+        bridge.runner_address = ("127.0.0.1", s.port)
+        stop, th, errors = tr._run_bridge(bridge)
+        try:
+            labels = list(bridge.mapping.names)
+            assert "serratus_anterior" in labels and len(labels) == 15
+            outlet = tr._exc_outlet(pylsl, f"exc-{source}", f"{source}-controller", labels)
+            found = pylsl.resolve_byprop("source_id", f"{source}-state", timeout=10)
+            assert found, "state stream not found on loopback"
+            inlet = pylsl.StreamInlet(found[0])
+            labels_out = channel_labels(inlet.info(timeout=5))
+            assert labels_out == state_channels("das3")[0]
+            u = np.zeros(len(labels))
+            u[labels.index("serratus_anterior")] = 0.3
+            first = last = None
+            t_end = time.monotonic() + 2.5
+            while time.monotonic() < t_end and not errors:
+                outlet.push_sample(u.tolist())
+                samples, _ = inlet.pull_chunk(timeout=0.05)
+                if samples:
+                    first = samples[0] if first is None else first
+                    last = samples[-1]
+                time.sleep(0.01)
+            assert not errors, errors
+            assert first is not None and bridge.forwarded > 10
+            assert bridge.last_values[labels.index("serratus_anterior")] == 0.3
+            girdle = [labels_out.index(n) for n in ("SCy", "SCz", "SCx", "ACy", "ACz", "ACx")]
+            assert np.abs(np.subtract(last, first)[girdle]).max() > 0.01
+        finally:
+            stop.set()
+            th.join(timeout=5)
+            bridge.close()
+        st = s.stop()
+    assert st["packets"]["applied"] > 10 and st["error"] == ""
 
 
 def test_lsl_bridge_command_takes_the_model(monkeypatch, capsys):
