@@ -7,6 +7,7 @@ statistics (TET, cycle time and wake-up latency: min, median, p99, p99.9, max in
 bench/results/rt_latency.json and prints a markdown table.
 
     python -m bench.rt_latency [--duration 60] [--cpu 1] [--busy-wait 0] [--json bench/results/rt_latency.json]
+    python -m bench.rt_latency --model das3 --json bench/results/rt_latency_das3.json   # the 11-DOF girdle model
 """
 from __future__ import annotations
 
@@ -27,9 +28,9 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def controller(port: int, stop: threading.Event, counts: dict) -> None:
+def controller(port: int, stop: threading.Event, counts: dict, model: str = "das2") -> None:
     from armrt import realtime as rt
-    with rt.UdpClient(port, mapping="groups") as c:
+    with rt.UdpClient(port, mapping="groups", model=model) as c:
         t_next = time.monotonic()
         k = 0
         while not stop.is_set():
@@ -43,9 +44,9 @@ def controller(port: int, stop: threading.Event, counts: dict) -> None:
             time.sleep(max(0.0, t_next - time.monotonic()))
 
 
-def run_once(exe: str, duration: float, extra: list[str], out_json: Path) -> dict:
+def run_once(exe: str, duration: float, extra: list[str], out_json: Path, model: str = "das2") -> dict:
     args = [exe, "--rate", "1000", "--listen", "127.0.0.1:0", "--state-rate", "100",
-            "--timeout", "0.2", "--duration", str(duration), "--json", str(out_json), *extra]
+            "--timeout", "0.2", "--duration", str(duration), "--json", str(out_json), "--model", model, *extra]
     p = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     port = None
     while port is None:
@@ -56,7 +57,7 @@ def run_once(exe: str, duration: float, extra: list[str], out_json: Path) -> dic
             port = int(line.split()[-1])
     stop = threading.Event()
     counts = {"sent": 0, "states": 0}
-    th = threading.Thread(target=controller, args=(port, stop, counts), daemon=True)
+    th = threading.Thread(target=controller, args=(port, stop, counts, model), daemon=True)
     th.start()
     try:
         out, err = p.communicate(timeout=duration + 60)
@@ -80,6 +81,7 @@ def main(argv=None) -> int:
     ap.add_argument("--busy-wait", type=float, default=0.0, help="busy-wait tail in us")
     ap.add_argument("--priority", type=int, default=80)
     ap.add_argument("--integrator", default=None, help="default: the runner's default")
+    ap.add_argument("--model", default="das2", help="registered model (das2, das3, ...)")
     ap.add_argument("--json", default=str(ROOT / "bench" / "results" / "rt_latency.json"))
     a = ap.parse_args(argv)
     from armrt import realtime as rt
@@ -90,12 +92,13 @@ def main(argv=None) -> int:
     tmp = Path(a.json).with_suffix(".tmp")
     results = {}
     for name, extra in (("sched_fifo", ["--priority", str(a.priority)]), ("sched_other", ["--no-rt", "--no-mlock"])):
-        print(f"== {name}: {a.duration:.0f} s at 1 kHz, integrator {a.integrator or 'default'}", flush=True)
-        results[name] = run_once(exe, a.duration, common + extra, tmp)
+        print(f"== {name}: {a.model}, {a.duration:.0f} s at 1 kHz, integrator {a.integrator or 'default'}", flush=True)
+        results[name] = run_once(exe, a.duration, common + extra, tmp, a.model)
     tmp.unlink(missing_ok=True)
     doc = {
         "what": "armrt-rt at 1 kHz (integrator and dt: runs.*.integrator / dt), UDP controller at 100 Hz (group "
                 "excitations) and 100 Hz state stream on loopback; all times ns",
+        "model": a.model,
         "duration_s": a.duration,
         "machine": {"host": socket.gethostname(), "cpus": os.cpu_count(), "kernel": platform.release(),
                     "processor": platform.processor() or platform.machine()},

@@ -1,7 +1,8 @@
 """Offline animation of a saved result: `armrt animate run.npz -o arm.mp4` (or .gif).
 
-Front and side views of the arm (same geometry as the live view, armrt.geometry), the GH stability
-trace (red above 1) and per-muscle activation bars. Frames go to the encoder as they are drawn, so
+Front and side views of the arm (same geometry as the live view, armrt.geometry; a thorax-based
+model's clavicle, scapula, glenoid and scapulothoracic contact points move with it, over the thorax
+ellipsoid's outline), the GH stability trace (red above 1) and per-muscle activation bars. Frames go to the encoder as they are drawn, so
 memory does not grow with the length of the video: .gif through StreamingGifWriter (Pillow, one frame
 in memory; matplotlib's PillowWriter keeps every frame: 1.3 GB for 600), .mp4 through ffmpeg's pipe
 (Debian package `ffmpeg`).
@@ -16,6 +17,11 @@ import numpy as np
 from .geometry import POINTS, SEGMENTS, ArmGeometry
 
 BONE_COLOURS = {"humerus": "#ff8000", "ulna": "#00a0ff", "radius": "#005aff", "hand": "#c800c8"}
+# The moving girdle of a thorax-based model (das3): ArmGeometry.girdle parts.
+GIRDLE_STYLE = {"clavicle_r": dict(color="#00a060", lw=4, solid_capstyle="round"),
+                "scapula_r": dict(color="#a05a2c", lw=2.5),
+                "glenoid": dict(color="#a05a2c", lw=1.2),
+                "contact_points": dict(color="#d4a000", ls="none", marker="s", ms=5)}
 
 
 def frame_indices(time: np.ndarray, fps: float, speed: float = 1.0) -> np.ndarray:
@@ -116,6 +122,7 @@ def build_figure(result, rows: np.ndarray, dpi: int = 80, lines_of_action: bool 
 
     geom = ArmGeometry(result.model or "das2")
     pts = geom.points_series(result.q[rows])                  # (F, 6, 3)
+    girdle = geom.girdle_series(result.q[rows])               # {part: (F, k, 3)}; {} when the scapula is fixed
     static = geom.static()
     ix = {n: i for i, n in enumerate(POINTS)}
     info = geom.info
@@ -130,7 +137,7 @@ def build_figure(result, rows: np.ndarray, dpi: int = 80, lines_of_action: bool 
     # (anterior, -z, to the right). Thorax frame: x lateral, y up, z posterior.
     views = [(ax_front, lambda p: (-p[..., 0], p[..., 1]), "front (thorax x to the left)"),
              (ax_side, lambda p: (-p[..., 2], p[..., 1]), "right side (anterior to the right)")]
-    allp = np.concatenate([pts.reshape(-1, 3)] + list(static.values()))
+    allp = np.concatenate([pts.reshape(-1, 3)] + list(static.values()) + [g.reshape(-1, 3) for g in girdle.values()])
     artists = []
     for ax, proj, title in views:
         h, v = proj(allp)
@@ -140,13 +147,15 @@ def build_figure(result, rows: np.ndarray, dpi: int = 80, lines_of_action: bool 
         ax.set_aspect("equal")
         ax.set_title(title, fontsize=9)
         ax.tick_params(labelsize=7)
-        for poly in static.values():
-            ax.plot(*proj(poly), color="0.55", lw=1.5)
+        for name, poly in static.items():
+            ax.plot(*proj(poly), color="0.75" if name.startswith("thorax") else "0.55",
+                    lw=1.0 if name.startswith("thorax") else 1.5)
+        moving = {name: ax.plot([], [], **GIRDLE_STYLE[name])[0] for name in girdle}
         bones = {name: ax.plot([], [], color=BONE_COLOURS[name], lw=5, solid_capstyle="round")[0]
                  for name, _, _ in SEGMENTS}
         head = ax.plot([], [], "o", ms=9, color="tab:green")[0]
         loa = ax.plot([], [], color="tab:red", lw=0.6, alpha=0.8)[0] if lines_of_action else None
-        artists.append((proj, bones, head, loa))
+        artists.append((proj, bones, head, loa, moving))
 
     ax_stab.plot(result.time, result.gh_stab, color="0.3", lw=1)
     ax_stab.axhline(1.0, color="tab:red", ls="--", lw=0.8)
@@ -177,9 +186,11 @@ def build_figure(result, rows: np.ndarray, dpi: int = 80, lines_of_action: bool 
             active = np.nan_to_num(np.asarray(result.activation[r])[idx]) > 0.02
             seg = seg[active]
             loa_xyz = np.concatenate([np.concatenate([s, np.full((1, 3), np.nan)]) for s in seg]) if len(seg) else None
-        for proj, bones, head, loa in artists:
+        for proj, bones, head, loa, moving in artists:
             for name, a, b in SEGMENTS:
                 bones[name].set_data(*proj(np.array([p[ix[a]], p[ix[b]]])))
+            for name, line in moving.items():
+                line.set_data(*proj(girdle[name][k]))
             head.set_data(*proj(p[ix["gh"]][None]))
             head.set_color(colour)
             if loa is not None:

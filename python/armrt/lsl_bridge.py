@@ -272,6 +272,7 @@ def main(argv=None) -> int:
     ap.add_argument("--runner", default="127.0.0.1:45100", help="the runner's --listen HOST:PORT")
     ap.add_argument("--state-port", type=int, default=45101, help="UDP port the runner sends state to (--state-to)")
     ap.add_argument("--mapping", default="groups", choices=["elements", "muscles", "groups", "channels"])
+    ap.add_argument("--model", default="das2", help="the runner's --model (names of the state channels and the mapping)")
     ap.add_argument("--channels", default="", help="comma-separated names for --mapping channels")
     ap.add_argument("--source-id", default=None)
     ap.add_argument("--state-name", default="armrt_state")
@@ -291,7 +292,7 @@ def main(argv=None) -> int:
                            source_id=a.source_id, state_name=a.state_name, excitation_name=a.excitation_name,
                            state_rate_hz=a.rate, forces=a.forces, excitation_source_id=a.excitation_source_id,
                            excitation_host=a.excitation_host, runner_rate_hz=a.runner_rate,
-                           key=read_key_file(a.key_file) if a.key_file else None)
+                           key=read_key_file(a.key_file) if a.key_file else None, model=a.model)
     except (ValueError, RuntimeError, OSError) as e:
         print(f"lsl_bridge: {e}", file=sys.stderr)
         return 2

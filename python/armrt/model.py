@@ -265,12 +265,14 @@ class Model:
 
     @property
     def gravity_base(self) -> np.ndarray:
-        """(3,) m/s^2, gravity in the scapula frame (an Arm may change its own)."""
+        """(3,) m/s^2, gravity in the base frame (das2: the fixed scapula; das3: the thorax; an Arm may
+        change its own)."""
         return _readonly(self._info["gravity_base"])
 
     @property
     def base_rotation_in_thorax(self) -> np.ndarray:
-        """(3, 3): columns are the scapula axes in thorax coordinates."""
+        """(3, 3): columns are the base frame's axes (das2: the fixed scapula; das3: the thorax, identity)
+        in thorax coordinates."""
         return _readonly(np.reshape(self._info["base_rotation_in_thorax"], (3, 3)))
 
     @property
@@ -280,7 +282,8 @@ class Model:
 
     @property
     def glenoid(self) -> MappingProxyType:
-        """GH centre (m), glenoid normal, major and minor axes (unit, scapula frame), rim half-angles (rad)."""
+        """GH centre (m), glenoid normal, major and minor axes (unit, scapula frame, moving with q in
+        das3), rim half-angles (rad)."""
         keys = ("gh_centre", "glenoid_normal", "glenoid_major_axis", "glenoid_minor_axis")
         out = {k: _readonly(self._info[k]) for k in keys}
         out.update(rim_half_angle_major=self._info["rim_half_angle_major"],
@@ -358,27 +361,71 @@ class Model:
         """(ndof, ndof) kg m^2 (symmetric positive definite); (k, ndof, ndof) for q (k, ndof)."""
         return self._def.mass_matrix(self._q(q))
 
+    @property
+    def body_names(self) -> tuple[str, ...]:
+        """The moving bodies body_poses returns, in order: das2 humerus, ulna, radius, hand; das3
+        clavicle, scapula, humerus, ulna, radius, hand."""
+        return tuple(self._info["body_names"])
+
+    @property
+    def base_body(self) -> str:
+        """The engine's base frame (fixed to the thorax): "scapula" (das2) or "thorax" (das3)."""
+        return self._info["base_body"]
+
+    @property
+    def girdle_dofs(self) -> tuple[int, ...]:
+        """Indices of the DOFs that move the scapula (das3: SCy SCz SCx ACy ACz ACx; das2: none), found
+        from the engine's body poses: a DOF is a girdle DOF if turning it alone moves the scapula."""
+        k = self._info["scapula_body"]
+        if k < 0:
+            return ()
+        q0 = np.asarray(self.rest_posture, dtype=float)
+        Q = q0 + 0.1 * np.eye(self.n_dofs)
+        R, p = self._def.body_poses(np.ascontiguousarray(np.vstack([q0, Q])))
+        moved = (np.abs(R[1:, k] - R[0, k]).max(axis=(1, 2)) > 1e-9) | (np.abs(p[1:, k] - p[0, k]).max(axis=1) > 1e-12)
+        return tuple(int(j) for j in np.flatnonzero(moved))
+
+    def _scapula_in_base(self, q) -> tuple[np.ndarray, np.ndarray]:
+        """(R (..., 3, 3), o (..., 3)): the moving scapula's pose in the base frame at q."""
+        R, p = self._def.body_poses(q)
+        k = self._info["scapula_body"]
+        return R[..., k, :, :], p[..., k, :]
+
     def body_poses(self, q, frame: str = "thorax") -> tuple[np.ndarray, np.ndarray]:
-        """(R (4, 3, 3), p (4, 3) m) of humerus, ulna, radius, hand (their origins: GH, elbow, proximal
-        radius, wrist) in the thorax frame (frame="scapula": the scapula frame); (k, 4, 3, 3), (k, 4, 3)
-        for q (k, ndof)."""
-        R, p = self._def.body_poses(self._q(q))
+        """(R (nb, 3, 3), p (nb, 3) m) of the bodies in body_names (das2: humerus, ulna, radius, hand,
+        whose origins are GH, elbow, proximal radius, wrist; das3 adds clavicle and scapula first, at the
+        SC and AC joints) in the thorax frame (frame="scapula": the scapula frame, which moves with q in
+        das3); (k, nb, 3, 3), (k, nb, 3) for q (k, ndof)."""
+        q = self._q(q)
+        R, p = self._def.body_poses(q)
         if self._frame(frame) == "scapula":
-            return R, p
+            if self._info["scapula_body"] < 0:
+                return R, p
+            Rs, os_ = self._scapula_in_base(q)
+            return (np.einsum("...ji,...bjk->...bik", Rs, R),
+                    np.einsum("...ji,...bj->...bi", Rs, p - os_[..., None, :]))
         Rs, os_ = self.base_rotation_in_thorax, self.base_origin_in_thorax
         return np.einsum("ij,...bjk->...bik", Rs, R), p @ Rs.T + os_
 
     def hand_position(self, q, frame: str = "thorax") -> np.ndarray:
         """(3,) m: the hand point (where Arm.hand_position is reported) in the thorax frame (or
-        frame="scapula"); (k, 3) for q (k, ndof)."""
-        p = self._def.hand_position(self._q(q))
+        frame="scapula", moving with q in das3); (k, 3) for q (k, ndof)."""
+        q = self._q(q)
+        p = self._def.hand_position(q)
         if self._frame(frame) == "scapula":
-            return p
+            if self._info["scapula_body"] < 0:
+                return p
+            Rs, os_ = self._scapula_in_base(q)
+            return np.einsum("...ji,...j->...i", Rs, p - os_)
         return p @ self.base_rotation_in_thorax.T + self.base_origin_in_thorax
 
     def hand_jacobian(self, q, frame: str = "thorax") -> tuple[np.ndarray, np.ndarray]:
         """(Jv (3, ndof) m/rad, Jw (3, ndof) 1): hand point velocity and hand angular velocity per joint
-        velocity, thorax frame (or frame="scapula"); with a leading k for q (k, ndof)."""
+        velocity, thorax frame (or frame="scapula" for a model whose scapula is fixed; ValueError for
+        das3, whose scapula frame moves); with a leading k for q (k, ndof)."""
+        if self._frame(frame) == "scapula" and self._info["scapula_body"] >= 0:
+            raise ValueError(f"model {self.name}: the scapula moves with q, so the hand Jacobian is given in "
+                             f"the thorax frame only (frame='thorax')")
         Jv, Jw = self._def.hand_jacobian(self._q(q))
         if self._frame(frame) == "scapula":
             return Jv, Jw

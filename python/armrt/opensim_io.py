@@ -1,9 +1,10 @@
 """OpenSim export: joint angles to a `.mot`, activations to a `.sto` (OpenSim 4 storage format).
 
 `.mot`: one column per coordinate of `das3.osim` (SC_y SC_z SC_x AC_y AC_z AC_x GH_y GH_z GH_yy EL_x
-PS_y), the six girdle coordinates held at the model's fixed girdle posture, radians
-(`inDegrees=no`), so a result plays on `das3.osim` in OpenSim (File > Load Motion, or
-`opensim.Storage` + `Coordinate.setValue`).
+PS_y), radians (`inDegrees=no`), so a result plays on `das3.osim` in OpenSim (File > Load Motion, or
+`opensim.Storage` + `Coordinate.setValue`). A fixed-scapula model (das2) holds the six girdle
+coordinates at its fixed girdle posture (the model file's `girdle` block); a model with the girdle
+free (das3) writes its own values of all eleven.
 
 `.sto`: one column per muscle element, named with its OpenSim force name (`delt_scap_1`, ...), or
 with `/forceset/<name>/activation` (`state_paths=True`) so it reads as an OpenSim states file.
@@ -94,9 +95,14 @@ def read_storage(path) -> tuple[dict, list[str], np.ndarray]:
 
 
 def coordinate_table(result, model_desc: dict) -> tuple[list[str], np.ndarray]:
-    """(OpenSim coordinate names, (T, 11) radians) for a Result: fixed girdle then the five arm DOFs."""
-    girdle = [(d["osim_name"], float(d["angle"])) for d in model_desc["girdle"]["dofs"]]
+    """(OpenSim coordinate names, (T, 11) radians) for a Result: the model's fixed girdle coordinates
+    (das2: the six SC and AC angles of its `girdle` block, constant), then its DOFs (das2: the five arm
+    DOFs; das3: all eleven, girdle included, as simulated)."""
+    girdle = [(d["osim_name"], float(d["angle"])) for d in model_desc.get("girdle", {}).get("dofs", [])]
     dofs = model_desc["dofs"]
+    both = {n for n, _ in girdle} & {d["osim_name"] for d in dofs}
+    if both:
+        raise ValueError(f"coordinates {sorted(both)} are both fixed (girdle) and free (dofs) in the model file")
     if list(result.dof_names) and [d["name"] for d in dofs] != list(result.dof_names):
         raise ValueError(f"result DOFs {result.dof_names} do not match the model's {[d['name'] for d in dofs]}")
     T = len(result.time)
@@ -106,7 +112,8 @@ def coordinate_table(result, model_desc: dict) -> tuple[list[str], np.ndarray]:
 
 
 def write_mot(result, path, model: str | None = None, model_file=None) -> Path:
-    """Joint angles of a Result to an OpenSim motion file (radians, girdle coordinates filled in)."""
+    """Joint angles of a Result to an OpenSim motion file (radians; a fixed girdle's coordinates filled
+    in from the model file, a free girdle's from the result)."""
     desc = model_description(model or result.model or "das2", model_file)
     labels, data = coordinate_table(result, desc)
     _write_storage(path, Path(path).stem, labels, result.time, data, in_degrees=False)
@@ -159,8 +166,8 @@ def export(result, mot_path=None, sto_path=None, model_file=None, state_paths: b
 # ------------------------------------------------------------------ import
 @dataclass
 class Motion:
-    """Joint angles read from an OpenSim motion file: time (T,) s, q (T, 5) rad in the model's DOF
-    order."""
+    """Joint angles read from an OpenSim motion file: time (T,) s, q (T, ndof) rad in the model's DOF
+    order (das2: 5, das3: 11)."""
 
     time: np.ndarray
     q: np.ndarray
@@ -169,7 +176,7 @@ class Motion:
     source: str = ""
 
     def posture(self, t: float | None = None) -> np.ndarray:
-        """(5,) rad: the first row, or the angles at time t (linear interpolation, t inside the file)."""
+        """(ndof,) rad: the first row, or the angles at time t (linear interpolation, t inside the file)."""
         if t is None:
             return self.q[0].copy()
         t = float(t)
@@ -194,9 +201,10 @@ class Motion:
 
 
 def read_motion(path, model: str = "das2") -> Motion:
-    """A .mot/.sto of joint angles as a Motion (radians). Columns: the model's five DOFs by OpenSim
-    coordinate name (GH_y, ..., PS_y) or armrt name (GHy, ...); other columns (the fixed girdle, SC_*,
-    AC_*) are ignored, with a RuntimeWarning if the girdle differs from the model's. `inDegrees=yes`
+    """A .mot/.sto of joint angles as a Motion (radians). Columns: the model's DOFs by OpenSim
+    coordinate name (GH_y, ..., PS_y; das3 also SC_y ... AC_x) or armrt name (GHy, ...); other columns
+    (das2's fixed girdle, SC_*, AC_*) are ignored, with a RuntimeWarning if the girdle differs from the
+    model's. `inDegrees=yes`
     is honoured. Raises ValueError naming missing columns, non-numeric rows or a bad time column."""
     from . import _core
     from .arm import known_model
@@ -228,7 +236,7 @@ def read_motion(path, model: str = "das2") -> Motion:
         raise ValueError(f"{path}: time must be strictly increasing")
     path_desc = find_model_file(model)
     if path_desc is not None:
-        girdle = [(g["osim_name"], g["angle"]) for g in model_description(model)["girdle"]["dofs"]]
+        girdle = [(g["osim_name"], g["angle"]) for g in model_description(model).get("girdle", {}).get("dofs", [])]
         off = [name for name, a in girdle if name in col and
                np.max(np.abs((np.radians(data[:, col[name]]) if deg else data[:, col[name]]) - a)) > 1e-3]
         if off:

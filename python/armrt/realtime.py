@@ -192,8 +192,11 @@ class State:
         return bool(self.flags & FLAG_OVERRUN)
 
     @classmethod
-    def from_packet(cls, p: Packet, fields: Sequence[str] | None = None) -> "State":
-        """fields: the model's state_fields() (default: das2's)."""
+    def from_packet(cls, p: Packet, fields: Sequence[str] | None = None, n_elements: int | None = None) -> "State":
+        """fields: the model's state_fields() (default: das2's); n_elements: the model's element count,
+        checked against the forces/excitations blocks when given. PacketError if the packet's size does
+        not fit them: a runner of another model (das2's 18 fixed values, das3's 30) is refused, not
+        decoded into wrong angles."""
         if p.type != STATE:
             raise PacketError(f"not a state packet (type {p.type})")
         fields = STATE_FIELDS if fields is None else list(fields)
@@ -208,6 +211,10 @@ class State:
         if n_blocks and rest.size % n_blocks:
             raise PacketError(f"state packet with {rest.size} trailing values for {n_blocks} blocks")
         n = rest.size // n_blocks if n_blocks else 0
+        if (not n_blocks and rest.size) or (n_blocks and n_elements is not None and n != n_elements):
+            expect = n_fixed + n_blocks * (n_elements or 0)
+            raise PacketError(f"state packet with {v.size} values where this model's has {expect}: is the runner "
+                              f"running another model (armrt-rt --model)?")
         forces = rest[:n].copy() if p.flags & FLAG_FORCES else None
         exc = rest[n_blocks * n - n:].copy() if p.flags & FLAG_EXCITATION else None
         q0, qd0 = st["q0"], st["qd0"]
@@ -323,6 +330,7 @@ class UdpClient:
         self.bad_packets = 0       # malformed, unsigned or wrongly signed datagrams
         self.foreign_packets = 0   # datagrams from anyone but the runner
         self.last_state: State | None = None
+        self.last_error = ""       # why the last bad datagram was refused
         self._states: collections.deque = collections.deque(maxlen=4096)
 
     @property
@@ -348,15 +356,16 @@ class UdpClient:
             if p.type == OFFER:
                 self.session = p.session
             elif p.type == STATE:
-                st = State.from_packet(p, self.state_fields)
+                st = State.from_packet(p, self.state_fields, len(self.mapping.element_names))
                 st.received_at = time.monotonic()
                 if not st.timed_out:
                     self.session = st.session
                 self._states.append(st)
             else:
                 self.bad_packets += 1
-        except PacketError:
+        except PacketError as exc:
             self.bad_packets += 1
+            self.last_error = str(exc)
         return True
 
     def poll(self, timeout: float | None = 0.0) -> bool:

@@ -29,12 +29,18 @@ from .geometry import POINTS, ArmGeometry
 BONE_COLOURS = {  # distinct, saturated: the browser test finds the arm by these colours
     "humerus": (255, 128, 0), "ulna": (0, 160, 255), "radius": (0, 90, 255), "hand": (200, 0, 200)}
 STATIC_COLOUR = (120, 120, 120)
+# A thorax-based model's moving girdle (ArmGeometry.girdle): clavicle, scapula blade and glenoid rim.
+GIRDLE_COLOURS = {"clavicle_r": (0, 160, 96), "scapula_r": (140, 60, 20), "glenoid": (140, 60, 20)}
+CONTACT_COLOUR = (212, 160, 0)   # TS, AI: the points held on the thorax ellipsoid
 STAB_OK, STAB_BAD = (40, 180, 60), (230, 30, 30)
 
 
 DOF_LABELS = {  # the model's coordinates (docs/conventions.md) with the names a lab uses
     "GHy": "plane of elevation", "GHz": "elevation", "GHyy": "axial rotation", "ELx": "elbow flexion",
-    "PSy": "pronation-supination"}
+    "PSy": "pronation-supination",
+    # das3's girdle: DAS3's sterno-clavicular and acromio-clavicular rotations (y, z, x in that order)
+    "SCy": "clavicle protraction", "SCz": "clavicle elevation", "SCx": "clavicle axial rotation",
+    "ACy": "scapula protraction", "ACz": "scapula lateral rotation", "ACx": "scapula tilt"}
 STAB_WINDOW_S = 10.0   # GHstab plot: the last seconds
 
 
@@ -245,6 +251,7 @@ class UdpSource:
         self._thread: threading.Thread | None = None
         self.packets = 0
         self.bad_packets = 0
+        self.last_error = ""   # why the last bad datagram was refused (e.g. a runner of another model)
 
     def _run(self) -> None:
         rt = self._realtime
@@ -254,13 +261,15 @@ class UdpSource:
             except OSError:
                 continue
             try:
-                s = rt.State.from_packet(rt.decode_packet(data, self._key), self._state_fields)
+                s = rt.State.from_packet(rt.decode_packet(data, self._key), self._state_fields,
+                                         len(self.element_names))
                 self._frame = Frame(time=s.time, q=np.asarray(s.q, dtype=float), activation=s.excitation,
                                     gh_stab=s.gh_stab, lag=s.lag, overrun=s.overrun, timed_out=s.timed_out,
                                     kind="excitation received")
                 self.packets += 1
-            except Exception:
+            except Exception as exc:
                 self.bad_packets += 1
+                self.last_error = str(exc)
     def start(self) -> None:
         if self._thread is None:
             self._thread = threading.Thread(target=self._run, name="armrt-udp", daemon=True)
@@ -365,6 +374,14 @@ class Viewer:
                                       position=tuple(rest[0]))
         self._joints = {n: sc.add_icosphere(f"/arm/{n}", radius=0.014, color=(230, 230, 230), position=tuple(rest[i]))
                         for i, n in enumerate(POINTS) if n in ("elbow", "wrist", "hand")}
+        # A moving girdle (das3): clavicle, scapula and glenoid redrawn from the body poses every frame.
+        girdle = g.girdle(g.rest)
+        self._girdle = self._contacts = None
+        if girdle:
+            segs, cols = self._girdle_segments(girdle)
+            self._girdle = sc.add_line_segments("/girdle/bones", segs, cols, thickness=0.01)
+            self._contacts = [sc.add_icosphere(f"/girdle/contact_{k}", radius=0.008, color=CONTACT_COLOUR,
+                                               position=tuple(x)) for k, x in enumerate(girdle.get("contact_points", []))]
         if self._lines_of_action:
             seg, self._loa_idx = g.gh_lines_of_action(g.rest)
             self._loa = sc.add_line_segments("/arm/gh_lines_of_action", seg.astype(np.float32),
@@ -422,6 +439,14 @@ class Viewer:
             self.controls["manual"] = manual
             self.controls.update({f"excitation:{g}": h for g, h in sliders.items()})
 
+    @staticmethod
+    def _girdle_segments(girdle: dict) -> tuple[np.ndarray, np.ndarray]:
+        """(segments (k, 2, 3) float32, colours (k, 2, 3) uint8) of the girdle's polylines."""
+        parts = [(_polyline_segments(girdle[n]), c) for n, c in GIRDLE_COLOURS.items() if n in girdle]
+        segs = np.concatenate([seg for seg, _ in parts]).astype(np.float32)
+        cols = np.concatenate([np.tile(np.array(c, dtype=np.uint8), (len(seg), 2, 1)) for seg, c in parts])
+        return segs, cols
+
     def _bone_segments(self, pts: np.ndarray) -> np.ndarray:
         return ArmGeometry.segments(pts).astype(np.float32)
 
@@ -463,6 +488,11 @@ class Viewer:
             for i, n in enumerate(POINTS):
                 if n in self._joints:
                     self._joints[n].position = tuple(pts[i])
+            if self._girdle is not None:
+                girdle = self.geom.girdle(f.q)
+                self._girdle.points = self._girdle_segments(girdle)[0]
+                for handle, x in zip(self._contacts, girdle.get("contact_points", [])):
+                    handle.position = tuple(x)
             if self._lines_of_action and f.activation is not None:
                 seg, idx = self.geom.gh_lines_of_action(f.q)
                 if len(idx) == len(self._loa_idx):

@@ -136,7 +136,12 @@ class ReachTask(Task):
 
     Target: the hand position at a posture drawn uniformly inside the joint ranges (shrunk by
     `target_margin` of each range at both ends). Start: the rest posture plus uniform noise of
-    +-start_noise rad per joint.
+    +-start_noise rad per joint. A model with a moving girdle (das3) keeps its girdle DOFs
+    (Model.girdle_dofs) at the rest posture in both: girdle angles drawn independently put the
+    scapula's TS and AI into or off the thorax (+-0.05 rad on the six girdle angles: up to 14 mm
+    inside it, and the stiff contact throws the scapula at tens of rad/s; ros2 at 1 ms can fail on
+    the first step), so the target is one the arm reaches from the resting girdle, and the girdle
+    then moves as the muscles and the contact make it.
     Actions: excitation of each muscle (actions="muscles", one channel per muscle) or of each
     element (actions="elements"), in [0, 1].
     Observation (float32): q (dofs, rad) | qdot (dofs, rad/s) | activation (channels, mean of each
@@ -165,6 +170,8 @@ class ReachTask(Task):
         self.start_noise = float(start_noise)
         self.target = np.zeros((self.n, 3))
         self.unstable_time = np.zeros(self.n)
+        self.sampled = np.ones(batch.n_dofs, dtype=bool)   # DOFs drawn at random (not the girdle's)
+        self.sampled[list(batch.model.girdle_dofs)] = False
         nd, nc = batch.n_dofs, len(channels)
         w, v = WORKSPACE_BOUND, batch.max_joint_speed
         self.observation_space = _box([(nd, -ANGLE_BOUND, ANGLE_BOUND), (nd, -v, v), (nc, 0.0, 1.0),
@@ -173,8 +180,11 @@ class ReachTask(Task):
     def _reset_arm(self, i, rng, options):
         lo, hi = self.batch.dof_ranges[:, 0], self.batch.dof_ranges[:, 1]
         m = self.target_margin
+        rest = self.batch.rest_posture
         q_target = lo + (hi - lo) * (m + (1.0 - 2.0 * m) * rng.uniform(size=len(lo)))
-        q0 = self.batch.rest_posture + rng.uniform(-self.start_noise, self.start_noise, size=len(lo))
+        q0 = rest + rng.uniform(-self.start_noise, self.start_noise, size=len(lo))
+        q_target = np.where(self.sampled, q_target, rest)
+        q0 = np.where(self.sampled, q0, rest)
         if "target_posture" in options:
             q_target = np.asarray(options["target_posture"], dtype=float)
         self.target[i] = self.batch.hand_position_at(q_target)[0]
