@@ -68,7 +68,10 @@ def das3_accuracy(duration: float = 1.0) -> dict:
     out = {"settled_minus_rest_deg": dict(zip(arm.model.dof_names, np.degrees(r.q[-1] - r.q[0]).round(3).tolist())),
            "settling_contact_distance_mm": {"min": float(r.contact_distance.min() * 1e3),
                                             "max": float(r.contact_distance.max() * 1e3)},
-           "protocols": {}}
+           "settling_conoid_tension_N": {"min": float(r.conoid_tension.min()),
+                                         "after_0.5s": [float(r.conoid_tension[r.time >= 0.5].min()),
+                                                        float(r.conoid_tension[r.time >= 0.5].max())]},
+           "protocols": {}, "hand_loads": {}}
     for name, groups in ACCURACY_PROTOCOLS.items():
         res = {}
         for integ in ("ros2", "cvode"):
@@ -83,7 +86,33 @@ def das3_accuracy(duration: float = 1.0) -> dict:
         out["protocols"][name] = {"max_diff_deg": float(diff.max()), "worst_dof": a.model.dof_names[int(diff.argmax())],
                                   "girdle_motion_deg": float(np.degrees(np.abs(res["cvode"].q[-1, :6] - res["cvode"].q[0, :6])).max()),
                                   "contact_distance_mm": [float(cd.min() * 1e3), float(cd.max() * 1e3)]}
+    # The girdle ranges are a box: how much of it puts the scapula into the thorax (girdle uniform in its
+    # ranges, the arm at rest, seed 0).
+    rng = np.random.default_rng(0)
+    lo, hi = arm.model.dof_ranges.T
+    qs = np.tile(arm.model.rest_posture, (3000, 1))
+    qs[:, :6] = lo[:6] + rng.random((3000, 6)) * (hi[:6] - lo[:6])
+    depth = np.array([arm.girdle_forces(q)["contact_distance"].min() for q in qs])
+    out["girdle_box_sample"] = {"postures": 3000, "deeper_than_20mm": int((depth < -0.02).sum()),
+                                "within_5mm": int((np.abs(depth) <= 0.005).sum())}
+    # Hand loads that pull the scapula off the thorax (0.5 s from the settled arm): ROS2 with 1, 2, 4 substeps.
+    for load in HAND_LOADS:
+        res = {}
+        for integ, sub in (("cvode", 1), ("ros2", 1), ("ros2", 2), ("ros2", 4)):
+            a = armrt.Arm(model="das3", integrator=integ, substeps=sub) if integ == "ros2" else armrt.Arm(
+                model="das3", integrator=integ)
+            a.set_state(state)
+            a.set_hand_load(force=load)
+            res[(integ, sub)] = a.simulate(np.zeros(a.model.n_elements), 0.5)
+        ref = res[("cvode", 1)]
+        out["hand_loads"][str(list(load))] = {
+            "lift_off_mm": float(max(0.0, ref.contact_distance.max()) * 1e3),
+            "max_diff_deg": {f"ros2_x{sub}": float(np.degrees(np.abs(res[("ros2", sub)].q - ref.q)).max())
+                             for sub in (1, 2, 4)}}
     return out
+
+
+HAND_LOADS = [(0.0, 100.0, 0.0), (0.0, 0.0, 100.0), (0.0, 0.0, 300.0)]   # N, thorax frame (y up, z lateral)
 
 
 def markdown(d: dict) -> str:
@@ -120,6 +149,20 @@ def markdown(d: dict) -> str:
         for name, p in acc["protocols"].items():
             lines.append(f"| {name} | {p['max_diff_deg']:.3f} | {p['worst_dof']} | {p['girdle_motion_deg']:.1f} | "
                          f"{p['contact_distance_mm'][0]:.2f} to {p['contact_distance_mm'][1]:.2f} |")
+        bx = acc["girdle_box_sample"]
+        lines += ["", f"Girdle uniform in its ranges (arm at rest, {bx['postures']} postures, seed 0): "
+                  f"{bx['deeper_than_20mm']} put TS or AI more than 20 mm inside the thorax, {bx['within_5mm']} "
+                  "have the deeper of the two within 5 mm of the surface."]
+        c = acc["settling_conoid_tension_N"]
+        lines += ["", f"Conoid tension while settling: {c['min']:.0f} N at its lowest, {c['after_0.5s'][0]:.0f}-"
+                  f"{c['after_0.5s'][1]:.0f} N after 0.5 s.", "",
+                  "Hand loads pulling the scapula off the thorax, 0.5 s from the settled arm, max difference from "
+                  "CVODE (deg):", "", "| hand load (N, thorax frame) | lift-off (mm, CVODE) | ROS2 x1 | x2 | x4 |",
+                  "|---|---|---|---|---|"]
+        for load, h in acc["hand_loads"].items():
+            d = h["max_diff_deg"]
+            lines.append(f"| {load} | {h['lift_off_mm']:.0f} | {d['ros2_x1']:.2f} | {d['ros2_x2']:.2f} | "
+                         f"{d['ros2_x4']:.2f} |")
     return "\n".join(lines) + "\n"
 
 

@@ -6,6 +6,7 @@ of the relaxed arm, the scapula staying on the thorax, and ROS2 against CVODE fr
 from __future__ import annotations
 
 import json
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -188,17 +189,32 @@ def test_ros2_at_1ms_follows_cvode_from_the_settled_arm(settled):
 
 
 def test_a_scapula_pushed_into_the_thorax_is_refused_by_name():
-    """ACy 0.14 rad below equilibrium.mat puts AI 27 mm inside the thorax ellipsoid: the first step stops
-    with an error naming a contact point and its depth (kMaxContactPenetration = 20 mm), not with the speed
-    at which the contact throws the scapula out."""
+    """A 2000 N pull forward on the hand drives TS into the thorax: the step that takes it beyond 20 mm
+    stops with an error naming the contact point and its depth (kMaxContactPenetration), not with the
+    speed at which the contact then throws the scapula out."""
+    a = armrt.Arm(model="das3")
+    a.set_hand_load(force=(2000.0, 0.0, 0.0))
+    with pytest.raises(armrt.SimulationError,
+                       match=r"girdle contact point (TS|AI) is \d+\.\d mm inside the thorax \(more than 20 mm\)"):
+        a.simulate(np.zeros(a.model.n_elements), 0.3)
+
+
+def test_a_start_with_the_scapula_in_or_off_the_thorax_is_refused_or_warned():
+    """The girdle's ranges are a box; the scapula rests on the thorax only on a surface inside it."""
     a = armrt.Arm(model="das3")
     q = a.model.rest_posture.copy()
-    q[a.model.dof_index("ACy")] -= 0.14
-    assert a.girdle_forces(q)["contact_distance"].min() < -0.02
-    with pytest.warns(RuntimeWarning, match="beyond the joint limits"):   # ACy leaves its range too
+    q[a.model.dof_index("ACy")] -= 0.14          # AI 27 mm inside
+    with pytest.raises(ValueError, match=r"q puts the scapula into the thorax: TS .* AI 2\d\.\d mm inside"), \
+            pytest.warns(RuntimeWarning, match="beyond the joint limits"):
         a.reset(q=q)
-    with pytest.raises(armrt.SimulationError, match=r"girdle contact point (TS|AI) is \d+\.\d mm inside the thorax \(more than 20 mm\)"):
-        a.step()
+    for dof, dq, where in (("ACx", 0.08, "AI 11.1 mm inside"), ("ACy", 0.08, "AI 11.5 mm outside")):
+        q = a.model.rest_posture.copy()
+        q[a.model.dof_index(dof)] += dq           # within the ranges: simulated, with a warning
+        with pytest.warns(RuntimeWarning, match=f"q starts the scapula off the thorax surface: .*{where}"):
+            a.reset(q=q)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        a.reset()                                # the rest posture: TS, AI 1.6 and 0.7 mm inside, silent
 
 
 def test_the_built_in_dynamics_equal_the_chain_checked_against_opensim(arm, chain):
@@ -233,3 +249,20 @@ def test_a_thorax_based_model_file_builds_on_demand_and_runs_like_the_built_in_d
     got, ref = armrt.Arm(m).simulate(u, 0.3), armrt.Arm("das3").simulate(u, 0.3)
     np.testing.assert_array_equal(got.q, ref.q)
     np.testing.assert_array_equal(got.contact_distance, ref.contact_distance)
+
+
+def test_settle_relaxes_the_arm_and_restarts_the_clock():
+    a = armrt.Arm(model="das3")
+    a.set_excitation({"deltoid": 0.2})
+    a.settle()
+    assert a.time == 0.0 and np.abs(a.qdot).max() < 0.01          # rad/s: at rest after 3 s relaxed
+    assert a.excitation[list(a.model.indices("deltoid"))].min() == 0.2   # the excitation as it was
+    assert np.degrees(abs(a.q[a.model.dof_index("ELx")] - a.model.rest_posture[a.model.dof_index("ELx")])) > 20
+
+
+def test_girdle_arrays_are_result_channels():
+    r = armrt.Arm(model="das3").simulate(np.zeros(138), 0.01)
+    cols = r.to_dataframe().columns
+    assert {"contact_distance.TS", "contact_distance.AI", "conoid_tension"} <= set(cols)
+    assert "conoid_tension" in r.channels() and "contact_distance" not in armrt.Arm().simulate(
+        np.zeros(102), 0.01).channels()

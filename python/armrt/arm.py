@@ -181,7 +181,11 @@ class Result:
     _ELEMENT_CHANNELS = ("lce", "activation", "excitation", "muscle_force", "muscle_length")
     _OTHER_COLUMNS = {"gh_force": ("x", "y", "z"), "gh_angles": ("theta", "phi"), "hand_position": ("x", "y", "z"),
                       "thorax_humerus": ("plane_of_elevation", "elevation", "axial_rotation"),
-                      "gh_stab": None, "tet_ns": None}
+                      "gh_stab": None, "tet_ns": None, "contact_distance": ("TS", "AI"), "conoid_tension": None}
+
+    def channels(self) -> list[str]:
+        """The time-series names this Result has besides time: ARRAYS, and the girdle arrays when present."""
+        return [k for k in self.ARRAYS if k != "time"] + [k for k in self.OPTIONAL_ARRAYS if getattr(self, k) is not None]
 
     def __repr__(self) -> str:
         T = len(self.time)
@@ -209,10 +213,10 @@ class Result:
         except ImportError:
             raise ImportError("Result.to_dataframe needs pandas: pip install pandas "
                               "(or pip install 'armrt[dataframe]')") from None
-        names = [k for k in self.ARRAYS if k != "time"] if channels is None else list(channels)
-        unknown = [c for c in names if c not in self.ARRAYS or c == "time"]
+        names = self.channels() if channels is None else list(channels)
+        unknown = [c for c in names if c not in self.channels()]
         if unknown:
-            raise ValueError(f"unknown channels {unknown}; expected some of {[k for k in self.ARRAYS if k != 'time']}")
+            raise ValueError(f"unknown channels {unknown}; expected some of {self.channels()}")
         cols = {}
         for c in names:
             a = np.asarray(getattr(self, c))
@@ -234,9 +238,9 @@ class Result:
         the DOFs / elements to draw (default all DOFs, and for element channels the muscle means).
         Returns the figure (call .savefig or plt.show())."""
         import matplotlib.pyplot as plt
-        unknown = [c for c in channels if c not in self.ARRAYS or c == "time"]
+        unknown = [c for c in channels if c not in self.channels()]
         if unknown:
-            raise ValueError(f"unknown channels {unknown}; expected some of {[k for k in self.ARRAYS if k != 'time']}")
+            raise ValueError(f"unknown channels {unknown}; expected some of {self.channels()}")
         fig = fig or plt.figure(figsize=(8, 2.2 * len(channels)))
         axes = fig.subplots(len(channels), 1, sharex=True, squeeze=False)[:, 0]
         for ax, c in zip(axes, channels):
@@ -254,6 +258,11 @@ class Result:
                 if len(pick) > 12:
                     ax.plot(self.time, a[:, pick].mean(axis=1), "k", lw=1.5, label=f"mean of {len(pick)}")
                 ax.set_ylabel(c)
+            elif c == "contact_distance":
+                for j, n in enumerate(self._OTHER_COLUMNS[c][:a.shape[1]]):
+                    ax.plot(self.time, 1e3 * a[:, j], label=n)
+                ax.axhline(0.0, color="0.5", lw=0.8)
+                ax.set_ylabel("contact distance (mm)")
             elif c == "gh_stab":
                 ax.plot(self.time, a, color="0.3")
                 ax.axhline(1.0, color="tab:red", ls="--", lw=0.8, label="rim (1)")
@@ -587,7 +596,7 @@ class Arm:
         default 0, or a dict of names; capped at max_activation with a RuntimeWarning); contractile
         elements start in static equilibrium.
         time: finite, s. Raises ValueError for NaN/infinite values, TypeError for non-numbers."""
-        q = None if q is None else self._check_range(self._dof_vector(q, "q"))
+        q = None if q is None else self._check_girdle_contact(self._check_range(self._dof_vector(q, "q")))
         qdot = None if qdot is None else self._dof_vector(qdot, "qdot")
         if activation is not None:
             activation = self._per_element(activation, "activation", 0.0, 1.0, clip=False)
@@ -605,6 +614,31 @@ class Arm:
             self._sim.clear_error()
             self._sim.reset(q, qdot, activation)
             self._sim.time = time
+
+    # A scapula contact point (TS, AI) further than this from the thorax surface at a start (m): its
+    # contact force is kilonewtons inside, nothing holds the scapula outside; the first steps are violent.
+    CONTACT_START_TOLERANCE = 0.005
+
+    def _check_girdle_contact(self, q: np.ndarray) -> np.ndarray:
+        """q itself, for a model whose scapula glides on the thorax (das3): ValueError if a contact point
+        would start more than 20 mm inside the thorax (the domain check's limit, engine.md), RuntimeWarning
+        if more than CONTACT_START_TOLERANCE inside or outside. The girdle's ranges are a box, but the
+        scapula rests on the thorax only on a surface within it (docs/das3.md)."""
+        if self.model.base_body != "thorax":
+            return q
+        g = self._sim.girdle_forces(q)
+        names = self.model.info["girdle"]["contact_points"]
+        dist = g["contact_distance"]
+        desc = ", ".join(f"{n} {abs(d) * 1e3:.1f} mm {'inside' if d < 0 else 'outside'} the thorax "
+                         f"({f:.0f} N)" for n, d, f in zip(names, dist, g["contact_force"]))
+        if dist.min() < -0.02:
+            raise ValueError(f"q puts the scapula into the thorax: {desc}; at most 20 mm inside is simulated. "
+                             "Start near the rest posture (the scapula on the thorax) or from a settled state.")
+        if np.abs(dist).max() > self.CONTACT_START_TOLERANCE:
+            warnings.warn(f"q starts the scapula off the thorax surface: {desc} (at rest: 0.7-1.6 mm inside); "
+                          "expect a violent first transient, or start near the rest posture", RuntimeWarning,
+                          stacklevel=3)
+        return q
 
     def _check_range(self, q: np.ndarray) -> np.ndarray:
         """q itself; ValueError if a joint is more than RANGE_MARGIN rad beyond its range (with a hint
@@ -701,6 +735,24 @@ class Arm:
         return (_unpickle_arm, (type(self), self.model, settings, raw, extras))
 
     # ------------------------------------------------------------------ stepping
+    def settle(self, duration: float = 3.0) -> None:
+        """Relaxes the arm from its current state: `duration` s (default 3) with zero excitation, under the
+        hand load as set, then the clock back to 0 and the excitation as it was. das3 starts at DAS3's
+        equilibrium.mat posture, which is not this model's equilibrium: it moves by up to 27 deg (the
+        elbow) over about 3 s (docs/das3.md); settle() first keeps that transient out of an experiment.
+        Raises SimulationError as step() does."""
+        duration = real_scalar(duration, "duration")
+        if not np.isfinite(duration) or duration < 0:
+            raise ValueError(f"duration must be a finite number of seconds >= 0, got {duration}")
+        u = self.excitation.copy()
+        self.set_excitation(np.zeros(self.model.n_elements))
+        try:
+            self.step(self._n_steps(duration), progress=False)
+        finally:
+            self.set_excitation(u)
+        with self._exclusive():
+            self._sim.time = 0.0
+
     def step(self, n: int = 1, progress: bool | None = None) -> None:
         """Advances n control steps (an integer >= 0) with the current excitation and load (loop in
         C++, GIL released). Ctrl-C stops it within about 50 ms, leaving the state of the last
