@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
   app.add_option("--dt", cfg.dt, "largest integration step, s (<= 1/rate); each cycle takes ceil(1/rate / dt) substeps "
                                   "(default: ros2 0.001, rk4 0.00017, euler 0.0001)");
   std::vector<std::string> model_libraries;
-  app.add_option("--model", cfg.model, "registered model: das2 (built in) or one loaded with --model-library")
+  app.add_option("--model", cfg.model, "registered model: das2, das3, participant_A (built in) or one loaded with --model-library")
       ->capture_default_str();
   app.add_option("--model-library", model_libraries, "load a model built on demand (the library `armrt model build` "
                                                      "prints; repeatable); `armrt-rt --model FILE.json` does both")
