@@ -30,8 +30,8 @@ _PARAMETERS = ("fmax", "lceopt", "lslack", "pennopt", "vmax", "tact", "tdeact", 
 
 
 def models() -> list[str]:
-    """Names of the models registered in this process: the built-in das2, das3, participant_A first, then models loaded from
-    files (armrt.Model.load, Arm(model=path)) in load order."""
+    """Names of the models registered in this process: the built-in das2, das3, participant_A first, then
+    models loaded from files (armrt.Model.load, Arm(model=path)) in load order."""
     return [d.name for d in _core.registered_models()]
 
 
