@@ -303,7 +303,13 @@ def _chromium_page(url: str, tmp_path):
             except OSError:
                 pass
             time.sleep(0.2)
-        yield _Page(ws_url)
+        page = _Page(ws_url)
+        try:
+            yield page
+        finally:
+            # Closed here, not left to the garbage collector: an unclosed socket's ResourceWarning would
+            # surface in whatever test runs when it is collected (test_gym's warning-free check did).
+            page.ws.close()
     finally:
         proc.terminate()
         try:
