@@ -140,6 +140,10 @@ def cmd_model_list(args) -> int:
 
 
 def cmd_experiments(args) -> int:
+    if args.model == "das3":
+        # The 11-DOF girdle (armrt/experiments_das3.py): settling, Fig. 1-3 beside das2, scapulohumeral rhythm.
+        from .experiments_das3 import run_all as run_das3
+        return run_das3(out_dir=args.out, quick=args.quick)
     if args.model != "das2":
         # The participant experiment (armrt/participant.py): Fig. 1 at full stimulation, four variants.
         from .arm import known_model
@@ -209,7 +213,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", default="results", help="output folder")
     p.add_argument("--quick", action="store_true", help="shorter runs (for tests)")
     p.add_argument("--model", default="das2",
-                   help="das2: the paper's experiments; participant_A (or another compiled model): the Fig. 1 "
+                   help="das2: the paper's experiments; das3: the shoulder girdle's settling, Fig. 1-3 beside das2 and "
+                        "the scapulohumeral rhythm; participant_A (or another compiled model): the Fig. 1 "
                         "sequence at full stimulation for participant A's intact, injured, paralysed and FES variants")
     p.set_defaults(func=cmd_experiments)
     from .view import add_cli
