@@ -130,7 +130,7 @@ def test_rhythm_reduced_run_gives_positive_ratio(settled):
     rotates upward with it (positive fitted ratio), TS and AI stay on the thorax."""
     seq = X.rhythm_sequence(DELTOID, 0.3, settled.q["ros2"], duration=3.0, on=0.5, full=2.5)
     arm, res = X.run_on("das3", seq)
-    r = X.rhythm_run(arm, res)
+    r = X.rhythm_run(arm, res, on=0.5)
     assert r["elevation_max"] > 40.0
     assert r["fit"] is not None and r["fit"]["slope"] > 0 and np.isfinite(r["fit"]["gh_to_st"])
     assert r["upward_rotation_at_max"] > 5.0
