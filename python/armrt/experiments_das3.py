@@ -225,6 +225,7 @@ def protocol_summary(arm: Arm, res, name: str) -> dict:
            "plane_at_max": float(th[k, 0]), "gh_angles_at_max": q[k, gh].round(2).tolist(),
            "gh_angles_start": q[0, gh].round(2).tolist(),
            "gh_stab_max": float(res.gh_stab.max()), "gh_stab_start": float(res.gh_stab[0]),
+           "gh_stab_at_max": float(res.gh_stab[k]),
            "gh_stab_max_time": float(res.time[int(np.argmax(res.gh_stab))])}
     if name == "fig1":  # the paper's moments that the run reaches (a --quick run is cut short)
         for key, t, j in (("elbow_at_10s", 9.999, el), ("pronation_at_10s", 9.999, ps), ("elbow_at_14s", 13.999, el),
@@ -549,8 +550,8 @@ def report(s: dict) -> str:
                   f"| {lbl} | plane of elevation at max (deg) | {a['plane_at_max']:.1f} | {b['plane_at_max']:.1f} |",
                   f"| {lbl} | GH angles GHy, GHz, GHyy at start (deg) | {a['gh_angles_start']} | {b['gh_angles_start']} |",
                   f"| {lbl} | GH angles at max elevation (deg) | {a['gh_angles_at_max']} | {b['gh_angles_at_max']} |",
-                  f"| {lbl} | GHstab at start, largest | {a['gh_stab_start']:.2f}, {a['gh_stab_max']:.2f} | "
-                  f"{b['gh_stab_start']:.2f}, {b['gh_stab_max']:.2f} |",
+                  f"| {lbl} | GHstab at start, largest, at max elevation | {a['gh_stab_start']:.2f}, {a['gh_stab_max']:.2f}, "
+                  f"{a['gh_stab_at_max']:.2f} | {b['gh_stab_start']:.2f}, {b['gh_stab_max']:.2f}, {b['gh_stab_at_max']:.2f} |",
                   f"| {lbl} | scapula (protraction, upward rot., post. tilt) start -> at max (deg) | fixed | "
                   f"{b['scapula_start_deg']} -> {b['scapula_at_max_deg']} |"]
     r = s["rhythm"]
@@ -579,4 +580,6 @@ def report(s: dict) -> str:
     for run, a in s["ros2_vs_cvode"].items():
         extra = f" (after 1 s: {a['after_1s_deg']:.3f})" if a.get("after_1s_deg") is not None else ""
         lines.append(f"| {run} | {a['max_deg']:.3f}{extra} | {a['dof']} | {a['time']:.3f} |")
+    lines += ["", f"The rhythm's CVODE reference is run at serratus + trapezius {r['reference_level']:g} only: CVODE restarts "
+              "at every excitation change, 1000 times per second of ramp (docs/experiments.md, das3)."]
     return "\n".join(lines) + "\n"
