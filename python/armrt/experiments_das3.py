@@ -295,13 +295,23 @@ def rhythm_window(res, on: float = RHYTHM_ON) -> np.ndarray:
     return np.flatnonzero((res.time >= on) & (np.arange(len(th)) <= k_max))
 
 
+def at_range_limit(arm: Arm, q, margin_deg: float = 1.0) -> list[str]:
+    """DOFs within margin_deg of the end of their range, or beyond it (where the passive joint moment acts)."""
+    lo, hi = arm.dof_ranges[:, 0], arm.dof_ranges[:, 1]
+    m = math.radians(margin_deg)
+    return [n for j, n in enumerate(arm.dof_names) if q[j] < lo[j] + m or q[j] > hi[j] - m]
+
+
 def rhythm_run(arm: Arm, res, on: float = RHYTHM_ON) -> dict:
     """The rhythm of one run: scapula angles, elevation, the fit (RhythmFit as a dict)."""
     rows = rhythm_window(res, on)
     sa = np.degrees(scapula_angles(arm, res.q))
     up = sa[:, 1] - sa[0, 1]
     el = np.degrees(res.thorax_humerus[:, 1])
-    out = {"elevation_max": float(el.max()), "upward_rotation_at_max": float(up[int(np.argmax(el))]),
+    k = int(np.argmax(el))
+    out = {"elevation_max": float(el.max()), "upward_rotation_at_max": float(up[k]),
+           "upward_rotation_max": float(up.max()), "q_at_max_deg": np.degrees(res.q[k]).round(2).tolist(),
+           "at_range_limit": at_range_limit(arm, res.q[k]),
            "gh_stab_max": float(res.gh_stab.max()), "contact": contact_extremes(res)}
     try:
         f = fit_rhythm(el[rows], up[rows])
@@ -428,7 +438,8 @@ def run_all(out_dir="results", quick: bool = False, progress: bool = True) -> in
 
 
 def _run_all(out: Path, quick: bool, prog: Progress) -> dict:
-    summary: dict = {"model": MODEL, "dt": DT, "integrator": INTEGRATOR, "reference": REFERENCE, "quick": quick}
+    summary: dict = {"model": MODEL, "dt": DT, "integrator": INTEGRATOR, "reference": REFERENCE, "quick": quick,
+                     "dof_names": list(new_arm().dof_names)}
     accuracy: dict = {}
     contacts: dict = {}
 
@@ -555,21 +566,25 @@ def report(s: dict) -> str:
                   f"| {lbl} | scapula (protraction, upward rot., post. tilt) start -> at max (deg) | fixed | "
                   f"{b['scapula_start_deg']} -> {b['scapula_at_max_deg']} |"]
     r = s["rhythm"]
+    names = s["dof_names"]
     lines += ["", "## Scapulohumeral rhythm", "",
               f"Middle+anterior deltoid {r['deltoid']}, rotator cuff {r['cuff']}, serratus anterior and trapezius "
               f"at the level in the first column, ramped together from 0 at {r['ramp'][0]:g} s to full at "
               f"{r['ramp'][1]:g} s. Fit: upward rotation (from rest) = slope x thorax-humerus elevation + c over the "
               f"rising phase; classic slope {r['classic_slope']:.3f} (glenohumeral 2 : scapular 1).", "",
-              "| serratus + trapezius | elevation fitted (deg) | slope | GH : ST | R^2 | slope per elevation bin | largest GHstab |",
-              "|---|---|---|---|---|---|---|"]
+              "| serratus + trapezius | elevation fitted (deg) | slope | GH : ST | R^2 | slope per elevation bin | largest GHstab | "
+              "upward rotation at highest elevation (deg) | DOFs at a range end there |",
+              "|---|---|---|---|---|---|---|---|---|"]
     for level, run in r["runs"].items():
         f = run["fit"]
         if f is None:
             lines.append(f"| {level} | {run.get('fit_error', '')} | | | | | {run['gh_stab_max']:.2f} |")
             continue
         bins = "; ".join(f"{lo:g}-{hi:g}: {k:.2f}" for lo, hi, k, _ in f["bins"])
+        lim = ", ".join(f"{n} {run['q_at_max_deg'][names.index(n)]:.1f}" for n in run["at_range_limit"])
         lines.append(f"| {level} | {f['elevation_range'][0]:.1f} -> {f['elevation_range'][1]:.1f} | {f['slope']:.3f} | "
-                     f"{f['gh_to_st']:.2f} | {f['r2']:.2f} | {bins} | {run['gh_stab_max']:.2f} |")
+                     f"{f['gh_to_st']:.2f} | {f['r2']:.2f} | {bins} | {run['gh_stab_max']:.2f} | "
+                     f"{run['upward_rotation_at_max']:.1f} | {lim} |")
     lines += ["", "## The scapula stays on the thorax: largest TS/AI penetration and lift-off (mm)", "",
               "| run | TS penetration | TS lift-off | AI penetration | AI lift-off |", "|---|---|---|---|---|"]
     for run, c in s["contact"].items():
@@ -583,3 +598,30 @@ def report(s: dict) -> str:
     lines += ["", f"The rhythm's CVODE reference is run at serratus + trapezius {r['reference_level']:g} only: CVODE restarts "
               "at every excitation change, 1000 times per second of ramp (docs/experiments.md, das3)."]
     return "\n".join(lines) + "\n"
+
+
+def rhythm_references(levels=RHYTHM_SCAPULAR) -> dict:
+    """ROS2 against CVODE on the full rhythm run at each serratus + trapezius level (run_all checks
+    RHYTHM_REFERENCE_LEVEL only; CVODE takes minutes per level here). Returns level -> max_difference."""
+    from .experiments import middle_anterior_deltoid, new_arm as new_das2_arm
+    deltoid = middle_anterior_deltoid(new_das2_arm())
+    q0 = settle(SETTLE_DURATION, (INTEGRATOR,)).q[INTEGRATOR]
+    out = {}
+    for level in levels:
+        seq = rhythm_sequence(deltoid, level, q0)
+        arm, res = run_on(MODEL, seq)
+        out[level] = max_difference(res, run_on(MODEL, seq, REFERENCE)[1], list(arm.dof_names))
+        print(f"serratus + trapezius {level:g}: ROS2 - CVODE up to {out[level]['max_deg']:.3f} deg "
+              f"({out[level]['dof']} at {out[level]['time']:.3f} s)", flush=True)
+    return out
+
+
+if __name__ == "__main__":  # python -m armrt.experiments_das3 --rhythm-references [LEVEL ...]
+    import argparse
+    ap = argparse.ArgumentParser(prog="python -m armrt.experiments_das3",
+                                 description="ROS2 against CVODE on the das3 rhythm runs (every level by default)")
+    ap.add_argument("--rhythm-references", nargs="*", type=float, default=None, metavar="LEVEL")
+    args = ap.parse_args()
+    if args.rhythm_references is None:
+        ap.error("nothing to do: pass --rhythm-references [LEVEL ...] (armrt experiments --model das3 runs the rest)")
+    rhythm_references(args.rhythm_references or RHYTHM_SCAPULAR)
