@@ -176,3 +176,18 @@ def test_full_das3_experiments(tmp_path):
             assert a["max_deg"] < 0.1, (run, a)
     assert all(abs(r["difference_ros2_deg"]) < SETTLE_BOUND_DEG for r in s["settling"]["table"])
     assert s["rhythm"]["runs"][f"{X.RHYTHM_REFERENCE_LEVEL:g}"]["fit"]["slope"] > 0
+
+
+def test_at_range_limit_names_the_girdle_dofs_past_their_range_ends(settled):
+    """At rest only ACx is within 1 deg of its range end; the settled arm has ACz and ACx past theirs
+    (the model's girdle ranges are DAS3's widened to the fitted region, docs/das3.md)."""
+    arm = X.new_arm()
+    assert X.at_range_limit(arm, arm.rest_posture) == ["ACx"]
+    assert X.at_range_limit(arm, settled.q["ros2"]) == ["ACz", "ACx"]
+
+
+def test_module_command_needs_a_task():
+    import subprocess
+    import sys
+    p = subprocess.run([sys.executable, "-m", "armrt.experiments_das3"], capture_output=True, text=True)
+    assert p.returncode == 2 and "--rhythm-references" in p.stderr
