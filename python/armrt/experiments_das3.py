@@ -31,16 +31,16 @@ from .arm import Arm
 from .experiments import CUFF, DT, INTEGRATOR, Progress, Sequence, paper_tasks
 
 MODEL = "das3"
-SETTLE_DURATION = 6.0      # s: the relaxed das3 moves for ~2 s; by 6 s its joints turn < 0.05 deg/s
+SETTLE_DURATION = 6.0      # s: the relaxed das3 moves for ~2 s; over 5.5-6 s its joints turn < 0.1 deg/s
 SETTLE_TAIL = 0.5          # s: the window whose largest joint speed says "settled"
 REFERENCE = "cvode"        # the accuracy reference (BDF, rtol 1e-8)
 # Scapulohumeral rhythm protocol: all drives ramped linearly from RHYTHM_ON to RHYTHM_FULL, then held.
 RHYTHM_ON, RHYTHM_FULL, RHYTHM_DURATION = 1.0, 5.0, 7.0          # s
 RHYTHM_DELTOID, RHYTHM_CUFF = 0.3, 0.1                          # excitation at full ramp
 RHYTHM_SCAPULAR = (0.0, 0.1, 0.2, 0.3, 0.4)                     # serratus anterior and trapezius levels
-# CVODE restarts at every change of excitation (cpp/src/cvode.cc), i.e. every 1 ms of a ramp, at ~50 s of
-# wall time per simulated second of ramp for das3's 298 states on this shared machine: the reference is run
-# for one rhythm level only.
+# CVODE restarts at every change of excitation (cpp/src/cvode.cc), i.e. every 1 ms of a ramp, at 30-50 s
+# of wall time per simulated second of ramp for das3's 298 states on this shared machine: the reference is
+# run for one rhythm level only (rhythm_references runs them all).
 RHYTHM_REFERENCE_LEVEL = 0.2
 RHYTHM_BINS = (0.0, 30.0, 60.0, 90.0, 120.0, 180.0)             # deg of thorax-humerus elevation
 CLASSIC_SLOPE = 1.0 / 3.0  # Inman 1944: glenohumeral 2 : scapulothoracic 1 of the humerus' elevation
@@ -51,8 +51,8 @@ def new_arm(integrator: str = INTEGRATOR, dt: float = DT) -> Arm:
 
 
 def _reset(arm: Arm, q, activation=None) -> None:
-    # DAS3's own resting posture (and the settled one) has ACz and ACx a few degrees below the DAS3 ranges
-    # (docs/das3.md); the passive joint moments there are part of the model, not an input error.
+    # The settled posture has ACz and ACx 1-3 deg past the model's girdle ranges (and equilibrium.mat lies
+    # below DAS3's own): the passive joint moments there are part of the model, not an input error.
     with warnings.catch_warnings():
         warnings.filterwarnings("ignore", message="q slightly beyond the joint limits", category=RuntimeWarning)
         arm.reset(q=q, activation=activation)
