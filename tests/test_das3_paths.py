@@ -118,11 +118,17 @@ def test_sampler_against_opensim_length_derivative(rom):
 
 
 PATHS = ROOT / "models" / "das3_paths.json"
-# Bounds for the committed fits on a fresh 32-pose sample (seed 987). Achieved: 129 of 138 elements meet
-# the criterion at every scored pose, 0.80% of element-poses over it (docs/das3_path_accuracy.md, 512
-# poses: 118, 0.7%; most misses are single poses). About 1.5x the achieved values, 7 elements of slack.
-MIN_FRESH_PASSING = 122
-MAX_FRESH_OVER = 0.012
+# Bounds for the committed paths on a fresh 32-pose sample of the fit region (seed 987). Achieved after the
+# refit over das3's simulated motions (codegen/das3_refit_simulated.py): 111 of 138 elements meet the
+# criterion at every scored pose, 1.52% of element-poses over it (before that refit: 129, 0.80%). About
+# 1.5x the achieved values, 7 elements of slack.
+MIN_FRESH_PASSING = 104
+MAX_FRESH_OVER = 0.023
+# On 41 poses of a das3 simulation the refit never saw (below): achieved 86 of 138 elements at every pose,
+# 6.5% of element-poses over the criterion (docs/das3_path_accuracy.md: the terms were chosen for the
+# kinematic region; on the model's own motions the coefficients alone do not reach the fit region's score).
+MIN_SIMULATED_PASSING = 80
+MAX_SIMULATED_OVER = 0.09
 
 
 @pytest.fixture(scope="module")
@@ -166,6 +172,36 @@ def test_fitted_paths_against_a_fresh_opensim_sample(fitted, rom):
     over = sum(st["n_over"] for st in stats) / sum(st["n_scored"] for st in stats)
     print(f"fresh sample: {n_pass}/138 pass, {100 * over:.2f}% element-poses over")
     assert n_pass >= MIN_FRESH_PASSING and over <= MAX_FRESH_OVER
+
+
+@pytest.mark.opensim
+def test_fitted_paths_on_a_das3_simulation_they_never_saw(fitted):
+    """Poses from das3 itself (an abduction ramp at 85 % of the refit's protocol, from the settled arm),
+    where the girdle sits outside the kinematic fit region: the refit over simulated motions holds there."""
+    pytest.importorskip("opensim", reason="opensim (pip install opensim) is not installed")
+    import armrt
+    from codegen import opensim_geometry as og
+    from codegen.das3_simulated_poses import PROTOCOLS
+    arm = armrt.Arm(model="das3")
+    arm.settle()
+    groups = PROTOCOLS[0][1]
+    idx = {g: list(arm.model.indices(g)) for g in groups}
+
+    def ramp(t):
+        u = np.zeros(arm.model.n_elements)
+        for g, v in groups.items():
+            u[idx[g]] = 0.85 * v * min(t / 1.5, 1.0)
+        return u
+    q = arm.simulate(ramp, 2.0, record_every=50).q
+    els = [{"name": e["name"], "osim_name": e["osim_name"]} for e in fitted["elements"]]
+    s = dp.sample_poses(DAS3 / "das3.osim", els, q, processes=2)
+    pred = [dp.polynomial_moment_arms(e["length_poly"]["exponents"], e["length_poly"]["coefs"], e["dofs"], s["q"])
+            for e in fitted["elements"]]
+    stats = dp.score(s, pred, og.wrap_jumps(s))
+    n_pass = sum(st["pass"] for st in stats)
+    over = sum(st["n_over"] for st in stats) / sum(st["n_scored"] for st in stats)
+    print(f"simulated poses: {n_pass}/138 pass, {100 * over:.2f}% element-poses over")
+    assert n_pass >= MIN_SIMULATED_PASSING and over <= MAX_SIMULATED_OVER
 
 
 def test_gh_directions_in_the_paths_file(fitted):
