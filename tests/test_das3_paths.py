@@ -155,14 +155,12 @@ def test_fitted_paths_file_is_consistent(fitted):
         assert f["pass"] == (f["max_err_m"] < f["criterion_m"]) and f["pass"] == (f["n_over"] == 0)
 
 
-@pytest.mark.opensim
-def test_fitted_paths_against_a_fresh_opensim_sample(fitted, rom):
-    """The committed fits on poses neither fitted nor scored before (seed 987): the bounds of
-    docs/das3_path_accuracy.md with slack for the smaller sample."""
-    pytest.importorskip("opensim", reason="opensim (pip install opensim) is not installed")
+def score_against_opensim(fitted, poses, label):
+    """(elements meeting the criterion at every pose, fraction of element-poses over it) of the committed
+    paths against OpenSim's geometry at poses (n, 11); checks each element's DOFs on the way."""
     from codegen import opensim_geometry as og
     els = [{"name": e["name"], "osim_name": e["osim_name"]} for e in fitted["elements"]]
-    s = dp.sample_poses(DAS3 / "das3.osim", els, rom.sample(32, 987), processes=2)
+    s = dp.sample_poses(DAS3 / "das3.osim", els, poses, processes=2)
     for k, e in enumerate(fitted["elements"]):
         assert [d for d, c in zip(DAS3_DOFS, s["cross"][k]) if c] == e["dofs"], e["name"]
     pred = [dp.polynomial_moment_arms(e["length_poly"]["exponents"], e["length_poly"]["coefs"], e["dofs"], s["q"])
@@ -170,7 +168,16 @@ def test_fitted_paths_against_a_fresh_opensim_sample(fitted, rom):
     stats = dp.score(s, pred, og.wrap_jumps(s))
     n_pass = sum(st["pass"] for st in stats)
     over = sum(st["n_over"] for st in stats) / sum(st["n_scored"] for st in stats)
-    print(f"fresh sample: {n_pass}/138 pass, {100 * over:.2f}% element-poses over")
+    print(f"{label}: {n_pass}/138 pass, {100 * over:.2f}% element-poses over")
+    return n_pass, over
+
+
+@pytest.mark.opensim
+def test_fitted_paths_against_a_fresh_opensim_sample(fitted, rom):
+    """The committed fits on poses neither fitted nor scored before (seed 987): the bounds of
+    docs/das3_path_accuracy.md with slack for the smaller sample."""
+    pytest.importorskip("opensim", reason="opensim (pip install opensim) is not installed")
+    n_pass, over = score_against_opensim(fitted, rom.sample(32, 987), "fresh sample")
     assert n_pass >= MIN_FRESH_PASSING and over <= MAX_FRESH_OVER
 
 
@@ -180,7 +187,6 @@ def test_fitted_paths_on_a_das3_simulation_they_never_saw(fitted):
     where the girdle sits outside the kinematic fit region: the refit over simulated motions holds there."""
     pytest.importorskip("opensim", reason="opensim (pip install opensim) is not installed")
     import armrt
-    from codegen import opensim_geometry as og
     from codegen.das3_simulated_poses import PROTOCOLS
     arm = armrt.Arm(model="das3")
     arm.settle()
@@ -193,14 +199,7 @@ def test_fitted_paths_on_a_das3_simulation_they_never_saw(fitted):
             u[idx[g]] = 0.85 * v * min(t / 1.5, 1.0)
         return u
     q = arm.simulate(ramp, 2.0, record_every=50).q
-    els = [{"name": e["name"], "osim_name": e["osim_name"]} for e in fitted["elements"]]
-    s = dp.sample_poses(DAS3 / "das3.osim", els, q, processes=2)
-    pred = [dp.polynomial_moment_arms(e["length_poly"]["exponents"], e["length_poly"]["coefs"], e["dofs"], s["q"])
-            for e in fitted["elements"]]
-    stats = dp.score(s, pred, og.wrap_jumps(s))
-    n_pass = sum(st["pass"] for st in stats)
-    over = sum(st["n_over"] for st in stats) / sum(st["n_scored"] for st in stats)
-    print(f"simulated poses: {n_pass}/138 pass, {100 * over:.2f}% element-poses over")
+    n_pass, over = score_against_opensim(fitted, q, "simulated poses")
     assert n_pass >= MIN_SIMULATED_PASSING and over <= MAX_SIMULATED_OVER
 
 
