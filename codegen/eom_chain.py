@@ -232,17 +232,15 @@ def _rotations(links, q_sin, q_cos):
     return [eye if l.axis is None else rotation(l.axis, q_sin[l.dof], q_cos[l.dof]) for l in links]
 
 
-def rnea(links, E, qd, g):
-    """Joint torques for qdd = 0 under gravity g (base coordinates): tau = C(q, qd) qd - gravity torques."""
+def forward_pass(links, E, qd, base_acc):
+    """The outward recursion of RNEA at qdd = 0: per link its angular velocity w, angular acceleration wd,
+    origin acceleration a (link coordinates, the base accelerating at base_acc) and, for links with mass,
+    the acceleration of the centre of mass (link coordinates; None for massless links)."""
     n = len(links)
-    w, wd, a = [None] * n, [None] * n, [None] * n
-    f, nm = [None] * n, [None] * n
+    w, wd, a, acom = [None] * n, [None] * n, [None] * n, [None] * n
     zero = [0.0, 0.0, 0.0]
     for i, l in enumerate(links):
-        if l.parent < 0:
-            wp, wdp, ap = zero, zero, [-g[0], -g[1], -g[2]]
-        else:
-            wp, wdp, ap = w[l.parent], wd[l.parent], a[l.parent]
+        wp, wdp, ap = (zero, zero, base_acc) if l.parent < 0 else (w[l.parent], wd[l.parent], a[l.parent])
         r = l.offset
         a[i] = mtv(E[i], vadd(ap, vadd(cross(wdp, r), cross(wp, cross(wp, r)))))
         w0 = mtv(E[i], wp)
@@ -254,9 +252,21 @@ def rnea(links, E, qd, g):
             w[i] = vadd(w0, sq)
             wd[i] = vadd(wd0, cross(w0, sq))
         if l.mass != 0.0:
+            c = list(l.com)
+            acom[i] = vadd(a[i], vadd(cross(wd[i], c), cross(w[i], cross(w[i], c))))
+    return w, wd, a, acom
+
+
+def rnea(links, E, qd, g):
+    """Joint torques for qdd = 0 under gravity g (base coordinates): tau = C(q, qd) qd - gravity torques."""
+    n = len(links)
+    w, wd, _, acom = forward_pass(links, E, qd, [-g[0], -g[1], -g[2]])
+    f, nm = [None] * n, [None] * n
+    zero = [0.0, 0.0, 0.0]
+    for i, l in enumerate(links):
+        if l.mass != 0.0:
             c, I = list(l.com), [list(row) for row in l.inertia]
-            acom = vadd(a[i], vadd(cross(wd[i], c), cross(w[i], cross(w[i], c))))
-            f[i] = vscale(l.mass, acom)
+            f[i] = vscale(l.mass, acom[i])
             nm[i] = vadd(vadd(mv(I, wd[i]), cross(w[i], mv(I, w[i]))), cross(c, f[i]))
         else:
             f[i], nm[i] = zero, zero
@@ -365,25 +375,12 @@ def angular_jacobian(links, E, link, ndof):
 
 
 def velocity_product_accelerations(links, E, qd):
-    """Acceleration of every link's centre of mass (base coordinates) at qdd = 0 without gravity: the
-    velocity-product part (Jdot qd) of each COM acceleration, by the forward pass of RNEA."""
+    """Acceleration of every massive link's centre of mass (base coordinates; None for massless links) at
+    qdd = 0 without gravity: the velocity-product part (Jdot qd) of each COM acceleration, by RNEA's
+    forward pass."""
     R, _ = body_poses(links, E)
-    n = len(links)
-    w, wd, a, out = [None] * n, [None] * n, [None] * n, [None] * n
-    zero = [0.0, 0.0, 0.0]
-    for i, l in enumerate(links):
-        wp, wdp, ap = (zero, zero, zero) if l.parent < 0 else (w[l.parent], wd[l.parent], a[l.parent])
-        r = l.offset
-        a[i] = mtv(E[i], vadd(ap, vadd(cross(wdp, r), cross(wp, cross(wp, r)))))
-        w0, wd0 = mtv(E[i], wp), mtv(E[i], wdp)
-        if l.axis is None:
-            w[i], wd[i] = w0, wd0
-        else:
-            sq = vscale(qd[l.dof], l.axis)
-            w[i], wd[i] = vadd(w0, sq), vadd(wd0, cross(w0, sq))
-        c = list(l.com)
-        out[i] = mv(R[i], vadd(a[i], vadd(cross(wd[i], c), cross(w[i], cross(w[i], c)))))
-    return out
+    acom = forward_pass(links, E, qd, [0.0, 0.0, 0.0])[3]
+    return [None if ac is None else mv(R[i], ac) for i, ac in enumerate(acom)]
 
 
 def momentum_rate(links, E, qd, link_set, ndof):
