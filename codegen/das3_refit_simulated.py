@@ -28,37 +28,14 @@ def simulated_poses(runs: str) -> np.ndarray:
     'test' (the protocols at 70 %, random runs 6-11), every 10 ms of 2 s runs from the settled arm."""
     import armrt
 
-    from .das3_simulated_poses import PROTOCOLS
-    arm = armrt.Arm(model="das3")
-    arm.settle()
-    start = arm.get_state()
+    from .das3_simulated_poses import PROTOCOLS, ramp, random_excitation, run_from_settled
+    model = armrt.Model("das3")
     level = 1.0 if runs == "train" else 0.7
     seeds = range(0, 6) if runs == "train" else range(6, 12)
-    qs = []
-
-    def run(excitation):
-        a = armrt.Arm(model="das3")
-        a.set_state(start)
-        try:
-            qs.append(a.simulate(excitation, 2.0, record_every=10).q)
-        except armrt.SimulationError:
-            pass
-
-    for _, groups in PROTOCOLS:
-        idx = {g: list(arm.model.indices(g)) for g in groups}
-        run(lambda t, groups=groups, idx=idx: _ramp(arm.model.n_elements, groups, idx, level, t))
-    for seed in seeds:
-        rng = np.random.default_rng(1000 + seed)
-        levels = rng.uniform(0, 0.4, (8, arm.model.n_elements)) * (rng.random((8, arm.model.n_elements)) < 0.4)
-        run(lambda t, levels=levels: levels[min(int(t / 0.25), 7)])
-    return np.concatenate(qs)
-
-
-def _ramp(n, groups, idx, level, t):
-    u = np.zeros(n)
-    for g, v in groups.items():
-        u[idx[g]] = level * v * min(t / 1.5, 1.0)
-    return u
+    excitations = [(label, ramp(model, groups, level)) for label, groups in PROTOCOLS]
+    excitations += [(f"random excitations (seed {1000 + seed})",
+                     random_excitation(np.random.default_rng(1000 + seed), model.n_elements)) for seed in seeds]
+    return np.concatenate([q for _, q in run_from_settled(excitations)])
 
 
 def refit_coefficients(exponents, dof_idx, samples_list, bads, k):

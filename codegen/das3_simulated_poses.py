@@ -35,41 +35,53 @@ PROTOCOLS = [
 RANDOM_RUNS = 6       # seeded random excitations, 2 s each
 
 
-def simulated_trajectories(dt_sample: float = 0.01) -> tuple[np.ndarray, list[str]]:
-    """Poses (n, 11) every dt_sample s of das3's simulated motions, and the label of each pose's run."""
+def ramp(model, groups: dict, level: float = 1.0):
+    """u(t) (n,): each group or muscle of `groups` rising linearly to level x its value over 1.5 s, then held."""
+    idx = {g: list(model.indices(g)) for g in groups}
+
+    def u(t):
+        out = np.zeros(model.n_elements)
+        for g, v in groups.items():
+            out[idx[g]] = level * v * min(t / 1.5, 1.0)
+        return out
+    return u
+
+
+def random_excitation(rng, n: int):
+    """u(t) (n,): each element switching among random levels in [0, 0.4) (about 40 % of them on) every
+    0.25 s over 2 s, a richer span of poses than any ramp."""
+    levels = rng.uniform(0, 0.4, (8, n)) * (rng.random((8, n)) < 0.4)
+    return lambda t: levels[min(int(t / 0.25), 7)]
+
+
+def run_from_settled(runs, every: int = 10) -> list[tuple[str, np.ndarray]]:
+    """[(label, q (T, 11) rad)] of das3 from its settled arm under each (label, excitation) of `runs`: 2 s
+    each, ROS2 at 1 ms, q every `every` steps. A run that leaves the physical domain is reported and left out."""
     import armrt
     arm = armrt.Arm(model="das3")
     arm.settle()
     start = arm.get_state()
-    every = int(round(dt_sample / arm.dt))
-    qs, labels = [], []
-
-    def run(label, excitation):
+    out = []
+    for label, excitation in runs:
         a = armrt.Arm(model="das3")
         a.set_state(start)
         try:
-            r = a.simulate(excitation, 2.0, record_every=every)
-        except armrt.SimulationError as exc:   # a run that leaves the domain still gave poses up to there
+            out.append((label, a.simulate(excitation, 2.0, record_every=every).q))
+        except armrt.SimulationError as exc:
             print(f"{label}: {exc}")
-            return
-        qs.append(r.q)
-        labels.extend([label] * len(r.q))
+    return out
 
-    for label, groups in PROTOCOLS:
-        idx = {g: list(arm.model.indices(g)) for g in groups}
 
-        def ramp(t, groups=groups, idx=idx):
-            u = np.zeros(arm.model.n_elements)
-            for g, v in groups.items():
-                u[idx[g]] = v * min(t / 1.5, 1.0)
-            return u
-        run(label, ramp)
+def simulated_trajectories(dt_sample: float = 0.01) -> tuple[np.ndarray, list[str]]:
+    """Poses (n, 11) every dt_sample s of das3's simulated motions, and the label of each pose's run."""
+    import armrt
+    model = armrt.Model("das3")
     rng = np.random.default_rng(0)
-    for k in range(RANDOM_RUNS):
-        # Each muscle switches between 0 and a random level at random times: a richer span of poses.
-        levels = rng.uniform(0, 0.4, (8, arm.model.n_elements)) * (rng.random((8, arm.model.n_elements)) < 0.4)
-        run(f"random excitations (seed 0, run {k})", lambda t, levels=levels: levels[min(int(t / 0.25), 7)])
-    return np.concatenate(qs), labels
+    runs = [(label, ramp(model, groups)) for label, groups in PROTOCOLS]
+    runs += [(f"random excitations (seed 0, run {k})", random_excitation(rng, model.n_elements))
+             for k in range(RANDOM_RUNS)]
+    done = run_from_settled(runs, every=int(round(dt_sample / 1e-3)))
+    return np.concatenate([q for _, q in done]), [label for label, q in done for _ in q]
 
 
 def replace_section(path: Path, heading: str, text: str) -> None:

@@ -187,18 +187,10 @@ def test_fitted_paths_on_a_das3_simulation_they_never_saw(fitted):
     where the girdle sits outside the kinematic fit region: the refit over simulated motions holds there."""
     pytest.importorskip("opensim", reason="opensim (pip install opensim) is not installed")
     import armrt
-    from codegen.das3_simulated_poses import PROTOCOLS
+    from codegen.das3_simulated_poses import PROTOCOLS, ramp
     arm = armrt.Arm(model="das3")
     arm.settle()
-    groups = PROTOCOLS[0][1]
-    idx = {g: list(arm.model.indices(g)) for g in groups}
-
-    def ramp(t):
-        u = np.zeros(arm.model.n_elements)
-        for g, v in groups.items():
-            u[idx[g]] = 0.85 * v * min(t / 1.5, 1.0)
-        return u
-    q = arm.simulate(ramp, 2.0, record_every=50).q
+    q = arm.simulate(ramp(arm.model, PROTOCOLS[0][1], 0.85), 2.0, record_every=50).q
     n_pass, over = score_against_opensim(fitted, q, "simulated poses")
     assert n_pass >= MIN_SIMULATED_PASSING and over <= MAX_SIMULATED_OVER
 
