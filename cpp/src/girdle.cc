@@ -35,10 +35,9 @@ void girdle_forces(const Model& m, const double* q, double* tau, double* stiffne
 
   for (int k = 0; k < P; ++k) {
     double F[3], dF[9];
-    const double f = scapulothoracic_contact(g->thorax, p + 3 * k, F, stiffness ? dF : nullptr);
+    scapulothoracic_contact(g->thorax, p + 3 * k, F, stiffness ? dF : nullptr);
     apply(J + 3 * nq * k, F, dF);
     if (state) {
-      (void)f;
       state->contact_distance[k] = thorax_signed_distance(g->thorax, p + 3 * k);
       state->contact_force[k] = std::sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
     }

@@ -153,6 +153,7 @@ PYBIND11_MODULE(_core, mod) {
   mod.doc() = "armrt engine bindings (use armrt.Arm)";
   mod.attr("MAX_DOFS") = kMaxDofs;
   mod.attr("MAX_ELEMENTS") = kMaxElements;
+  mod.attr("MAX_CONTACT_PENETRATION") = kMaxContactPenetration;  // m, the domain check's limit (model.h)
   bind_model(mod);
   mod.def("model_info", [](const std::string& name) { return model_info(require_model(name)); });
   mod.def("model_info", [](const ModelDef& def) { return model_info(def); });

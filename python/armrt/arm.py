@@ -621,9 +621,10 @@ class Arm:
 
     def _check_girdle_contact(self, q: np.ndarray) -> np.ndarray:
         """q itself, for a model whose scapula glides on the thorax (das3): ValueError if a contact point
-        would start more than 20 mm inside the thorax (the domain check's limit, engine.md), RuntimeWarning
-        if more than CONTACT_START_TOLERANCE inside or outside. The girdle's ranges are a box, but the
-        scapula rests on the thorax only on a surface within it (docs/das3.md)."""
+        would start more than _core.MAX_CONTACT_PENETRATION (20 mm, the domain check's limit, engine.md)
+        inside the thorax, RuntimeWarning if more than CONTACT_START_TOLERANCE inside or outside. The
+        girdle's ranges are a box, but the scapula rests on the thorax only on a surface within it
+        (docs/das3.md)."""
         if self.model.base_body != "thorax":
             return q
         g = self._sim.girdle_forces(q)
@@ -631,9 +632,11 @@ class Arm:
         dist = g["contact_distance"]
         desc = ", ".join(f"{n} {abs(d) * 1e3:.1f} mm {'inside' if d < 0 else 'outside'} the thorax "
                          f"({f:.0f} N)" for n, d, f in zip(names, dist, g["contact_force"]))
-        if dist.min() < -0.02:
-            raise ValueError(f"q puts the scapula into the thorax: {desc}; at most 20 mm inside is simulated. "
-                             "Start near the rest posture (the scapula on the thorax) or from a settled state.")
+        limit = _core.MAX_CONTACT_PENETRATION
+        if dist.min() < -limit:
+            raise ValueError(f"q puts the scapula into the thorax: {desc}; at most {limit * 1e3:.0f} mm inside is "
+                             "simulated. Start near the rest posture (the scapula on the thorax) or from a settled "
+                             "state.")
         if np.abs(dist).max() > self.CONTACT_START_TOLERANCE:
             warnings.warn(f"q starts the scapula off the thorax surface: {desc} (at rest: 0.7-1.6 mm inside); "
                           "expect a violent first transient, or start near the rest posture", RuntimeWarning,
