@@ -4,6 +4,7 @@
 #include "armrt/engine.h"
 #include "armrt/muscle_kernel.h"
 #include "dof_dispatch.h"
+#include "lanes.h"
 
 namespace armrt {
 
@@ -12,14 +13,48 @@ namespace {
 template <int ndof>
 void generalised_force_n(const double* moment_arm, const double* force, int n, double* tau) {
   // Four independent partial sums per DOF: one running sum would chain n multiply-adds back to back.
-  double acc[4][ndof] = {};
-  int i = 0;
-  for (; i + 4 <= n; i += 4)
-    for (int k = 0; k < 4; ++k)
-      for (int j = 0; j < ndof; ++j) acc[k][j] += moment_arm[(i + k) * ndof + j] * force[i + k];
-  for (; i < n; ++i)
-    for (int j = 0; j < ndof; ++j) acc[0][j] += moment_arm[i * ndof + j] * force[i];
-  for (int j = 0; j < ndof; ++j) tau[j] = (acc[0][j] + acc[1][j]) + (acc[2][j] + acc[3][j]);
+  if constexpr (ndof < 8) {
+    double acc[4][ndof] = {};
+    int i = 0;
+    for (; i + 4 <= n; i += 4)
+      for (int k = 0; k < 4; ++k)
+        for (int j = 0; j < ndof; ++j) acc[k][j] += moment_arm[(i + k) * ndof + j] * force[i + k];
+    for (; i < n; ++i)
+      for (int j = 0; j < ndof; ++j) acc[0][j] += moment_arm[i * ndof + j] * force[i];
+    for (int j = 0; j < ndof; ++j) tau[j] = (acc[0][j] + acc[1][j]) + (acc[2][j] + acc[3][j]);
+  } else {
+    // 8-16 DOFs (das3): the same sums in the same order, each row as a lane pair held in registers
+    // (a scalar loop over 11 DOFs kept the sums in memory, load-add-store per term).
+    using detail::v8d;
+    v8d lo0 = {}, lo1 = {}, lo2 = {}, lo3 = {}, hi0 = {}, hi1 = {}, hi2 = {}, hi3 = {};
+    // Rows whose 16-value window ends inside the n x ndof array are loaded whole; the last one or two
+    // through a padded copy (callers' arrays need not extend past n rows).
+    const int n_whole = n * ndof >= 16 ? (n * ndof - 16) / ndof + 1 : 0;
+    int i = 0;
+    for (; i + 4 <= n_whole; i += 4) {
+      v8d l, h;
+      detail::load_row16(moment_arm + i * ndof, l, h);
+      lo0 += l * force[i], hi0 += h * force[i];
+      detail::load_row16(moment_arm + (i + 1) * ndof, l, h);
+      lo1 += l * force[i + 1], hi1 += h * force[i + 1];
+      detail::load_row16(moment_arm + (i + 2) * ndof, l, h);
+      lo2 += l * force[i + 2], hi2 += h * force[i + 2];
+      detail::load_row16(moment_arm + (i + 3) * ndof, l, h);
+      lo3 += l * force[i + 3], hi3 += h * force[i + 3];
+    }
+    // The rest in the scalar loop's order: whole groups of four into sums 0-3, single rows into sum 0.
+    v8d* lo[4] = {&lo0, &lo1, &lo2, &lo3};
+    v8d* hi[4] = {&hi0, &hi1, &hi2, &hi3};
+    const int n_fours = n / 4 * 4;
+    for (; i < n; ++i) {
+      v8d l, h;
+      detail::load_row(moment_arm + i * ndof, ndof, l, h);
+      const int k = i < n_fours ? i % 4 : 0;
+      *lo[k] += l * force[i], *hi[k] += h * force[i];
+    }
+    for (int j = 0; j < ndof; ++j)
+      tau[j] = j < 8 ? (lo0[j] + lo1[j]) + (lo2[j] + lo3[j]) : (hi0[j - 8] + hi1[j - 8]) + (hi2[j - 8] + hi3[j - 8]);
+  }
 }
 
 }  // namespace

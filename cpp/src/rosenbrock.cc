@@ -21,6 +21,7 @@
 #include "armrt/engine.h"
 #include "armrt/muscle_kernel.h"
 #include "dof_dispatch.h"
+#include "lanes.h"
 
 namespace armrt {
 
@@ -96,17 +97,31 @@ void jacobian_factor_n(const Model& m, StepJacobian& jac, double hg) {
     for (int a = 0; a < nq; ++a)
       for (int b = 0; b < a; ++b) K[a * nq + b] = K[b * nq + a];
   } else {
-    // Larger models (das3): only the rows of the DOFs the element crosses (its moment arms are exact
-    // zeros elsewhere; das3's girdle-only and arm-only elements touch 6 or at most 5 of the 11 rows),
-    // whole rows (the two halves agree to rounding; the LU below does not need exact symmetry).
+    // Larger models (das3, 8-16 DOFs): the rows of K as lane pairs (lanes.h), accumulated in registers
+    // over the elements and stored once. The operation order per entry is the scalar loop's,
+    // K[a][b] -= (c r[a]) r[b], so the result is the same to the bit.
+    using detail::v8d;
+    v8d Klo[nq], Khi[nq];
+    for (int a = 0; a < nq; ++a) Klo[a] = Khi[a] = v8d{};
+    // Only the rows of the DOFs the element crosses, and the hi lanes only if it crosses DOFs 8-15:
+    // its moment arms are exact zeros elsewhere (das3's girdle-only and arm-only elements touch 6 or at
+    // most 5 of the 11 rows).
     for (int i = 0; i < n; ++i) {
       const double* r = R + i * nq;
       const double c = jac.series_stiffness[i];
-      for (int a = m.dof_first[i]; a <= m.dof_last[i]; ++a) {
+      const int first = m.dof_first[i], last = m.dof_last[i];
+      v8d lo, hi;
+      detail::load_row16(r, lo, hi);
+#pragma GCC unroll 16
+      for (int a = 0; a < nq; ++a) {
+        if (a < first || a > last) continue;
         const double cr = c * r[a];
-        for (int b = 0; b < nq; ++b) K[a * nq + b] -= cr * r[b];
+        Klo[a] -= cr * lo;
+        if (last >= 8) Khi[a] -= cr * hi;
       }
     }
+    for (int a = 0; a < nq; ++a)
+      for (int b = 0; b < nq; ++b) K[a * nq + b] = b < 8 ? Klo[a][b] : Khi[a][b - 8];
   }
   for (int a = 0; a < nq; ++a) K[a * nq + a] += jac.dtau_passive_dq[a];
   if (m.def->girdle)
@@ -159,11 +174,26 @@ void jacobian_solve_n(const Model& m, StepJacobian& jac, const double* r, double
     k[iq + a] = kq[a];
     k[iqd + a] = kqd[a];
   }
-  for (int i = 0; i < n; ++i) {
-    const double* ri = R + i * nq;
-    double rk = 0;
-    for (int a = 0; a < nq; ++a) rk += ri[a] * kq[a];
-    k[il + i] = p[i] - jac.lce_from_q[i] * rk;
+  if constexpr (nq < 8) {
+    for (int i = 0; i < n; ++i) {
+      const double* ri = R + i * nq;
+      double rk = 0;
+      for (int a = 0; a < nq; ++a) rk += ri[a] * kq[a];
+      k[il + i] = p[i] - jac.lce_from_q[i] * rk;
+    }
+  } else {
+    // Each row's dot product with k_q as a lane pair and a tree sum (a running sum over 11 DOFs was a
+    // chain of 11 dependent multiply-adds per element).
+    using detail::v8d;
+    double kq16[16] = {};
+    for (int a = 0; a < nq; ++a) kq16[a] = kq[a];
+    v8d kq_lo, kq_hi;
+    detail::load_row16(kq16, kq_lo, kq_hi);  // lanes past nq are zero, so the row's spill-over lanes add 0
+    for (int i = 0; i < n; ++i) {
+      v8d r_lo, r_hi;
+      detail::load_row16(R + i * nq, r_lo, r_hi);
+      k[il + i] = p[i] - jac.lce_from_q[i] * detail::lane_sum(r_lo * kq_lo + r_hi * kq_hi);
+    }
   }
 }
 

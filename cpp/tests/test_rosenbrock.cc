@@ -10,6 +10,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "armrt/engine.h"
 #include "armrt/muscle_kernel.h"
@@ -216,36 +217,39 @@ TEST_CASE("the structured Jacobian's exact blocks match finite differences of fo
   CHECK(rel < 0.05);
 }
 
-TEST_CASE("the Schur-complement solve equals a dense LU of I - h gamma J") {
-  auto sim = moving_state();
-  const Model& m = sim->model;
-  Data& d = sim->data;
-  const int n = m.num_elements, ia = act_offset(m), ns = state_size(m);
+// The Schur-complement solve of jacobian_solve against a dense LU of the same state-sized matrix
+// I - h gamma J, written out from the StepJacobian (test only: the engine never forms it).
+static void check_schur_solve(Simulator& sim) {
+  const Model& m = sim.model;
+  Data& d = sim.data;
+  const int n = m.num_elements, nq = m.num_dofs, ns = state_size(m);
+  const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
   StateVec f{};
   forward(m, d, d.x.data(), f.data(), false, &d.jac);
   const double hg = 1.7071067811865475e-3;
   jacobian_factor(m, d.jac, hg);
   const StepJacobian& J = d.jac;
-  // The same J written out densely (test only: the engine never forms it).
-  Eigen::MatrixXd Jd = Eigen::MatrixXd::Zero(ns, ns);
-  Eigen::Matrix<double, kDas2Dofs, kDas2Dofs, Eigen::RowMajor> M;
-  for (int k = 0; k < kDas2Dofs * kDas2Dofs; ++k) M.data()[k] = J.mass_matrix[k];
-  const Eigen::MatrixXd Minv = M.inverse();
-  Eigen::MatrixXd R(n, kDas2Dofs);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < kDas2Dofs; ++j) R(i, j) = J.moment_arm[i * kDas2Dofs + j];
-  Eigen::MatrixXd Kq = -R.transpose() * Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(J.dforce_dL.data(), n)).asDiagonal() * R;
-  for (int j = 0; j < kDas2Dofs; ++j) Kq(j, j) += J.dtau_passive_dq[j];
-  for (int j = 0; j < kDas2Dofs; ++j) Jd(kQ + j, kQd + j) = 1.0;
-  Jd.block(kQd, kQ, kDas2Dofs, kDas2Dofs) = Minv * Kq;
-  Jd.block(kQd, kQd, kDas2Dofs, kDas2Dofs) = Minv * Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(J.dtau_passive_dqd.data(), kDas2Dofs)).asDiagonal();
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < kDas2Dofs; ++j) {
-      Jd(kQd + j, kLce + i) = (Minv.row(j) * R.row(i).transpose())(0) * J.dforce_dlce[i];
-      Jd(kLce + i, kQ + j) = -J.dvel_dL[i] * R(i, j);
+  Eigen::MatrixXd Jd = Eigen::MatrixXd::Zero(ns, ns), M(nq, nq), R(n, nq), G(nq, nq);
+  for (int a = 0; a < nq; ++a)
+    for (int b = 0; b < nq; ++b) {
+      M(a, b) = J.mass_matrix[a * nq + b];
+      G(a, b) = m.def->girdle ? J.dtau_girdle_dq[a * nq + b] : 0.0;
     }
-    Jd(kLce + i, kLce + i) = J.dvel_dlce[i];
-    Jd(kLce + i, ia + i) = J.dvel_da[i];
+  const Eigen::MatrixXd Minv = M.inverse();
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < nq; ++j) R(i, j) = J.moment_arm[i * nq + j];
+  Eigen::MatrixXd Kq = -R.transpose() * Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(J.dforce_dL.data(), n)).asDiagonal() * R + G;
+  for (int j = 0; j < nq; ++j) Kq(j, j) += J.dtau_passive_dq[j];
+  for (int j = 0; j < nq; ++j) Jd(iq + j, iqd + j) = 1.0;
+  Jd.block(iqd, iq, nq, nq) = Minv * Kq;
+  Jd.block(iqd, iqd, nq, nq) = Minv * Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(J.dtau_passive_dqd.data(), nq)).asDiagonal();
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < nq; ++j) {
+      Jd(iqd + j, il + i) = (Minv.row(j) * R.row(i).transpose())(0) * J.dforce_dlce[i];
+      Jd(il + i, iq + j) = -J.dvel_dL[i] * R(i, j);
+    }
+    Jd(il + i, il + i) = J.dvel_dlce[i];
+    Jd(il + i, ia + i) = J.dvel_da[i];
     Jd(ia + i, ia + i) = -J.act_rate[i];
   }
   const Eigen::MatrixXd A = Eigen::MatrixXd::Identity(ns, ns) - hg * Jd;
@@ -262,6 +266,42 @@ TEST_CASE("the Schur-complement solve equals a dense LU of I - h gamma J") {
     CHECK((ks - k_dense).norm() <= 1e-9 * k_dense.norm());
     CHECK((A * ks - r).norm() <= 1e-9 * r.norm());
   }
+}
+
+TEST_CASE("the Schur-complement solve equals a dense LU of I - h gamma J") {
+  auto sim = moving_state();
+  check_schur_solve(*sim);
+}
+
+TEST_CASE("das3: the Schur-complement solve (lane-pair stiffness and solves, girdle stiffness) equals a dense LU") {
+  const ModelDef* def = find_model("das3");
+  REQUIRE(def);
+  auto sim = std::make_unique<Simulator>(*def, Integrator::kRos2, 1e-3);
+  for (const char* g : {"deltoid", "serratus_anterior", "elbow_flexors"}) armrt_test::set_group_excitation(*sim, g, 0.3);
+  sim->data.hand_force = {0.0, -10.0, 0.0};
+  for (int k = 0; k < 300; ++k) REQUIRE(sim->step());
+  check_schur_solve(*sim);
+}
+
+TEST_CASE("generalised_force: R^T F for 1-16 DOFs and any number of rows equals the plain sum") {
+  // The lane-pair form (more than 7 DOFs) reads rows 16 values at a time; arrays here end exactly
+  // after the last row, so a read past it would show under the sanitizers and as a wrong sum here.
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> U(-0.05, 0.05);
+  for (int ndof = 1; ndof <= kMaxDofs; ++ndof)
+    for (int n : {1, 2, 3, 5, 8, 13, 138}) {
+      std::vector<double> R(n * ndof), F(n), tau(ndof);
+      for (double& v : R) v = U(rng);
+      for (double& v : F) v = 1e4 * U(rng);
+      generalised_force(R.data(), F.data(), n, ndof, tau.data());
+      for (int j = 0; j < ndof; ++j) {
+        double expected = 0;
+        for (int i = 0; i < n; ++i) expected += R[i * ndof + j] * F[i];
+        CAPTURE(ndof);
+        CAPTURE(n);
+        CHECK(tau[j] == doctest::Approx(expected).epsilon(1e-12).scale(1e-9));
+      }
+    }
 }
 
 TEST_CASE("a slack tendon engaging within a 1 ms step: the CE stops near where it takes up the load") {
