@@ -5,6 +5,7 @@
 
 #include "armrt/engine.h"
 #include "dof_dispatch.h"
+#include "lanes.h"
 
 namespace armrt {
 
@@ -12,31 +13,73 @@ namespace {
 
 template <int n>
 void solve_spd_n(const double* A, const double* b, double* x) {
-  // Cholesky A = L L^T, row-major, fixed size: no pivoting needed for a mass matrix.
-  double Lc[n * n];
-  double inv_diag[n];
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j <= i; ++j) {
-      double sum = A[i * n + j];
-      for (int k = 0; k < j; ++k) sum -= Lc[i * n + k] * Lc[j * n + k];
-      if (i == j) {
-        Lc[i * n + i] = std::sqrt(sum);
-        inv_diag[i] = 1.0 / Lc[i * n + i];
-      } else {
-        Lc[i * n + j] = sum * inv_diag[j];
+  if constexpr (n < 8) {
+    // Cholesky A = L L^T, row-major, fixed size: no pivoting needed for a mass matrix.
+    double Lc[n * n];
+    double inv_diag[n];
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j <= i; ++j) {
+        double sum = A[i * n + j];
+        for (int k = 0; k < j; ++k) sum -= Lc[i * n + k] * Lc[j * n + k];
+        if (i == j) {
+          Lc[i * n + i] = std::sqrt(sum);
+          inv_diag[i] = 1.0 / Lc[i * n + i];
+        } else {
+          Lc[i * n + j] = sum * inv_diag[j];
+        }
       }
     }
-  }
-  double y[n];
-  for (int i = 0; i < n; ++i) {
-    double sum = b[i];
-    for (int k = 0; k < i; ++k) sum -= Lc[i * n + k] * y[k];
-    y[i] = sum * inv_diag[i];
-  }
-  for (int i = n - 1; i >= 0; --i) {
-    double sum = y[i];
-    for (int k = i + 1; k < n; ++k) sum -= Lc[k * n + i] * x[k];
-    x[i] = sum * inv_diag[i];
+    double y[n];
+    for (int i = 0; i < n; ++i) {
+      double sum = b[i];
+      for (int k = 0; k < i; ++k) sum -= Lc[i * n + k] * y[k];
+      y[i] = sum * inv_diag[i];
+    }
+    for (int i = n - 1; i >= 0; --i) {
+      double sum = y[i];
+      for (int k = i + 1; k < n; ++k) sum -= Lc[k * n + i] * x[k];
+      x[i] = sum * inv_diag[i];
+    }
+  } else {
+    // 8-16 DOFs (das3): the same factorisation right-looking, the rows as lane pairs in registers.
+    // Step k turns row k into column k of L (by symmetry of what is left of A) and updates the rows
+    // below it with one multiply-add per lane pair, so the dependent chain is one square root, one
+    // division and one update per column; the row-by-row dot products above chained ~n^3/6 of them.
+    using detail::v8d;
+    v8d lo[n], hi[n];
+    for (int i = 0; i < n; ++i) detail::load_row(A + i * n, n, lo[i], hi[i]);
+    double inv_diag[n];
+#pragma GCC unroll 16
+    for (int k = 0; k < n; ++k) {
+      inv_diag[k] = 1.0 / std::sqrt(k < 8 ? lo[k][k % 8] : hi[k][k % 8]);
+      lo[k] *= inv_diag[k];  // lanes j > k: L[j][k]
+      hi[k] *= inv_diag[k];
+#pragma GCC unroll 16
+      for (int i = k + 1; i < n; ++i) {
+        const double l_ik = i < 8 ? lo[k][i % 8] : hi[k][i % 8];
+        lo[i] -= l_ik * lo[k];
+        hi[i] -= l_ik * hi[k];
+      }
+    }
+    // L y = b, column by column: lanes <= k of the running right-hand side are spent.
+    v8d r_lo, r_hi;
+    detail::load_row(b, n, r_lo, r_hi);
+    double y[n];
+#pragma GCC unroll 16
+    for (int k = 0; k < n; ++k) {
+      y[k] = (k < 8 ? r_lo[k % 8] : r_hi[k % 8]) * inv_diag[k];
+      r_lo -= y[k] * lo[k];
+      r_hi -= y[k] * hi[k];
+    }
+    // L^T x = y from the last row up: x's lanes <= k are still zero, so column k's dot with x sums j > k.
+    v8d x_lo = {}, x_hi = {};
+#pragma GCC unroll 16
+    for (int k = n - 1; k >= 0; --k) {
+      const double xk = (y[k] - detail::lane_sum(lo[k] * x_lo + hi[k] * x_hi)) * inv_diag[k];
+      if (k < 8) x_lo[k % 8] = xk;
+      else x_hi[k % 8] = xk;
+      x[k] = xk;
+    }
   }
 }
 
