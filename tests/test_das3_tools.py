@@ -490,3 +490,18 @@ def test_cli_info_and_simulate_das3(tmp_path, capsys):
     mot = tmp_path / "run.mot"
     assert main(["export", str(npz), "--mot", str(mot)]) == 0
     assert opensim_io.read_storage(mot)[1] == ["time"] + OSIM_COORDS
+
+
+def test_cli_simulate_settle_starts_from_the_relaxed_arm(capsys):
+    """`armrt simulate --settle` starts from Arm.settle()'s state: no start-up jolt from equilibrium.mat."""
+    from armrt.cli import main
+    assert main(["simulate", "--model", "das3", "--duration", "0.05", "--no-progress", "--settle", "0.5"]) == 0
+    out = capsys.readouterr().out
+    assert "settled for 0.5 s with no excitation" in out
+    arm = armrt.Arm(model="das3")
+    rest = dict(zip(arm.dof_names, np.degrees(arm.q)))
+    arm.settle(0.5)
+    settled = dict(zip(arm.dof_names, np.degrees(arm.q)))
+    start = {ln.split()[0]: float(ln.split()[1]) for ln in out.splitlines() if ln.split() and ln.split()[0] in settled}
+    assert len(start) == 11 and all(abs(start[k] - settled[k]) < 0.01 for k in start)
+    assert abs(start["ELx"] - rest["ELx"]) > 1.0  # the elbow's sag from equilibrium.mat has begun

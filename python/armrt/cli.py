@@ -86,6 +86,9 @@ def cmd_simulate(args) -> int:
     arm = Arm(model=args.model, integrator=args.integrator, dt=args.dt)
     arm.reset(q=start_posture(args, arm))
     arm.set_excitation(excitation)  # unknown names fail here, before any work
+    if args.settle is not None:
+        arm.settle(args.settle)
+        print(f"settled for {args.settle:g} s with no excitation")
     res = arm.simulate(excitation, duration=args.duration, record_every=args.record_every,
                        progress=None if args.progress else False)
     q0, q1 = np.degrees(res.q[0]), np.degrees(res.q[-1])
@@ -190,6 +193,10 @@ def build_parser() -> argparse.ArgumentParser:
     q.add_argument("--q-mot", metavar="FILE.mot", help="initial joint angles from an OpenSim motion file")
     p.add_argument("--q-mot-time", type=float, default=None, metavar="S",
                    help="time in --q-mot to start from, s (default: its first row)")
+    p.add_argument("--settle", type=float, nargs="?", const=3.0, default=None, metavar="S",
+                   help="first relax the arm from the start posture for S s (default 3) with no excitation "
+                        "(Arm.settle): das3's rest posture, DAS3's equilibrium.mat, is not its equilibrium, and "
+                        "without this the run starts with that transient")
     p.add_argument("--no-progress", dest="progress", action="store_false",
                    help="no progress bar (shown on a terminal for runs longer than 1 s)")
     p.add_argument("-o", "--out", metavar="FILE.npz", help="save the result (.npz)")
