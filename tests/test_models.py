@@ -89,6 +89,9 @@ def test_model_names_groups_parameters_provenance():
         m.indices("bicp")
     assert m.parameters["fmax"].shape == (102,) and m.parameters["fmax"][0] == arm.info["elements"][0]["fmax"]
     assert m.dof_ranges.shape == (5, 2) and np.all(m.dof_ranges[:, 0] < m.dof_ranges[:, 1])
+    # the passive joint law's constants are the model file's
+    model_file = json.loads((Path(__file__).resolve().parents[1] / "models" / "das2.json").read_text())
+    assert arm.info["passive_joint"] == model_file["passive_joint"]
     p = m.provenance
     assert p["builtin"] and p["source_hash"] == m.source_hash and len(m.source_hash) == 64
     if p["model_file"]:

@@ -93,6 +93,10 @@ py::dict model_info(const ModelDef& def) {
   info["muscles"] = muscles;
   info["groups"] = groups;
   info["arm_mass"] = def.arm_mass;
+  // The passive joint law's constants (passive_joints.cc), under the model file's names.
+  info["passive_joint"] = py::dict(py::arg("stiffness_inside") = def.passive_stiffness_inside,
+                                   py::arg("stiffness_outside") = def.passive_stiffness_outside,
+                                   py::arg("damping") = def.passive_damping);
   info["base_body"] = std::string(def.base_body);
   {
     py::list bodies;
