@@ -452,6 +452,14 @@ def test_batch_of_das3_arms_matches_a_lone_arm():
     assert batch.q.shape == (2, 11)
     np.testing.assert_array_equal(batch.q[0], arm.q)
     np.testing.assert_array_equal(batch.hand_position[0], arm.hand_position)
+    # the girdle's outputs, as the lone arm's
+    out_b, out_a = batch.outputs(), arm.outputs()
+    for k in ("girdle_torque", "contact_distance", "contact_force", "conoid_length", "conoid_tension"):
+        assert out_b[k].shape == (2,) + np.shape(out_a[k]), k
+        np.testing.assert_array_equal(out_b[k][0], out_a[k], err_msg=k)
+    assert np.all(out_b["conoid_tension"] > 0) and np.all(np.abs(out_b["contact_distance"]) < 0.02)
+    # a model with a fixed girdle has none
+    assert "contact_distance" not in armrt.ArmBatch(1, threads=1).outputs()
 
 
 def test_gym_envs_run_das3_with_the_girdle_at_rest_to_start():

@@ -27,6 +27,13 @@ py::array arm_view(Batch& b, const double* field_of_arm0, py::ssize_t width, py:
   return py::array_t<double>({n, width}, {row, static_cast<py::ssize_t>(sizeof(double))}, ptr, owner);
 }
 
+// Number of girdle contact points of the batch's model; AttributeError for a model with a fixed girdle.
+py::ssize_t contact_points(Batch& b) {
+  const ModelDef& def = *b.arm(0).model.def;
+  if (!def.girdle) throw py::attribute_error(std::string("model ") + def.name + " has no moving girdle");
+  return def.girdle->num_contact_points;
+}
+
 const ModelDef& require_model(const std::string& name) {
   const ModelDef* def = find_model(name);
   if (!def) throw py::value_error("unknown model '" + name + "' (registered models: " + model_names() + ")");
@@ -95,6 +102,21 @@ PYBIND11_MODULE(_batch, mod) {
         auto& b = self.cast<Batch&>();
         return arm_view(b, b.arm(0).data.muscle_length.data(), b.arm(0).model.num_elements, self);
       })
+      // The girdle stage's outputs (models whose scapula moves; data.h GirdleState).
+      .def_property_readonly("girdle_torque", [](py::object self) {
+        auto& b = self.cast<Batch&>();
+        return arm_view(b, b.arm(0).data.girdle_torque.data(), b.arm(0).model.num_dofs, self);
+      })
+      .def_property_readonly("contact_distance", [](py::object self) {
+        auto& b = self.cast<Batch&>();
+        return arm_view(b, b.arm(0).data.girdle.contact_distance.data(), contact_points(b), self);
+      })
+      .def_property_readonly("contact_force", [](py::object self) {
+        auto& b = self.cast<Batch&>();
+        return arm_view(b, b.arm(0).data.girdle.contact_force.data(), contact_points(b), self);
+      })
+      .def_property_readonly("conoid_length", [](py::object self) { auto& b = self.cast<Batch&>(); contact_points(b); return arm_view(b, &b.arm(0).data.girdle.conoid_length, 0, self); })
+      .def_property_readonly("conoid_tension", [](py::object self) { auto& b = self.cast<Batch&>(); contact_points(b); return arm_view(b, &b.arm(0).data.girdle.conoid_tension, 0, self); })
       // Errors.
       .def("status", [](Batch& b) {
         py::array_t<int> s({static_cast<py::ssize_t>(b.size())});

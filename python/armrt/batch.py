@@ -20,6 +20,9 @@ os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 from . import _batch  # noqa: E402
 from .arm import Arm, SimulationError  # noqa: E402
 
+# Outputs of the girdle stage, for models whose scapula moves (das3): as Arm.outputs() names them.
+GIRDLE_OUTPUTS = ("girdle_torque", "contact_distance", "contact_force", "conoid_length", "conoid_tension")
+
 
 def available_cores() -> int:
     """CPUs this process may run on (its affinity mask)."""
@@ -90,7 +93,7 @@ class ArmBatch:
         views = {k: state[:, o:o + size] for k, (o, size) in self.info["state_layout"].items()}
         views["time"] = self._raw.time
         for name in ("hand_position", "gh_force", "gh_stab", "gh_theta", "gh_phi", "muscle_force",
-                     "muscle_length", "qddot"):
+                     "muscle_length", "qddot") + (GIRDLE_OUTPUTS if self.info["girdle"] else ()):
             views[name] = getattr(self._raw, name)
         for v in views.values():
             v.flags.writeable = False
@@ -299,9 +302,12 @@ class ArmBatch:
     def outputs(self) -> dict:
         """Copies of the outputs at each arm's current state (as Arm.outputs(), one row per arm):
         qddot (n, dofs), muscle_force and muscle_length (n, elements), hand_position and gh_force
-        (n, 3), gh_theta, gh_phi, gh_stab (n,). Rows of diverged arms are as they stopped."""
+        (n, 3), gh_theta, gh_phi, gh_stab (n,); for a model whose scapula moves (das3) also girdle_torque
+        (n, dofs) N m, contact_distance and contact_force (n, contact points: TS, AI) m and N, conoid_length
+        (n,) m and conoid_tension (n,) N. Rows of diverged arms are as they stopped."""
         return {k: np.array(self._views[k]) for k in ("qddot", "muscle_force", "muscle_length", "hand_position",
-                                                      "gh_force", "gh_theta", "gh_phi", "gh_stab")}
+                                                      "gh_force", "gh_theta", "gh_phi", "gh_stab")
+                + (GIRDLE_OUTPUTS if self.info["girdle"] else ())}
 
     @property
     def diverged(self) -> np.ndarray:
