@@ -56,21 +56,23 @@ def _fit_one(k):
     return fit_element(k, *_FIT_ARGS), time.time() - t
 
 
-def fit_all(n, samples_tr, samples_va, bad_tr, bad_va, processes, names):
-    """fit_element for elements 0..n-1 on `processes` forked workers (numpy only), in order."""
+def fit_all(elements, samples_tr, samples_va, bad_tr, bad_va, processes, names):
+    """fit_element for the element indices `elements` (or 0..elements-1 for an int) on `processes` forked
+    workers (numpy only), in order; names[i] labels the progress line of the i-th."""
     import multiprocessing as mp
     global _FIT_ARGS
     _FIT_ARGS = (samples_tr, samples_va, bad_tr, bad_va)
+    ks = list(range(elements)) if isinstance(elements, int) else list(elements)
     if processes > 1 and mp.parent_process() is None:
         with mp.get_context("fork").Pool(processes) as pool:
             results = []
-            for k, r in enumerate(pool.imap(_fit_one, range(n))):
+            for k, r in enumerate(pool.imap(_fit_one, ks)):
                 print(f"{names[k]}: {len(r[0]['dofs'])} DOFs, {len(r[0]['coefs'])} terms, {r[1]:.1f} s", flush=True)
                 results.append(r)
     else:
         results = []
-        for k in range(n):
-            results.append(_fit_one(k))
+        for k, kk in enumerate(ks):
+            results.append(_fit_one(kk))
             print(f"{names[k]}: {len(results[-1][0]['dofs'])} DOFs, {len(results[-1][0]['coefs'])} terms, "
                   f"{results[-1][1]:.1f} s", flush=True)
     return [r[0] for r in results], [r[1] for r in results]
@@ -97,6 +99,36 @@ def write_outputs(out, report, paths_out, source):
                         fitted=fitted, fit_info=info)
     if paths_out:
         write_paths(out, paths_out, cmd + f" --paths-out {paths_out}")
+
+
+def report_from_paths(paths_file, report, das3_dir, cache, processes):
+    """Rewrites the head of the accuracy report (everything before its "## GH line of action" section) for the
+    polynomials now in `paths_file`: their scores on the fit's test sample (each element's `fit` entry, which
+    codegen.das3_refit_simulated keeps current) beside the DAS3 release polynomials scored on the same poses."""
+    from .das3_rom import Das3Rom
+    paths = json.loads(Path(paths_file).read_text())
+    smp = paths["sampling"]
+    rom = Das3Rom(das3_dir)
+    release = dp.das3_release_elements(das3_dir)
+    s_te = dp.cached_sample(f"{das3_dir}/das3.osim", [{"name": e.name, "osim_name": e.osim_name} for e in release],
+                            rom.sample(smp["test"], smp["test_seed"]), cache, f"eval{smp['test_seed']}", processes)
+    bad = og.wrap_jumps(s_te)
+    st_rel = dp.score(s_te, [dp.polynomial_moment_arms(e.lparams, e.lcoefs, e.dof_names, s_te["q"]) for e in release], bad)
+    for st, e in zip(st_rel, release):
+        st["n_terms"] = len(e.lcoefs)
+    by_name = {e["name"]: e for e in paths["elements"]}
+    fitted = [{**{k: v for k, v in by_name[e.name]["fit"].items() if k != "simulated"},
+               "n_terms": len(by_name[e.name]["length_poly"]["coefs"])} for e in release]
+    n_reselected = sum(1 for e in paths["elements"] if e["fit"].get("simulated", {}).get("reselected"))
+    info = (f"{smp['train']} training and {smp['valid']} validation poses (seeds {smp['seed']}, {smp['seed'] + 7919}); "
+            "then refitted over this region plus das3's own simulated motions (the last two sections), "
+            f"{n_reselected} elements with their terms selected afresh")
+    cmd = f"python -m codegen.das3_fit --from-paths {paths_file} --report {report}"
+    old = Path(report).read_text() if Path(report).exists() else ""
+    dp.write_report(st_rel, paths["rom"], smp["test"], smp["test_seed"], report, cmd, fitted=fitted, fit_info=info)
+    cut = old.find("## GH line of action")
+    if cut >= 0:
+        Path(report).write_text(Path(report).read_text().rstrip("\n") + "\n\n" + old[cut:])
 
 
 def write_paths(out, path, command):
@@ -127,9 +159,17 @@ def main(argv=None):
     ap.add_argument("--report", help="also write the accuracy report (markdown) here")
     ap.add_argument("--paths-out", help="also write the fitted length polynomials (JSON, see write_paths) here")
     ap.add_argument("--from-json", help="skip sampling and fitting: write --report/--paths-out from this --out file")
+    ap.add_argument("--from-paths", help="skip sampling and fitting: write --report's summary and per-element "
+                    "table for the polynomials of this paths file as they now are (after codegen.das3_refit_simulated), "
+                    "keeping the report's later sections")
     a = ap.parse_args(argv)
     if a.from_json:
         write_outputs(json.loads(Path(a.from_json).read_text()), a.report, a.paths_out, a.from_json)
+        return 0
+    if a.from_paths:
+        if not a.report:
+            ap.error("--from-paths needs --report")
+        report_from_paths(a.from_paths, a.report, a.das3, a.cache, a.processes)
         return 0
     from .das3_rom import Das3Rom
     t0 = time.time()

@@ -229,8 +229,8 @@ def write_report(release, rom_desc, n_poses, seed, md_path, command, fitted=None
     for r in rom_desc["path"]:
         lines.append("| " + " | ".join(f"{r[k]:.3f}" for k in ["GHz", "SCy", "SCz", "SCx", "ACy", "ACz", "ACx"])
                      + f" | {r['f_TS_AI'][0]:.4f} | {r['f_TS_AI'][1]:.4f} |")
-    lines += ["", "The engine cannot simulate das3 yet (issue 13), so the girdle motion is this kinematic rule,",
-              "not the model's own simulated motions; see the docstring of `codegen/das3_rom.py`.", "",
+    lines += ["", "This kinematic rule was the first fit's whole region (the engine could not simulate das3 then; see",
+              "`codegen/das3_rom.py`). das3's own simulated motions were added to it afterwards: the last two sections.", "",
               "## Summary", ""]
     if fitted is not None:
         lines += _summary(fitted, "Refitted")

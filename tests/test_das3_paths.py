@@ -183,14 +183,15 @@ def test_fitted_paths_against_a_fresh_opensim_sample(fitted, rom):
 
 @pytest.mark.opensim
 def test_fitted_paths_on_a_das3_simulation_they_never_saw(fitted):
-    """Poses from das3 itself (an abduction ramp at 85 % of the refit's protocol, from the settled arm),
-    where the girdle sits outside the kinematic fit region: the refit over simulated motions holds there."""
+    """Poses from das3 itself (an abduction ramp at 60 % of the refit's protocol, from the settled arm; the
+    refit trained at 100 %, stopped its term selection at 85 % and scored at 70 %), where the girdle sits
+    outside the kinematic fit region: the refit over simulated motions holds there."""
     pytest.importorskip("opensim", reason="opensim (pip install opensim) is not installed")
     import armrt
     from codegen.das3_simulated_poses import PROTOCOLS, ramp
     arm = armrt.Arm(model="das3")
     arm.settle()
-    q = arm.simulate(ramp(arm.model, PROTOCOLS[0][1], 0.85), 2.0, record_every=50).q
+    q = arm.simulate(ramp(arm.model, PROTOCOLS[0][1], 0.6), 2.0, record_every=50).q
     n_pass, over = score_against_opensim(fitted, q, "simulated poses")
     assert n_pass >= MIN_SIMULATED_PASSING and over <= MAX_SIMULATED_OVER
 
