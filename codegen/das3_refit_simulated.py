@@ -190,7 +190,8 @@ def main(argv=None) -> int:
              if not ((n if u else o)["fit_test"]["pass"] and (n if u else o)["sim_test"]["pass"])]
     fails.sort(key=lambda x: -max(s["max_err_m"] / s["criterion_m"] for s in x[1].values()))
     lines = ["## Refit over das3's own simulated motions", "",
-             f"`python -m codegen.das3_refit_simulated` ({time.time() - t0:.0f} s, {t_sample:.0f} s of it sampling "
+             f"`python -m codegen.das3_refit_simulated{' --reselect' if a.reselect else ''}` ({time.time() - t0:.0f} s, "
+             f"{t_sample:.0f} s of it sampling "
              "OpenSim): every element keeps its terms; the coefficients are refitted over the fit's "
              f"{len(sets['fit_train']['q'])} training poses plus {len(sets['sim_train']['q'])} poses of das3's "
              "simulated motions (the protocols above at full level and six seeded random runs, every 10 ms)"

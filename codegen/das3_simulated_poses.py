@@ -151,10 +151,11 @@ def main(argv=None) -> int:
              f"muscles alone, elbow and forearm) and {RANDOM_RUNS} seeded random excitations, 2 s each, ROS2 at "
              f"1 ms, one pose every 10 ms ({len(traj)} poses), {len(poses)} of them drawn at random and scored against "
              "OpenSim's geometry as above.", "",
-             f"Only {int(inside.sum())} of the {len(traj)} poses lie inside the fitted region: the simulated girdle "
-             "lies outside it in " + ", ".join(f"{k} ({100 * v:.0f} % of poses)" for k, v in outside_by_dof.items()
-                                              if v > 0.01) + ", so these scores include the polynomials' "
-             "extrapolation a few degrees beyond where they were fitted.", "",
+             f"{int(inside.sum())} of the {len(traj)} poses lie inside the kinematic region's box (the model's DOF "
+             "ranges): the simulated girdle lies outside it in " + ", ".join(
+                 f"{k} ({100 * v:.0f} % of poses)" for k, v in outside_by_dof.items() if v > 0.01)
+             + ". The first fit never saw such poses; the refit below adds poses of other simulated runs (not these) "
+             "to its region.", "",
              "Span of the scored poses (deg): " + ", ".join(f"{k} {v[0]:.0f} to {v[1]:.0f}" for k, v in span.items()) + ".",
              "",
              f"- **{n_pass} of {len(stats)} elements meet the criterion at every scored pose**; element-poses over "

@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/das3.json --out cpp/generated`
-// from the model file das3.json (sha256 f8340e0484f80bf8d41630bf34d37baef20a0c86192c1b271f3c506b89d1d36d).
+// from the model file das3.json (sha256 4605c5b0c5da518f78ba5f0eb8e99f4aed21a6966165447ef5d4a5344e39c8a1).
 // Change the model file or the generator and regenerate instead.
 
 #include <cmath>
