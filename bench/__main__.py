@@ -96,8 +96,10 @@ def report() -> int:
     summary: dict = {"timestamp": time.strftime("%Y-%m-%dT%H:%M:%S"), "cpus": os.cpu_count(),
                      "load_avg": os.getloadavg(), "note": "shared machine (2 cores, other builds running): medians over repeats"}
     md = ["# armrt benchmark summary", "",
-          f"Generated {summary['timestamp']} by `python -m bench all` on a shared {os.cpu_count()}-core machine "
-          "(other engineers' builds running): every figure is a median over repeats; expect 10-30 % noise.", ""]
+          f"Compiled {summary['timestamp']} by `python -m bench report` (which every `python -m bench ...` run ends "
+          "with) from the bench/results JSON files: each section is from the last run of its own bench (`python -m "
+          f"bench all` runs them all), on a shared {os.cpu_count()}-core machine (other engineers' builds running); "
+          "every figure is a median over repeats; expect 10-30 % noise.", ""]
     if eng and eng.get("cpp"):
         c = eng["cpp"]
         summary["engine"] = {k: c[k]["median"] for k in ("forward", "ros2_step", "rk4_step", "euler_step") if k in c}
