@@ -10,7 +10,10 @@ their value, so errors are angles after normalisation. Poses excluded as wrap ju
 length are excluded here too.
 
 `python -m codegen.das3_directions` adds `gh_direction` to every GH-crossing element of
-models/das3_paths.json and a line-of-action section to docs/das3_path_accuracy.md.
+models/das3_paths.json and a line-of-action section to docs/das3_path_accuracy.md. With `--with-simulated`
+the region is that of the length polynomials after codegen/das3_refit_simulated.py: the kinematic samples plus
+das3's own simulated motions (every SIM_STRIDE-th pose of the training runs in the fit, of the validation runs
+in its stopping test), and the fits are scored on the held-out simulated runs as well.
 """
 from __future__ import annotations
 
@@ -119,6 +122,9 @@ def main(argv=None):
     ap.add_argument("--report", default=str(root / "docs" / "das3_path_accuracy.md"))
     ap.add_argument("--cache", default=str(root / "build"))
     ap.add_argument("--processes", type=int, default=2)
+    ap.add_argument("--with-simulated", action="store_true",
+                    help="fit over the kinematic samples plus das3's simulated motions and score on both "
+                         "(as codegen.das3_refit_simulated does for the lengths)")
     a = ap.parse_args(argv)
     from .das3_rom import Das3Rom
     t0 = time.time()
@@ -138,6 +144,16 @@ def main(argv=None):
         bad = og.wrap_jumps(s)
         d = sample_directions(osim_path, [e["osim_name"] for e in gh], poses, a.cache, cache_tag, a.processes)
         sets[tag] = (s["q"], bad, d)
+    if a.with_simulated:
+        from .das3_refit_simulated import SIM_STRIDE, simulated_poses
+        for tag, runs in (("sim_train", "train"), ("sim_valid", "valid"), ("sim_test", "test")):
+            poses = simulated_poses(runs)
+            s = dp.cached_sample(osim_path, all_els, poses, a.cache, f"sim{runs}", a.processes)
+            d = sample_directions(osim_path, [e["osim_name"] for e in gh], poses, a.cache, f"sim{runs}", a.processes)
+            stride = 1 if tag == "sim_test" else SIM_STRIDE
+            sets[tag] = (s["q"][::stride], og.wrap_jumps(s)[::stride], d[::stride])
+        for tag in ("train", "valid"):
+            sets[tag] = tuple(np.concatenate([x, y]) for x, y in zip(sets[tag], sets[f"sim_{tag}"]))
     t_sample = time.time() - t0
     names = [e["name"] for e in paths["elements"]]
     stats = []
@@ -146,30 +162,57 @@ def main(argv=None):
         idx = [DAS3_DOFS.index(x) for x in e["dofs"]]
         (q_tr, b_tr, d_tr), (q_va, b_va, d_va), (q_te, b_te, d_te) = sets["train"], sets["valid"], sets["eval"]
         tr, va, te = ~b_tr[:, col], ~b_va[:, col], ~b_te[:, col]
+        before = None
+        if a.with_simulated and e.get("gh_direction"):
+            q_si, b_si, d_si = sets["sim_test"]
+            before = direction_stats(e["gh_direction"], q_si[~b_si[:, col]], d_si[~b_si[:, col], k])
         fit = fp.fit_direction(q_tr[tr][:, idx], d_tr[tr, k], q_va[va][:, idx], d_va[va, k])
         e["gh_direction"] = {"dofs": e["dofs"], **fit}
         st = {"name": e["name"], **direction_stats(e["gh_direction"], q_te[te], d_te[te, k])}
+        if a.with_simulated:
+            q_si, b_si, d_si = sets["sim_test"]
+            si = ~b_si[:, col]
+            st["simulated"] = direction_stats(e["gh_direction"], q_si[si], d_si[si, k])
+            st["simulated_before"] = before
         e["fit"]["direction"] = st
         stats.append(st)
-    paths["gh_direction_command"] = "python -m codegen.das3_directions"
+    paths["gh_direction_command"] = "python -m codegen.das3_directions" + (" --with-simulated" if a.with_simulated else "")
     Path(a.paths).write_text(json.dumps(paths, indent=1) + "\n")
     dt = time.time() - t0
     all_rms = float(np.sqrt(np.mean([s["rms_deg"] ** 2 for s in stats])))
     worst = sorted(stats, key=lambda s: -s["p99_deg"])[:6]
-    lines = ["", "## GH line of action (scapula frame)", "",
-             f"`python -m codegen.das3_directions`: for the {len(stats)}",
+    cmd = paths["gh_direction_command"]
+    region = ("the same training and validation poses as the lengths, das3's simulated motions included (every "
+              f"{SIM_STRIDE}rd pose of the training and validation runs)" if a.with_simulated else
+              "the same training and validation poses")
+    lines = ["## GH line of action (scapula frame)", "",
+             f"`{cmd}` ({dt:.0f} s, {t_sample:.0f} s of it sampling): for the {len(stats)}",
              "GH-crossing elements, the direction of the force on the arm at GH in the scapula frame of each pose,",
-             "fitted as x, y, z polynomials in the element's DOFs (das2's method and settings) on the same training",
-             "and validation poses, scored on the same 512 poses (wrap-jump poses excluded); angle after normalisation.", "",
-             f"- Overall RMS {all_rms:.2f} deg; worst elements by 99th percentile: " + ", ".join(
-                 f"{s['name']} p99 {s['p99_deg']:.1f} / max {s['max_deg']:.1f} deg" for s in worst) + ".", "",
-             "| element | terms | RMS (deg) | p99 (deg) | max (deg) |", "|---|---|---|---|---|"]
+             f"fitted as x, y, z polynomials in the element's DOFs (das2's method and settings) on {region},",
+             f"scored on the fit's {smp['test']} test poses" + (f" and on {len(sets['sim_test'][0])} poses of the held-out "
+                                                               "simulated runs" if a.with_simulated else "")
+             + " (wrap-jump poses excluded); angle after normalisation.", "",
+             f"- Overall RMS {all_rms:.2f} deg on the test poses; worst elements by 99th percentile: " + ", ".join(
+                 f"{s['name']} p99 {s['p99_deg']:.1f} / max {s['max_deg']:.1f} deg" for s in worst) + "."]
+    if a.with_simulated:
+        sim_rms = float(np.sqrt(np.mean([s["simulated"]["rms_deg"] ** 2 for s in stats])))
+        worst_s = sorted(stats, key=lambda s: -s["simulated"]["p99_deg"])[:6]
+        had = [s["simulated_before"] for s in stats if s.get("simulated_before")]
+        before_rms = float(np.sqrt(np.mean([b["rms_deg"] ** 2 for b in had]))) if len(had) == len(stats) else None
+        lines += [f"- On the held-out simulated motions: overall RMS {sim_rms:.2f} deg"
+                  + (f" (the polynomials fitted over the kinematic region alone: {before_rms:.2f} deg, p99 up to "
+                     f"{max(b['p99_deg'] for b in had):.1f} deg)" if before_rms is not None else "")
+                  + "; worst by 99th percentile: "
+                  + ", ".join(f"{s['name']} p99 {s['simulated']['p99_deg']:.1f} / max {s['simulated']['max_deg']:.1f} deg"
+                              for s in worst_s) + "."]
+    lines += ["", "| element | terms | RMS (deg) | p99 (deg) | max (deg) |"
+              + (" simulated RMS (deg) | simulated p99 (deg) | simulated max (deg) |" if a.with_simulated else ""),
+              "|---|---|---|---|---|" + ("---|---|---|" if a.with_simulated else "")]
     lines += [f"| {s['name']} | {s['n_terms']} | {s['rms_deg']:.2f} | {s['p99_deg']:.1f} | {s['max_deg']:.1f} |"
-              for s in stats]
-    report = Path(a.report)
-    text = report.read_text()
-    cut = text.find("\n## GH line of action")
-    report.write_text((text if cut < 0 else text[:cut + 1]).rstrip("\n") + "\n" + "\n".join(lines) + "\n")
+              + (f" {s['simulated']['rms_deg']:.2f} | {s['simulated']['p99_deg']:.1f} | {s['simulated']['max_deg']:.1f} |"
+                 if a.with_simulated else "") for s in stats]
+    from .das3_simulated_poses import replace_section
+    replace_section(Path(a.report), "## GH line of action (scapula frame)", "\n".join(lines) + "\n")
     print(f"das3_directions: {len(stats)} GH-crossing elements in {dt:.0f} s; overall RMS {all_rms:.2f} deg")
     return 0
 

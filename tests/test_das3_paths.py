@@ -128,6 +128,8 @@ MAX_FRESH_OVER = 0.016
 # 1.48% of element-poses over the criterion (stop 11, before the re-selection: 86, 6.5%).
 MIN_SIMULATED_PASSING = 118
 MAX_SIMULATED_OVER = 0.023
+# GH lines of action on those poses: achieved RMS 1.82 deg over the 67 GH-crossing elements (worst 4.1), x 1.5.
+BOUND_UNSEEN_DIRECTION_RMS_DEG = 2.7
 
 
 @pytest.fixture(scope="module")
@@ -206,8 +208,31 @@ def test_gh_directions_in_the_paths_file(fitted):
         assert gd["x"]["exponents"] == gd["y"]["exponents"] == gd["z"]["exponents"]
         assert len(gd["x"]["coefs"]) <= 8
         rms.append(e["fit"]["direction"]["rms_deg"])
-    # achieved 2.09 deg overall (docs/das3_path_accuracy.md); das2: 2.04
-    assert np.sqrt(np.mean(np.square(rms))) < 2.6
+    # achieved 2.20 deg overall on the kinematic test poses (docs/das3_path_accuracy.md); das2: 2.04
+    assert np.sqrt(np.mean(np.square(rms))) < 2.8
+    # fitted over das3's simulated motions too (codegen.das3_directions --with-simulated): 1.51 deg there
+    sim = [e["fit"]["direction"]["simulated"]["rms_deg"] for e in gh]
+    assert np.sqrt(np.mean(np.square(sim))) < 2.3
+
+
+@pytest.mark.opensim
+def test_gh_directions_on_a_das3_simulation_they_never_saw(fitted, tmp_path):
+    """The GH lines of action against OpenSim's at poses of a das3 run neither fit saw (the 60 % abduction
+    ramp of test_fitted_paths_on_a_das3_simulation_they_never_saw), in the moving scapula frame."""
+    pytest.importorskip("opensim", reason="opensim (pip install opensim) is not installed")
+    import armrt
+    from codegen import fit_paths as fp
+    from codegen.das3_directions import direction_stats, sample_directions
+    from codegen.das3_simulated_poses import PROTOCOLS, ramp
+    arm = armrt.Arm(model="das3")
+    arm.settle()
+    q = arm.simulate(ramp(arm.model, PROTOCOLS[0][1], 0.6), 2.0, record_every=50).q
+    gh = [e for e in fitted["elements"] if "GHy" in e["dofs"]]
+    d = sample_directions(DAS3 / "das3.osim", [e["osim_name"] for e in gh], q, tmp_path, "unseen", processes=2)
+    rms = [direction_stats(e["gh_direction"], q, d[:, k])["rms_deg"] for k, e in enumerate(gh)]
+    overall = float(np.sqrt(np.mean(np.square(rms))))
+    print(f"GH directions on unseen simulated poses: overall RMS {overall:.2f} deg, worst {max(rms):.1f} deg")
+    assert overall < BOUND_UNSEEN_DIRECTION_RMS_DEG
 
 
 @pytest.mark.opensim

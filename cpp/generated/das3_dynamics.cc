@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/das3.json --out cpp/generated`
-// from the model file das3.json (sha256 4605c5b0c5da518f78ba5f0eb8e99f4aed21a6966165447ef5d4a5344e39c8a1).
+// from the model file das3.json (sha256 3cfb3672b1db2e9f9591f0a78eb4f1b3c7dd5f8f643741fce032c2590277f36a).
 // Change the model file or the generator and regenerate instead.
 
 #include <cmath>
