@@ -281,3 +281,24 @@ def test_fit_element_handles_girdle_dof_counts():
     pred = dp.polynomial_moment_arms(fit["exponents"], fit["coefs"], fit["dofs"], s_te["q"])
     err = np.abs(pred[:, :9] - s_te["ma"][:, 0, :9]).max()
     assert err < max(0.1 * np.abs(s_te["ma"][:, 0, :9]).max(), 2e-3)
+
+
+def test_compiled_das3_paths_equal_the_paths_file(fitted):
+    """The generated das3 muscle_paths (two 8-lane blocks, terms a block does not need skipped; codegen/generate.py
+    _blocked_paths) against the polynomials of models/das3_paths.json evaluated in numpy, at random poses."""
+    armrt = pytest.importorskip("armrt", reason="armrt is not built")
+    m = armrt.Model("das3")
+    rng = np.random.default_rng(5)
+    lo, hi = m.dof_ranges.T
+    q = lo + (hi - lo) * rng.random((200, 11))
+    L, R = m.muscle_lengths(q), m.moment_arms(q)
+    assert L.shape == (200, 138) and R.shape == (200, 138, 11)
+    for k, e in enumerate(fitted["elements"]):
+        lp = e["length_poly"]
+        idx = [DAS3_DOFS.index(d) for d in lp["dofs"]]
+        E, c = np.asarray(lp["exponents"]), np.asarray(lp["coefs"])
+        L_ref = (np.prod(q[:, None, idx] ** E[None], axis=2) * c).sum(axis=1)
+        R_ref = dp.polynomial_moment_arms(lp["exponents"], lp["coefs"], lp["dofs"], q)
+        np.testing.assert_allclose(L[:, k], L_ref, rtol=1e-12, atol=1e-14, err_msg=e["name"])
+        np.testing.assert_allclose(R[:, k], R_ref, rtol=1e-10, atol=1e-13, err_msg=e["name"])
+        assert np.all(R[:, k, [j for j in range(11) if j not in idx]] == 0.0), e["name"]
