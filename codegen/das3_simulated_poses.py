@@ -145,7 +145,8 @@ def main(argv=None) -> int:
     Path(a.json).write_text(json.dumps(out, indent=1) + "\n")
     fails = sorted((st for st in stats if not st["pass"]), key=lambda st: -st["max_err_m"] / st["criterion_m"])
     lines = ["## On das3's own simulated motions", "",
-             f"`{out['command']}` ({out['seconds']['total']:.0f} s on this machine). The fit's region "
+             f"`{out['command']}` ({out['seconds']['total']:.0f} s on this machine"
+             + (", its OpenSim samples cached in build/" if out['seconds']['total'] - t_sim < 5 else "") + "). The fit's region "
              "was a kinematic stand-in for the girdle's motion (above); these poses come from das3 itself: "
              f"{len(PROTOCOLS)} excitation ramps from the settled arm (shoulder abduction and flexion, the girdle "
              f"muscles alone, elbow and forearm) and {RANDOM_RUNS} seeded random excitations, 2 s each, ROS2 at "
@@ -154,8 +155,9 @@ def main(argv=None) -> int:
              f"{int(inside.sum())} of the {len(traj)} poses lie inside the kinematic region's box (the model's DOF "
              "ranges): the simulated girdle lies outside it in " + ", ".join(
                  f"{k} ({100 * v:.0f} % of poses)" for k, v in outside_by_dof.items() if v > 0.01)
-             + ". The first fit never saw such poses; the refit below adds poses of other simulated runs (not these) "
-             "to its region.", "",
+             + ". The first fit never saw such poses. The refit below trains on the same five protocols at full level "
+             "(so those runs are not held out here) and on other random runs: these six random runs it never saw. "
+             "Its own held-out runs are in its section.", "",
              "Span of the scored poses (deg): " + ", ".join(f"{k} {v[0]:.0f} to {v[1]:.0f}" for k, v in span.items()) + ".",
              "",
              f"- **{n_pass} of {len(stats)} elements meet the criterion at every scored pose**; element-poses over "

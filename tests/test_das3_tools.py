@@ -458,8 +458,13 @@ def test_batch_of_das3_arms_matches_a_lone_arm():
         assert out_b[k].shape == (2,) + np.shape(out_a[k]), k
         np.testing.assert_array_equal(out_b[k][0], out_a[k], err_msg=k)
     assert np.all(out_b["conoid_tension"] > 0) and np.all(np.abs(out_b["contact_distance"]) < 0.02)
-    # a model with a fixed girdle has none
-    assert "contact_distance" not in armrt.ArmBatch(1, threads=1).outputs()
+    for k in ("girdle_torque", "contact_distance", "contact_force", "conoid_length", "conoid_tension"):
+        np.testing.assert_array_equal(getattr(batch, k), out_b[k], err_msg=k)   # the live view, same values
+    # a model with a fixed girdle has none, and says why
+    das2 = armrt.ArmBatch(1, threads=1)
+    assert "contact_distance" not in das2.outputs()
+    with pytest.raises(AttributeError, match="model das2 has no moving girdle"):
+        das2.contact_distance
 
 
 def test_gym_envs_run_das3_with_the_girdle_at_rest_to_start():
@@ -503,7 +508,9 @@ def test_cli_info_and_simulate_das3(tmp_path, capsys):
 def test_cli_simulate_settle_starts_from_the_relaxed_arm(capsys):
     """`armrt simulate --settle` starts from Arm.settle()'s state: no start-up jolt from equilibrium.mat."""
     from armrt.cli import main
-    assert main(["simulate", "--model", "das3", "--duration", "0.05", "--no-progress", "--settle", "0.5"]) == 0
+    # the excitation after --settle is not taken as its duration
+    assert main(["simulate", "--model", "das3", "--duration", "0.05", "--no-progress", "--settle",
+                 "elbow_flexors=0.0", "--settle-duration", "0.5"]) == 0
     out = capsys.readouterr().out
     assert "settled for 0.5 s with no excitation" in out
     arm = armrt.Arm(model="das3")
@@ -513,3 +520,11 @@ def test_cli_simulate_settle_starts_from_the_relaxed_arm(capsys):
     start = {ln.split()[0]: float(ln.split()[1]) for ln in out.splitlines() if ln.split() and ln.split()[0] in settled}
     assert len(start) == 11 and all(abs(start[k] - settled[k]) < 0.01 for k in start)
     assert abs(start["ELx"] - rest["ELx"]) > 1.0  # the elbow's sag from equilibrium.mat has begun
+
+
+@pytest.mark.parametrize("value", ["-1", "nan", "inf"])
+def test_cli_settle_duration_errors_name_the_option(value, capsys):
+    from armrt.cli import main
+    assert main(["simulate", "--model", "das3", "--settle", "--settle-duration", value, "--no-progress"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--settle-duration must be a finite number of seconds >= 0" in err[0], err

@@ -885,7 +885,9 @@ class Arm:
     def outputs(self) -> dict:
         """Outputs at the current state: qddot, muscle_force (N), muscle_length (m), moment_arm
         (n x ndof, m), fibre_velocity, torques, hand_position (thorax frame), gh_force (scapula frame),
-        gh_theta, gh_phi, gh_stab."""
+        gh_theta, gh_phi, gh_stab; and the girdle stage's girdle_torque (ndof,) N m, contact_distance
+        and contact_force (contact points: TS, AI) m and N, conoid_length m, conoid_tension N (only for a
+        model whose scapula moves, such as das3)."""
         with self._exclusive():
             self._sim.evaluate_outputs()
             return self._sim.outputs()

@@ -339,6 +339,22 @@ class ArmBatch:
     muscle_length = property(lambda self: self._views["muscle_length"], doc="(n, elements) m, muscle-tendon lengths")
     qddot = property(lambda self: self._views["qddot"], doc="(n, dofs) rad/s^2")
 
+    def _girdle_view(self, name: str) -> np.ndarray:
+        if name not in self._views:
+            raise AttributeError(f"ArmBatch.{name}: model {self.info['name']} has no moving girdle "
+                                 "(the girdle outputs are for models whose scapula moves, such as das3)")
+        return self._views[name]
+
+    girdle_torque = property(lambda self: self._girdle_view("girdle_torque"),
+                             doc="(n, dofs) N m, generalised forces of the thorax contact and the conoid (das3)")
+    contact_distance = property(lambda self: self._girdle_view("contact_distance"),
+                                doc="(n, contact points) m, signed distance of TS, AI from the thorax surface, "
+                                    "negative inside (das3)")
+    contact_force = property(lambda self: self._girdle_view("contact_force"),
+                             doc="(n, contact points) N, magnitude of each contact force (das3)")
+    conoid_length = property(lambda self: self._girdle_view("conoid_length"), doc="(n,) m, conoid ligament (das3)")
+    conoid_tension = property(lambda self: self._girdle_view("conoid_tension"), doc="(n,) N, conoid tension (das3)")
+
     def __len__(self) -> int:
         return self.n
 

@@ -82,13 +82,15 @@ def start_posture(args, arm) -> np.ndarray | None:
 def cmd_simulate(args) -> int:
     from .arm import Arm
     check_suffix(args.out, (".npz",), "--out")
+    if not (np.isfinite(args.settle_duration) and args.settle_duration >= 0):
+        raise CliError(f"--settle-duration must be a finite number of seconds >= 0, got {args.settle_duration:g}")
     excitation = parse_assignments(args.excitation)
     arm = Arm(model=args.model, integrator=args.integrator, dt=args.dt)
     arm.reset(q=start_posture(args, arm))
     arm.set_excitation(excitation)  # unknown names fail here, before any work
-    if args.settle is not None:
-        arm.settle(args.settle)
-        print(f"settled for {args.settle:g} s with no excitation")
+    if args.settle:
+        arm.settle(args.settle_duration)
+        print(f"settled for {args.settle_duration:g} s with no excitation")
     res = arm.simulate(excitation, duration=args.duration, record_every=args.record_every,
                        progress=None if args.progress else False)
     q0, q1 = np.degrees(res.q[0]), np.degrees(res.q[-1])
@@ -193,10 +195,12 @@ def build_parser() -> argparse.ArgumentParser:
     q.add_argument("--q-mot", metavar="FILE.mot", help="initial joint angles from an OpenSim motion file")
     p.add_argument("--q-mot-time", type=float, default=None, metavar="S",
                    help="time in --q-mot to start from, s (default: its first row)")
-    p.add_argument("--settle", type=float, nargs="?", const=3.0, default=None, metavar="S",
-                   help="first relax the arm from the start posture for S s (default 3) with no excitation "
-                        "(Arm.settle): das3's rest posture, DAS3's equilibrium.mat, is not its equilibrium, and "
-                        "without this the run starts with that transient")
+    p.add_argument("--settle", action="store_true",
+                   help="first relax the arm from the start posture with no excitation (Arm.settle, "
+                        "--settle-duration s): das3's rest posture, DAS3's equilibrium.mat, is not its equilibrium, "
+                        "and without this the run starts with that transient")
+    p.add_argument("--settle-duration", type=float, default=3.0, metavar="S",
+                   help="seconds of --settle (>= 0)")
     p.add_argument("--no-progress", dest="progress", action="store_false",
                    help="no progress bar (shown on a terminal for runs longer than 1 s)")
     p.add_argument("-o", "--out", metavar="FILE.npz", help="save the result (.npz)")
