@@ -1,8 +1,8 @@
 // Eight-double vectors (GCC/Clang vector extension; one AVX-512 register, two AVX2 ones) for the engine's
 // loops over a model's DOFs when there are more than 8 of them (das3: 11). A DOF-indexed row of up to 16
 // values is held as two of them, lo (DOFs 0-7) and hi (8-15), so an n x n accumulator of rows stays in
-// registers where a scalar loop over 11 columns kept it in memory (armrt_bench: the Schur stiffness
-// of das3 was 14 % of a ROS2 step).
+// registers where a scalar loop over 11 columns kept it in memory (perf on a loop of das3 ROS2 steps:
+// the Schur stiffness was 14 % of the step).
 #pragma once
 
 #include <cstring>
