@@ -94,6 +94,10 @@ void muscle_dynamics(const Model& m, const double* excitation, const double* mus
       jac->dvel_dL[i] = der.dvel_dL;
       jac->dvel_dlce[i] = der.dvel_dlce;
       jac->dvel_da[i] = der.dvel_da;
+      jac->force_length[i] = der.force_length;
+      jac->lce_along[i] = der.lce_along;
+      jac->pee_force[i] = der.pee_force;
+      jac->compress_force[i] = der.compress_force;
     }
   }
   generalised_force(moment_arm, force, n, m.num_dofs, tau);

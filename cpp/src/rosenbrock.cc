@@ -245,16 +245,16 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
     // compressive element's, plus the damper's drag b v where a lengthening muscle-tendon unit pulls
     // the fibre along at v = dL/dt cos(pennation). Without the drag a relaxed fibre's operating point is
     // the slack kink itself, where the tendon has no stiffness.
+    // f(lce), lce cos(pennation) and the passive fibre forces are the stage's own (forward() at this x
+    // stored them in jac: the same values, not recomputed).
     const double lce = lce_x[i] > mc.min_lce[i] ? lce_x[i] : mc.min_lce[i];
-    const double xfl = (lce * mc.inv_lceopt[i] - 1.0) * (1.0 / kForceLengthWidth);
-    const double F0 = a_next * mc.fmax[i] * exp_nonpositive(-xfl * xfl);
+    const double F0 = a_next * mc.fmax[i] * jac.force_length[i];
     const double th2 = mc.thickness[i] * mc.thickness[i];
-    const double lce_along = std::sqrt(lce * lce - th2);
+    const double lce_along = jac.lce_along[i];
     const double cos_pen = lce_along / lce;
     const double v_drag = L_rate[i] > 0.0 ? L_rate[i] * cos_pen : 0.0;
     const double b_drag = b0 + damping_floor(mc.damping_slope[i], F0 / mc.fmax[i]);
-    const double fibre_force = F0 + b_drag * v_drag + pee_force(mc.k_pee[i], mc.pee_slack[i], lce) -
-                               compressive_force(mc.k_compress[i], mc.compress_length[i], lce);
+    const double fibre_force = F0 + b_drag * v_drag + jac.pee_force[i] - jac.compress_force[i];
     const double F_op = (fibre_force > 0.0 ? fibre_force : 0.0) * cos_pen;
     const double s_op = see_stretch_at_force(mc.k_see[i], F_op);
     const double along_op_raw = L_next - mc.lslack[i] - s_op;

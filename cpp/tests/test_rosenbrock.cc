@@ -283,6 +283,26 @@ TEST_CASE("das3: the Schur-complement solve (lane-pair stiffness and solves, gir
   check_schur_solve(*sim);
 }
 
+TEST_CASE("forward() with a Jacobian leaves the kernel's lce-only terms for the overshoot limiter") {
+  auto sim = moving_state();
+  const Model& m = sim->model;
+  Data& d = sim->data;
+  StateVec f{};
+  forward(m, d, d.x.data(), f.data(), false, &d.jac);
+  const MuscleArrays& mc = m.muscles;
+  for (int i = 0; i < m.num_elements; ++i) {
+    const double lce_x = d.x[kLce + i];
+    const double lce = lce_x > mc.min_lce[i] ? lce_x : mc.min_lce[i];
+    const double xfl = (lce * mc.inv_lceopt[i] - 1.0) / kForceLengthWidth;
+    CAPTURE(i);
+    CHECK(d.jac.force_length[i] == doctest::Approx(std::exp(-xfl * xfl)).epsilon(1e-14));
+    CHECK(d.jac.lce_along[i] == doctest::Approx(std::sqrt(lce * lce - mc.thickness[i] * mc.thickness[i])).epsilon(1e-14));
+    CHECK(d.jac.pee_force[i] == doctest::Approx(pee_force(mc.k_pee[i], mc.pee_slack[i], lce)).epsilon(1e-14).scale(1e-9));
+    CHECK(d.jac.compress_force[i] ==
+          doctest::Approx(compressive_force(mc.k_compress[i], mc.compress_length[i], lce)).epsilon(1e-14).scale(1e-9));
+  }
+}
+
 TEST_CASE("solve_spd: the Cholesky solve for 1-16 DOFs equals Eigen's LLT on mass-matrix-like systems") {
   // Well and badly scaled SPD matrices (das3's mass matrix spans ~1e-4 to ~1 kg m^2 on its diagonal).
   std::mt19937_64 rng(11);

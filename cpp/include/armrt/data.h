@@ -45,6 +45,11 @@ struct StepJacobian {
   std::array<double, kMaxElements> dvel_dlce{};    // 1/s, CE velocity vs CE length
   std::array<double, kMaxElements> dvel_da{};      // m/s, CE velocity vs activation
   std::array<double, kMaxElements> act_rate{};     // 1/s, -d(activation rate)/d(activation) = c1 u + c2
+  // The kernel's lce-only terms at this state (MuscleDerivatives), for limit_fibre_overshoot.
+  std::array<double, kMaxElements> force_length{};    // f(lce)
+  std::array<double, kMaxElements> lce_along{};       // m, lce cos(pennation)
+  std::array<double, kMaxElements> pee_force{};       // N
+  std::array<double, kMaxElements> compress_force{};  // N
   std::array<double, kMaxElements> muscle_length{};          // m
   std::array<double, kMaxElements * kMaxDofs> moment_arm{};  // m, [element][dof], row stride num_dofs
   std::array<double, kMaxDofs * kMaxDofs> mass_matrix{};     // kg m^2, num_dofs x num_dofs row-major

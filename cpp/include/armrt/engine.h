@@ -87,7 +87,8 @@ void jacobian_factor(const Model& m, StepJacobian& jac, double hg);
 // Solves (I - hg J) k = r for state-sized vectors r and k (distinct arrays).
 void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* k);
 // For every element whose CE would run through its operating point within a ROS2 step of h (s) (a
-// slack tendon engaging), stiffens d.jac's CE mode so that the step stops there (rosenbrock.cc).
+// slack tendon engaging), stiffens d.jac's CE mode so that the step stops there (rosenbrock.cc). Call it
+// after forward(m, d, x, xdot, ..., &d.jac) at the same x: it reads what that evaluation left in d.jac.
 void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const double* xdot, double h);
 // One ROS2 step of h (s) from d.x (no TET, no state check: step() adds both).
 void step_ros2(const Model& m, Data& d, double h, bool record);

@@ -19,6 +19,12 @@ struct MuscleDerivatives {
   double dvel_dL;       // 1/s
   double dvel_dlce;     // 1/s
   double dvel_da;       // m/s
+  // Terms of the same evaluation that depend on lce alone (at lce floored to min_lce), kept for the ROS2
+  // step's overshoot limiter, which needs them at this lce and would otherwise recompute them.
+  double force_length;  // f(lce), the active force-length factor (F0 = a fmax f)
+  double lce_along;     // m, lce cos(pennation)
+  double pee_force;     // N, parallel elastic element, along the fibre
+  double compress_force;  // N, fibre compressive element, along the fibre
 };
 
 // Damping the damper gains below kLowActivation (muscle.cc), N s/m: it tops the damper up to the CE's own
@@ -118,6 +124,10 @@ inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lsl
   der->dvel_dL = dF_dL * inv_D;
   der->dvel_dlce = (dF_dlce - via_F0 * dF0_dlce) * inv_D * on_floor;
   der->dvel_da = -via_F0 * dF0_da * inv_D;
+  der->force_length = fl;
+  der->lce_along = lce_along;
+  der->pee_force = f_pee;
+  der->compress_force = f_compress;
 }
 
 // The same element without derivatives: what forward() evaluates at every RK4 stage.
