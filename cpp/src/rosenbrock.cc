@@ -185,10 +185,8 @@ void jacobian_solve_n(const Model& m, StepJacobian& jac, const double* r, double
     // Each row's dot product with k_q as a lane pair and a tree sum (a running sum over 11 DOFs was a
     // chain of 11 dependent multiply-adds per element).
     using detail::v8d;
-    double kq16[16] = {};
-    for (int a = 0; a < nq; ++a) kq16[a] = kq[a];
     v8d kq_lo, kq_hi;
-    detail::load_row16(kq16, kq_lo, kq_hi);  // lanes past nq are zero, so the row's spill-over lanes add 0
+    detail::load_row(kq, nq, kq_lo, kq_hi);  // lanes past nq are zero, so the row's spill-over lanes add 0
     for (int i = 0; i < n; ++i) {
       v8d r_lo, r_hi;
       detail::load_row16(R + i * nq, r_lo, r_hi);
