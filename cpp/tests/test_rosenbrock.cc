@@ -297,9 +297,10 @@ TEST_CASE("forward() with a Jacobian leaves the kernel's lce-only terms for the 
     CAPTURE(i);
     CHECK(d.jac.force_length[i] == doctest::Approx(std::exp(-xfl * xfl)).epsilon(1e-14));
     CHECK(d.jac.lce_along[i] == doctest::Approx(std::sqrt(lce * lce - mc.thickness[i] * mc.thickness[i])).epsilon(1e-14));
-    CHECK(d.jac.pee_force[i] == doctest::Approx(pee_force(mc.k_pee[i], mc.pee_slack[i], lce)).epsilon(1e-14).scale(1e-9));
-    CHECK(d.jac.compress_force[i] ==
-          doctest::Approx(compressive_force(mc.k_compress[i], mc.compress_length[i], lce)).epsilon(1e-14).scale(1e-9));
+    // PEE quadratic beyond its slack length, compressive element quadratic below compress_length (muscle.cc)
+    const double stretch = std::max(lce - mc.pee_slack[i], 0.0), compression = std::max(mc.compress_length[i] - lce, 0.0);
+    CHECK(d.jac.pee_force[i] == doctest::Approx(mc.k_pee[i] * stretch * stretch).epsilon(1e-14).scale(1e-9));
+    CHECK(d.jac.compress_force[i] == doctest::Approx(mc.k_compress[i] * compression * compression).epsilon(1e-14).scale(1e-9));
   }
 }
 

@@ -141,18 +141,6 @@ inline void muscle_kernel(double fmax, double inv_lceopt, double lslack, double 
                             &unused);
 }
 
-// Force of the parallel elastic element (N) at CE length lce (m): quadratic beyond its slack length.
-inline double pee_force(double k_pee, double pee_slack, double lce) {
-  const double stretch = lce - pee_slack;
-  return stretch > 0 ? k_pee * stretch * stretch : 0.0;
-}
-
-// Force of the fibre compressive element (N) at CE length lce (m): quadratic below compress_length.
-inline double compressive_force(double k_compress, double compress_length, double lce) {
-  const double compression = compress_length - lce;
-  return compression > 0 ? k_compress * compression * compression : 0.0;
-}
-
 // Tendon stretch (m) beyond slack at which the quadratic SEE carries force F (N), F >= 0.
 inline double see_stretch_at_force(double k_see, double F) { return std::sqrt((F > 0 ? F : 0.0) / k_see); }
 
