@@ -80,17 +80,22 @@ class Lib:
         return L, F, dF.reshape(3, 3)
 
 
-@pytest.fixture(scope="module")
-def lib(tmp_path_factory):
+def build_harness(out) -> Lib:
+    """HARNESS compiled into folder out (a shared library over girdle_forces.h) and loaded; skips the
+    test without a C++ compiler."""
     cxx = shutil.which("g++") or shutil.which("c++")
     if cxx is None:
         pytest.skip("no C++ compiler (g++) on PATH")
-    out = tmp_path_factory.mktemp("girdle")
     (out / "h.cc").write_text(HARNESS)
     so = out / "libgirdle.so"
     subprocess.run([cxx, "-O2", "-std=c++17", "-Wall", "-Wextra", "-Werror", "-shared", "-fPIC",
                     f"-I{ROOT / 'cpp' / 'include'}", str(out / "h.cc"), "-o", str(so)], check=True)
     return Lib(so)
+
+
+@pytest.fixture(scope="module")
+def lib(tmp_path_factory):
+    return build_harness(tmp_path_factory.mktemp("girdle"))
 
 
 def surface_point(direction, f):

@@ -6,14 +6,10 @@ and acts on the dynamics as the generalised force J^T F (OpenSim's accelerations
 J by central differences of OpenSim's own point positions); compare_with_armrt on a short run."""
 from __future__ import annotations
 
-import shutil
-import subprocess
-
 import numpy as np
 import pytest
 
-from conftest import ROOT
-from test_girdle_forces import HARNESS, Lib
+from test_girdle_forces import build_harness
 
 osim = pytest.importorskip("opensim", reason="OpenSim not installed (pip install opensim)")
 bench = pytest.importorskip("bench.bench_opensim_das3")
@@ -21,15 +17,7 @@ bench = pytest.importorskip("bench.bench_opensim_das3")
 
 @pytest.fixture(scope="module")
 def lib(tmp_path_factory):
-    cxx = shutil.which("g++") or shutil.which("c++")
-    if cxx is None:
-        pytest.skip("no C++ compiler (g++) on PATH")
-    out = tmp_path_factory.mktemp("girdle_osim")
-    (out / "h.cc").write_text(HARNESS)
-    so = out / "libgirdle.so"
-    subprocess.run([cxx, "-O2", "-std=c++17", "-shared", "-fPIC", f"-I{ROOT / 'cpp' / 'include'}",
-                    str(out / "h.cc"), "-o", str(so)], check=True)
-    return Lib(so)
+    return build_harness(tmp_path_factory.mktemp("girdle_osim"))
 
 
 @pytest.fixture(scope="module")
