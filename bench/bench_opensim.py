@@ -185,6 +185,19 @@ def rms_deg(ta, qa, tb, qb, duration) -> dict:
             "rms_deg": float(np.sqrt((diff ** 2).mean())), "max_abs_deg": float(np.abs(diff).max())}
 
 
+def opensim_ready(prog: str, osim_path: Path) -> bool:
+    """True if opensim imports and the model file exists; otherwise says which is missing on stderr."""
+    try:
+        import opensim  # noqa: F401
+    except ImportError as exc:
+        print(f"{prog}: opensim not importable ({exc}); pip install opensim", file=sys.stderr)
+        return False
+    if not osim_path.exists():
+        print(f"{prog}: {osim_path} not found (needs ../shared/reference)", file=sys.stderr)
+        return False
+    return True
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--duration", type=float, default=1.0, help="simulated seconds (both sides)")
@@ -196,13 +209,7 @@ def main(argv=None) -> int:
     args = ap.parse_args(argv)
     if args.quick:
         args.duration, args.reps, args.osim_reps = 0.1, 1, 1
-    try:
-        import opensim  # noqa: F401
-    except ImportError as exc:
-        print(f"bench_opensim: opensim not importable ({exc}); pip install opensim", file=sys.stderr)
-        return 2
-    if not args.osim.exists():
-        print(f"bench_opensim: {args.osim} not found (needs ../shared/reference)", file=sys.stderr)
+    if not opensim_ready("bench_opensim", args.osim):
         return 2
     model = model_file()
     dur = args.duration

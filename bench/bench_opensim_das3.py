@@ -492,13 +492,8 @@ def main(argv=None) -> int:
     args = ap.parse_args(argv)
     if args.quick:
         args.duration, args.reps = 0.02, 1
-    try:
-        import opensim  # noqa: F401
-    except ImportError as exc:
-        print(f"bench_opensim_das3: opensim not importable ({exc}); pip install opensim", file=sys.stderr)
-        return 2
-    if not args.osim.exists():
-        print(f"bench_opensim_das3: {args.osim} not found (needs ../shared/reference)", file=sys.stderr)
+    from bench.bench_opensim import opensim_ready
+    if not opensim_ready("bench_opensim_das3", args.osim):
         return 2
     if args.stability:
         print(json.dumps(fixed_step_stability(), indent=1))
