@@ -592,8 +592,9 @@ def paths_source(model: dict, ns: str) -> str:
         pending.append(parent)
     order = sorted(tree, key=lambda m: (sum(m), m))
     if NDOF > 7:
-        out.append(_blocked_paths(els, lengths, dof_index, order, tree, NDOF))
-        return _paths_file(ns, out, els, dof_index, NDOF, 8)
+        crossed_dofs = [[dof_index[d] for d in e["dofs"]] for e in els]
+        out.append(_grouped_paths(crossed_dofs, lengths, order, tree, NDOF))
+        return _paths_file(ns, out, els, dof_index, NDOF, 4)
     gname = {(0,) * NDOF: "g_one"}
     pname = {(0,) * NDOF: "1.0"}
     for k, m in enumerate(order):
@@ -626,97 +627,90 @@ def paths_source(model: dict, ns: str) -> str:
     return _paths_file(ns, out, els, dof_index, NDOF, W)
 
 
-def _split_point(els, dof_index, NDOF):
-    """k such that DOFs [0, k) and [k, NDOF) each fit one 8-lane block with the value lane and the fewest
-    (element, block) pairs are needed (das3: k = 6, the girdle from the arm)."""
-    best = None
-    for k in range(max(1, NDOF - 7), min(7, NDOF - 1) + 1):
-        pairs = sum(any(dof_index[d] < k for d in e["dofs"]) + any(dof_index[d] >= k for d in e["dofs"]) for e in els)
-        if best is None or pairs < best[0]:
-            best = (pairs, k)
-    return best[1]
+GROUP_SIZE = 3  # DOFs per 4-lane vector in _grouped_paths: three moment-arm lanes and a length lane
 
 
-def _blocked_paths(els, lengths, dof_index, order, tree, NDOF):
-    """muscle_paths for more than 7 DOFs: two 8-lane blocks instead of one 16-lane vector. Block 0 holds
-    -dm/dq for DOFs [0, k) and m, block 1 those of [k, NDOF) and m again; an element whose DOFs all lie in
-    one block sums that block only (das3: the girdle-only and the arm-only elements), so most terms cost
-    one 8-wide multiply-add instead of a 16-wide one. An element in both blocks skips, per block, the
-    terms that only add to a value lane it does not read (below). Sums are ordered differently from the
-    one-vector form: results differ by rounding only."""
-    k = _split_point(els, dof_index, NDOF)
-    sizes = [k, NDOF - k]
-    lane = [(0, j) if j < k else (1, j - k) for j in range(NDOF)]
-    lines = []
-    for b in range(2):
-        lines.append(f"  const v8d g_one_{b} = {{" + ", ".join(["0.0"] * sizes[b] + ["1.0"] + ["0.0"] * (7 - sizes[b])) + "};")
+def _grouped_paths(crossed_dofs, lengths, order, tree, NDOF):
+    """muscle_paths for more than 7 DOFs: the DOFs in groups of three (das3: SC, AC, GH, elbow and forearm),
+    each group one 4-lane vector [-dm/dq of its DOFs, m]. A monomial m carries a vector only for the groups
+    of the DOFs it contains, so a term c m costs one 4-wide multiply-add per such group (1.3 on average for
+    das3) instead of an 8- or 16-wide one over lanes that are mostly zero (perf: the multiply-adds set the
+    cost of the paths). m itself is summed in the length lane of one group only, its home, the first of its
+    groups, so that an element's length is the sum of its groups' length lanes; a constant term goes to the
+    element's first group. Sums are ordered differently from the one-vector form: results differ by
+    rounding only."""
+    group = [j // GROUP_SIZE for j in range(NDOF)]
+    n_groups = group[-1] + 1
+    sizes = [sum(1 for j in range(NDOF) if group[j] == b) for b in range(n_groups)]
+    VAL = GROUP_SIZE  # the length lane
+
+    def groups_of(m):
+        return sorted({group[j] for j in range(NDOF) if m[j]})
+
+    lines = [f"  const v4d e_len = {{0.0, 0.0, 0.0, 1.0}};"]
     for j in range(NDOF):
-        b, l = lane[j]
-        lines.append(f"  const v8d e{j} = {{" + ", ".join("1.0" if x == l else "0.0" for x in range(8)) + "};")
-    gname = {(0,) * NDOF: ["g_one_0", "g_one_1"]}
+        lane = j - GROUP_SIZE * group[j]
+        lines.append(f"  const v4d e{j} = {{" + ", ".join("1.0" if x == lane else "0.0" for x in range(4)) + "};")
     pname = {(0,) * NDOF: "1.0"}
     for n, m in enumerate(order):
-        gname[m], pname[m] = [f"g{n}_0", f"g{n}_1"], f"p{n}"
-    parents = {tree[m][1] for m in order}
-
-    def touches(m, b):
-        return any(m[j] and lane[j][0] == b for j in range(NDOF))
-
-    def element_blocks(e):
-        return [b for b in range(2) if any(lane[dof_index[d]][0] == b for d in e["dofs"])]
-
-    # An element in both blocks reads its value (the length) from its home block, the first. A term whose
-    # monomial has none of a block's DOFs adds to that block's value lane only: in the home block it is
-    # summed as a scalar c m (so its monomial's vector there is not needed), in the other block it is
-    # dropped, since that lane is never read (about 7 % of das3's multiply-adds).
-    scalar_terms = {}
-    for i, (e, t) in enumerate(zip(els, lengths)):
-        blocks = element_blocks(e)
-        if len(blocks) == 2:
-            scalar_terms[i] = [(c, m) for c, m in t if c != 0.0 and any(m) and not touches(m, blocks[0])]
-    need_p = {m for terms in scalar_terms.values() for c, m in terms}
+        pname[m] = f"p{n}"
+    gname = {}
     qs = set()
+    # Scalar monomials first (every vector below may need its own or its parent's), then the vectors:
+    # for m = q_j m' and a group b of m,
+    #   b a group of m':  G_b(m) = q_j G_b(m') - [j in b] m' e_j, its length lane q_j m' moved out of b if b is
+    #                     home for m' but not for m (j's group comes first), or into b if the reverse;
+    #   b only j's group: G_b(m) = -m' e_j (+ m e_len if b is home for m).
     for m in order:
         j, parent = tree[m]
         qs.add(j)
-        if m in parents or m in need_p:
-            lines.append(f"  const double {pname[m]} = " + (f"q{j}*{pname[parent]};" if any(parent) else f"q{j};"))
-        for b in range(2):
-            own = lane[j][0] == b
-            if any(parent):
-                rhs = f"q{j}*{gname[parent][b]}" + (f" - {pname[parent]}*e{j}" if own else "")
-            else:
-                rhs = f"q{j}*g_one_{b}" + (f" - e{j}" if own else "")
-            lines.append(f"  const v8d {gname[m][b]} = {rhs};")
+        lines.append(f"  const double {pname[m]} = " + (f"q{j}*{pname[parent]};" if any(parent) else f"q{j};"))
+    for n, m in enumerate(order):
+        j, parent = tree[m]
+        gm, gp = groups_of(m), groups_of(parent)
+        home_m, home_p = gm[0], (gp[0] if gp else None)
+        for b in gm:
+            name = f"g{n}_{b}"
+            gname[(m, b)] = name
+            terms = []
+            if b in gp:
+                terms.append(f"q{j}*{gname[(parent, b)]}")
+                if b == home_p and b != home_m:
+                    terms.append(f"- {pname[m]}*e_len")
+            elif b == home_m:
+                terms.append(f"{pname[m]}*e_len")
+            if group[j] == b:
+                terms.append(f"- {pname[parent]}*e{j}" if any(parent) else f"- e{j}")
+            expr = " ".join(terms)
+            if expr.startswith("- "):
+                expr = "-" + expr[2:]
+            lines.append(f"  const v4d {name} = {expr};")
     body = []
-    for i, (e, t) in enumerate(zip(els, lengths)):
-        blocks = element_blocks(e)
-        home = blocks[0]
+    for i, t in enumerate(lengths):
+        crossed = sorted({group[j] for j in crossed_dofs[i]})
         stmts = []
-        for b in blocks:
-            if len(blocks) == 1:
-                terms = [(c, m) for c, m in t if c != 0.0]
-            elif b == home:
-                terms = [(c, m) for c, m in t if c != 0.0 and (not any(m) or touches(m, b))]
-            else:
-                terms = [(c, m) for c, m in t if c != 0.0 and touches(m, b)]
-            parts = [f"{cxx.fmt(c)}*{gname[m][b]}" for c, m in terms]
-            halves = [" + ".join(parts[0::2]) or f"0.0*g_one_{b}", " + ".join(parts[1::2]) or f"0.0*g_one_{b}"]
-            scalar = [f"{cxx.fmt(c)}*{pname[m]}" for c, m in scalar_terms.get(i, [])] if b == home else []
-            tail = f" + ({' + '.join(scalar)})*g_one_{b}" if scalar else ""
-            stmts.append(f"const v8d a{b} = ({halves[0]}) + ({halves[1]}){tail};")
+        for b in crossed:
+            terms = [(c, m) for c, m in t if c != 0.0 and any(m) and b in groups_of(m)]
+            parts = [f"{cxx.fmt(c)}*{gname[(m, b)]}" for c, m in terms]
+            const = [c for c, m in t if c != 0.0 and not any(m)]
+            if b == crossed[0] and const:
+                parts.insert(0, f"{cxx.fmt(const[0])}*e_len")
+            halves = [" + ".join(parts[0::2]) or "v4d{}", " + ".join(parts[1::2]) or "v4d{}"]
+            stmts.append(f"const v4d a{b} = ({halves[0]}) + ({halves[1]});")
         out_lines = []
-        offset = [i * NDOF, i * NDOF + k]
-        for b in range(2):
-            if b in blocks:
-                out_lines.append(f"std::memcpy(moment_arm + {offset[b]}, &a{b}, {sizes[b]} * sizeof(double));")
+        for b in range(n_groups):
+            offset = i * NDOF + GROUP_SIZE * b
+            if b in crossed:
+                out_lines.append(f"std::memcpy(moment_arm + {offset}, &a{b}, {sizes[b]} * sizeof(double));")
             else:
-                out_lines.append(f"std::memset(moment_arm + {offset[b]}, 0, {sizes[b]} * sizeof(double));")
+                out_lines.append(f"std::memset(moment_arm + {offset}, 0, {sizes[b]} * sizeof(double));")
+        length = " + ".join(f"a{b}[{VAL}]" for b in crossed) if crossed else "0.0"
         body.append("  { " + " ".join(stmts))
-        body.append("    " + " ".join(out_lines) + f" L[{i}] = a{home}[{sizes[home]}]; }}")
+        body.append("    " + " ".join(out_lines) + f" L[{i}] = {length}; }}")
     head = [f"  const double q{j} = q[{j}];" for j in sorted(qs)] or ["  (void)q;"]
+    names = ", ".join(f"{b}: DOFs {GROUP_SIZE * b}..{GROUP_SIZE * b + sizes[b] - 1}" for b in range(n_groups))
     return ("void muscle_paths(const double* q, double* L, double* moment_arm) {\n"
-            f"  // DOFs 0..{k - 1} in block 0, {k}..{NDOF - 1} in block 1 (_blocked_paths).\n"
+            f"  // DOF groups (_grouped_paths) {names}.\n"
             + "\n".join(head + lines + body) + "\n}\n")
 
 
@@ -743,9 +737,7 @@ def _paths_file(ns, out, els, dof_index, NDOF, W):
     return ("#include <cmath>\n#include <cstring>\n\n#include \"" + ns + ".h\"\n\n"
             f"namespace armrt::generated::{ns} {{\n\n"
             + ("// Eight doubles, one SIMD register with AVX-512 (two with AVX2): a length and its moment arms.\n"
-               if NDOF <= 7 else "// Eight doubles, one SIMD register with AVX-512 (two with AVX2): one block of an "
-               "element's moment arms and its length.\n" if W == 8 else
-               "// Sixteen doubles (two AVX-512 registers): a length and its moment arms.\n")
+               if NDOF <= 7 else "// Four doubles, one AVX2 register: one group's moment arms and a length lane.\n")
             + f"using {vt} = double __attribute__((vector_size({8 * W})));\n\n" + "\n".join(out) + f"\n}}  // namespace armrt::generated::{ns}\n")
 
 
