@@ -3,7 +3,8 @@
 `python -m tests.regression_runs` rewrites tests/data/das2_trajectories.npz; do that only when the model's
 physics changes on purpose, and say why (the file keeps the reason given).
 History: forward_42b5e0e.npz (commit 42b5e0e) guarded the forward() speed-up; das2_trajectories.npz was
-made when issue 11 removed the 10 N/m linear tendon/PEE terms and added the fibre compressive element."""
+made when issue 11 removed the 10 N/m linear tendon/PEE terms and added the fibre compressive element, and
+rewritten when ROS2's second stage began to extrapolate its paths (only the ROS2 run moved: 4.7e-5 rad)."""
 from pathlib import Path
 
 import numpy as np

@@ -190,6 +190,38 @@ def test_set_state_continues_bit_for_bit(integrator):
         np.testing.assert_array_equal(getattr(first, k), getattr(again, k), err_msg=k)
 
 
+def test_state_carries_ros2_history():
+    """ROS2 extrapolates its second-stage paths from the moment arms at the previous step's start (docs/engine.md):
+    the State keeps that q so that a restore continues bit for bit; without it the continuation differs by one
+    extrapolation's error only."""
+    arm = armrt.Arm()
+    assert arm.get_state().previous_q is None and arm.get_state().previous_step == 0.0  # not reached by a step
+    arm.set_excitation({"elbow_flexors": 0.4, "deltoid": 0.2})
+    before = arm.q.copy()
+    arm.step(1)
+    s = arm.get_state()
+    np.testing.assert_array_equal(s.previous_q, before)
+    assert s.previous_step == 1e-3
+    arm.step(10)
+    s = arm.get_state()
+    ahead = arm.simulate(arm.excitation, duration=0.05)
+    bare = armrt.State(**{**s.as_dict(), "previous_q": None, "previous_step": 0.0})
+    assert bare != s
+    for state, exact in ((s, True), (bare, False)):
+        arm.set_state(state)
+        again = arm.simulate(arm.excitation, duration=0.05)
+        diff = np.abs(again.q - ahead.q).max()
+        assert (diff == 0.0) if exact else (0.0 < diff < 1e-6), diff
+    with pytest.raises(ValueError, match="previous_q must have shape"):
+        arm.set_state(armrt.State(**{**s.as_dict(), "previous_q": np.zeros(3)}))
+    with pytest.raises(ValueError, match="previous_step must be finite"):
+        arm.set_state(armrt.State(**{**s.as_dict(), "previous_step": -1.0}))
+    # Another integrator has no such memory.
+    rk4 = armrt.Arm(integrator="rk4")
+    rk4.step(3)
+    assert rk4.get_state().previous_q is None
+
+
 def test_set_state_refuses_another_model_and_bad_values(tmp_path):
     arm = armrt.Arm()
     s = arm.get_state()

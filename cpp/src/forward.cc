@@ -14,18 +14,22 @@
 namespace armrt {
 
 void forward(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac) {
-  const ModelDef& def = *m.def;
-  const int n = m.num_elements, nq = m.num_dofs;
-  const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
-  const double* q = x + iq;
-  const double* qd = x + iqd;
-
   // Paths. The Jacobian keeps the path geometry for the step's linear solves.
   double L_local[kMaxElements];
   double R_local[kMaxElements * kMaxDofs];
   double* L = jac ? jac->muscle_length.data() : L_local;
   double* R = jac ? jac->moment_arm.data() : R_local;
-  def.muscle_paths(q, L, R);
+  m.def->muscle_paths(x + q_offset(m), L, R);
+  forward_from_paths(m, d, x, L, R, xdot, record, jac);
+}
+
+void forward_from_paths(const Model& m, Data& d, const double* x, const double* L, const double* R, double* xdot,
+                        bool record, StepJacobian* jac) {
+  const ModelDef& def = *m.def;
+  const int n = m.num_elements, nq = m.num_dofs;
+  const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
+  const double* q = x + iq;
+  const double* qd = x + iqd;
 
   // Muscles.
   double force[kMaxElements];

@@ -17,6 +17,7 @@
 // the joints 6-16 deg off CVODE for a while; with it the error stays ~0.1-0.2 deg (docs/engine.md).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "armrt/engine.h"
 #include "armrt/muscle_kernel.h"
@@ -324,17 +325,79 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
 
 namespace {
 
+// The second stage's paths at q2 (= q_n + h k1_q) from the first stage's at q_n and the last step's moment
+// arms R_{n-1}, instead of the polynomials (a quarter of a das3 step's cost):
+//   R(q2) ~ 2 R_n - R_{n-1},    L(q2) ~ L_n - (R_n + R(q2))/2 . (q2 - q_n)    (R = -dL/dq)
+// q2 - q_n and q_n - q_{n-1} are both h qd + O(h^2), so both errors are O(h^2) (the length's O(h^3)): ROS2
+// stays second order, as with any O(h^2) error in its second derivative evaluation. Also keeps R_n as the
+// next step's R_{n-1}.
+template <int nq>
+void extrapolate_paths_n(const Model& m, Data& d, const double* q_n, const double* q2, double* L2, double* R2) {
+  const int n = m.num_elements;
+  const double* L_n = d.jac.muscle_length.data();
+  const double* R_n = d.jac.moment_arm.data();
+  double* R_prev = d.path_history.moment_arm.data();
+  double dq[nq];
+  for (int j = 0; j < nq; ++j) dq[j] = q2[j] - q_n[j];
+  if constexpr (nq < 8) {
+    for (int i = 0; i < n; ++i) {
+      const double* rn = R_n + i * nq;
+      double* rp = R_prev + i * nq;
+      double* r2 = R2 + i * nq;
+      double s = 0;
+      for (int j = 0; j < nq; ++j) {
+        const double e = 2.0 * rn[j] - rp[j];
+        r2[j] = e;
+        s += (rn[j] + e) * dq[j];
+        rp[j] = rn[j];
+      }
+      L2[i] = L_n[i] - 0.5 * s;
+    }
+  } else {
+    // Rows as lane pairs (lanes.h); the stores write the row's nq values only.
+    using detail::v8d;
+    v8d dq_lo, dq_hi;
+    detail::load_row(dq, nq, dq_lo, dq_hi);  // lanes past nq are zero: the spill-over lanes add 0
+    constexpr std::size_t hi_bytes = (nq - 8) * sizeof(double);
+    for (int i = 0; i < n; ++i) {
+      v8d rn_lo, rn_hi, rp_lo, rp_hi;
+      detail::load_row16(R_n + i * nq, rn_lo, rn_hi);
+      detail::load_row16(R_prev + i * nq, rp_lo, rp_hi);
+      const v8d e_lo = 2.0 * rn_lo - rp_lo, e_hi = 2.0 * rn_hi - rp_hi;
+      std::memcpy(R2 + i * nq, &e_lo, sizeof(v8d));
+      std::memcpy(R2 + i * nq + 8, &e_hi, hi_bytes);
+      std::memcpy(R_prev + i * nq, &rn_lo, sizeof(v8d));
+      std::memcpy(R_prev + i * nq + 8, &rn_hi, hi_bytes);
+      L2[i] = L_n[i] - 0.5 * detail::lane_sum((rn_lo + e_lo) * dq_lo + (rn_hi + e_hi) * dq_hi);
+    }
+  }
+}
+
 // One ROS2 step of h from d.x; leaves the two stage vectors in d.k2 (k1) and d.k4 (k2), x untouched.
 void ros2_stages(const Model& m, Data& d, double h, bool record) {
   const int ns = state_size(m);
   const double* x = d.x.data();
+  const bool extrapolate = ros2_continues_history(m, d, h);
   forward(m, d, x, d.k1.data(), record, &d.jac);
   limit_fibre_overshoot(m, d, x, d.k1.data(), h);
   jacobian_factor(m, d.jac, kRos2Gamma * h);
   jacobian_solve(m, d.jac, d.k1.data(), d.k2.data());
   double* xt = d.xtmp.data();
   for (int k = 0; k < ns; ++k) xt[k] = x[k] + h * d.k2[k];
-  forward(m, d, xt, d.k3.data(), false);
+  if (extrapolate) {
+    double L2[kMaxElements];
+    double R2[kMaxElements * kMaxDofs];
+    detail::dispatch_dofs(m.num_dofs, [&](auto N) {
+      extrapolate_paths_n<N>(m, d, x + q_offset(m), xt + q_offset(m), L2, R2);
+    });
+    forward_from_paths(m, d, xt, L2, R2, d.k3.data(), false);
+  } else {
+    forward(m, d, xt, d.k3.data(), false);
+    const int nr = m.num_elements * m.num_dofs;
+    std::copy(d.jac.moment_arm.begin(), d.jac.moment_arm.begin() + nr, d.path_history.moment_arm.begin());
+  }
+  std::copy(x + q_offset(m), x + q_offset(m) + m.num_dofs, d.path_history.q_start.begin());
+  d.path_history.h = 0;  // until ros2_update takes the step
   for (int k = 0; k < ns; ++k) d.k3[k] -= 2.0 * d.k2[k];
   jacobian_solve(m, d.jac, d.k3.data(), d.k4.data());
 }
@@ -357,9 +420,38 @@ double ros2_error_estimate(const Model& m, const Data& d, double h) {
 void ros2_update(const Model& m, Data& d, double h) {
   const int ns = state_size(m);
   for (int k = 0; k < ns; ++k) d.x[k] += h * (1.5 * d.k2[k] + 0.5 * d.k4[k]);
+  PathHistory& ph = d.path_history;
+  ph.h = h;
+  for (int j = 0; j < m.num_dofs; ++j) {
+    ph.q_end[j] = d.x[q_offset(m) + j];
+    ph.qd_end[j] = d.x[qd_offset(m) + j];
+  }
 }
 
 }  // namespace
+
+bool ros2_continues_history(const Model& m, const Data& d, double h) {
+  const PathHistory& ph = d.path_history;
+  if (ph.h != h || h <= 0) return false;
+  const int iq = q_offset(m), iqd = qd_offset(m);
+  bool same = true;
+  for (int j = 0; j < m.num_dofs; ++j) same &= d.x[iq + j] == ph.q_end[j] && d.x[iqd + j] == ph.qd_end[j];
+  return same;
+}
+
+void ros2_restore_history(const Model& m, Data& d, const double* q_start, double h) {
+  PathHistory& ph = d.path_history;
+  ph.h = 0;
+  if (!(h > 0)) return;
+  double L[kMaxElements];
+  m.def->muscle_paths(q_start, L, ph.moment_arm.data());
+  for (int j = 0; j < m.num_dofs; ++j) {
+    ph.q_start[j] = q_start[j];
+    ph.q_end[j] = d.x[q_offset(m) + j];
+    ph.qd_end[j] = d.x[qd_offset(m) + j];
+  }
+  ph.h = h;
+}
 
 void step_ros2(const Model& m, Data& d, double h, bool record) {
   ros2_stages(m, d, h, record);

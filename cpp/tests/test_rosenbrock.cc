@@ -391,4 +391,67 @@ TEST_CASE("ros2_adaptive: a rejected 2 ms step is redone from its start as two R
   CHECK(halved_at >= 0);
 }
 
+// A das3 arm moving its girdle and arm: n_steps ROS2 steps of h, the second stage's paths extrapolated
+// (the default) or, with fresh_paths, evaluated at every step (the history cleared before each one).
+std::unique_ptr<Simulator> das3_run(double h, double duration, bool fresh_paths) {
+  const ModelDef* def = find_model("das3");
+  REQUIRE(def);
+  auto sim = std::make_unique<Simulator>(*def, Integrator::kRos2, h);
+  for (const char* g : {"deltoid", "serratus_anterior", "elbow_flexors"}) armrt_test::set_group_excitation(*sim, g, 0.3);
+  const int n = static_cast<int>(std::lround(duration / h));
+  for (int k = 0; k < n; ++k) {
+    if (fresh_paths) sim->data.path_history.h = 0;
+    REQUIRE_MESSAGE(sim->step(), sim->error_message());
+  }
+  return sim;
+}
+
+double max_q_difference(const Simulator& a, const Simulator& b) {
+  double e = 0;
+  for (int j = 0; j < a.model.num_dofs; ++j) e = std::max(e, std::fabs(a.data.x[j] - b.data.x[j]));
+  return e;
+}
+
+TEST_CASE("das3: ROS2's extrapolated second-stage paths differ from evaluated ones by O(h^2) (4x per halving)") {
+  // The extrapolation's errors in R and L are O(h^2) and O(h^3) (rosenbrock.cc), so over a fixed time the
+  // trajectories with and without it part by O(h^2): ROS2 stays second order.
+  const double hs[3] = {2e-3, 1e-3, 5e-4};
+  double diff[3];
+  for (int k = 0; k < 3; ++k) diff[k] = max_q_difference(*das3_run(hs[k], 0.1, false), *das3_run(hs[k], 0.1, true));
+  MESSAGE("max |q| difference (rad) at h = 2, 1, 0.5 ms: " << diff[0] << " " << diff[1] << " " << diff[2]);
+  CHECK(diff[0] > 1e-12);
+  CHECK(diff[0] / diff[1] > 3.0);
+  CHECK(diff[1] / diff[2] > 3.0);
+  CHECK(diff[1] < 1e-4);  // 0.006 deg after 0.1 s of girdle and arm motion; ROS2's own error is ~1e-4 rad
+}
+
+TEST_CASE("a state restored with its ROS2 history continues bit for bit, one without it by one extrapolation's error") {
+  auto a = das3_run(1e-3, 0.05, false);
+  const PathHistory& ph = a->data.path_history;
+  REQUIRE(ros2_continues_history(a->model, a->data, 1e-3));
+  REQUIRE_FALSE(ros2_continues_history(a->model, a->data, 5e-4));  // another step size starts afresh
+  auto with = std::make_unique<Simulator>(*a->model.def, Integrator::kRos2, 1e-3);
+  auto without = std::make_unique<Simulator>(*a->model.def, Integrator::kRos2, 1e-3);
+  for (Simulator* s : {with.get(), without.get()}) {
+    s->data.x = a->data.x;
+    s->data.excitation = a->data.excitation;
+  }
+  ros2_restore_history(with->model, with->data, ph.q_start.data(), ph.h);
+  CHECK(ros2_continues_history(with->model, with->data, 1e-3));
+  CHECK_FALSE(ros2_continues_history(without->model, without->data, 1e-3));
+  for (int k = 0; k < 20; ++k) {
+    REQUIRE(a->step());
+    REQUIRE(with->step());
+    REQUIRE(without->step());
+  }
+  for (int s = 0; s < state_size(a->model); ++s) CHECK(with->data.x[s] == a->data.x[s]);
+  const double d = max_q_difference(*a, *without);
+  MESSAGE("20 steps from a state without its history: max |q| difference " << d << " rad");
+  CHECK(d > 0.0);
+  CHECK(d < 1e-7);
+  // A state changed from outside is not the one the history ended at: the next step evaluates afresh.
+  with->data.x[qd_offset(with->model)] += 1e-3;
+  CHECK_FALSE(ros2_continues_history(with->model, with->data, 1e-3));
+}
+
 }  // TEST_SUITE

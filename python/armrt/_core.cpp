@@ -243,6 +243,18 @@ PYBIND11_MODULE(_core, mod) {
         raise_if_failed(s);
       }, py::arg("n") = 1)
       .def("clear_error", [](Simulator& s) { s.data.status = Status::kOk; s.data.bad_index = -1; s.data.bad_contact = -1; })
+      // ROS2's memory (data.h PathHistory): (q the last step started at, its h) if the state is where that step
+      // ended, else None; and its restoration for a state restored from a snapshot.
+      .def("ros2_history", [](const Simulator& s) -> py::object {
+        const PathHistory& ph = s.data.path_history;
+        if (!ros2_continues_history(s.model, s.data, ph.h)) return py::none();
+        Array q(s.model.num_dofs);
+        std::copy(ph.q_start.begin(), ph.q_start.begin() + s.model.num_dofs, q.mutable_data());
+        return py::make_tuple(q, ph.h);
+      })
+      .def("restore_ros2_history", [](Simulator& s, const Array& q_start, double h) {
+        ros2_restore_history(s.model, s.data, checked(q_start, s.model.num_dofs, "previous_q"), h);
+      }, py::arg("q_start"), py::arg("h"))
       .def("evaluate_outputs", &Simulator::evaluate_outputs)
       .def("outputs", [](Simulator& s) {
         const int n = s.model.num_elements, nq = s.model.num_dofs;

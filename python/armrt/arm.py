@@ -698,7 +698,7 @@ class Arm:
                         strength=self._sim.get_strength(), max_activation=self._sim.get_max_activation(),
                         gravity=np.array(self._sim.gravity), max_joint_speed=self._sim.max_joint_speed)
         raw = (np.array(self._sim.state), self._sim.excitation.copy(), self._sim.hand_force.copy(),
-               self._sim.hand_moment.copy(), self._sim.time)
+               self._sim.hand_moment.copy(), self._sim.time, self._sim.ros2_history())
         return settings, raw
 
     @classmethod

@@ -22,7 +22,13 @@ from . import _core
 class State:
     """A snapshot of a simulated arm: everything its continuation depends on. Arrays are read-only copies.
     Restoring it (Arm.set_state / Data.set_state) and stepping gives bit for bit the trajectory the arm
-    had from that point (fixed-step integrators; CVODE restarts its history at a restored state)."""
+    had from that point (fixed-step integrators; CVODE restarts its history at a restored state).
+
+    previous_q and previous_step are ROS2's memory: the q (rad) the step that reached this state started from
+    and its size (s). Its second stage extrapolates the muscle paths from the moment arms there
+    (docs/engine.md); a restored State rebuilds them from previous_q. None and 0.0 (a State built by hand,
+    or not reached by a ROS2 step): the next step evaluates the paths afresh, so a run continued from it
+    differs from the original one by one extrapolation's error (das3: about 1e-7 rad after 20 steps)."""
 
     model: str                # model name
     source_hash: str          # SHA-256 of the model file: a State fits only the same model
@@ -34,22 +40,28 @@ class State:
     excitation: np.ndarray    # (n,) the held neural excitation in [0, 1]
     hand_force: np.ndarray    # (3,) N, thorax frame
     hand_moment: np.ndarray   # (3,) N m, thorax frame
+    previous_q: np.ndarray | None = None  # (ndof,) rad, q at the start of the ROS2 step that led here
+    previous_step: float = 0.0            # s, that step's size
 
     _ARRAYS = ("q", "qdot", "lce", "activation", "excitation", "hand_force", "hand_moment")
 
     def __post_init__(self):
-        for k in self._ARRAYS:
+        for k in self._ARRAYS + (("previous_q",) if self.previous_q is not None else ()):
             a = np.array(getattr(self, k), dtype=float)
             a.flags.writeable = False
             object.__setattr__(self, k, a)
         object.__setattr__(self, "time", float(self.time))
+        object.__setattr__(self, "previous_step", float(self.previous_step))
 
     def __eq__(self, other) -> bool:
         """Exactly equal (every bit of every value)."""
         if not isinstance(other, State):
             return NotImplemented
+        if (self.previous_q is None) != (other.previous_q is None) or self.previous_step != other.previous_step:
+            return False
         return (self.model, self.source_hash, self.time) == (other.model, other.source_hash, other.time) and all(
-            np.array_equal(getattr(self, k), getattr(other, k)) for k in self._ARRAYS)
+            np.array_equal(getattr(self, k), getattr(other, k))
+            for k in self._ARRAYS + (("previous_q",) if self.previous_q is not None else ()))
 
     __hash__ = None
 
@@ -104,7 +116,7 @@ class Data:
         sim.gravity = np.asarray(s.gravity, dtype=float)
         sim.max_joint_speed = s.max_joint_speed
         new = Data._wrap(self.model, sim)
-        new._load(np.array(s.state), s.excitation, s.hand_force, s.hand_moment, s.time)
+        new._load(np.array(s.state), s.excitation, s.hand_force, s.hand_moment, s.time, s.ros2_history())
         memo[id(self)] = new
         return new
 
@@ -157,11 +169,14 @@ class Data:
 
     # ------------------------------------------------------------------ snapshots
     def get_state(self) -> State:
-        """A State: time, q, qdot, lce, activation, excitation, hand force and moment (copies)."""
+        """A State: time, q, qdot, lce, activation, excitation, hand force and moment, and ROS2's memory
+        (previous_q, previous_step; None and 0.0 when the state was not reached by a ROS2 step) (copies)."""
+        history = self._sim.ros2_history()
+        previous_q, previous_step = history if history is not None else (None, 0.0)
         return State(model=self.model.name, source_hash=self.model.source_hash, time=self._sim.time,
                      q=self.q, qdot=self.qdot, lce=self.lce, activation=self.activation,
                      excitation=self._sim.excitation, hand_force=self._sim.hand_force,
-                     hand_moment=self._sim.hand_moment)
+                     hand_moment=self._sim.hand_moment, previous_q=previous_q, previous_step=previous_step)
 
     def set_state(self, state: State) -> None:
         """Restores a State taken from an arm of the same model (ValueError otherwise, or for arrays of
@@ -182,19 +197,32 @@ class Data:
                 raise ValueError(f"State.{k} contains NaN or infinite values")
         if not np.isfinite(state.time):
             raise ValueError(f"State.time must be finite, got {state.time}")
+        if state.previous_q is not None:
+            if state.previous_q.shape != (nd,):
+                raise ValueError(f"State.previous_q must have shape {(nd,)} or be None, got {state.previous_q.shape}")
+            if not np.all(np.isfinite(state.previous_q)):
+                raise ValueError("State.previous_q contains NaN or infinite values")
+        if not (np.isfinite(state.previous_step) and state.previous_step >= 0):
+            raise ValueError(f"State.previous_step must be finite and >= 0 (s), got {state.previous_step}")
         x = np.empty(self._sim.state.shape)
         for k, (o, n) in self.model.state_layout.items():
             x[o:o + n] = getattr(state, k)
-        self._load(x, state.excitation, state.hand_force, state.hand_moment, state.time)
+        history = (state.previous_q, state.previous_step) if state.previous_q is not None else None
+        self._load(x, state.excitation, state.hand_force, state.hand_moment, state.time, history)
 
-    def _load(self, x, excitation, hand_force, hand_moment, time: float) -> None:
-        """Writes a state as is (set_state validates first; Arm.__deepcopy__ copies a diverged state too)."""
+    def _load(self, x, excitation, hand_force, hand_moment, time: float, ros2_history=None) -> None:
+        """Writes a state as is (set_state validates first; Arm.__deepcopy__ copies a diverged state too);
+        ros2_history: (previous_q, previous_step) or None."""
         self._sim.state[:] = x
         self._sim.excitation[:] = excitation
         self._sim.hand_force[:] = hand_force
         self._sim.hand_moment[:] = hand_moment
         self._sim.time = time
         self._sim.clear_error()
+        if ros2_history is None:
+            self._sim.restore_ros2_history(np.zeros(self.model.n_dofs), 0.0)  # clears it
+        else:
+            self._sim.restore_ros2_history(np.asarray(ros2_history[0], dtype=float), float(ros2_history[1]))
         # CVODE keeps a history of past steps: start it afresh from the restored state.
         if self._sim.integrator == "cvode":
             self._sim.set_integrator("cvode", self._sim.dt, self._sim.substeps)

@@ -69,6 +69,18 @@ struct StepJacobian {
   std::array<double, kMaxElements> tmp{};               // scratch of one solve
 };
 
+// What ROS2's second stage extrapolates its paths from (rosenbrock.cc): the moment arms at the first stage
+// of the last step and the state that step ended at. A step continues that history only if it starts
+// from exactly that state with the same h; anything else (a reset, a state set from outside, another
+// step size) makes it evaluate the paths afresh.
+struct PathHistory {
+  std::array<double, kMaxElements * kMaxDofs> moment_arm{};  // m, R(q_start), [element][dof]
+  std::array<double, kMaxDofs> q_start{};  // rad, q the last step started at
+  std::array<double, kMaxDofs> q_end{};   // rad, q the last step ended at
+  std::array<double, kMaxDofs> qd_end{};  // rad/s, and qdot
+  double h = 0;                           // s, that step's size; 0: no history
+};
+
 // The girdle stage's outputs (girdle.cc), for models whose scapula moves.
 struct GirdleState {
   std::array<double, kMaxContactPoints> contact_distance{};  // m, first-order signed distance of TS, AI from
@@ -135,6 +147,7 @@ struct Data {
   // Integrator workspace.
   StateVec k1{}, k2{}, k3{}, k4{}, xtmp{};
   StepJacobian jac;  // linearly implicit steps (rosenbrock.cc)
+  PathHistory path_history;  // ROS2's second-stage paths (rosenbrock.cc)
 };
 
 void data_reset(const Model& m, Data& d, const double* q /* num_dofs or nullptr: rest posture */);

@@ -38,6 +38,10 @@ double muscle_equilibrium_lce(const ElementConstants& e, double fibre_damping, d
 // moment arms, qdd, hand position, GH force and stability); with a non-null jac also the parts of the
 // structured Jacobian at x (data.h StepJacobian), in the same pass over the elements.
 void forward(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac = nullptr);
+// forward() after its paths stage, with the muscle-tendon lengths L (m, num_elements) and moment arms R (m,
+// [element][dof]) at x's q given: for ROS2's second stage, whose paths are extrapolated (rosenbrock.cc).
+void forward_from_paths(const Model& m, Data& d, const double* x, const double* L, const double* R, double* xdot,
+                        bool record, StepJacobian* jac = nullptr);
 // muscles.cc. The muscle stage of forward(): activation dynamics and CE velocity of every element (a vectorised
 // loop), their tendon forces (N) and the generalised muscle forces tau = R^T F (N m).
 void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
@@ -90,8 +94,16 @@ void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* 
 // slack tendon engaging), stiffens d.jac's CE mode so that the step stops there (rosenbrock.cc). Call it
 // after forward(m, d, x, xdot, ..., &d.jac) at the same x: it reads what that evaluation left in d.jac.
 void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const double* xdot, double h);
-// One ROS2 step of h (s) from d.x (no TET, no state check: step() adds both).
+// One ROS2 step of h (s) from d.x (no TET, no state check: step() adds both). Its second stage extrapolates
+// the paths from d.path_history when the step continues it (data.h PathHistory).
 void step_ros2(const Model& m, Data& d, double h, bool record);
+// Whether the next ROS2 step of h from d.x continues d.path_history (the last step was of h and ended at d.x's
+// q and qdot).
+bool ros2_continues_history(const Model& m, const Data& d, double h);
+// Rebuilds d.path_history as a ROS2 step of h (s) that started at q_start (rad, num_dofs) and ended at d.x
+// would have left it (the paths at q_start are evaluated again, the same function of the same q), so that a
+// restored state continues bit for bit; h <= 0 clears it.
+void ros2_restore_history(const Model& m, Data& d, const double* q_start, double h);
 // One ROS2 step of h, redone as two steps of h/2 when the embedded error estimate exceeds the
 // tolerances (kRos2AdaptiveTol*). Returns the number of steps taken (1 or 2). Not for hard real time:
 // a halved step costs about three normal ones.
