@@ -64,6 +64,8 @@ void model_update_derived(Model& m) {
     a.pee_slack[i] = e.pee_slack, a.compress_length[i] = e.compress_length, a.k_compress[i] = e.k_compress;
     a.ecc_c[i] = e.ecc_c, a.damping_slope[i] = e.damping_slope, a.c1[i] = e.c1, a.c2[i] = e.c2;
     a.max_activation[i] = e.max_activation;
+    a.inv_k_see[i] = 1.0 / e.k_see;
+    a.inv_taut_stretch[i] = 1.0 / (0.1 * kTendonStrainAtFmax * e.lslack);
   }
   find_rest_fibre_rate(m);
 }

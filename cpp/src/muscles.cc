@@ -96,6 +96,8 @@ void muscle_dynamics(const Model& m, const double* excitation, const double* mus
       jac->dvel_da[i] = der.dvel_da;
       jac->force_length[i] = der.force_length;
       jac->lce_along[i] = der.lce_along;
+      jac->cos_pennation[i] = der.cos_pennation;
+      jac->inv_cos_pennation[i] = der.inv_cos_pennation;
       jac->pee_force[i] = der.pee_force;
       jac->compress_force[i] = der.compress_force;
     }

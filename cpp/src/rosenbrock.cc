@@ -206,6 +206,22 @@ void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* 
   detail::dispatch_dofs(m.num_dofs, [&](auto N) { jacobian_solve_n<N>(m, jac, r, k); });
 }
 
+namespace {
+
+// ROS2 on a scalar linear mode x' = lambda x + w moves by h w theta'(2 - theta'), theta' = 1/(1 - hg lambda):
+// sets *dvel_dlce to the lambda for which this is theta h w, the fraction theta of the step's drive that
+// reaches the operating point, if 0 < theta < 1 and that is stiffer. Returns 1 if it did.
+[[gnu::noinline]] int stiffen_to_operating_point(double theta, double hg, double* dvel_dlce) {
+  if (!(theta > 0.0 && theta < 1.0)) return 0;
+  const double theta_p = 1.0 - std::sqrt(1.0 - theta);
+  const double lambda = -(1.0 / theta_p - 1.0) / hg;
+  if (!(lambda < *dvel_dlce)) return 0;
+  *dvel_dlce = lambda;
+  return 1;
+}
+
+}  // namespace
+
 void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const double* xdot, double h) {
   StepJacobian& jac = d.jac;
   const MuscleArrays& mc = m.muscles;
@@ -232,8 +248,10 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
   double* dforce_dL = jac.dforce_dL.data();
   double* dforce_dlce = jac.dforce_dlce.data();
   double taut[kMaxElements], L_op[kMaxElements], lce_at_op[kMaxElements], a_op[kMaxElements];
+  // Where the CE may run through its operating point: the distance to it (m, 0 elsewhere) and the drive.
+  double op_gap[kMaxElements], op_disp[kMaxElements];
   int limited = 0;
-#pragma omp simd reduction(+ : limited)
+#pragma omp simd
   for (int i = 0; i < n; ++i) {
     const double L_now = jac.muscle_length[i];
     const double L_next = L_now + h * L_rate[i];
@@ -244,18 +262,19 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
     // compressive element's, plus the damper's drag b v where a lengthening muscle-tendon unit pulls
     // the fibre along at v = dL/dt cos(pennation). Without the drag a relaxed fibre's operating point is
     // the slack kink itself, where the tendon has no stiffness.
-    // f(lce), lce cos(pennation) and the passive fibre forces are the stage's own (forward() at this x
-    // stored them in jac: the same values, not recomputed).
-    const double lce = lce_x[i] > mc.min_lce[i] ? lce_x[i] : mc.min_lce[i];
-    const double F0 = a_next * mc.fmax[i] * jac.force_length[i];
+    // f(lce), cos(pennation) and the passive fibre forces are the stage's own (forward() at this x
+    // stored them in jac: the same values, not recomputed), and the loop has no division: each one cost
+    // as much as nine multiply-adds.
+    const double afl = a_next * jac.force_length[i];  // F0 / fmax
+    const double F0 = mc.fmax[i] * afl;
     const double th2 = mc.thickness[i] * mc.thickness[i];
     const double lce_along = jac.lce_along[i];
-    const double cos_pen = lce_along / lce;
+    const double cos_pen = jac.cos_pennation[i];
     const double v_drag = L_rate[i] > 0.0 ? L_rate[i] * cos_pen : 0.0;
-    const double b_drag = b0 + damping_floor(mc.damping_slope[i], F0 / mc.fmax[i]);
+    const double b_drag = b0 + damping_floor(mc.damping_slope[i], afl);
     const double fibre_force = F0 + b_drag * v_drag + jac.pee_force[i] - jac.compress_force[i];
     const double F_op = (fibre_force > 0.0 ? fibre_force : 0.0) * cos_pen;
-    const double s_op = see_stretch_at_force(mc.k_see[i], F_op);
+    const double s_op = std::sqrt(F_op * mc.inv_k_see[i]);  // the tendon's stretch at F_op: k_see s^2 = F_op
     const double along_op_raw = L_next - mc.lslack[i] - s_op;
     const double along_op = along_op_raw > mc.min_lce[i] ? along_op_raw : mc.min_lce[i];
     const double lce_op = std::sqrt(along_op * along_op + th2);
@@ -264,38 +283,36 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
     // from rest moves a slack CE through dv/da alone (v = 0 at a = 0).
     const double ka = a_rate[i] / (1.0 + hg * jac.act_rate[i]);
     const double disp = h * (lce_rate[i] + hg * dvel_da[i] * ka);
-    // Fraction theta of the step's displacement that reaches the operating point. Limited only from
-    // a slack tendon and where the CE is driven by its own active force (F0 > 5 % fmax): a taut
-    // tendon is followed by its own tangent stiffness, and a passive element's CE moves with the
+    // The fraction theta = gap / disp of the step's displacement that reaches the operating point is
+    // limited only from a slack tendon and where the CE is driven by its own active force (F0 > 5 % fmax):
+    // a taut tendon is followed by its own tangent stiffness, and a passive element's CE moves with the
     // muscle-tendon unit; stopping those at an estimated operating point biased the motion at every
-    // step size (measured: errors that did not shrink with the step).
+    // step size (measured: errors that did not shrink with the step). 0 < theta < 1 needs gap and disp of
+    // one sign and |gap| < |disp|: tested here without the division, taken below for the few that pass.
     const double stretch_now = L_now - lce_along - mc.lslack[i];
+    const double gap = lce_op - lce_x[i];
+    const bool within = gap * disp > 0.0 && std::fabs(gap) < std::fabs(disp);
+    const bool may_overshoot = stretch_now <= 0.0 && F0 > kEngagingActiveForce * mc.fmax[i] && within;
+    op_gap[i] = may_overshoot ? gap : 0.0;
+    op_disp[i] = disp;
     // The tendon's stretch at the end of the step from the unit's own motion ...
     const double stretch_pulled = stretch_now + h * L_rate[i];
     // ... or the CE's own shortening over the step (its drive disp, negative when shortening).
-    const double stretch_drawn = stretch_pulled - (disp < 0.0 ? disp : 0.0) / cos_pen;
+    const double stretch_drawn = stretch_pulled - (disp < 0.0 ? disp : 0.0) * jac.inv_cos_pennation[i];
     const double stretch_end = stretch_drawn > stretch_now ? stretch_drawn : stretch_now;
-    const double disp_safe = disp != 0.0 ? disp : 1.0;
-    const double theta = (lce_op - lce_x[i]) / disp_safe;
-    const bool overshoots = disp != 0.0 && stretch_now <= 0.0 && F0 > kEngagingActiveForce * mc.fmax[i] &&
-                            theta > 0.0 && theta < 1.0;
-    // ROS2 on a scalar linear mode x' = lambda x + w moves by h w theta'(2 - theta'),
-    // theta' = 1/(1 - hg lambda): choose lambda so that this equals theta h w.
-    const double theta_c = overshoots ? theta : 0.5;
-    const double theta_p = 1.0 - std::sqrt(1.0 - theta_c);
-    const double lambda = -(1.0 / theta_p - 1.0) / hg;
-    const bool stiffer = overshoots && lambda < dvel_dlce[i];
-    dvel_dlce[i] = stiffer ? lambda : dvel_dlce[i];
-    limited += stiffer ? 1 : 0;
     // Tautness weight of the loading rule below: 0 while the tendon is slack and neither the unit nor the
     // CE draws it taut within the step, 1 once it is (or will be) stretched by a tenth of its stretch at
     // fmax. Without the CE's part a fibre resting just slack, activated, ran 36 mm past the engagement.
-    const double taut_w = stretch_end / (0.1 * kTendonStrainAtFmax * mc.lslack[i]);
+    const double taut_w = stretch_end * mc.inv_taut_stretch[i];
     taut[i] = taut_w < 0.0 ? 0.0 : (taut_w > 1.0 ? 1.0 : taut_w);
     L_op[i] = L_next;
     lce_at_op[i] = lce_op;
     a_op[i] = a_next;
   }
+  // The elements whose CE runs through its operating point within the step: rare (a slack tendon
+  // engaging), so a scalar loop that calls out for them (a vectorised one did the divisions for all).
+  for (int i = 0; i < n; ++i)
+    if (op_gap[i] != 0.0) limited += stiffen_to_operating_point(op_gap[i] / op_disp[i], hg, &dvel_dlce[i]);
   // A taut tendon that will carry more force by the end of the step (activation rising) is stiffer
   // there than now (quadratic tendon): linearise at the operating point when that is stiffer. (A
   // separate loop: with the kernel inside the one above, GCC 12 gave up vectorising it.)

@@ -296,7 +296,10 @@ TEST_CASE("forward() with a Jacobian leaves the kernel's lce-only terms for the 
     const double xfl = (lce * mc.inv_lceopt[i] - 1.0) / kForceLengthWidth;
     CAPTURE(i);
     CHECK(d.jac.force_length[i] == doctest::Approx(std::exp(-xfl * xfl)).epsilon(1e-14));
-    CHECK(d.jac.lce_along[i] == doctest::Approx(std::sqrt(lce * lce - mc.thickness[i] * mc.thickness[i])).epsilon(1e-14));
+    const double lce_along = std::sqrt(lce * lce - mc.thickness[i] * mc.thickness[i]);
+    CHECK(d.jac.lce_along[i] == doctest::Approx(lce_along).epsilon(1e-14));
+    CHECK(d.jac.cos_pennation[i] == doctest::Approx(lce_along / lce).epsilon(1e-14));
+    CHECK(d.jac.inv_cos_pennation[i] == doctest::Approx(lce / lce_along).epsilon(1e-14));
     // PEE quadratic beyond its slack length, compressive element quadratic below compress_length (muscle.cc)
     const double stretch = std::max(lce - mc.pee_slack[i], 0.0), compression = std::max(mc.compress_length[i] - lce, 0.0);
     CHECK(d.jac.pee_force[i] == doctest::Approx(mc.k_pee[i] * stretch * stretch).epsilon(1e-14).scale(1e-9));

@@ -48,6 +48,8 @@ struct StepJacobian {
   // The kernel's lce-only terms at this state (MuscleDerivatives), for limit_fibre_overshoot.
   std::array<double, kMaxElements> force_length{};    // f(lce)
   std::array<double, kMaxElements> lce_along{};       // m, lce cos(pennation)
+  std::array<double, kMaxElements> cos_pennation{};   // lce_along / lce
+  std::array<double, kMaxElements> inv_cos_pennation{};  // lce / lce_along
   std::array<double, kMaxElements> pee_force{};       // N
   std::array<double, kMaxElements> compress_force{};  // N
   std::array<double, kMaxElements> muscle_length{};          // m

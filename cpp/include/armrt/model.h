@@ -75,6 +75,9 @@ struct ElementConstants {
 struct MuscleArrays {
   std::array<double, kMaxElements> fmax, inv_lceopt, lslack, thickness, min_lce, vmax, k_see, k_pee,
       pee_slack, compress_length, k_compress, ecc_c, damping_slope, c1, c2, max_activation;
+  // Reciprocals for the ROS2 overshoot limiter's loop (rosenbrock.cc), where divisions dominated:
+  std::array<double, kMaxElements> inv_k_see;        // 1/k_see, m^2/N
+  std::array<double, kMaxElements> inv_taut_stretch; // 1/m, 1 / (a tenth of the tendon's stretch at fmax)
 };
 
 struct Model {

@@ -23,6 +23,8 @@ struct MuscleDerivatives {
   // step's overshoot limiter, which needs them at this lce and would otherwise recompute them.
   double force_length;  // f(lce), the active force-length factor (F0 = a fmax f)
   double lce_along;     // m, lce cos(pennation)
+  double cos_pennation;      // lce_along / lce
+  double inv_cos_pennation;  // lce / lce_along
   double pee_force;     // N, parallel elastic element, along the fibre
   double compress_force;  // N, fibre compressive element, along the fibre
 };
@@ -56,9 +58,12 @@ inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lsl
   const bool above_floor = lce > min_lce;
   lce = above_floor ? lce : min_lce;
   // Fibre length projected on the tendon, lce cos(pennation) = sqrt(lce^2 - thickness^2): one square
-  // root and one division give it and 1/cos(pennation) (division and square root dominate the loop).
+  // root and one division give it, 1/lce_along and 1/lce, so cos(pennation) and its inverse (division and
+  // square root dominate the loop: one 8-wide division costs about nine multiply-adds on this machine).
   const double lce_along = std::sqrt(lce * lce - thickness * thickness);
-  const double inv_lce_along = 1.0 / lce_along;
+  const double inv_lce_lce_along = 1.0 / (lce * lce_along);
+  const double inv_lce_along = lce * inv_lce_lce_along;
+  const double inv_lce = lce_along * inv_lce_lce_along;
   const double inv_cos = lce * inv_lce_along;
   const double see_stretch = L - lce_along - lslack;
   const double see_pos = see_stretch > 0 ? see_stretch : 0.0;
@@ -101,7 +106,6 @@ inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lsl
   const double dfcompress = -2.0 * k_compress * compress_pos;  // d f_compress / d lce
   // d(lce cos)/dlce = 1/cos; d(1/cos)/dlce = -s^2 / (lce cos^3).
   const double dF_dL = dfsee * inv_cos;
-  const double inv_lce = 1.0 / lce;
   const double sin2_over_lce_cos = thickness * thickness * inv_lce * inv_lce * inv_lce_along;  // s^2 / (lce cos)
   const double dF_dlce = -inv_cos * inv_cos * (dfsee + f_see * sin2_over_lce_cos) - dfpee + dfcompress;
   const double dfl_dlce = -2.0 * xfl * fl * inv_lceopt * (1.0 / kForceLengthWidth);
@@ -112,11 +116,14 @@ inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lsl
   const double g_den = eccentric ? v + ecc_c : vmax - v * (1.0 / kHillA);
   const double g_num = eccentric ? kEccentricFmax * v + ecc_c : vmax + v;
   const double g_slope_num = eccentric ? (kEccentricFmax - 1.0) * ecc_c : vmax * (1.0 + 1.0 / kHillA);
-  const double inv_g_den = 1.0 / g_den;
+  // 1/g_den and 1/D, D = F0 g'(v) + b = P / g_den^2 with P = F0 g_slope_num + b g_den^2 > 0, from one
+  // division: 1/(g_den P).
+  const double P = F0 * g_slope_num + b * g_den * g_den;
+  const double inv_g_den_P = 1.0 / (g_den * P);
+  const double inv_g_den = P * inv_g_den_P;
   const double g = g_num * inv_g_den;
-  const double dg_dv = g_slope_num * inv_g_den * inv_g_den;
   const double db_dF0 = floor_active ? -damping_slope / fmax : 0.0;
-  const double inv_D = 1.0 / (F0 * dg_dv + b);
+  const double inv_D = g_den * g_den * g_den * inv_g_den_P;
   const double via_F0 = g + v * db_dF0;
   const double on_floor = above_floor ? 1.0 : 0.0;
   der->dforce_dL = dfsee;
@@ -126,6 +133,8 @@ inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lsl
   der->dvel_da = -via_F0 * dF0_da * inv_D;
   der->force_length = fl;
   der->lce_along = lce_along;
+  der->cos_pennation = lce_along * inv_lce;
+  der->inv_cos_pennation = inv_cos;
   der->pee_force = f_pee;
   der->compress_force = f_compress;
 }
@@ -140,8 +149,5 @@ inline void muscle_kernel(double fmax, double inv_lceopt, double lslack, double 
                             compress_length, k_compress, ecc_c, damping_slope, b0, L, lce, a, force, velocity,
                             &unused);
 }
-
-// Tendon stretch (m) beyond slack at which the quadratic SEE carries force F (N), F >= 0.
-inline double see_stretch_at_force(double k_see, double F) { return std::sqrt((F > 0 ? F : 0.0) / k_see); }
 
 }  // namespace armrt
