@@ -190,7 +190,7 @@ def test_set_state_continues_bit_for_bit(integrator):
         np.testing.assert_array_equal(getattr(first, k), getattr(again, k), err_msg=k)
 
 
-def test_state_carries_ros2_history():
+def test_state_carries_ros2_history(tmp_path):
     """ROS2 extrapolates its second-stage paths from the moment arms at the previous step's start (docs/engine.md):
     the State keeps that q so that a restore continues bit for bit; without it the continuation differs by one
     extrapolation's error only."""
@@ -216,6 +216,13 @@ def test_state_carries_ros2_history():
         arm.set_state(armrt.State(**{**s.as_dict(), "previous_q": np.zeros(3)}))
     with pytest.raises(ValueError, match="previous_step must be finite"):
         arm.set_state(armrt.State(**{**s.as_dict(), "previous_step": -1.0}))
+    # Through a file and back (State.as_dict's documented use), with and without the memory.
+    for state in (s, bare):
+        path = tmp_path / "state.npz"
+        np.savez(path, **state.as_dict())
+        with np.load(path) as f:  # no pickled objects in it
+            back = armrt.State(**{k: (f[k].item() if f[k].ndim == 0 else f[k]) for k in f.files})
+        assert back == state
     # Another integrator has no such memory.
     rk4 = armrt.Arm(integrator="rk4")
     rk4.step(3)

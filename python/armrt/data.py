@@ -46,6 +46,8 @@ class State:
     _ARRAYS = ("q", "qdot", "lce", "activation", "excitation", "hand_force", "hand_moment")
 
     def __post_init__(self):
+        if self.previous_q is not None and np.size(self.previous_q) == 0:
+            object.__setattr__(self, "previous_q", None)  # as_dict's stand-in for None (np.savez keeps it)
         for k in self._ARRAYS + (("previous_q",) if self.previous_q is not None else ()):
             a = np.array(getattr(self, k), dtype=float)
             a.flags.writeable = False
@@ -66,8 +68,12 @@ class State:
     __hash__ = None
 
     def as_dict(self) -> dict:
-        """Plain dict (e.g. for np.savez(**state.as_dict()); State(**d) rebuilds it)."""
-        return {f.name: getattr(self, f.name) for f in fields(self)}
+        """Plain dict (e.g. for np.savez(**state.as_dict()); State(**d) rebuilds it). A previous_q of None is
+        an empty array here, which np.savez stores without pickling and State() reads back as None."""
+        d = {f.name: getattr(self, f.name) for f in fields(self)}
+        if d["previous_q"] is None:
+            d["previous_q"] = np.empty(0)
+        return d
 
 
 class Data:
