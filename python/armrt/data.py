@@ -24,11 +24,18 @@ class State:
     Restoring it (Arm.set_state / Data.set_state) and stepping gives bit for bit the trajectory the arm
     had from that point (fixed-step integrators; CVODE restarts its history at a restored state).
 
-    previous_q and previous_step are ROS2's memory: the q (rad) the step that reached this state started from
-    and its size (s). Its second stage extrapolates the muscle paths from the moment arms there
-    (docs/engine.md); a restored State rebuilds them from previous_q. None and 0.0 (a State built by hand,
-    or not reached by a ROS2 step): the next step evaluates the paths afresh, so a run continued from it
-    differs from the original one by one extrapolation's error (das3: about 1e-7 rad after 20 steps)."""
+    Fields (ndof DOFs, n elements): model (name), source_hash (SHA-256 of the model file), time (s),
+    q (ndof,) rad, qdot (ndof,) rad/s, lce (n,) m (fibre lengths), activation (n,), excitation (n,) in
+    [0, 1], hand_force (3,) N and hand_moment (3,) N m (thorax frame), previous_q (ndof,) rad or None,
+    previous_step (s).
+
+    previous_q and previous_step are ROS2's memory: the q the integration step that reached this state
+    started from and that step's size, dt / substeps (a halved ros2_adaptive step's half). The next step's
+    second stage extrapolates the muscle paths from the moment arms there (docs/engine.md); a restored
+    State rebuilds them from previous_q. None and 0.0 (a State built by hand, or not reached by a ROS2
+    step): the next step evaluates the paths afresh, so a run continued from it differs from the original
+    one by one extrapolation's error (das3: about 1e-7 rad after 20 steps, up to 2e-6 rad in fast
+    transients)."""
 
     model: str                # model name
     source_hash: str          # SHA-256 of the model file: a State fits only the same model
@@ -46,6 +53,8 @@ class State:
     _ARRAYS = ("q", "qdot", "lce", "activation", "excitation", "hand_force", "hand_moment")
 
     def __post_init__(self):
+        for k in ("model", "source_hash"):  # np.load gives 0-d string arrays
+            object.__setattr__(self, k, str(getattr(self, k)))
         if self.previous_q is not None and np.size(self.previous_q) == 0:
             object.__setattr__(self, "previous_q", None)  # as_dict's stand-in for None (np.savez keeps it)
         for k in self._ARRAYS + (("previous_q",) if self.previous_q is not None else ()):
@@ -210,6 +219,15 @@ class Data:
                 raise ValueError("State.previous_q contains NaN or infinite values")
         if not (np.isfinite(state.previous_step) and state.previous_step >= 0):
             raise ValueError(f"State.previous_step must be finite and >= 0 (s), got {state.previous_step}")
+        if state.previous_q is not None and state.previous_step > 0:
+            # One step from previous_q to q: no joint faster than the arm's bound (a mistaken previous_q would
+            # otherwise only show as a distorted or diverging next step).
+            speed = np.abs(state.q - state.previous_q) / state.previous_step
+            j = int(np.argmax(speed))
+            if speed[j] > self._sim.max_joint_speed:
+                raise ValueError(f"State.previous_q is not one step of {state.previous_step:g} s before q: "
+                                 f"{self.model.dof_names[j]} would have moved at {speed[j]:.3g} rad/s, beyond "
+                                 f"max_joint_speed {self._sim.max_joint_speed:g} rad/s")
         x = np.empty(self._sim.state.shape)
         for k, (o, n) in self.model.state_layout.items():
             x[o:o + n] = getattr(state, k)
