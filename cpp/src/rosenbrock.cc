@@ -4,6 +4,8 @@
 //   (I - h gamma J) k1 = f(x_n)
 //   (I - h gamma J) k2 = f(x_n + h k1) - 2 k1
 //   x_{n+1} = x_n + h (3/2 k1 + 1/2 k2)
+// The second evaluation takes its muscle paths extrapolated from the last two steps' moment arms when the
+// step continues the previous one (extrapolate_paths_n), which keeps the order.
 // J is the structured ("arrow") Jacobian of data.h StepJacobian. The linear systems are never formed
 // as a state-sized matrix (214 x 214 for das2): the activation rows are scalar, each CE-length row is
 // scalar once the joint part is known, and what remains is an n x n Schur complement (n = num_dofs) in
@@ -343,11 +345,11 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
 namespace {
 
 // The second stage's paths at q2 (= q_n + h k1_q) from the first stage's at q_n and the last step's moment
-// arms R_{n-1}, instead of the polynomials (a quarter of a das3 step's cost):
+// arms R_{n-1}, instead of the polynomials (evaluated twice, they were 30 % of a das3 step):
 //   R(q2) ~ 2 R_n - R_{n-1},    L(q2) ~ L_n - (R_n + R(q2))/2 . (q2 - q_n)    (R = -dL/dq)
-// q2 - q_n and q_n - q_{n-1} are both h qd + O(h^2), so both errors are O(h^2) (the length's O(h^3)): ROS2
-// stays second order, as with any O(h^2) error in its second derivative evaluation. Also keeps R_n as the
-// next step's R_{n-1}.
+// q2 - q_n and q_n - q_{n-1} are both h qd + O(h^2), so the moment arms' error is O(h^2) and the lengths'
+// O(h^3): ROS2 stays second order, as with any O(h^2) error in its second stage's evaluation of f. Also
+// keeps R_n as the next step's R_{n-1}.
 template <int nq>
 void extrapolate_paths_n(const Model& m, Data& d, const double* q_n, const double* q2, double* L2, double* R2) {
   const int n = m.num_elements;
