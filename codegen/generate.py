@@ -555,9 +555,6 @@ def _gradient(terms, j):
 def paths_source(model: dict, ns: str) -> str:
     dof_index = {d["name"]: i for i, d in enumerate(model["dofs"])}
     NDOF = len(dof_index)
-    # One SIMD vector holds an element's moment arms and its length: 8 doubles up to 7 DOFs, else 16.
-    W = 8 if NDOF + 1 <= 8 else 16
-    vt = f"v{W}d"
     els = model["elements"]
     lengths = [_global_poly(e["length_poly"], e["length_poly"]["dofs"], dof_index) for e in els]
 
@@ -595,6 +592,9 @@ def paths_source(model: dict, ns: str) -> str:
         crossed_dofs = [[dof_index[d] for d in e["dofs"]] for e in els]
         out.append(_grouped_paths(crossed_dofs, lengths, order, tree, NDOF))
         return _paths_file(ns, out, els, dof_index, NDOF, 4)
+    # Up to 7 DOFs one 8-lane vector holds an element's moment arms and its length (more: _grouped_paths).
+    W = 8
+    vt = f"v{W}d"
     gname = {(0,) * NDOF: "g_one"}
     pname = {(0,) * NDOF: "1.0"}
     for k, m in enumerate(order):
