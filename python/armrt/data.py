@@ -52,12 +52,16 @@ class State:
 
     _ARRAYS = ("q", "qdot", "lce", "activation", "excitation", "hand_force", "hand_moment")
 
+    def _array_fields(self) -> tuple:
+        """The array fields this State holds: _ARRAYS, and previous_q unless it is None."""
+        return self._ARRAYS + (("previous_q",) if self.previous_q is not None else ())
+
     def __post_init__(self):
         for k in ("model", "source_hash"):  # np.load gives 0-d string arrays
             object.__setattr__(self, k, str(getattr(self, k)))
         if self.previous_q is not None and np.size(self.previous_q) == 0:
             object.__setattr__(self, "previous_q", None)  # as_dict's stand-in for None (np.savez keeps it)
-        for k in self._ARRAYS + (("previous_q",) if self.previous_q is not None else ()):
+        for k in self._array_fields():
             a = np.array(getattr(self, k), dtype=float)
             a.flags.writeable = False
             object.__setattr__(self, k, a)
@@ -71,8 +75,7 @@ class State:
         if (self.previous_q is None) != (other.previous_q is None) or self.previous_step != other.previous_step:
             return False
         return (self.model, self.source_hash, self.time) == (other.model, other.source_hash, other.time) and all(
-            np.array_equal(getattr(self, k), getattr(other, k))
-            for k in self._ARRAYS + (("previous_q",) if self.previous_q is not None else ()))
+            np.array_equal(getattr(self, k), getattr(other, k)) for k in self._array_fields())
 
     __hash__ = None
 
