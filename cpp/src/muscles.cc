@@ -57,11 +57,41 @@ void generalised_force_n(const double* moment_arm, const double* force, int n, d
   }
 }
 
+// tau[a] = sum_i RT[a][i] F[i]: eight elements per multiply-add, one accumulator per DOF (nq chains side by
+// side), the tail past the last whole eight in scalars (F and RT past n are not read).
+template <int nq>
+void generalised_force_by_dof_n(const double* RT, const double* force, int n, double* tau) {
+  using detail::v8d;
+  v8d acc[nq];
+  for (int a = 0; a < nq; ++a) acc[a] = v8d{};
+  int i = 0;
+  for (; i + 8 <= n; i += 8) {
+    v8d f;
+    std::memcpy(&f, force + i, sizeof(v8d));
+    for (int a = 0; a < nq; ++a) {
+      v8d r;
+      std::memcpy(&r, RT + a * kMaxElements + i, sizeof(v8d));
+      acc[a] += r * f;
+    }
+  }
+  for (int a = 0; a < nq; ++a) {
+    double s = detail::lane_sum(acc[a]);
+    for (int k = i; k < n; ++k) s += RT[a * kMaxElements + k] * force[k];
+    tau[a] = s;
+  }
+}
+
+template <int nq>
+void moment_arms_by_dof_n(const double* R, int n, double* RT) {
+  for (int i = 0; i < n; ++i)
+    for (int a = 0; a < nq; ++a) RT[a * kMaxElements + i] = R[i * nq + a];
+}
+
 }  // namespace
 
 void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
                      const double* moment_arm, const double* act, const double* lce, double* act_dot,
-                     double* lce_dot, double* force, double* tau, StepJacobian* jac) {
+                     double* lce_dot, double* force, double* tau, StepJacobian* jac, MomentArmLayout layout) {
   const int n = m.num_elements;
   const MuscleArrays& mc = m.muscles;
   const double b = m.fibre_damping;
@@ -102,11 +132,20 @@ void muscle_dynamics(const Model& m, const double* excitation, const double* mus
       jac->compress_force[i] = der.compress_force;
     }
   }
-  generalised_force(moment_arm, force, n, m.num_dofs, tau);
+  if (layout == MomentArmLayout::kByDof) generalised_force_by_dof(moment_arm, force, n, m.num_dofs, tau);
+  else generalised_force(moment_arm, force, n, m.num_dofs, tau);
 }
 
 void generalised_force(const double* moment_arm, const double* force, int n, int ndof, double* tau) {
   detail::dispatch_dofs(ndof, [&](auto N) { generalised_force_n<N>(moment_arm, force, n, tau); });
+}
+
+void generalised_force_by_dof(const double* moment_arm_by_dof, const double* force, int n, int ndof, double* tau) {
+  detail::dispatch_dofs(ndof, [&](auto N) { generalised_force_by_dof_n<N>(moment_arm_by_dof, force, n, tau); });
+}
+
+void moment_arms_by_dof(const double* moment_arm, int n, int ndof, double* moment_arm_by_dof) {
+  detail::dispatch_dofs(ndof, [&](auto N) { moment_arms_by_dof_n<N>(moment_arm, n, moment_arm_by_dof); });
 }
 
 }  // namespace armrt

@@ -67,6 +67,28 @@ void lu_solve(const double* lu, const int* perm, const double* b, double* x) {
   }
 }
 
+// out[i] = sum_a RT[a][i] v[a] (i < n) for moment arms by DOF (row stride kMaxElements): eight elements per
+// multiply-add, summed over the DOFs in order; the tail past the last whole eight in scalars.
+template <int nq>
+void dot_rows_by_dof(const double* RT, const double* v, int n, double* out) {
+  using detail::v8d;
+  int i = 0;
+  for (; i + 8 <= n; i += 8) {
+    v8d acc = {};
+    for (int a = 0; a < nq; ++a) {
+      v8d r;
+      std::memcpy(&r, RT + a * kMaxElements + i, sizeof(v8d));
+      acc += r * v[a];
+    }
+    std::memcpy(out + i, &acc, sizeof(v8d));
+  }
+  for (; i < n; ++i) {
+    double s = 0;
+    for (int a = 0; a < nq; ++a) s += RT[a * kMaxElements + i] * v[a];
+    out[i] = s;
+  }
+}
+
 }  // namespace
 
 constexpr double kRos2Gamma = 1.7071067811865475;  // 1 + 1/sqrt(2)
@@ -144,7 +166,7 @@ void jacobian_solve_n(const Model& m, StepJacobian& jac, const double* r, double
   const int n = m.num_elements;
   const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
   const double hg = jac.hg;
-  const double* R = jac.moment_arm.data();
+  const double* RT = jac.moment_arm_by_dof.data();
   const double* rq = r + iq;
   const double* rqd = r + iqd;
   // Activation rows, then the CE-length rows' part that does not depend on k_q (kept in tmp).
@@ -167,7 +189,7 @@ void jacobian_solve_n(const Model& m, StepJacobian& jac, const double* r, double
 #pragma omp simd
   for (int i = 0; i < n; ++i) f[i] = hg * jac.dforce_dlce[i] * p[i];
   double tau_p[nq];
-  generalised_force(R, f, n, nq, tau_p);
+  generalised_force_by_dof(RT, f, n, nq, tau_p);
   for (int a = 0; a < nq; ++a) rhs[a] += tau_p[a];
   double kqd[nq];
   lu_solve<nq>(jac.schur_lu.data(), jac.schur_perm.data(), rhs, kqd);
@@ -177,25 +199,10 @@ void jacobian_solve_n(const Model& m, StepJacobian& jac, const double* r, double
     k[iq + a] = kq[a];
     k[iqd + a] = kqd[a];
   }
-  if constexpr (nq < 8) {
-    for (int i = 0; i < n; ++i) {
-      const double* ri = R + i * nq;
-      double rk = 0;
-      for (int a = 0; a < nq; ++a) rk += ri[a] * kq[a];
-      k[il + i] = p[i] - jac.lce_from_q[i] * rk;
-    }
-  } else {
-    // Each row's dot product with k_q as a lane pair and a tree sum (a running sum over 11 DOFs was a
-    // chain of 11 dependent multiply-adds per element).
-    using detail::v8d;
-    v8d kq_lo, kq_hi;
-    detail::load_row(kq, nq, kq_lo, kq_hi);  // lanes past nq are zero, so the row's spill-over lanes add 0
-    for (int i = 0; i < n; ++i) {
-      v8d r_lo, r_hi;
-      detail::load_row16(R + i * nq, r_lo, r_hi);
-      k[il + i] = p[i] - jac.lce_from_q[i] * detail::lane_sum(r_lo * kq_lo + r_hi * kq_hi);
-    }
-  }
+  double rk[kMaxElements];
+  dot_rows_by_dof<nq>(RT, kq, n, rk);
+#pragma omp simd
+  for (int i = 0; i < n; ++i) k[il + i] = p[i] - jac.lce_from_q[i] * rk[i];
 }
 
 }  // namespace
@@ -232,14 +239,9 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
   const double b0 = m.fibre_damping;
   // Muscle-tendon lengthening rates dL/dt = -R qd (m/s), then one branch-free pass per element.
   double L_rate[kMaxElements];
-  detail::dispatch_dofs(nq, [&](auto N) {
-    for (int i = 0; i < n; ++i) {
-      const double* r = jac.moment_arm.data() + i * N;
-      double s = 0;
-      for (int j = 0; j < N; ++j) s -= r[j] * x[iqd + j];
-      L_rate[i] = s;
-    }
-  });
+  detail::dispatch_dofs(nq, [&](auto N) { dot_rows_by_dof<N>(jac.moment_arm_by_dof.data(), x + iqd, n, L_rate); });
+#pragma omp simd
+  for (int i = 0; i < n; ++i) L_rate[i] = -L_rate[i];
   const double* lce_x = x + lce_offset(m);
   const double* a_x = x + ia;
   const double* lce_rate = xdot + lce_offset(m);
@@ -352,43 +354,42 @@ namespace {
 // keeps R_n as the next step's R_{n-1}.
 template <int nq>
 void extrapolate_paths_n(const Model& m, Data& d, const double* q_n, const double* q2, double* L2, double* R2) {
+  // Moment arms by DOF (data.h), so each line below runs across eight elements at a time.
+  using detail::v8d;
   const int n = m.num_elements;
   const double* L_n = d.jac.muscle_length.data();
-  const double* R_n = d.jac.moment_arm.data();
-  double* R_prev = d.path_history.moment_arm.data();
+  const double* R_n = d.jac.moment_arm_by_dof.data();
+  double* R_prev = d.path_history.moment_arm_by_dof.data();
   double dq[nq];
-  for (int j = 0; j < nq; ++j) dq[j] = q2[j] - q_n[j];
-  if constexpr (nq < 8) {
-    for (int i = 0; i < n; ++i) {
-      const double* rn = R_n + i * nq;
-      double* rp = R_prev + i * nq;
-      double* r2 = R2 + i * nq;
-      double s = 0;
-      for (int j = 0; j < nq; ++j) {
-        const double e = 2.0 * rn[j] - rp[j];
-        r2[j] = e;
-        s += (rn[j] + e) * dq[j];
-        rp[j] = rn[j];
-      }
-      L2[i] = L_n[i] - 0.5 * s;
+  for (int a = 0; a < nq; ++a) dq[a] = q2[a] - q_n[a];
+  int i = 0;
+  for (; i + 8 <= n; i += 8) {
+    v8d s = {};
+    for (int a = 0; a < nq; ++a) {
+      const int o = a * kMaxElements + i;
+      v8d rn, rp;
+      std::memcpy(&rn, R_n + o, sizeof(v8d));
+      std::memcpy(&rp, R_prev + o, sizeof(v8d));
+      const v8d e = 2.0 * rn - rp;
+      std::memcpy(R2 + o, &e, sizeof(v8d));
+      std::memcpy(R_prev + o, &rn, sizeof(v8d));
+      s += (rn + e) * dq[a];
     }
-  } else {
-    // Rows as lane pairs (lanes.h); the stores write the row's nq values only.
-    using detail::v8d;
-    v8d dq_lo, dq_hi;
-    detail::load_row(dq, nq, dq_lo, dq_hi);  // lanes past nq are zero: the spill-over lanes add 0
-    constexpr std::size_t hi_bytes = (nq - 8) * sizeof(double);
-    for (int i = 0; i < n; ++i) {
-      v8d rn_lo, rn_hi, rp_lo, rp_hi;
-      detail::load_row16(R_n + i * nq, rn_lo, rn_hi);
-      detail::load_row16(R_prev + i * nq, rp_lo, rp_hi);
-      const v8d e_lo = 2.0 * rn_lo - rp_lo, e_hi = 2.0 * rn_hi - rp_hi;
-      std::memcpy(R2 + i * nq, &e_lo, sizeof(v8d));
-      std::memcpy(R2 + i * nq + 8, &e_hi, hi_bytes);
-      std::memcpy(R_prev + i * nq, &rn_lo, sizeof(v8d));
-      std::memcpy(R_prev + i * nq + 8, &rn_hi, hi_bytes);
-      L2[i] = L_n[i] - 0.5 * detail::lane_sum((rn_lo + e_lo) * dq_lo + (rn_hi + e_hi) * dq_hi);
+    v8d ln;
+    std::memcpy(&ln, L_n + i, sizeof(v8d));
+    const v8d l2 = ln - 0.5 * s;
+    std::memcpy(L2 + i, &l2, sizeof(v8d));
+  }
+  for (; i < n; ++i) {
+    double s = 0;
+    for (int a = 0; a < nq; ++a) {
+      const int o = a * kMaxElements + i;
+      const double e = 2.0 * R_n[o] - R_prev[o];
+      R2[o] = e;
+      s += (R_n[o] + e) * dq[a];
+      R_prev[o] = R_n[o];
     }
+    L2[i] = L_n[i] - 0.5 * s;
   }
 }
 
@@ -405,15 +406,16 @@ void ros2_stages(const Model& m, Data& d, double h, bool record) {
   for (int k = 0; k < ns; ++k) xt[k] = x[k] + h * d.k2[k];
   if (extrapolate) {
     double L2[kMaxElements];
-    double R2[kMaxElements * kMaxDofs];
+    double R2[kMaxDofs * kMaxElements];
     detail::dispatch_dofs(m.num_dofs, [&](auto N) {
       extrapolate_paths_n<N>(m, d, x + q_offset(m), xt + q_offset(m), L2, R2);
     });
-    forward_from_paths(m, d, xt, L2, R2, d.k3.data(), false);
+    forward_from_paths(m, d, xt, L2, R2, d.k3.data(), false, nullptr, MomentArmLayout::kByDof);
   } else {
     forward(m, d, xt, d.k3.data(), false);
-    const int nr = m.num_elements * m.num_dofs;
-    std::copy(d.jac.moment_arm.begin(), d.jac.moment_arm.begin() + nr, d.path_history.moment_arm.begin());
+    const int nr = m.num_dofs * kMaxElements;
+    std::copy(d.jac.moment_arm_by_dof.begin(), d.jac.moment_arm_by_dof.begin() + nr,
+              d.path_history.moment_arm_by_dof.begin());
   }
   std::copy(x + q_offset(m), x + q_offset(m) + m.num_dofs, d.path_history.q_start.begin());
   d.path_history.h = 0;  // until ros2_update takes the step
@@ -462,8 +464,9 @@ void ros2_restore_history(const Model& m, Data& d, const double* q_start, double
   PathHistory& ph = d.path_history;
   ph.h = 0;
   if (!(h > 0)) return;
-  double L[kMaxElements];
-  m.def->muscle_paths(q_start, L, ph.moment_arm.data());
+  double L[kMaxElements], R[kMaxElements * kMaxDofs];
+  m.def->muscle_paths(q_start, L, R);
+  moment_arms_by_dof(R, m.num_elements, m.num_dofs, ph.moment_arm_by_dof.data());
   for (int j = 0; j < m.num_dofs; ++j) {
     ph.q_start[j] = q_start[j];
     ph.q_end[j] = d.x[q_offset(m) + j];

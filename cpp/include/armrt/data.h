@@ -54,6 +54,9 @@ struct StepJacobian {
   std::array<double, kMaxElements> compress_force{};  // N
   std::array<double, kMaxElements> muscle_length{};          // m
   std::array<double, kMaxElements * kMaxDofs> moment_arm{};  // m, [element][dof], row stride num_dofs
+  // The same moment arms by DOF, [dof][element] with row stride kMaxElements (ROS2 only, rosenbrock.cc): the
+  // per-element dot products of the solves then run across the elements, eight at a time, with no lane sums.
+  std::array<double, kMaxDofs * kMaxElements> moment_arm_by_dof{};  // m
   std::array<double, kMaxDofs * kMaxDofs> mass_matrix{};     // kg m^2, num_dofs x num_dofs row-major
   std::array<double, kMaxDofs> dtau_passive_dq{};   // N m/rad, diagonal
   std::array<double, kMaxDofs> dtau_passive_dqd{};  // N m s/rad, diagonal
@@ -76,7 +79,7 @@ struct StepJacobian {
 // from exactly that state with the same h; anything else (a reset, a state set from outside, another
 // step size) makes it evaluate the paths afresh.
 struct PathHistory {
-  std::array<double, kMaxElements * kMaxDofs> moment_arm{};  // m, R(q_start), [element][dof]
+  std::array<double, kMaxDofs * kMaxElements> moment_arm_by_dof{};  // m, R(q_start), [dof][element], stride kMaxElements
   std::array<double, kMaxDofs> q_start{};  // rad, q the last step started at
   std::array<double, kMaxDofs> q_end{};   // rad, q the last step ended at
   std::array<double, kMaxDofs> qd_end{};  // rad/s, and qdot
