@@ -21,7 +21,7 @@ from . import cxx, eom
 
 SCHEMA = "armrt-model"
 SCHEMA_VERSION = 1
-MAX_DOFS = 16        # the engine's capacities (cpp/include/armrt/model.h kMaxDofs, kMaxElements)
+MAX_DOFS = 16        # the engine's capacities (cpp/include/armrt/model.h kMaxDofs, model_def.h kMaxElements)
 MAX_ELEMENTS = 160
 MAX_CONTACT_POINTS = 4   # cpp/include/armrt/model_def.h kMaxContactPoints
 BODY_CHAIN = [("humerus", "scapula"), ("ulna", "humerus"), ("radius", "ulna"), ("hand", "radius")]
@@ -561,7 +561,7 @@ def paths_source(model: dict, ns: str) -> str:
     out = []
     # muscle_lengths: the lengths of muscle_paths, bit for bit (one summation order for both).
     out.append("void muscle_lengths(const double* q, double* L) {\n"
-               f"  double moment_arm[{max(1, len(lengths)) * NDOF}];\n  muscle_paths(q, L, moment_arm);\n}}\n")
+               f"  double moment_arm[{NDOF} * kMaxElements];\n  muscle_paths(q, L, moment_arm);\n}}\n")
 
     # muscle_paths: lengths and moment arms -dL/dq in one pass. Each monomial m carries the vector
     # G(m) = [-dm/dq0, ..., -dm/dq4, m, 0, 0] (das2; W lanes in general); every term of a length
@@ -620,7 +620,9 @@ def paths_source(model: dict, ns: str) -> str:
         halves = [" + ".join(parts[0::2]) or "0.0*g_one", " + ".join(parts[1::2]) or "0.0*g_one"]
         expr = f"({halves[0]}) + ({halves[1]})"
         body.append(f"  {{ const {vt} a = {expr};")
-        body.append(f"    std::memcpy(moment_arm + {i * NDOF}, &a, {NDOF} * sizeof(double)); L[{i}] = a[{NDOF}]; }}")
+        # Moment arms by DOF (model_def.h): row j holds every element's moment arm about DOF j.
+        stores = " ".join(f"moment_arm[{j} * kMaxElements + {i}] = a[{j}];" for j in range(NDOF))
+        body.append(f"    {stores} L[{i}] = a[{NDOF}]; }}")
     head = [f"  const double q{j} = q[{j}];" for j in sorted(qs)] or ["  (void)q;"]
     out.append("void muscle_paths(const double* q, double* L, double* moment_arm) {\n"
                + "\n".join(head + lines + body) + "\n}\n")
@@ -643,6 +645,7 @@ def _grouped_paths(crossed_dofs, lengths, order, tree, NDOF):
     n_groups = group[-1] + 1
     sizes = [sum(1 for j in range(NDOF) if group[j] == b) for b in range(n_groups)]
     VAL = GROUP_SIZE  # the length lane
+    n_el = len(lengths)
 
     def groups_of(m):
         return sorted({group[j] for j in range(NDOF) if m[j]})
@@ -697,27 +700,26 @@ def _grouped_paths(crossed_dofs, lengths, order, tree, NDOF):
                 parts.insert(0, f"{cxx.fmt(const[0])}*e_len")
             halves = [" + ".join(parts[0::2]) or "v4d{}", " + ".join(parts[1::2]) or "v4d{}"]
             stmts.append(f"const v4d a{b} = ({halves[0]}) + ({halves[1]});")
-        out_lines = []
-        for b in range(n_groups):
-            offset = i * NDOF + GROUP_SIZE * b
-            if b in crossed:
-                out_lines.append(f"std::memcpy(moment_arm + {offset}, &a{b}, {sizes[b]} * sizeof(double));")
-            else:
-                out_lines.append(f"std::memset(moment_arm + {offset}, 0, {sizes[b]} * sizeof(double));")
+        # Moment arms by DOF (model_def.h); the groups the element does not cross stay as the memset left them.
+        out_lines = [f"moment_arm[{GROUP_SIZE * b + k} * kMaxElements + {i}] = a{b}[{k}];"
+                     for b in crossed for k in range(sizes[b])]
         length = " + ".join(f"a{b}[{VAL}]" for b in crossed) if crossed else "0.0"
         body.append("  { " + " ".join(stmts))
         body.append("    " + " ".join(out_lines) + f" L[{i}] = {length}; }}")
     head = [f"  const double q{j} = q[{j}];" for j in sorted(qs)] or ["  (void)q;"]
     names = ", ".join(f"{b}: DOFs {GROUP_SIZE * b}..{GROUP_SIZE * b + sizes[b] - 1}" for b in range(n_groups))
+    zero = (f"  std::memset(moment_arm, 0, ({NDOF - 1} * kMaxElements + {n_el}) * sizeof(double));"
+            "  // the DOFs an element does not cross")
     return ("void muscle_paths(const double* q, double* L, double* moment_arm) {\n"
             f"  // DOF groups (_grouped_paths) {names}.\n"
-            + "\n".join(head + lines + body) + "\n}\n")
+            + "\n".join([zero] + head + lines + body) + "\n}\n")
 
 
 def _paths_file(ns, out, els, dof_index, NDOF, W):
     vt = f"v{W}d"
-    # gh_directions: the polynomials into three arrays, then one loop normalises them eight elements at a
-    # time (a square root and a division per element were most of its cost as scalar code).
+    # gh_directions: the polynomials into three arrays, then one loop normalises them, which the compiler
+    # vectorises (a square root and a division per element were most of its cost as scalar code). No pragma:
+    # the file must compile warning-free with any flags (tests/gen_lib.py builds it with -Wall -Werror).
     mono = _Monomials(NDOF)
     n_el = len(els)
     body = [f"  double gx[{n_el}], gy[{n_el}], gz[{n_el}];"]
@@ -729,8 +731,7 @@ def _paths_file(ns, out, els, dof_index, NDOF, W):
         comps = [_sum(_global_poly(gd[c], gd["dofs"], dof_index), mono) for c in "xyz"]
         for c, expr in zip("xyz", comps):
             body.append(f"  g{c}[{i}] = {expr};")
-    body += ["#pragma omp simd",
-             f"  for (int i = 0; i < {n_el}; ++i) {{",
+    body += [f"  for (int i = 0; i < {n_el}; ++i) {{",
              "    const double n2 = gx[i]*gx[i] + gy[i]*gy[i] + gz[i]*gz[i];",
              "    const double s = n2 > 0.0 ? 1.0/std::sqrt(n2) : 0.0;",
              "    d[3*i] = gx[i]*s; d[3*i + 1] = gy[i]*s; d[3*i + 2] = gz[i]*s;",

@@ -96,9 +96,11 @@ class GenModel:
         return L
 
     def muscle_paths(self, q):
-        L, r = np.zeros(self.nel), np.zeros((self.nel, 5))
+        """(L (nel,), moment arms (nel, 5)): the generated code writes them by DOF, rows of MAX_ELEMENTS."""
+        from codegen.generate import MAX_ELEMENTS
+        L, r = np.zeros(self.nel), np.zeros((5, MAX_ELEMENTS))
         self.lib.h_muscle_paths(_ptr(self._q(q)), _ptr(L), _ptr(r))
-        return L, r
+        return L, np.ascontiguousarray(r[:, :self.nel].T)
 
     def gh_directions(self, q):
         d = np.zeros((self.nel, 3))

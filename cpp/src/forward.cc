@@ -16,16 +16,15 @@ namespace armrt {
 void forward(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac) {
   // Paths. The Jacobian keeps the path geometry for the step's linear solves.
   double L_local[kMaxElements];
-  double R_local[kMaxElements * kMaxDofs];
+  double R_local[kMaxDofs * kMaxElements];
   double* L = jac ? jac->muscle_length.data() : L_local;
   double* R = jac ? jac->moment_arm.data() : R_local;
   m.def->muscle_paths(x + q_offset(m), L, R);
-  if (jac) moment_arms_by_dof(R, m.num_elements, m.num_dofs, jac->moment_arm_by_dof.data());
   forward_from_paths(m, d, x, L, R, xdot, record, jac);
 }
 
 void forward_from_paths(const Model& m, Data& d, const double* x, const double* L, const double* R, double* xdot,
-                        bool record, StepJacobian* jac, MomentArmLayout layout) {
+                        bool record, StepJacobian* jac) {
   const ModelDef& def = *m.def;
   const int n = m.num_elements, nq = m.num_dofs;
   const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
@@ -35,7 +34,7 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
   // Muscles.
   double force[kMaxElements];
   double tau_muscle[kMaxDofs];
-  muscle_dynamics(m, d.excitation.data(), L, R, x + ia, x + il, xdot + ia, xdot + il, force, tau_muscle, jac, layout);
+  muscle_dynamics(m, d.excitation.data(), L, R, x + ia, x + il, xdot + ia, xdot + il, force, tau_muscle, jac);
 
   // Passive joints.
   double tau_passive[kMaxDofs];
@@ -65,10 +64,7 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
 
   if (!record) return;
   std::copy(L, L + n, d.muscle_length.begin());
-  if (layout == MomentArmLayout::kByElement) std::copy(R, R + n * nq, d.moment_arm.begin());
-  else
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < nq; ++j) d.moment_arm[i * nq + j] = R[j * kMaxElements + i];
+  for (int j = 0; j < nq; ++j) std::copy(R + j * kMaxElements, R + j * kMaxElements + n, d.moment_arm.begin() + j * kMaxElements);
   std::copy(force, force + n, d.muscle_force.begin());
   std::copy(xdot + il, xdot + il + n, d.fibre_velocity.begin());
   for (int j = 0; j < nq; ++j) {

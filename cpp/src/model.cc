@@ -91,12 +91,18 @@ void model_init(Model& m, const ModelDef& def) {
   m.num_dofs = def.num_dofs;
   m.num_elements = def.num_elements;
   for (int k = 0; k < 3; ++k) m.gravity_base[k] = def.gravity_base[k];
+  for (int j = 0; j < m.num_dofs; ++j) {
+    m.dof_elements_begin[j] = m.num_elements;
+    m.dof_elements_end[j] = 0;
+  }
   for (int i = 0; i < m.num_elements; ++i) {
     const unsigned mask = static_cast<unsigned>(def.elements[i].dof_mask);
-    // An element crossing no DOF (none in the shipped models) gets the whole span.
-    m.dof_first[i] = mask ? __builtin_ctz(mask) : 0;
-    m.dof_last[i] = mask ? 31 - __builtin_clz(mask) : m.num_dofs - 1;
-    if (m.dof_last[i] >= m.num_dofs) m.dof_last[i] = m.num_dofs - 1;
+    for (int j = 0; j < m.num_dofs; ++j) {
+      // An element crossing no DOF (none in the shipped models) counts as crossing all of them.
+      if (mask && !(mask >> j & 1u)) continue;
+      m.dof_elements_begin[j] = std::min(m.dof_elements_begin[j], i);
+      m.dof_elements_end[j] = std::max(m.dof_elements_end[j], i + 1);
+    }
     m.element[i].strength_scale = 1.0;
     m.element[i].max_activation = def.elements[i].max_activation;
   }

@@ -30,10 +30,10 @@ namespace armrt {
 
 namespace {
 
-// In-place LU with partial pivoting of a row-major n x n matrix (n = the model's DOFs). The pivot
-// choice depends on the values, the work does not.
+// In-place LU with partial pivoting of a row-major n x n matrix (n = the model's DOFs), and the reciprocals
+// of U's diagonal. The pivot choice depends on the values, the work does not.
 template <int n>
-void lu_factor(double* a, int* perm) {
+void lu_factor(double* a, int* perm, double* inv_diag) {
   for (int i = 0; i < n; ++i) perm[i] = i;
   for (int k = 0; k < n; ++k) {
     int p = k;
@@ -44,6 +44,7 @@ void lu_factor(double* a, int* perm) {
       std::swap(perm[k], perm[p]);
     }
     const double inv = 1.0 / a[k * n + k];
+    inv_diag[k] = inv;
     for (int i = k + 1; i < n; ++i) {
       const double l = a[i * n + k] * inv;
       a[i * n + k] = l;
@@ -52,39 +53,40 @@ void lu_factor(double* a, int* perm) {
   }
 }
 
+// Column by column: once y_k (x_k) is known it updates the rest of the right-hand side, so the dependent
+// chain is one multiply-add per column; row-by-row dot products chained all of each row's terms and a
+// division per row.
 template <int n>
-void lu_solve(const double* lu, const int* perm, const double* b, double* x) {
+void lu_solve(const double* lu, const int* perm, const double* inv_diag, const double* b, double* x) {
   double y[n];
-  for (int i = 0; i < n; ++i) {
-    double s = b[perm[i]];
-    for (int j = 0; j < i; ++j) s -= lu[i * n + j] * y[j];
-    y[i] = s;
-  }
-  for (int i = n - 1; i >= 0; --i) {
-    double s = y[i];
-    for (int j = i + 1; j < n; ++j) s -= lu[i * n + j] * x[j];
-    x[i] = s / lu[i * n + i];
+  for (int i = 0; i < n; ++i) y[i] = b[perm[i]];
+  for (int k = 0; k < n; ++k)
+    for (int i = k + 1; i < n; ++i) y[i] -= lu[i * n + k] * y[k];
+  for (int k = n - 1; k >= 0; --k) {
+    const double xk = y[k] * inv_diag[k];
+    x[k] = xk;
+    for (int i = 0; i < k; ++i) y[i] -= lu[i * n + k] * xk;
   }
 }
 
-// out[i] = sum_a RT[a][i] v[a] (i < n) for moment arms by DOF (row stride kMaxElements): eight elements per
-// multiply-add, summed over the DOFs in order; the tail past the last whole eight in scalars.
+// out[i] = sum_j R[j][i] v[j] (i < n), the per-element dot products with moment arms by DOF (data.h):
+// eight elements per multiply-add, summed over the DOFs in order; past the last whole eight in scalars.
 template <int nq>
-void dot_rows_by_dof(const double* RT, const double* v, int n, double* out) {
+void moment_arm_dot(const double* R, const double* v, int n, double* out) {
   using detail::v8d;
-  int i = 0;
-  for (; i + 8 <= n; i += 8) {
+  const int n8 = n / 8 * 8;
+  for (int i = 0; i < n8; i += 8) {
     v8d acc = {};
-    for (int a = 0; a < nq; ++a) {
+    for (int j = 0; j < nq; ++j) {
       v8d r;
-      std::memcpy(&r, RT + a * kMaxElements + i, sizeof(v8d));
-      acc += r * v[a];
+      std::memcpy(&r, R + j * kMaxElements + i, sizeof(v8d));
+      acc += r * v[j];
     }
     std::memcpy(out + i, &acc, sizeof(v8d));
   }
-  for (; i < n; ++i) {
+  for (int i = n8; i < n; ++i) {
     double s = 0;
-    for (int a = 0; a < nq; ++a) s += RT[a * kMaxElements + i] * v[a];
+    for (int j = 0; j < nq; ++j) s += R[j * kMaxElements + i] * v[j];
     out[i] = s;
   }
 }
@@ -101,7 +103,7 @@ template <int nq>
 void jacobian_factor_n(const Model& m, StepJacobian& jac, double hg) {
   const int n = m.num_elements;
   jac.hg = hg;
-  const double* R = jac.moment_arm.data();
+  const double* R = jac.moment_arm.data();  // by DOF
 #pragma omp simd
   for (int i = 0; i < n; ++i) {
     jac.inv_act[i] = 1.0 / (1.0 + hg * jac.act_rate[i]);
@@ -109,44 +111,39 @@ void jacobian_factor_n(const Model& m, StepJacobian& jac, double hg) {
     jac.lce_from_q[i] = hg * jac.dvel_dL[i] * jac.inv_lce[i];
     jac.series_stiffness[i] = jac.dforce_dL[i] + jac.dforce_dlce[i] * jac.lce_from_q[i];
   }
-  // K_eff = diag(dtau_passive/dq) + dtau_girdle/dq - R^T diag(series_stiffness) R.
-  double K[nq * nq] = {};  // local: the compiler keeps it in registers (no aliasing with jac's arrays)
-  if constexpr (nq <= 7) {
-    // Small models (das2): the upper half in a fixed-size loop that unrolls, then mirrored.
-    for (int i = 0; i < n; ++i) {
-      const double* r = R + i * nq;
-      const double c = jac.series_stiffness[i];
-      for (int a = 0; a < nq; ++a)
-        for (int b = a; b < nq; ++b) K[a * nq + b] -= c * r[a] * r[b];
-    }
-    for (int a = 0; a < nq; ++a)
-      for (int b = 0; b < a; ++b) K[a * nq + b] = K[b * nq + a];
-  } else {
-    // Larger models (das3, 8-16 DOFs): the rows of K as lane pairs (lanes.h), accumulated in registers
-    // over the elements and stored once. The operation order per entry is the scalar loop's,
-    // K[a][b] -= (c r[a]) r[b], so the result is the same to the bit.
-    using detail::v8d;
-    v8d Klo[nq], Khi[nq];
-    for (int a = 0; a < nq; ++a) Klo[a] = Khi[a] = v8d{};
-    // Only the rows of the DOFs the element crosses, and the hi lanes only if it crosses DOFs 8-15:
-    // its moment arms are exact zeros elsewhere (das3's girdle-only and arm-only elements touch 6 or at
-    // most 5 of the 11 rows).
-    for (int i = 0; i < n; ++i) {
-      const double* r = R + i * nq;
-      const double c = jac.series_stiffness[i];
-      const int first = m.dof_first[i], last = m.dof_last[i];
-      v8d lo, hi;
-      detail::load_row16(r, lo, hi);
+  // K_eff = diag(dtau_passive/dq) + dtau_girdle/dq - R^T diag(series_stiffness) R, R by DOF (data.h): each
+  // entry K[a][b] (b >= a) a sum across the elements, eight per multiply-add, row a's sums side by side in
+  // registers; only over the elements that cross DOF a (Model::dof_elements_begin, _end: das3's arm-only and
+  // girdle-only elements leave a block of each row out), the elements past the last whole eight in scalars.
+  using detail::v8d;
+  double K[nq * nq] = {};
+  const double* c = jac.series_stiffness.data();
+  const int n8 = n / 8 * 8;
+  for (int a = 0; a < nq; ++a) {
+    const double* ra = R + a * kMaxElements;
+    v8d acc[nq];
 #pragma GCC unroll 16
-      for (int a = 0; a < nq; ++a) {
-        if (a < first || a > last) continue;
-        const double cr = c * r[a];
-        Klo[a] -= cr * lo;
-        if (last >= 8) Khi[a] -= cr * hi;
+    for (int b = 0; b < nq; ++b) acc[b] = v8d{};
+    const int begin = m.dof_elements_begin[a] / 8 * 8;
+    const int end = std::min(n8, m.dof_elements_end[a]);
+    for (int i = begin; i < end; i += 8) {
+      v8d ci, rai;
+      std::memcpy(&ci, c + i, sizeof(v8d));
+      std::memcpy(&rai, ra + i, sizeof(v8d));
+      const v8d cr = ci * rai;
+#pragma GCC unroll 16
+      for (int b = 0; b < nq; ++b) {
+        if (b < a) continue;
+        v8d rb;
+        std::memcpy(&rb, R + b * kMaxElements + i, sizeof(v8d));
+        acc[b] += cr * rb;
       }
     }
-    for (int a = 0; a < nq; ++a)
-      for (int b = 0; b < nq; ++b) K[a * nq + b] = b < 8 ? Klo[a][b] : Khi[a][b - 8];
+    for (int b = a; b < nq; ++b) {
+      double s = detail::lane_sum(acc[b]);
+      for (int i = n8; i < n; ++i) s += (c[i] * ra[i]) * R[b * kMaxElements + i];
+      K[a * nq + b] = K[b * nq + a] = -s;
+    }
   }
   for (int a = 0; a < nq; ++a) K[a * nq + a] += jac.dtau_passive_dq[a];
   if (m.def->girdle)
@@ -158,7 +155,7 @@ void jacobian_factor_n(const Model& m, StepJacobian& jac, double hg) {
     for (int b = 0; b < nq; ++b)
       S[a * nq + b] = jac.mass_matrix[a * nq + b] - hg * hg * K[a * nq + b] -
                       (a == b ? hg * jac.dtau_passive_dqd[a] : 0.0);
-  lu_factor<nq>(S, jac.schur_perm.data());
+  lu_factor<nq>(S, jac.schur_perm.data(), jac.schur_inv_diag.data());
 }
 
 template <int nq>
@@ -166,7 +163,7 @@ void jacobian_solve_n(const Model& m, StepJacobian& jac, const double* r, double
   const int n = m.num_elements;
   const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
   const double hg = jac.hg;
-  const double* RT = jac.moment_arm_by_dof.data();
+  const double* R = jac.moment_arm.data();  // by DOF
   const double* rq = r + iq;
   const double* rqd = r + iqd;
   // Activation rows, then the CE-length rows' part that does not depend on k_q (kept in tmp).
@@ -189,10 +186,10 @@ void jacobian_solve_n(const Model& m, StepJacobian& jac, const double* r, double
 #pragma omp simd
   for (int i = 0; i < n; ++i) f[i] = hg * jac.dforce_dlce[i] * p[i];
   double tau_p[nq];
-  generalised_force_by_dof(RT, f, n, nq, tau_p);
+  generalised_force(R, f, n, nq, tau_p);
   for (int a = 0; a < nq; ++a) rhs[a] += tau_p[a];
   double kqd[nq];
-  lu_solve<nq>(jac.schur_lu.data(), jac.schur_perm.data(), rhs, kqd);
+  lu_solve<nq>(jac.schur_lu.data(), jac.schur_perm.data(), jac.schur_inv_diag.data(), rhs, kqd);
   double kq[nq];
   for (int a = 0; a < nq; ++a) {
     kq[a] = rq[a] + hg * kqd[a];
@@ -200,7 +197,7 @@ void jacobian_solve_n(const Model& m, StepJacobian& jac, const double* r, double
     k[iqd + a] = kqd[a];
   }
   double rk[kMaxElements];
-  dot_rows_by_dof<nq>(RT, kq, n, rk);
+  moment_arm_dot<nq>(R, kq, n, rk);
 #pragma omp simd
   for (int i = 0; i < n; ++i) k[il + i] = p[i] - jac.lce_from_q[i] * rk[i];
 }
@@ -239,7 +236,7 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
   const double b0 = m.fibre_damping;
   // Muscle-tendon lengthening rates dL/dt = -R qd (m/s), then one branch-free pass per element.
   double L_rate[kMaxElements];
-  detail::dispatch_dofs(nq, [&](auto N) { dot_rows_by_dof<N>(jac.moment_arm_by_dof.data(), x + iqd, n, L_rate); });
+  detail::dispatch_dofs(nq, [&](auto N) { moment_arm_dot<N>(jac.moment_arm.data(), x + iqd, n, L_rate); });
 #pragma omp simd
   for (int i = 0; i < n; ++i) L_rate[i] = -L_rate[i];
   const double* lce_x = x + lce_offset(m);
@@ -358,8 +355,8 @@ void extrapolate_paths_n(const Model& m, Data& d, const double* q_n, const doubl
   using detail::v8d;
   const int n = m.num_elements;
   const double* L_n = d.jac.muscle_length.data();
-  const double* R_n = d.jac.moment_arm_by_dof.data();
-  double* R_prev = d.path_history.moment_arm_by_dof.data();
+  const double* R_n = d.jac.moment_arm.data();
+  double* R_prev = d.path_history.moment_arm.data();
   double dq[nq];
   for (int a = 0; a < nq; ++a) dq[a] = q2[a] - q_n[a];
   int i = 0;
@@ -410,12 +407,11 @@ void ros2_stages(const Model& m, Data& d, double h, bool record) {
     detail::dispatch_dofs(m.num_dofs, [&](auto N) {
       extrapolate_paths_n<N>(m, d, x + q_offset(m), xt + q_offset(m), L2, R2);
     });
-    forward_from_paths(m, d, xt, L2, R2, d.k3.data(), false, nullptr, MomentArmLayout::kByDof);
+    forward_from_paths(m, d, xt, L2, R2, d.k3.data(), false);
   } else {
     forward(m, d, xt, d.k3.data(), false);
     const int nr = m.num_dofs * kMaxElements;
-    std::copy(d.jac.moment_arm_by_dof.begin(), d.jac.moment_arm_by_dof.begin() + nr,
-              d.path_history.moment_arm_by_dof.begin());
+    std::copy(d.jac.moment_arm.begin(), d.jac.moment_arm.begin() + nr, d.path_history.moment_arm.begin());
   }
   std::copy(x + q_offset(m), x + q_offset(m) + m.num_dofs, d.path_history.q_start.begin());
   d.path_history.h = 0;  // until ros2_update takes the step
@@ -464,9 +460,8 @@ void ros2_restore_history(const Model& m, Data& d, const double* q_start, double
   PathHistory& ph = d.path_history;
   ph.h = 0;
   if (!(h > 0)) return;
-  double L[kMaxElements], R[kMaxElements * kMaxDofs];
-  m.def->muscle_paths(q_start, L, R);
-  moment_arms_by_dof(R, m.num_elements, m.num_dofs, ph.moment_arm_by_dof.data());
+  double L[kMaxElements];
+  m.def->muscle_paths(q_start, L, ph.moment_arm.data());
   for (int j = 0; j < m.num_dofs; ++j) {
     ph.q_start[j] = q_start[j];
     ph.q_end[j] = d.x[q_offset(m) + j];

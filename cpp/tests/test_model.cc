@@ -145,7 +145,7 @@ TEST_CASE("mass matrix symmetric positive definite; moment arms = -dL/dq") {
     CHECK(M[a * 5 + a] > 0);
     for (int b = 0; b < 5; ++b) CHECK(M[a * 5 + b] == doctest::Approx(M[b * 5 + a]).epsilon(1e-12));
   }
-  double L[102], R[102 * 5], Lp[102], Lm[102];
+  double L[102], R[5 * kMaxElements], Lp[102], Lm[102];
   def.muscle_paths(q, L, R);
   const double h = 1e-6;
   for (int j = 0; j < 5; ++j) {
@@ -157,8 +157,8 @@ TEST_CASE("mass matrix symmetric positive definite; moment arms = -dL/dq") {
     for (int i = 0; i < 102; ++i) {
       CAPTURE(i);
       CAPTURE(j);
-      CHECK(R[i * 5 + j] == doctest::Approx(-(Lp[i] - Lm[i]) / (2 * h)).epsilon(1e-5).scale(1e-3));
-      if (!(def.elements[i].dof_mask & (1 << j))) CHECK(R[i * 5 + j] == 0.0);
+      CHECK(R[j * kMaxElements + i] == doctest::Approx(-(Lp[i] - Lm[i]) / (2 * h)).epsilon(1e-5).scale(1e-3));  // by DOF
+      if (!(def.elements[i].dof_mask & (1 << j))) CHECK(R[j * kMaxElements + i] == 0.0);
     }
   }
 }

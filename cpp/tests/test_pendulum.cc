@@ -38,11 +38,11 @@ void detached_paths(const double* q, double* L, double* R) {
   const double rest_length[5] = {0.26, 0.25, 0.24, 0.08, 0.08};  // the polynomials' constant terms, m
   for (int i = 0; i < 5; ++i) {
     L[i] = rest_length[i];
-    R[2 * i] = R[2 * i + 1] = 0.0;
+    R[i] = R[kMaxElements + i] = 0.0;  // by DOF
   }
 }
 void detached_lengths(const double* q, double* L) {
-  double R[10];
+  double R[2 * kMaxElements];
   detached_paths(q, L, R);
 }
 const ModelDef& detached() {
@@ -96,12 +96,12 @@ TEST_CASE("mass matrix, gravity and moment arms match the closed form") {
       CHECK(std::fabs(M[2]) < 1e-14);
       CHECK(std::fabs(b[0] + kG * kMassMoment * std::sin(q0)) < 1e-12);
       CHECK(std::fabs(b[1]) < 1e-12);
-      double L[5], R[10];
+      double L[5], R[2 * kMaxElements];
       def.muscle_paths(q, L, R);
       for (int i = 0; i < 5; ++i) {
         const int j = i < 3 ? 0 : 1;
-        CHECK(R[2 * i + j] == doctest::Approx(kMomentArm[i]).epsilon(1e-14));
-        CHECK(R[2 * i + (1 - j)] == 0.0);
+        CHECK(R[j * kMaxElements + i] == doctest::Approx(kMomentArm[i]).epsilon(1e-14));  // by DOF
+        CHECK(R[(1 - j) * kMaxElements + i] == 0.0);
       }
     }
 }

@@ -190,11 +190,11 @@ TEST_CASE("the structured Jacobian's exact blocks match finite differences of fo
     // d lce_i'/d q_j = -dvel_dL R_ij: exact (lce' depends on q only through L).
     for (int j = 0; j < kDas2Dofs; ++j)
       CHECK(fd(kQ + j, 1e-7, kLce + i) ==
-            doctest::Approx(-J.dvel_dL[i] * J.moment_arm[i * kDas2Dofs + j]).epsilon(1e-4).scale(1e-2));
+            doctest::Approx(-J.dvel_dL[i] * J.moment_arm[j * kMaxElements + i]).epsilon(1e-4).scale(1e-2));
     // d qdd/d lce_i = M^-1 R^T e_i dforce_dlce: exact.
     for (int j = 0; j < kDas2Dofs; ++j) {
       double expected = 0;
-      for (int b = 0; b < kDas2Dofs; ++b) expected += Minv(j, b) * J.moment_arm[i * kDas2Dofs + b] * J.dforce_dlce[i];
+      for (int b = 0; b < kDas2Dofs; ++b) expected += Minv(j, b) * J.moment_arm[b * kMaxElements + i] * J.dforce_dlce[i];
       CHECK(fd(kLce + i, h, kQd + j) == doctest::Approx(expected).epsilon(1e-4).scale(1e-2));
     }
     ++checked;
@@ -209,7 +209,7 @@ TEST_CASE("the structured Jacobian's exact blocks match finite differences of fo
   for (int i = 0; i < n; ++i)
     for (int a = 0; a < kDas2Dofs; ++a)
       for (int b = 0; b < kDas2Dofs; ++b)
-        K(a, b) -= J.dforce_dL[i] * J.moment_arm[i * kDas2Dofs + a] * J.moment_arm[i * kDas2Dofs + b];
+        K(a, b) -= J.dforce_dL[i] * J.moment_arm[a * kMaxElements + i] * J.moment_arm[b * kMaxElements + i];
   for (int a = 0; a < kDas2Dofs; ++a) K(a, a) += J.dtau_passive_dq[a];
   Kj = Minv * K;
   const double rel = (Kj - Kfd).norm() / Kfd.norm();
@@ -237,7 +237,7 @@ static void check_schur_solve(Simulator& sim) {
     }
   const Eigen::MatrixXd Minv = M.inverse();
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < nq; ++j) R(i, j) = J.moment_arm[i * nq + j];
+    for (int j = 0; j < nq; ++j) R(i, j) = J.moment_arm[j * kMaxElements + i];  // by DOF
   Eigen::MatrixXd Kq = -R.transpose() * Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(J.dforce_dL.data(), n)).asDiagonal() * R + G;
   for (int j = 0; j < nq; ++j) Kq(j, j) += J.dtau_passive_dq[j];
   for (int j = 0; j < nq; ++j) Jd(iq + j, iqd + j) = 1.0;
@@ -273,7 +273,7 @@ TEST_CASE("the Schur-complement solve equals a dense LU of I - h gamma J") {
   check_schur_solve(*sim);
 }
 
-TEST_CASE("das3: the Schur-complement solve (lane-pair stiffness and solves, girdle stiffness) equals a dense LU") {
+TEST_CASE("das3: the Schur-complement solve (stiffness and solves by DOF, girdle stiffness) equals a dense LU") {
   const ModelDef* def = find_model("das3");
   REQUIRE(def);
   auto sim = std::make_unique<Simulator>(*def, Integrator::kRos2, 1e-3);
@@ -329,20 +329,21 @@ TEST_CASE("solve_spd: the Cholesky solve for 1-16 DOFs equals Eigen's LLT on mas
     }
 }
 
-TEST_CASE("generalised_force: R^T F for 1-16 DOFs and any number of rows equals the plain sum") {
-  // The lane-pair form (more than 7 DOFs) reads rows 16 values at a time; arrays here end exactly
-  // after the last row, so a read past it would show under the sanitizers and as a wrong sum here.
+TEST_CASE("generalised_force: R^T F for 1-16 DOFs and any number of elements equals the plain sum") {
+  // Eight elements per vector and the rest in scalars; each row's entries past n hold NaN here, so a read
+  // past them would show as a wrong sum.
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> U(-0.05, 0.05);
   for (int ndof = 1; ndof <= kMaxDofs; ++ndof)
     for (int n : {1, 2, 3, 5, 8, 13, 138}) {
-      std::vector<double> R(n * ndof), F(n), tau(ndof);
-      for (double& v : R) v = U(rng);
+      std::vector<double> R(ndof * kMaxElements, std::nan("")), F(n), tau(ndof);
+      for (int j = 0; j < ndof; ++j)
+        for (int i = 0; i < n; ++i) R[j * kMaxElements + i] = U(rng);
       for (double& v : F) v = 1e4 * U(rng);
       generalised_force(R.data(), F.data(), n, ndof, tau.data());
       for (int j = 0; j < ndof; ++j) {
         double expected = 0;
-        for (int i = 0; i < n; ++i) expected += R[i * ndof + j] * F[i];
+        for (int i = 0; i < n; ++i) expected += R[j * kMaxElements + i] * F[i];  // by DOF
         CAPTURE(ndof);
         CAPTURE(n);
         CHECK(tau[j] == doctest::Approx(expected).epsilon(1e-12).scale(1e-9));

@@ -266,7 +266,11 @@ PYBIND11_MODULE(_core, mod) {
         };
         o["qddot"] = copy(s.data.qdd.data(), {nq});
         o["muscle_length"] = copy(s.data.muscle_length.data(), {n});
-        o["moment_arm"] = copy(s.data.moment_arm.data(), {n, nq});
+        {  // (element, DOF) for Python; the engine keeps them by DOF (data.h)
+          Array r({n, nq});
+          moment_arms_by_element(s.data.moment_arm.data(), n, nq, r.mutable_data());
+          o["moment_arm"] = r;
+        }
         o["muscle_force"] = copy(s.data.muscle_force.data(), {n});
         o["fibre_velocity"] = copy(s.data.fibre_velocity.data(), {n});
         o["muscle_torque"] = copy(s.data.muscle_torque.data(), {nq});
@@ -371,7 +375,9 @@ PYBIND11_MODULE(_core, mod) {
         const double* qp = checked(q, nq, "q");
         const int n = s.model.num_elements;
         Array L({n}), R({n, nq});
-        s.model.def->muscle_paths(qp, L.mutable_data(), R.mutable_data());
+        double by_dof[kMaxDofs * kMaxElements];
+        s.model.def->muscle_paths(qp, L.mutable_data(), by_dof);
+        moment_arms_by_element(by_dof, n, nq, R.mutable_data());
         return py::make_tuple(L, R);
       })
       .def("gh_directions", [](const Simulator& s, const Array& q) {

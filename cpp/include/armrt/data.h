@@ -53,10 +53,7 @@ struct StepJacobian {
   std::array<double, kMaxElements> pee_force{};       // N
   std::array<double, kMaxElements> compress_force{};  // N
   std::array<double, kMaxElements> muscle_length{};          // m
-  std::array<double, kMaxElements * kMaxDofs> moment_arm{};  // m, [element][dof], row stride num_dofs
-  // The same moment arms by DOF, [dof][element] with row stride kMaxElements (ROS2 only, rosenbrock.cc): the
-  // per-element dot products of the solves then run across the elements, eight at a time, with no lane sums.
-  std::array<double, kMaxDofs * kMaxElements> moment_arm_by_dof{};  // m
+  std::array<double, kMaxDofs * kMaxElements> moment_arm{};  // m, by DOF: [dof][element], row stride num_elements
   std::array<double, kMaxDofs * kMaxDofs> mass_matrix{};     // kg m^2, num_dofs x num_dofs row-major
   std::array<double, kMaxDofs> dtau_passive_dq{};   // N m/rad, diagonal
   std::array<double, kMaxDofs> dtau_passive_dqd{};  // N m s/rad, diagonal
@@ -70,6 +67,7 @@ struct StepJacobian {
   std::array<double, kMaxElements> series_stiffness{};  // N/m, dforce_dL + dforce_dlce * lce_from_q
   std::array<double, kMaxDofs * kMaxDofs> schur_lu{};   // LU of the num_dofs x num_dofs Schur complement
   std::array<int, kMaxDofs> schur_perm{};               // its row permutation
+  std::array<double, kMaxDofs> schur_inv_diag{};        // 1 / U's diagonal
   std::array<double, kMaxDofs * kMaxDofs> stiffness{};  // N m/rad, K_eff = diag(dtau_passive_dq) + dtau_girdle_dq - R^T diag(series_stiffness) R
   std::array<double, kMaxElements> tmp{};               // scratch of one solve
 };
@@ -79,7 +77,7 @@ struct StepJacobian {
 // from exactly that state with the same h; anything else (a reset, a state set from outside, another
 // step size) makes it evaluate the paths afresh.
 struct PathHistory {
-  std::array<double, kMaxDofs * kMaxElements> moment_arm_by_dof{};  // m, R(q_start), [dof][element], stride kMaxElements
+  std::array<double, kMaxDofs * kMaxElements> moment_arm{};  // m, R(q_start), by DOF as StepJacobian's
   std::array<double, kMaxDofs> q_start{};  // rad, q the last step started at
   std::array<double, kMaxDofs> q_end{};   // rad, q the last step ended at
   std::array<double, kMaxDofs> qd_end{};  // rad/s, and qdot
@@ -117,7 +115,7 @@ struct Data {
 
   // Paths (generated polynomials).
   std::array<double, kMaxElements> muscle_length{};          // m, muscle-tendon length
-  std::array<double, kMaxElements * kMaxDofs> moment_arm{};  // m, [element][dof], row stride num_dofs
+  std::array<double, kMaxDofs * kMaxElements> moment_arm{};  // m, by DOF: [dof][element], row stride num_elements
   // Muscles (muscles.cc).
   std::array<double, kMaxElements> muscle_force{};   // N, tendon (SEE) force
   std::array<double, kMaxElements> fibre_velocity{}; // m/s, d lce/dt (lengthening positive)

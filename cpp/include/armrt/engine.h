@@ -38,27 +38,21 @@ double muscle_equilibrium_lce(const ElementConstants& e, double fibre_damping, d
 // moment arms, qdd, hand position, GH force and stability); with a non-null jac also the parts of the
 // structured Jacobian at x (data.h StepJacobian), in the same pass over the elements.
 void forward(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac = nullptr);
-// How an array of moment arms is laid out: by element ([element][dof], row stride num_dofs: the generated
-// paths' output and Data's) or by DOF ([dof][element], row stride kMaxElements: ROS2's, rosenbrock.cc).
-enum class MomentArmLayout { kByElement, kByDof };
-// forward() after its paths stage, with the muscle-tendon lengths L (m, num_elements) and moment arms R (m,
-// laid out as `layout` says) at x's q given: for ROS2's second stage, whose paths are extrapolated
-// (rosenbrock.cc). Recording (record = true) needs kByElement.
+// forward() after its paths stage, with the muscle-tendon lengths L (m, num_elements) and moment arms R (m, by
+// DOF as ModelDef::muscle_paths writes them) at x's q given: for ROS2's second stage, whose paths are
+// extrapolated (rosenbrock.cc).
 void forward_from_paths(const Model& m, Data& d, const double* x, const double* L, const double* R, double* xdot,
-                        bool record, StepJacobian* jac = nullptr,
-                        MomentArmLayout layout = MomentArmLayout::kByElement);
+                        bool record, StepJacobian* jac = nullptr);
 // muscles.cc. The muscle stage of forward(): activation dynamics and CE velocity of every element (a vectorised
 // loop), their tendon forces (N) and the generalised muscle forces tau = R^T F (N m).
 void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
                      const double* moment_arm, const double* act, const double* lce, double* act_dot,
-                     double* lce_dot, double* force, double* tau, StepJacobian* jac = nullptr,
-                     MomentArmLayout layout = MomentArmLayout::kByElement);
-// Generalised forces tau = R^T F (N m) of n element forces F (N) with moment arms R (n x ndof, m).
+                     double* lce_dot, double* force, double* tau, StepJacobian* jac = nullptr);
+// Generalised forces tau = R^T F (N m) of n element forces F (N) with moment arms R (m) by DOF: ndof rows of n
+// (R[j * n + i], as ModelDef::muscle_paths writes them).
 void generalised_force(const double* moment_arm, const double* force, int n, int ndof, double* tau);
-// The same with R by DOF (ndof rows of n, row stride kMaxElements).
-void generalised_force_by_dof(const double* moment_arm_by_dof, const double* force, int n, int ndof, double* tau);
-// R by element (n x ndof) -> R by DOF (ndof rows, stride kMaxElements; entries past n left as they are).
-void moment_arms_by_dof(const double* moment_arm, int n, int ndof, double* moment_arm_by_dof);
+// Moment arms by DOF (as above) -> (n, ndof) by element, row-major: the layout the Python API returns.
+void moment_arms_by_element(const double* moment_arm, int n, int ndof, double* out);
 // passive_joints.cc. Passive joint moments (N m) at q, qd.
 void passive_joint_torque(const ModelDef& def, const double* q, const double* qd, double* tau);
 // Their derivatives (diagonal): d tau / dq (N m/rad) and d tau / dqd (N m s/rad).

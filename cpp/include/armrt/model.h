@@ -13,7 +13,7 @@ namespace armrt {
 // the full shoulder girdle: 11 and 138). Model and Data reserve room for the largest, so one build runs
 // any generated model and stepping never allocates.
 inline constexpr int kMaxDofs = 16;
-inline constexpr int kMaxElements = 160;
+// kMaxElements: model_def.h (the row stride of muscle_paths' moment arms).
 inline constexpr int kMaxState = 2 * kMaxDofs + 2 * kMaxElements;
 
 // Hill-type muscle constants (McLean et al. 2003, as used by the DAS3 real-time code).
@@ -94,10 +94,10 @@ struct Model {
   // interval cannot hold the resting arm (integrate.cc refuses it).
   double rest_fibre_rate = 0;
   int rest_fibre_element = 0;
-  // The span of DOFs each element crosses (first and last index of its dof_mask): its moment arms are zero
-  // outside it, so the ROS2 stiffness R^T diag(k) R only sums over that block (das3: the girdle-only and
-  // arm-only elements touch a 6x6 or 5x5 block of the 11x11 matrix; rosenbrock.cc).
-  std::array<int, kMaxElements> dof_first{}, dof_last{};
+  // For each DOF, the elements [begin, end) that span those crossing it (by their dof_mask): the moment arms
+  // about it are zero outside, so the ROS2 stiffness R^T diag(k) R sums each row over that range only
+  // (das3: SC is crossed within elements 0-100, GH within 36-102, the elbow within 82-137; rosenbrock.cc).
+  std::array<int, kMaxDofs> dof_elements_begin{}, dof_elements_end{};
 };
 
 // Builds a Model from generated tables. Never allocates; throws std::invalid_argument if the model's

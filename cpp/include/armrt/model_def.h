@@ -12,7 +12,11 @@ namespace armrt {
 // Layout version of the structs below. A model library built on demand (cpp/src/registry.cc) reports the
 // version it was compiled against and is refused if it differs: bump it whenever a field is added,
 // removed, reordered or changes meaning. It is also part of the on-demand build cache key.
-inline constexpr int kModelDefAbiVersion = 2;
+inline constexpr int kModelDefAbiVersion = 3;  // 3: muscle_paths writes moment arms by DOF
+
+// Capacity of a model's muscle elements, and so the row stride of the moment arms by DOF that muscle_paths
+// writes (below): a constant stride lets the engine's loops address every DOF's row from one pointer.
+inline constexpr int kMaxElements = 160;
 
 // Capacity of GirdleDef's contact points (das3: TS and AI).
 inline constexpr int kMaxContactPoints = 4;
@@ -112,7 +116,11 @@ struct ModelDef {
   void (*body_poses)(const double* q, double* R, double* p);             // R[num_bodies*9], p[num_bodies*3] in the base frame
   // Muscle paths (polynomials): lengths, moment arms -dL/dq, lines of action at GH.
   void (*muscle_lengths)(const double* q, double* L);                    // L[E], m
-  void (*muscle_paths)(const double* q, double* L, double* moment_arm);  // L[E], moment_arm[E*n], m
+  // L[E]; moment_arm by DOF, n rows of stride kMaxElements: moment_arm[j*kMaxElements + i] = -dL_i/dq_j (row j:
+  // every element's moment arm about DOF j, zero for the elements that do not cross it), m; entries past E in
+  // a row are left as they are. By DOF so that the engine's loops over elements run eight elements per vector
+  // operation (rosenbrock.cc, muscles.cc).
+  void (*muscle_paths)(const double* q, double* L, double* moment_arm);
   void (*gh_directions)(const double* q, double* d);                     // d[E*3], unit, zero rows for non-GH elements
 };
 

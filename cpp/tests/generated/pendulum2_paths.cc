@@ -14,7 +14,7 @@ namespace armrt::generated::pendulum2 {
 using v8d = double __attribute__((vector_size(64)));
 
 void muscle_lengths(const double* q, double* L) {
-  double moment_arm[10];
+  double moment_arm[2 * kMaxElements];
   muscle_paths(q, L, moment_arm);
 }
 
@@ -27,24 +27,30 @@ void muscle_paths(const double* q, double* L, double* moment_arm) {
   const v8d g0 = q1*g_one - e1;
   const v8d g1 = q0*g_one - e0;
   { const v8d a = (0.26000000000000001*g_one) + (-0.029999999999999999*g1);
-    std::memcpy(moment_arm + 0, &a, 2 * sizeof(double)); L[0] = a[2]; }
+    moment_arm[0 * kMaxElements + 0] = a[0]; moment_arm[1 * kMaxElements + 0] = a[1]; L[0] = a[2]; }
   { const v8d a = (0.25*g_one) + (-0.02*g1);
-    std::memcpy(moment_arm + 2, &a, 2 * sizeof(double)); L[1] = a[2]; }
+    moment_arm[0 * kMaxElements + 1] = a[0]; moment_arm[1 * kMaxElements + 1] = a[1]; L[1] = a[2]; }
   { const v8d a = (0.23999999999999999*g_one) + (0.025000000000000001*g1);
-    std::memcpy(moment_arm + 4, &a, 2 * sizeof(double)); L[2] = a[2]; }
+    moment_arm[0 * kMaxElements + 2] = a[0]; moment_arm[1 * kMaxElements + 2] = a[1]; L[2] = a[2]; }
   { const v8d a = (0.080000000000000002*g_one) + (-0.01*g0);
-    std::memcpy(moment_arm + 6, &a, 2 * sizeof(double)); L[3] = a[2]; }
+    moment_arm[0 * kMaxElements + 3] = a[0]; moment_arm[1 * kMaxElements + 3] = a[1]; L[3] = a[2]; }
   { const v8d a = (0.080000000000000002*g_one) + (0.01*g0);
-    std::memcpy(moment_arm + 8, &a, 2 * sizeof(double)); L[4] = a[2]; }
+    moment_arm[0 * kMaxElements + 4] = a[0]; moment_arm[1 * kMaxElements + 4] = a[1]; L[4] = a[2]; }
 }
 
 void gh_directions(const double* q, double* d) {
   (void)q;
-  d[0] = 0.0; d[1] = 0.0; d[2] = 0.0;
-  d[3] = 0.0; d[4] = 0.0; d[5] = 0.0;
-  d[6] = 0.0; d[7] = 0.0; d[8] = 0.0;
-  d[9] = 0.0; d[10] = 0.0; d[11] = 0.0;
-  d[12] = 0.0; d[13] = 0.0; d[14] = 0.0;
+  double gx[5], gy[5], gz[5];
+  gx[0] = 0.0; gy[0] = 0.0; gz[0] = 0.0;
+  gx[1] = 0.0; gy[1] = 0.0; gz[1] = 0.0;
+  gx[2] = 0.0; gy[2] = 0.0; gz[2] = 0.0;
+  gx[3] = 0.0; gy[3] = 0.0; gz[3] = 0.0;
+  gx[4] = 0.0; gy[4] = 0.0; gz[4] = 0.0;
+  for (int i = 0; i < 5; ++i) {
+    const double n2 = gx[i]*gx[i] + gy[i]*gy[i] + gz[i]*gz[i];
+    const double s = n2 > 0.0 ? 1.0/std::sqrt(n2) : 0.0;
+    d[3*i] = gx[i]*s; d[3*i + 1] = gy[i]*s; d[3*i + 2] = gz[i]*s;
+  }
 }
 
 }  // namespace armrt::generated::pendulum2
