@@ -20,7 +20,12 @@ const char* state_name(const Model& m, int index, char* buf, int buflen) {
 
 bool check_state(const Model& m, Data& d) {
   const int ns = state_size(m);
-  for (int k = 0; k < ns; ++k) {
+  // Every step passes: one vectorised test of the whole state first, the search for the culprit only on
+  // failure (the element loop below read its bounds from the per-element structs one by one).
+  int nonfinite = 0;
+#pragma omp simd reduction(| : nonfinite)
+  for (int k = 0; k < ns; ++k) nonfinite |= !std::isfinite(d.x[k]);
+  for (int k = 0; nonfinite && k < ns; ++k) {
     if (!std::isfinite(d.x[k])) {
       d.status = Status::kNonFinite;
       d.bad_index = k;
@@ -57,8 +62,16 @@ bool check_state(const Model& m, Data& d) {
   // joint angles are visibly wrong; the forces clamp lce at min_lce, so without this check a state below
   // it would go on silently.
   const int n = m.num_elements, iq = q_offset(m), il = lce_offset(m), ia = act_offset(m);
+  const MuscleArrays& mc = m.muscles;
+  int outside = 0;
+#pragma omp simd reduction(| : outside)
+  for (int i = 0; i < n; ++i) {
+    const double lce = d.x[il + i], a = d.x[ia + i];
+    outside |= (lce < mc.min_lce[i]) | (lce > mc.max_lce[i]) | (a < -kActivationTolerance) |
+               (a > 1.0 + kActivationTolerance);
+  }
   int bad = -1;
-  for (int i = n - 1; i >= 0; --i) {
+  for (int i = n - 1; outside && i >= 0; --i) {
     const double lce = d.x[il + i], a = d.x[ia + i];
     if (lce < m.element[i].min_lce || lce > m.element[i].max_lce) bad = il + i;
     if (a < -kActivationTolerance || a > 1.0 + kActivationTolerance) bad = ia + i;

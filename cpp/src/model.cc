@@ -66,6 +66,7 @@ void model_update_derived(Model& m) {
     a.max_activation[i] = e.max_activation;
     a.inv_k_see[i] = 1.0 / e.k_see;
     a.inv_taut_stretch[i] = 1.0 / (0.1 * kTendonStrainAtFmax * e.lslack);
+    a.max_lce[i] = e.max_lce;
   }
   find_rest_fibre_rate(m);
 }

@@ -78,6 +78,7 @@ struct MuscleArrays {
   // Reciprocals for the ROS2 overshoot limiter's loop (rosenbrock.cc), where divisions dominated:
   std::array<double, kMaxElements> inv_k_see;        // 1/k_see, m^2/N
   std::array<double, kMaxElements> inv_taut_stretch; // 1/m, 1 / (a tenth of the tendon's stretch at fmax)
+  std::array<double, kMaxElements> max_lce;          // m, the physical domain's upper CE length (check_state)
 };
 
 struct Model {
