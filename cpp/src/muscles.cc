@@ -1,6 +1,8 @@
 // Stage: muscles. (excitation u, path lengths L, moment arms R, CE lengths lce, activations a) ->
 // (da/dt, dlce/dt, tendon forces F (N), generalised muscle forces tau = R^T F (N m)), and with a
 // Jacobian the kernel's derivatives in the same pass. The element itself: muscle_kernel.h, muscle.cc.
+#include <algorithm>
+
 #include "armrt/engine.h"
 #include "armrt/muscle_kernel.h"
 #include "dof_dispatch.h"
@@ -10,26 +12,37 @@ namespace armrt {
 
 namespace {
 
-// tau[j] = sum_i R[j][i] F[i] with R by DOF (row stride kMaxElements): eight elements per multiply-add, one running sum
-// per DOF (the DOFs' chains side by side), the elements past the last whole eight in scalars.
+// tau[j] = sum_i R[j][i] F[i] with R by DOF (row stride kMaxElements): eight elements per multiply-add over
+// the elements [begin[j], end[j]) that cross DOF j (all n without ranges), two running sums per DOF; the
+// elements past the last whole eight in scalars.
 template <int ndof>
-void generalised_force_n(const double* moment_arm, const double* force, int n, double* tau) {
+void generalised_force_n(const double* moment_arm, const double* force, int n, double* tau, const int* begin,
+                         const int* end) {
   using detail::v8d;
   const int n8 = n / 8 * 8;
-  v8d acc[ndof];
-  for (int j = 0; j < ndof; ++j) acc[j] = v8d{};
-  for (int i = 0; i < n8; i += 8) {
-    v8d f;
-    std::memcpy(&f, force + i, sizeof(v8d));
-    for (int j = 0; j < ndof; ++j) {
-      v8d r;
-      std::memcpy(&r, moment_arm + j * kMaxElements + i, sizeof(v8d));
-      acc[j] += r * f;
-    }
-  }
   for (int j = 0; j < ndof; ++j) {
-    double s = detail::lane_sum(acc[j]);
-    for (int i = n8; i < n; ++i) s += moment_arm[j * kMaxElements + i] * force[i];
+    const double* r = moment_arm + j * kMaxElements;
+    const int i0 = begin ? begin[j] / 8 * 8 : 0;
+    const int i1 = end ? std::min(n8, end[j]) : n8;
+    v8d acc0 = {}, acc1 = {};
+    int i = i0;
+    for (; i + 8 < i1; i += 16) {  // chunks i and i + 8 both start before i1 (and end by n8)
+      v8d r0, r1, f0, f1;
+      std::memcpy(&r0, r + i, sizeof(v8d));
+      std::memcpy(&f0, force + i, sizeof(v8d));
+      std::memcpy(&r1, r + i + 8, sizeof(v8d));
+      std::memcpy(&f1, force + i + 8, sizeof(v8d));
+      acc0 += r0 * f0;
+      acc1 += r1 * f1;
+    }
+    for (; i < i1; i += 8) {
+      v8d r0, f0;
+      std::memcpy(&r0, r + i, sizeof(v8d));
+      std::memcpy(&f0, force + i, sizeof(v8d));
+      acc0 += r0 * f0;
+    }
+    double s = detail::lane_sum(acc0 + acc1);
+    for (int k = n8; k < n; ++k) s += r[k] * force[k];
     tau[j] = s;
   }
 }
@@ -79,11 +92,12 @@ void muscle_dynamics(const Model& m, const double* excitation, const double* mus
       jac->compress_force[i] = der.compress_force;
     }
   }
-  generalised_force(moment_arm, force, n, m.num_dofs, tau);
+  generalised_force(moment_arm, force, n, m.num_dofs, tau, m.dof_elements_begin.data(), m.dof_elements_end.data());
 }
 
-void generalised_force(const double* moment_arm, const double* force, int n, int ndof, double* tau) {
-  detail::dispatch_dofs(ndof, [&](auto N) { generalised_force_n<N>(moment_arm, force, n, tau); });
+void generalised_force(const double* moment_arm, const double* force, int n, int ndof, double* tau,
+                       const int* dof_begin, const int* dof_end) {
+  detail::dispatch_dofs(ndof, [&](auto N) { generalised_force_n<N>(moment_arm, force, n, tau, dof_begin, dof_end); });
 }
 
 void moment_arms_by_element(const double* moment_arm, int n, int ndof, double* out) {

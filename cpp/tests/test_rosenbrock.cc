@@ -329,7 +329,7 @@ TEST_CASE("solve_spd: the Cholesky solve for 1-16 DOFs equals Eigen's LLT on mas
     }
 }
 
-TEST_CASE("generalised_force: R^T F for 1-16 DOFs and any number of elements equals the plain sum") {
+TEST_CASE("generalised_force: R^T F for 1-16 DOFs, any number of elements and DOF spans equals the plain sum") {
   // Eight elements per vector and the rest in scalars; each row's entries past n hold NaN here, so a read
   // past them would show as a wrong sum.
   std::mt19937_64 rng(3);
@@ -346,6 +346,25 @@ TEST_CASE("generalised_force: R^T F for 1-16 DOFs and any number of elements equ
         for (int i = 0; i < n; ++i) expected += R[j * kMaxElements + i] * F[i];  // by DOF
         CAPTURE(ndof);
         CAPTURE(n);
+        CHECK(tau[j] == doctest::Approx(expected).epsilon(1e-12).scale(1e-9));
+      }
+      // With each DOF's span of crossing elements (Model::dof_elements_begin, _end): zero arms outside it.
+      std::vector<int> begin(ndof), end(ndof);
+      for (int j = 0; j < ndof; ++j) {
+        std::uniform_int_distribution<int> pick(0, n);
+        begin[j] = pick(rng), end[j] = pick(rng);
+        if (begin[j] > end[j]) std::swap(begin[j], end[j]);
+        for (int i = 0; i < n; ++i)
+          if (i < begin[j] || i >= end[j]) R[j * kMaxElements + i] = 0.0;
+      }
+      generalised_force(R.data(), F.data(), n, ndof, tau.data(), begin.data(), end.data());
+      for (int j = 0; j < ndof; ++j) {
+        double expected = 0;
+        for (int i = begin[j]; i < end[j]; ++i) expected += R[j * kMaxElements + i] * F[i];
+        CAPTURE(ndof);
+        CAPTURE(n);
+        CAPTURE(begin[j]);
+        CAPTURE(end[j]);
         CHECK(tau[j] == doctest::Approx(expected).epsilon(1e-12).scale(1e-9));
       }
     }

@@ -48,9 +48,12 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
 void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
                      const double* moment_arm, const double* act, const double* lce, double* act_dot,
                      double* lce_dot, double* force, double* tau, StepJacobian* jac = nullptr);
-// Generalised forces tau = R^T F (N m) of n element forces F (N) with moment arms R (m) by DOF: ndof rows of n
-// (R[j * n + i], as ModelDef::muscle_paths writes them).
-void generalised_force(const double* moment_arm, const double* force, int n, int ndof, double* tau);
+// Generalised forces tau = R^T F (N m) of n element forces F (N) with moment arms R (m) by DOF, as
+// ModelDef::muscle_paths writes them (R[j * kMaxElements + i]). With dof_begin and dof_end (Model's
+// dof_elements_begin, _end) row j is summed over the elements [dof_begin[j], dof_end[j]) only, the moment
+// arms being zero outside; without them over all n.
+void generalised_force(const double* moment_arm, const double* force, int n, int ndof, double* tau,
+                       const int* dof_begin = nullptr, const int* dof_end = nullptr);
 // Moment arms by DOF (as above) -> (n, ndof) by element, row-major: the layout the Python API returns.
 void moment_arms_by_element(const double* moment_arm, int n, int ndof, double* out);
 // passive_joints.cc. Passive joint moments (N m) at q, qd.
