@@ -710,9 +710,23 @@ def _grouped_paths(crossed_dofs, lengths, order, tree, NDOF):
     names = ", ".join(f"{b}: DOFs {GROUP_SIZE * b}..{GROUP_SIZE * b + sizes[b] - 1}" for b in range(n_groups))
     zero = (f"  std::memset(moment_arm, 0, ({NDOF - 1} * kMaxElements + {n_el}) * sizeof(double));"
             "  // the DOFs an element does not cross")
+    lines = _drop_unused_scalars(lines, body)
     return ("void muscle_paths(const double* q, double* L, double* moment_arm) {\n"
             f"  // DOF groups (_grouped_paths) {names}.\n"
             + "\n".join([zero] + head + lines + body) + "\n}\n")
+
+
+def _drop_unused_scalars(lines, body):
+    """lines without the `const double pN = ...;` monomials nothing reads (a monomial whose vectors need only
+    its parent's value): the generated file then compiles without -Wunused-variable warnings."""
+    define = re.compile(r"^  const double (p\d+) = ")
+    while True:
+        text = "\n".join(body + [ln.split(" = ", 1)[1] if define.match(ln) else ln for ln in lines])
+        used = set(re.findall(r"\bp\d+\b", text))
+        kept = [ln for ln in lines if not (define.match(ln) and define.match(ln).group(1) not in used)]
+        if len(kept) == len(lines):
+            return lines
+        lines = kept
 
 
 def _paths_file(ns, out, els, dof_index, NDOF, W):
