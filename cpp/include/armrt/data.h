@@ -53,7 +53,7 @@ struct StepJacobian {
   std::array<double, kMaxElements> pee_force{};       // N
   std::array<double, kMaxElements> compress_force{};  // N
   std::array<double, kMaxElements> muscle_length{};          // m
-  std::array<double, kMaxDofs * kMaxElements> moment_arm{};  // m, by DOF: [dof][element], row stride num_elements
+  std::array<double, kMaxDofs * kMaxElements> moment_arm{};  // m, by DOF: [dof][element], row stride kMaxElements (model_def.h)
   std::array<double, kMaxDofs * kMaxDofs> mass_matrix{};     // kg m^2, num_dofs x num_dofs row-major
   std::array<double, kMaxDofs> dtau_passive_dq{};   // N m/rad, diagonal
   std::array<double, kMaxDofs> dtau_passive_dqd{};  // N m s/rad, diagonal
@@ -115,7 +115,7 @@ struct Data {
 
   // Paths (generated polynomials).
   std::array<double, kMaxElements> muscle_length{};          // m, muscle-tendon length
-  std::array<double, kMaxDofs * kMaxElements> moment_arm{};  // m, by DOF: [dof][element], row stride num_elements
+  std::array<double, kMaxDofs * kMaxElements> moment_arm{};  // m, by DOF: [dof][element], row stride kMaxElements (model_def.h)
   // Muscles (muscles.cc).
   std::array<double, kMaxElements> muscle_force{};   // N, tendon (SEE) force
   std::array<double, kMaxElements> fibre_velocity{}; // m/s, d lce/dt (lengthening positive)
