@@ -754,6 +754,8 @@ def _paths_file(ns, out, els, dof_index, NDOF, W):
 
     return ("#include <cmath>\n#include <cstring>\n\n#include \"" + ns + ".h\"\n\n"
             f"namespace armrt::generated::{ns} {{\n\n"
+            f"// muscle_paths writes its moment arms in rows of {MAX_ELEMENTS} (model_def.h): the engine must agree.\n"
+            f"static_assert(kMaxElements == {MAX_ELEMENTS}, \"rebuild this model: the engine's kMaxElements changed\");\n\n"
             + ("// Eight doubles, one SIMD register with AVX-512 (two with AVX2): a length and its moment arms.\n"
                if NDOF <= 7 else "// Four doubles, one AVX2 register: one group's moment arms and a length lane.\n")
             + f"using {vt} = double __attribute__((vector_size({8 * W})));\n\n" + "\n".join(out) + f"\n}}  // namespace armrt::generated::{ns}\n")

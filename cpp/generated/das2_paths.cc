@@ -10,6 +10,9 @@
 
 namespace armrt::generated::das2 {
 
+// muscle_paths writes its moment arms in rows of 160 (model_def.h): the engine must agree.
+static_assert(kMaxElements == 160, "rebuild this model: the engine's kMaxElements changed");
+
 // Eight doubles, one SIMD register with AVX-512 (two with AVX2): a length and its moment arms.
 using v8d = double __attribute__((vector_size(64)));
 

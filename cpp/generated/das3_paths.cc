@@ -10,6 +10,9 @@
 
 namespace armrt::generated::das3 {
 
+// muscle_paths writes its moment arms in rows of 160 (model_def.h): the engine must agree.
+static_assert(kMaxElements == 160, "rebuild this model: the engine's kMaxElements changed");
+
 // Four doubles, one AVX2 register: one group's moment arms and a length lane.
 using v4d = double __attribute__((vector_size(32)));
 

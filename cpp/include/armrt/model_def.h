@@ -15,7 +15,9 @@ namespace armrt {
 inline constexpr int kModelDefAbiVersion = 3;  // 3: muscle_paths writes moment arms by DOF
 
 // Capacity of a model's muscle elements, and so the row stride of the moment arms by DOF that muscle_paths
-// writes (below): a constant stride lets the engine's loops address every DOF's row from one pointer.
+// writes (below): a constant stride lets the engine's loops address every DOF's row from one pointer. It is
+// compiled into every generated model (which static_asserts it), so changing it changes the layout: bump
+// kModelDefAbiVersion with it, and codegen/generate.py's MAX_ELEMENTS.
 inline constexpr int kMaxElements = 160;
 
 // Capacity of GirdleDef's contact points (das3: TS and AI).
@@ -118,7 +120,7 @@ struct ModelDef {
   void (*muscle_lengths)(const double* q, double* L);                    // L[E], m
   // L[E]; moment_arm by DOF, n rows of stride kMaxElements: moment_arm[j*kMaxElements + i] = -dL_i/dq_j (row j:
   // every element's moment arm about DOF j, zero for the elements that do not cross it), m; entries past E in
-  // a row are left as they are. By DOF so that the engine's loops over elements run eight elements per vector
+  // a row are unspecified (may be overwritten). By DOF so that the engine's loops over elements run eight elements per vector
   // operation (rosenbrock.cc, muscles.cc).
   void (*muscle_paths)(const double* q, double* L, double* moment_arm);
   void (*gh_directions)(const double* q, double* d);                     // d[E*3], unit, zero rows for non-GH elements
