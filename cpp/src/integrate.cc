@@ -21,7 +21,7 @@ const char* state_name(const Model& m, int index, char* buf, int buflen) {
 bool check_state(const Model& m, Data& d) {
   const int ns = state_size(m);
   // Every step passes: one vectorised test of the whole state first, the search for the culprit only on
-  // failure (the element loop below read its bounds from the per-element structs one by one).
+  // failure (both read the CE-length bounds from MuscleArrays).
   int nonfinite = 0;
 #pragma omp simd reduction(| : nonfinite)
   for (int k = 0; k < ns; ++k) nonfinite |= !std::isfinite(d.x[k]);
@@ -73,7 +73,7 @@ bool check_state(const Model& m, Data& d) {
   int bad = -1;
   for (int i = n - 1; outside && i >= 0; --i) {
     const double lce = d.x[il + i], a = d.x[ia + i];
-    if (lce < m.element[i].min_lce || lce > m.element[i].max_lce) bad = il + i;
+    if (lce < mc.min_lce[i] || lce > mc.max_lce[i]) bad = il + i;
     if (a < -kActivationTolerance || a > 1.0 + kActivationTolerance) bad = ia + i;
   }
   for (int j = m.num_dofs - 1; j >= 0; --j) {

@@ -238,10 +238,9 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
   const double hg = kRos2Gamma * h;
   const double b0 = m.fibre_damping;
   // Muscle-tendon lengthening rates dL/dt = -R qd (m/s), then one branch-free pass per element.
-  double L_rate[kMaxElements];
-  detail::dispatch_dofs(nq, [&](auto N) { moment_arm_dot<N>(jac.moment_arm.data(), x + iqd, n, L_rate); });
-#pragma omp simd
-  for (int i = 0; i < n; ++i) L_rate[i] = -L_rate[i];
+  double L_rate[kMaxElements], minus_qd[kMaxDofs];
+  for (int j = 0; j < nq; ++j) minus_qd[j] = -x[iqd + j];
+  detail::dispatch_dofs(nq, [&](auto N) { moment_arm_dot<N>(jac.moment_arm.data(), minus_qd, n, L_rate); });
   const double* lce_x = x + lce_offset(m);
   const double* a_x = x + ia;
   const double* lce_rate = xdot + lce_offset(m);
