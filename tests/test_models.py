@@ -160,6 +160,8 @@ def test_several_data_per_model_are_independent():
         a.data.q[0] = 1.0  # read-only views
     out = a.data.outputs()
     assert out["moment_arm"].shape == (102, 5) and np.isfinite(out["gh_stab"])
+    # The outputs' moment arms are the polynomials' at the state they describe (computed from its q).
+    np.testing.assert_array_equal(out["moment_arm"], a.moment_arms(a.q))
     d3 = copy.deepcopy(a.data)
     assert d3.get_state() == a.data.get_state() and d3.model is m
     a.step(5)

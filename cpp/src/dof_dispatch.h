@@ -11,13 +11,19 @@
 
 namespace armrt::detail {
 
-// Calls f(std::integral_constant<int, N>{}) for N == n, 1 <= n <= kMaxDofs (model_init checks n).
-template <int N = 1, class F>
-inline void dispatch_dofs(int n, F&& f) {
-  if constexpr (N <= kMaxDofs) {
+// Calls f(std::integral_constant<int, N>{}) for N == n, 1 <= n <= Max (nothing for other n).
+template <int Max, int N = 1, class F>
+inline void dispatch_count(int n, F&& f) {
+  if constexpr (N <= Max) {
     if (n == N) f(std::integral_constant<int, N>{});
-    else dispatch_dofs<N + 1>(n, static_cast<F&&>(f));
+    else dispatch_count<Max, N + 1>(n, static_cast<F&&>(f));
   }
+}
+
+// The model's DOF count, 1 <= n <= kMaxDofs (model_init checks n).
+template <class F>
+inline void dispatch_dofs(int n, F&& f) {
+  dispatch_count<kMaxDofs>(n, static_cast<F&&>(f));
 }
 
 }  // namespace armrt::detail

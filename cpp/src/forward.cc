@@ -63,8 +63,8 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
   }
 
   if (!record) return;
+  std::copy(q, q + nq, d.output_q.begin());
   std::copy(L, L + n, d.muscle_length.begin());
-  for (int j = 0; j < nq; ++j) std::copy(R + j * kMaxElements, R + j * kMaxElements + n, d.moment_arm.begin() + j * kMaxElements);
   std::copy(force, force + n, d.muscle_force.begin());
   std::copy(xdot + il, xdot + il + n, d.fibre_velocity.begin());
   for (int j = 0; j < nq; ++j) {

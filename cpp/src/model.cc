@@ -107,6 +107,19 @@ void model_init(Model& m, const ModelDef& def) {
     m.element[i].strength_scale = 1.0;
     m.element[i].max_activation = def.elements[i].max_activation;
   }
+  m.num_element_runs = 0;
+  const unsigned all_dofs = (1u << m.num_dofs) - 1u;
+  for (int b = 0; b + 8 <= m.num_elements; b += 8) {
+    unsigned crossed = 0;
+    for (int i = b; i < b + 8; ++i) {
+      const unsigned mask = static_cast<unsigned>(def.elements[i].dof_mask) & all_dofs;
+      crossed |= mask ? mask : all_dofs;
+    }
+    const int lo = __builtin_ctz(crossed), hi = 31 - __builtin_clz(crossed);
+    Model::ElementRun* last = m.num_element_runs ? &m.element_runs[m.num_element_runs - 1] : nullptr;
+    if (last && last->dof_lo == lo && last->dof_hi == hi) last->end = b + 8;
+    else m.element_runs[m.num_element_runs++] = {b, b + 8, lo, hi};
+  }
   model_update_derived(m);
 }
 

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #include "armrt/engine.h"
 #include "armrt/muscle_kernel.h"
@@ -70,19 +71,24 @@ void lu_solve(const double* lu, const int* perm, const double* inv_diag, const d
 }
 
 // out[i] = sum_j R[j][i] v[j] (i < n), the per-element dot products with moment arms by DOF (data.h):
-// eight elements per multiply-add, summed over the DOFs in order; past the last whole eight in scalars.
+// eight elements per multiply-add, each whole block of eight over the DOFs its run crosses
+// (Model::element_runs; the other terms are zero, so the sums are the same to the bit), in DOF order;
+// past the last whole eight over all DOFs in scalars.
 template <int nq>
-void moment_arm_dot(const double* R, const double* v, int n, double* out) {
+void moment_arm_dot(const Model& m, const double* R, const double* v, double* out) {
   using detail::v8d;
-  const int n8 = n / 8 * 8;
-  for (int i = 0; i < n8; i += 8) {
-    v8d acc = {};
-    for (int j = 0; j < nq; ++j) {
-      v8d r;
-      std::memcpy(&r, R + j * kMaxElements + i, sizeof(v8d));
-      acc += r * v[j];
+  const int n = m.num_elements, n8 = n / 8 * 8;
+  for (int r = 0; r < m.num_element_runs; ++r) {
+    const Model::ElementRun& run = m.element_runs[r];
+    for (int i = run.begin; i < run.end; i += 8) {
+      v8d acc = {};
+      for (int j = run.dof_lo; j <= run.dof_hi; ++j) {
+        v8d rj;
+        std::memcpy(&rj, R + j * kMaxElements + i, sizeof(v8d));
+        acc += rj * v[j];
+      }
+      std::memcpy(out + i, &acc, sizeof(v8d));
     }
-    std::memcpy(out + i, &acc, sizeof(v8d));
   }
   for (int i = n8; i < n; ++i) {
     double s = 0;
@@ -98,6 +104,53 @@ constexpr double kRos2Gamma = 1.7071067811865475;  // 1 + 1/sqrt(2)
 constexpr double kEngagingActiveForce = 0.05;
 
 namespace {
+
+// acc[b] += sum over the elements [begin, end) of c_i R[a][i] R[a + b][i], b < count, eight elements per
+// multiply-add (R by DOF, data.h). count is a template parameter so that the sums stay in registers.
+template <int count>
+[[gnu::always_inline]] inline void stiffness_run(const double* c, const double* ra, int begin, int end,
+                                                 detail::v8d* acc) {
+  using detail::v8d;
+  for (int i = begin; i < end; i += 8) {
+    v8d ci, rai;
+    std::memcpy(&ci, c + i, sizeof(v8d));
+    std::memcpy(&rai, ra + i, sizeof(v8d));
+    const v8d cr = ci * rai;
+#pragma GCC unroll 16
+    for (int b = 0; b < count; ++b) {
+      v8d rb;
+      std::memcpy(&rb, ra + b * kMaxElements + i, sizeof(v8d));
+      acc[b] += cr * rb;
+    }
+  }
+}
+
+// Row a of R^T diag(c) R (entries b >= a, mirrored into column a), negated into K (nq x nq): over the whole
+// blocks of eight elements run by run (Model::element_runs), each run only for the DOFs it crosses, the
+// row's sums side by side in registers; the elements past the last whole eight in scalars. (The loop is
+// bound by loading moment arms: das3's zero rows were 60 % of them.) Each product is added to the same
+// lane of the same sum, in the same order, as over all elements: skipping the zeros changes no bit.
+template <int nq, int a>
+void stiffness_row(const Model& m, const double* R, const double* c, double* K) {
+  using detail::v8d;
+  constexpr int nb = nq - a;
+  const int n = m.num_elements, n8 = n / 8 * 8;
+  const double* ra = R + a * kMaxElements;
+  v8d acc[nb];
+#pragma GCC unroll 16
+  for (int b = 0; b < nb; ++b) acc[b] = v8d{};
+  for (int r = 0; r < m.num_element_runs; ++r) {
+    const Model::ElementRun& run = m.element_runs[r];
+    if (a < run.dof_lo || a > run.dof_hi) continue;
+    detail::dispatch_count<nb>(run.dof_hi - a + 1,
+                               [&](auto count) { stiffness_run<count>(c, ra, run.begin, run.end, acc); });
+  }
+  for (int b = 0; b < nb; ++b) {
+    double s = detail::lane_sum(acc[b]);
+    for (int i = n8; i < n; ++i) s += (c[i] * ra[i]) * R[(a + b) * kMaxElements + i];
+    K[a * nq + a + b] = K[(a + b) * nq + a] = -s;
+  }
+}
 
 template <int nq>
 void jacobian_factor_n(const Model& m, StepJacobian& jac, double hg) {
@@ -118,36 +171,10 @@ void jacobian_factor_n(const Model& m, StepJacobian& jac, double hg) {
   // entry K[a][b] (b >= a) a sum across the elements, eight per multiply-add, row a's sums side by side in
   // registers; only over the elements that cross DOF a (Model::dof_elements_begin, _end: das3's arm-only and
   // girdle-only elements leave a block of each row out), the elements past the last whole eight in scalars.
-  using detail::v8d;
-  double K[nq * nq] = {};
-  const double* c = jac.series_stiffness.data();
-  const int n8 = n / 8 * 8;
-  for (int a = 0; a < nq; ++a) {
-    const double* ra = R + a * kMaxElements;
-    v8d acc[nq];
-#pragma GCC unroll 16
-    for (int b = 0; b < nq; ++b) acc[b] = v8d{};
-    const int begin = m.dof_elements_begin[a] / 8 * 8;
-    const int end = std::min(n8, m.dof_elements_end[a]);
-    for (int i = begin; i < end; i += 8) {
-      v8d ci, rai;
-      std::memcpy(&ci, c + i, sizeof(v8d));
-      std::memcpy(&rai, ra + i, sizeof(v8d));
-      const v8d cr = ci * rai;
-#pragma GCC unroll 16
-      for (int b = 0; b < nq; ++b) {
-        if (b < a) continue;
-        v8d rb;
-        std::memcpy(&rb, R + b * kMaxElements + i, sizeof(v8d));
-        acc[b] += cr * rb;
-      }
-    }
-    for (int b = a; b < nq; ++b) {
-      double s = detail::lane_sum(acc[b]);
-      for (int i = n8; i < n; ++i) s += (c[i] * ra[i]) * R[b * kMaxElements + i];
-      K[a * nq + b] = K[b * nq + a] = -s;
-    }
-  }
+  double K[nq * nq];
+  [&]<int... A>(std::integer_sequence<int, A...>) {
+    (stiffness_row<nq, A>(m, R, jac.series_stiffness.data(), K), ...);
+  }(std::make_integer_sequence<int, nq>{});
   for (int a = 0; a < nq; ++a) K[a * nq + a] += jac.dtau_passive_dq[a];
   if (m.def->girdle)
     for (int k = 0; k < nq * nq; ++k) K[k] += jac.dtau_girdle_dq[k];
@@ -200,7 +227,7 @@ void jacobian_solve_n(const Model& m, StepJacobian& jac, const double* r, double
     k[iqd + a] = kqd[a];
   }
   double rk[kMaxElements];
-  moment_arm_dot<nq>(R, kq, n, rk);
+  moment_arm_dot<nq>(m, R, kq, rk);
 #pragma omp simd
   for (int i = 0; i < n; ++i) k[il + i] = p[i] - jac.lce_from_q[i] * rk[i];
 }
@@ -240,7 +267,7 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
   // Muscle-tendon lengthening rates dL/dt = -R qd (m/s), then one branch-free pass per element.
   double L_rate[kMaxElements], minus_qd[kMaxDofs];
   for (int j = 0; j < nq; ++j) minus_qd[j] = -x[iqd + j];
-  detail::dispatch_dofs(nq, [&](auto N) { moment_arm_dot<N>(jac.moment_arm.data(), minus_qd, n, L_rate); });
+  detail::dispatch_dofs(nq, [&](auto N) { moment_arm_dot<N>(m, jac.moment_arm.data(), minus_qd, L_rate); });
   const double* lce_x = x + lce_offset(m);
   const double* a_x = x + ia;
   const double* lce_rate = xdot + lce_offset(m);
@@ -353,33 +380,37 @@ namespace {
 // keeps R_n as the next step's R_{n-1}.
 template <int nq>
 void extrapolate_paths_n(const Model& m, Data& d, const double* q_n, const double* q2, double* L2, double* R2) {
-  // Moment arms by DOF (data.h), so each line below runs across eight elements at a time.
+  // Moment arms by DOF (data.h), so each line below runs across eight elements at a time; each whole block
+  // of eight only over the DOFs its run crosses (Model::element_runs): the other rows stay zero in R2 and
+  // R_prev (PathHistory), and their terms of L2's sum are zero.
   using detail::v8d;
-  const int n = m.num_elements;
+  const int n = m.num_elements, n8 = n / 8 * 8;
   const double* L_n = d.jac.muscle_length.data();
   const double* R_n = d.jac.moment_arm.data();
   double* R_prev = d.path_history.moment_arm.data();
   double dq[nq];
   for (int a = 0; a < nq; ++a) dq[a] = q2[a] - q_n[a];
-  int i = 0;
-  for (; i + 8 <= n; i += 8) {
-    v8d s = {};
-    for (int a = 0; a < nq; ++a) {
-      const int o = a * kMaxElements + i;
-      v8d rn, rp;
-      std::memcpy(&rn, R_n + o, sizeof(v8d));
-      std::memcpy(&rp, R_prev + o, sizeof(v8d));
-      const v8d e = 2.0 * rn - rp;
-      std::memcpy(R2 + o, &e, sizeof(v8d));
-      std::memcpy(R_prev + o, &rn, sizeof(v8d));
-      s += (rn + e) * dq[a];
+  for (int r = 0; r < m.num_element_runs; ++r) {
+    const Model::ElementRun& run = m.element_runs[r];
+    for (int i = run.begin; i < run.end; i += 8) {
+      v8d s = {};
+      for (int a = run.dof_lo; a <= run.dof_hi; ++a) {
+        const int o = a * kMaxElements + i;
+        v8d rn, rp;
+        std::memcpy(&rn, R_n + o, sizeof(v8d));
+        std::memcpy(&rp, R_prev + o, sizeof(v8d));
+        const v8d e = 2.0 * rn - rp;
+        std::memcpy(R2 + o, &e, sizeof(v8d));
+        std::memcpy(R_prev + o, &rn, sizeof(v8d));
+        s += (rn + e) * dq[a];
+      }
+      v8d ln;
+      std::memcpy(&ln, L_n + i, sizeof(v8d));
+      const v8d l2 = ln - 0.5 * s;
+      std::memcpy(L2 + i, &l2, sizeof(v8d));
     }
-    v8d ln;
-    std::memcpy(&ln, L_n + i, sizeof(v8d));
-    const v8d l2 = ln - 0.5 * s;
-    std::memcpy(L2 + i, &l2, sizeof(v8d));
   }
-  for (; i < n; ++i) {
+  for (int i = n8; i < n; ++i) {
     double s = 0;
     for (int a = 0; a < nq; ++a) {
       const int o = a * kMaxElements + i;
@@ -405,7 +436,7 @@ void ros2_stages(const Model& m, Data& d, double h, bool record) {
   for (int k = 0; k < ns; ++k) xt[k] = x[k] + h * d.k2[k];
   if (extrapolate) {
     double L2[kMaxElements];
-    double R2[kMaxDofs * kMaxElements];
+    double* R2 = d.path_history.stage2_moment_arm.data();
     detail::dispatch_dofs(m.num_dofs, [&](auto N) {
       extrapolate_paths_n<N>(m, d, x + q_offset(m), xt + q_offset(m), L2, R2);
     });

@@ -2,10 +2,12 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "armrt/registry.h"
 #include "armrt/simulator.h"
 #include "test_util.h"
 
@@ -133,6 +135,54 @@ TEST_CASE("gravity magnitude 9.80665, scapula rotation orthonormal, gravity = R^
   Model m;
   model_init(m, def);
   for (int k = 0; k < 3; ++k) CHECK(m.gravity_base[k] == g[k]);
+}
+
+TEST_CASE("element runs: whole blocks of eight in order, each crossing exactly its DOF range") {
+  // Model::element_runs lets the ROS2 step skip moment-arm rows that are zero: a run must cover its blocks'
+  // crossed DOFs (else a nonzero moment arm would be dropped) and nothing else is assumed.
+  std::mt19937_64 rng(3);
+  for (const ModelDef* def : registered_models()) {
+    Model m;
+    model_init(m, *def);
+    const int n = m.num_elements, nq = m.num_dofs;
+    CAPTURE(def->name);
+    int expected_begin = 0;
+    for (int r = 0; r < m.num_element_runs; ++r) {
+      const Model::ElementRun& run = m.element_runs[r];
+      CHECK(run.begin == expected_begin);
+      CHECK(run.end > run.begin);
+      CHECK(run.end % 8 == 0);
+      const bool range_ok = 0 <= run.dof_lo && run.dof_lo <= run.dof_hi && run.dof_hi < nq;
+      CHECK(range_ok);
+      const bool differs = r == 0 || run.dof_lo != m.element_runs[r - 1].dof_lo ||
+                           run.dof_hi != m.element_runs[r - 1].dof_hi;
+      CHECK(differs);
+      for (int b = run.begin; b < run.end; b += 8) {
+        unsigned crossed = 0;
+        for (int i = b; i < b + 8; ++i) crossed |= static_cast<unsigned>(def->elements[i].dof_mask);
+        const unsigned in_range = ((2u << run.dof_hi) - 1u) & ~((1u << run.dof_lo) - 1u);
+        const bool ends_crossed = (crossed >> run.dof_lo & 1u) && (crossed >> run.dof_hi & 1u);
+        CHECK(ends_crossed);
+        CHECK((crossed & ~in_range) == 0u);
+      }
+      expected_begin = run.end;
+    }
+    CHECK(expected_begin == n / 8 * 8);
+    // The polynomials agree: zero moment arms outside each run's range, at random postures in range.
+    std::vector<double> q(nq), L(n), R(static_cast<size_t>(nq) * kMaxElements);
+    for (int trial = 0; trial < 20; ++trial) {
+      for (int j = 0; j < nq; ++j)
+        q[j] = std::uniform_real_distribution<double>(def->dofs[j].range_min, def->dofs[j].range_max)(rng);
+      def->muscle_paths(q.data(), L.data(), R.data());
+      for (int r = 0; r < m.num_element_runs; ++r) {
+        const Model::ElementRun& run = m.element_runs[r];
+        for (int j = 0; j < nq; ++j) {
+          if (j >= run.dof_lo && j <= run.dof_hi) continue;
+          for (int i = run.begin; i < run.end; ++i) CHECK(R[j * kMaxElements + i] == 0.0);
+        }
+      }
+    }
+  }
 }
 
 TEST_CASE("mass matrix symmetric positive definite; moment arms = -dL/dq") {

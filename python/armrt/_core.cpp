@@ -266,9 +266,11 @@ PYBIND11_MODULE(_core, mod) {
         };
         o["qddot"] = copy(s.data.qdd.data(), {nq});
         o["muscle_length"] = copy(s.data.muscle_length.data(), {n});
-        {  // (element, DOF) for Python; the engine keeps them by DOF (data.h)
+        {  // at the outputs' q (data.h), as (element, DOF) for Python; the engine keeps them by DOF
+          std::vector<double> L(n), R(static_cast<size_t>(s.model.num_dofs) * kMaxElements);
+          s.model.def->muscle_paths(s.data.output_q.data(), L.data(), R.data());
           Array r({n, nq});
-          moment_arms_by_element(s.data.moment_arm.data(), n, nq, r.mutable_data());
+          moment_arms_by_element(R.data(), n, nq, r.mutable_data());
           o["moment_arm"] = r;
         }
         o["muscle_force"] = copy(s.data.muscle_force.data(), {n});

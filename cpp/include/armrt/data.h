@@ -78,6 +78,9 @@ struct StepJacobian {
 // step size) makes it evaluate the paths afresh.
 struct PathHistory {
   std::array<double, kMaxDofs * kMaxElements> moment_arm{};  // m, R(q_start), by DOF as StepJacobian's
+  // m, the second stage's extrapolated moment arms, by DOF; written only where Model::element_runs cross (and
+  // the elements past them), so zero wherever the polynomials' are.
+  std::array<double, kMaxDofs * kMaxElements> stage2_moment_arm{};
   std::array<double, kMaxDofs> q_start{};  // rad, q the last step started at
   std::array<double, kMaxDofs> q_end{};   // rad, q the last step ended at
   std::array<double, kMaxDofs> qd_end{};  // rad/s, and qdot
@@ -113,9 +116,11 @@ struct Data {
   std::array<double, 3> hand_force{};   // N, applied at the hand point, thorax frame
   std::array<double, 3> hand_moment{};  // N m, applied to the hand, thorax frame
 
+  // The joint angles the outputs describe (rad): the moment arms there are muscle_paths(output_q) (not copied
+  // at every recorded step: 1.5 k doubles for das3, 3 % of its step).
+  std::array<double, kMaxDofs> output_q{};
   // Paths (generated polynomials).
   std::array<double, kMaxElements> muscle_length{};          // m, muscle-tendon length
-  std::array<double, kMaxDofs * kMaxElements> moment_arm{};  // m, by DOF: [dof][element], row stride kMaxElements (model_def.h)
   // Muscles (muscles.cc).
   std::array<double, kMaxElements> muscle_force{};   // N, tendon (SEE) force
   std::array<double, kMaxElements> fibre_velocity{}; // m/s, d lce/dt (lengthening positive)

@@ -34,8 +34,8 @@ MuscleOut muscle_element_derivatives(const ElementConstants& e, double fibre_dam
 double muscle_equilibrium_lce(const ElementConstants& e, double fibre_damping, double L, double a);
 
 // ---- forward.cc (the pipeline) and its stage files
-// Evaluates dx/dt at state x into xdot. With record = true also fills the outputs of d (forces,
-// moment arms, qdd, hand position, GH force and stability); with a non-null jac also the parts of the
+// Evaluates dx/dt at state x into xdot. With record = true also fills the outputs of d (the q they
+// describe, path lengths, forces, qdd, hand position, GH force and stability); with a non-null jac also the parts of the
 // structured Jacobian at x (data.h StepJacobian), in the same pass over the elements.
 void forward(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac = nullptr);
 // forward() after its paths stage, with the muscle-tendon lengths L (m, num_elements) and moment arms R (m, by
