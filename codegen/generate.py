@@ -734,17 +734,31 @@ def _paths_file(ns, out, els, dof_index, NDOF, W):
     # gh_directions: the polynomials into three arrays, then one loop normalises them, which the compiler
     # vectorises (a square root and a division per element were most of its cost as scalar code). No pragma:
     # the file must compile warning-free with any flags (tests/gen_lib.py builds it with -Wall -Werror).
+    # Each element's x, y, z as the lanes of one vector, one multiply-add per monomial (three scalar ones were
+    # 3 % of a recorded das3 step).
     mono = _Monomials(NDOF)
     n_el = len(els)
-    body = [f"  double gx[{n_el}], gy[{n_el}], gz[{n_el}];"]
+    body = ["  using v3d = double __attribute__((vector_size(32)));  // x, y, z and an unused lane",
+            f"  double gx[{n_el}], gy[{n_el}], gz[{n_el}];"]
     for i, e in enumerate(els):
         gd = e["gh_direction"]
         if gd is None:
             body.append(f"  gx[{i}] = 0.0; gy[{i}] = 0.0; gz[{i}] = 0.0;")
             continue
-        comps = [_sum(_global_poly(gd[c], gd["dofs"], dof_index), mono) for c in "xyz"]
-        for c, expr in zip("xyz", comps):
-            body.append(f"  g{c}[{i}] = {expr};")
+        coefs: dict = {}
+        for k, c in enumerate("xyz"):
+            for coef, ex in _global_poly(gd[c], gd["dofs"], dof_index):
+                if coef != 0.0:
+                    coefs.setdefault(ex, [0.0, 0.0, 0.0])[k] += coef
+        if not coefs:
+            body.append(f"  gx[{i}] = 0.0; gy[{i}] = 0.0; gz[{i}] = 0.0;")
+            continue
+        parts = []
+        for ex, (cx, cy, cz) in coefs.items():
+            vec = f"v3d{{{cxx.fmt(cx)}, {cxx.fmt(cy)}, {cxx.fmt(cz)}, 0.0}}"
+            name = mono.ref(ex)
+            parts.append(vec if name is None else f"{vec}*{name}")
+        body.append(f"  {{ const v3d g = {' + '.join(parts)}; gx[{i}] = g[0]; gy[{i}] = g[1]; gz[{i}] = g[2]; }}")
     body += [f"  for (int i = 0; i < {n_el}; ++i) {{",
              "    const double n2 = gx[i]*gx[i] + gy[i]*gy[i] + gz[i]*gz[i];",
              "    const double s = n2 > 0.0 ? 1.0/std::sqrt(n2) : 0.0;",

@@ -43,6 +43,7 @@ void muscle_paths(const double* q, double* L, double* moment_arm) {
 
 void gh_directions(const double* q, double* d) {
   (void)q;
+  using v3d = double __attribute__((vector_size(32)));  // x, y, z and an unused lane
   double gx[5], gy[5], gz[5];
   gx[0] = 0.0; gy[0] = 0.0; gz[0] = 0.0;
   gx[1] = 0.0; gy[1] = 0.0; gz[1] = 0.0;
