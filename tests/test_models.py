@@ -193,33 +193,47 @@ def test_set_state_continues_bit_for_bit(integrator):
 
 
 def test_state_carries_ros2_history(tmp_path):
-    """ROS2 extrapolates its second-stage paths from the moment arms at the previous step's start (docs/engine.md):
-    the State keeps that q so that a restore continues bit for bit; without it the continuation differs by one
-    extrapolation's error only."""
+    """ROS2 evaluates the paths at one step in three and extrapolates them from the last two evaluations
+    (docs/engine.md): the State keeps their q so that a restore continues bit for bit, whichever step of the
+    three it stops at; without them the continuation differs by the extrapolation's error only."""
     arm = armrt.Arm()
-    assert arm.get_state().previous_q is None and arm.get_state().previous_step == 0.0  # not reached by a step
+    s0 = arm.get_state()
+    assert s0.path_anchors is None and s0.path_anchor_steps == (0, 0) and s0.previous_step == 0.0  # no step yet
     arm.set_excitation({"elbow_flexors": 0.4, "deltoid": 0.2})
     before = arm.q.copy()
     arm.step(1)
     s = arm.get_state()
-    np.testing.assert_array_equal(s.previous_q, before)
-    assert s.previous_step == 1e-3
-    arm.step(10)
-    s = arm.get_state()
-    ahead = arm.simulate(arm.excitation, duration=0.05)
-    bare = armrt.State(**{**s.as_dict(), "previous_q": None, "previous_step": 0.0})
-    assert bare != s
-    for state, exact in ((s, True), (bare, False)):
-        arm.set_state(state)
-        again = arm.simulate(arm.excitation, duration=0.05)
-        diff = np.abs(again.q - ahead.q).max()
-        assert (diff == 0.0) if exact else (0.0 < diff < 1e-6), diff
-    with pytest.raises(ValueError, match="previous_q must have shape"):
-        arm.set_state(armrt.State(**{**s.as_dict(), "previous_q": np.zeros(3)}))
+    np.testing.assert_array_equal(s.path_anchors, before[None, :])  # the first step's evaluation only
+    assert s.path_anchor_steps == (0, 1) and s.previous_step == 1e-3
+    seen = set()
+    for _ in range(3):
+        arm.step(1)
+        s = arm.get_state()
+        assert s.path_anchors.shape == (2, 5)
+        seen.add(s.path_anchor_steps[1])
+        ahead = arm.simulate(arm.excitation, duration=0.05)
+        bare = armrt.State(**{**s.as_dict(), "path_anchors": None, "path_anchor_steps": (0, 0), "previous_step": 0.0})
+        assert bare != s
+        for state, exact in ((s, True), (bare, False)):
+            arm.set_state(state)
+            again = arm.simulate(arm.excitation, duration=0.05)
+            diff = np.abs(again.q - ahead.q).max()
+            assert (diff == 0.0) if exact else (0.0 < diff < 1e-5), diff
+        arm.set_state(s)
+    assert seen == {1, 2, 3}
+    with pytest.raises(ValueError, match=r"path_anchors must have shape \(1, 5\) or \(2, 5\)"):
+        arm.set_state(armrt.State(**{**s.as_dict(), "path_anchors": np.zeros(3)}))
     with pytest.raises(ValueError, match="previous_step must be finite"):
         arm.set_state(armrt.State(**{**s.as_dict(), "previous_step": -1.0}))
-    with pytest.raises(ValueError, match="previous_q is not one step of 0.001 s before q: GHy would have moved at 300 rad/s"):
-        arm.set_state(armrt.State(**{**s.as_dict(), "previous_q": s.q + np.array([0.3, 0, 0, 0, 0])}))
+    with pytest.raises(ValueError, match="path_anchor_steps must be two whole numbers"):
+        armrt.State(**{**s.as_dict(), "path_anchor_steps": (1.5, 1)})
+    with pytest.raises(ValueError, match=r"path_anchor_steps \(2, 7\): .*steps since the newest anchor must be 1 to 3"):
+        arm.set_state(armrt.State(**{**s.as_dict(), "path_anchor_steps": (2, 7)}))
+    far = s.path_anchors.copy()
+    far[-1] = s.q + np.array([0.3, 0, 0, 0, 0]) * s.path_anchor_steps[1]
+    with pytest.raises(ValueError, match=r"path_anchors\[-1\] is not \d step\(s\) of 0.001 s before the next anchor or q: "
+                                         "GHy would have moved at 300 rad/s"):
+        arm.set_state(armrt.State(**{**s.as_dict(), "path_anchors": far}))
     # Through a file and back (State.as_dict's documented use), with and without the memory.
     for state in (s, bare):
         path = tmp_path / "state.npz"
@@ -230,7 +244,7 @@ def test_state_carries_ros2_history(tmp_path):
     # Another integrator has no such memory.
     rk4 = armrt.Arm(integrator="rk4")
     rk4.step(3)
-    assert rk4.get_state().previous_q is None
+    assert rk4.get_state().path_anchors is None
 
 
 def test_set_state_refuses_another_model_and_bad_values(tmp_path):

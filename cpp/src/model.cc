@@ -109,9 +109,9 @@ void model_init(Model& m, const ModelDef& def) {
   }
   m.num_element_runs = 0;
   const unsigned all_dofs = (1u << m.num_dofs) - 1u;
-  for (int b = 0; b + 8 <= m.num_elements; b += 8) {
+  for (int b = 0; b < m.num_elements; b += 8) {
     unsigned crossed = 0;
-    for (int i = b; i < b + 8; ++i) {
+    for (int i = b; i < std::min(b + 8, m.num_elements); ++i) {
       const unsigned mask = static_cast<unsigned>(def.elements[i].dof_mask) & all_dofs;
       crossed |= mask ? mask : all_dofs;
     }

@@ -4,8 +4,8 @@
 //   (I - h gamma J) k1 = f(x_n)
 //   (I - h gamma J) k2 = f(x_n + h k1) - 2 k1
 //   x_{n+1} = x_n + h (3/2 k1 + 1/2 k2)
-// The second evaluation takes its muscle paths extrapolated from the last two steps' moment arms when the
-// step continues the previous one (extrapolate_paths_n), which keeps the order.
+// Along a run of equal steps the muscle paths are evaluated at one step in kRos2PathPeriod and extrapolated
+// from the last two evaluations at every other evaluation of f (extrapolate_paths_n), which keeps the order.
 // J is the structured ("arrow") Jacobian of data.h StepJacobian. The linear systems are never formed
 // as a state-sized matrix (214 x 214 for das2): the activation rows are scalar, each CE-length row is
 // scalar once the joint part is known, and what remains is an n x n Schur complement (n = num_dofs) in
@@ -20,6 +20,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "armrt/engine.h"
@@ -70,14 +72,13 @@ void lu_solve(const double* lu, const int* perm, const double* inv_diag, const d
   }
 }
 
-// out[i] = sum_j R[j][i] v[j] (i < n), the per-element dot products with moment arms by DOF (data.h):
-// eight elements per multiply-add, each whole block of eight over the DOFs its run crosses
-// (Model::element_runs; the other terms are zero, so the sums are the same to the bit), in DOF order;
-// past the last whole eight over all DOFs in scalars.
+// out[i] = sum_j R[j][i] v[j], the per-element dot products with moment arms by DOF (data.h): eight elements
+// per multiply-add, each block of eight over the DOFs its run crosses (Model::element_runs; the other terms
+// are zero, so the sums are the same to the bit), in DOF order. out has room for the last block's ghost
+// lanes (zeros).
 template <int nq>
 void moment_arm_dot(const Model& m, const double* R, const double* v, double* out) {
   using detail::v8d;
-  const int n = m.num_elements, n8 = n / 8 * 8;
   for (int r = 0; r < m.num_element_runs; ++r) {
     const Model::ElementRun& run = m.element_runs[r];
     for (int i = run.begin; i < run.end; i += 8) {
@@ -89,11 +90,6 @@ void moment_arm_dot(const Model& m, const double* R, const double* v, double* ou
       }
       std::memcpy(out + i, &acc, sizeof(v8d));
     }
-  }
-  for (int i = n8; i < n; ++i) {
-    double s = 0;
-    for (int j = 0; j < nq; ++j) s += R[j * kMaxElements + i] * v[j];
-    out[i] = s;
   }
 }
 
@@ -125,16 +121,14 @@ template <int count>
   }
 }
 
-// Row a of R^T diag(c) R (entries b >= a, mirrored into column a), negated into K (nq x nq): over the whole
-// blocks of eight elements run by run (Model::element_runs), each run only for the DOFs it crosses, the
-// row's sums side by side in registers; the elements past the last whole eight in scalars. (The loop is
-// bound by loading moment arms: das3's zero rows were 60 % of them.) Each product is added to the same
-// lane of the same sum, in the same order, as over all elements: skipping the zeros changes no bit.
+// Row a of R^T diag(c) R (entries b >= a, mirrored into column a), negated into K (nq x nq): over the blocks
+// of eight elements run by run (Model::element_runs; c and R are zero in the last block's ghost lanes), each
+// run only for the DOFs it crosses, the row's sums side by side in registers. (The loop is bound by loading
+// moment arms: das3's zero rows were 60 % of them.) Skipping zeros changes no bit of a sum.
 template <int nq, int a>
 void stiffness_row(const Model& m, const double* R, const double* c, double* K) {
   using detail::v8d;
   constexpr int nb = nq - a;
-  const int n = m.num_elements, n8 = n / 8 * 8;
   const double* ra = R + a * kMaxElements;
   v8d acc[nb];
 #pragma GCC unroll 16
@@ -146,8 +140,7 @@ void stiffness_row(const Model& m, const double* R, const double* c, double* K) 
                                [&](auto count) { stiffness_run<count>(c, ra, run.begin, run.end, acc); });
   }
   for (int b = 0; b < nb; ++b) {
-    double s = detail::lane_sum(acc[b]);
-    for (int i = n8; i < n; ++i) s += (c[i] * ra[i]) * R[(a + b) * kMaxElements + i];
+    const double s = detail::lane_sum(acc[b]);
     K[a * nq + a + b] = K[(a + b) * nq + a] = -s;
   }
 }
@@ -277,7 +270,7 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
   double* dvel_da = jac.dvel_da.data();
   double* dforce_dL = jac.dforce_dL.data();
   double* dforce_dlce = jac.dforce_dlce.data();
-  double taut[kMaxElements], L_op[kMaxElements], lce_at_op[kMaxElements], a_op[kMaxElements];
+  double taut[kMaxElements], L_op[kMaxElements], lce_at_op[kMaxElements], along_at_op[kMaxElements], a_op[kMaxElements];
   // Where the CE may run through its operating point: the distance to it (m, 0 elsewhere) and the drive.
   double op_gap[kMaxElements], op_disp[kMaxElements];
   int limited = 0;
@@ -337,6 +330,7 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
     taut[i] = taut_w < 0.0 ? 0.0 : (taut_w > 1.0 ? 1.0 : taut_w);
     L_op[i] = L_next;
     lce_at_op[i] = lce_op;
+    along_at_op[i] = along_op;
     a_op[i] = a_next;
   }
   // The elements whose CE runs through its operating point within the step: rare (a slack tendon
@@ -350,9 +344,11 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
   for (int i = 0; i < n; ++i) {
     double force_op, vel_op;
     MuscleDerivatives op;
-    muscle_kernel_derivatives(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
-                              mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.compress_length[i], mc.k_compress[i], mc.ecc_c[i], mc.damping_slope[i], b0,
-                              L_op[i], lce_at_op[i], a_op[i], &force_op, &vel_op, &op);
+    // lce_op >= min_lce (along_op is at least min_lce), and its projection on the tendon is along_op.
+    muscle_kernel_derivatives_along(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.vmax[i], mc.k_see[i],
+                                    mc.k_pee[i], mc.pee_slack[i], mc.compress_length[i], mc.k_compress[i], mc.ecc_c[i],
+                                    mc.damping_slope[i], b0, L_op[i], lce_at_op[i], along_at_op[i],
+                                    lce_at_op[i] > mc.min_lce[i], a_op[i], &force_op, &vel_op, &op);
     // Blended, not switched: weight 0 where the operating point is no stiffer, rising to 1 where it is
     // 1.5x stiffer, times the tendon's tautness. A switch here made the step, and so the trajectory,
     // jump with a 1e-9 rad change of the start.
@@ -372,84 +368,123 @@ void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const doubl
 
 namespace {
 
-// The second stage's paths at q2 (= q_n + h k1_q) from the first stage's at q_n and the last step's moment
-// arms R_{n-1}, instead of the polynomials (evaluated twice, they were 30 % of a das3 step):
-//   R(q2) ~ 2 R_n - R_{n-1},    L(q2) ~ L_n - (R_n + R(q2))/2 . (q2 - q_n)    (R = -dL/dq)
-// q2 - q_n and q_n - q_{n-1} are both h qd + O(h^2), so the moment arms' error is O(h^2) and the lengths'
-// O(h^3): ROS2 stays second order, as with any O(h^2) error in its second stage's evaluation of f. Also
-// keeps R_n as the next step's R_{n-1}.
+// Paths extrapolated from the last two exact evaluations (PathHistory's anchors, at q_old and q_new) instead
+// of the polynomials (evaluated at both stages of every step, they were 30 % of a das3 step):
+//   R_out = R_new + c (R_new - R_old)                   (linear in time: c = steps past q_new / anchor spacing)
+//   L_out = L_from - (R_from + R_out)/2 . (q_to - q_from)   (trapezoid along the step, R = -dL/dq)
+// The anchors are at most two steps apart and the extrapolation reaches at most two steps past the newest, all
+// of them h qd + O(h^2) apart, so the moment arms' error is O(h^2) and the lengths' O(h^3): ROS2 stays second
+// order (tests/test_rosenbrock.cc checks 4x per halving of h), as with any O(h^2) error in an evaluation of f.
+// Moment arms by DOF (data.h), so each line below runs across eight elements at a time; each block of eight
+// only over the DOFs its run crosses (Model::element_runs): the other rows of R_out are left as they are (zero
+// in every buffer this writes), and their terms of L_out's sum are zero. The last block's ghost lanes are
+// zero in R and L_from and written as zeros (L_out has room for them).
 template <int nq>
-void extrapolate_paths_n(const Model& m, Data& d, const double* q_n, const double* q2, double* L2, double* R2) {
-  // Moment arms by DOF (data.h), so each line below runs across eight elements at a time; each whole block
-  // of eight only over the DOFs its run crosses (Model::element_runs): the other rows stay zero in R2 and
-  // R_prev (PathHistory), and their terms of L2's sum are zero.
+void extrapolate_paths_n(const Model& m, const double* R_old, const double* R_new, double c, const double* L_from,
+                         const double* R_from, const double* q_from, const double* q_to, double* L_out,
+                         double* R_out) {
   using detail::v8d;
-  const int n = m.num_elements, n8 = n / 8 * 8;
-  const double* L_n = d.jac.muscle_length.data();
-  const double* R_n = d.jac.moment_arm.data();
-  double* R_prev = d.path_history.moment_arm.data();
   double dq[nq];
-  for (int a = 0; a < nq; ++a) dq[a] = q2[a] - q_n[a];
+  for (int a = 0; a < nq; ++a) dq[a] = q_to[a] - q_from[a];
   for (int r = 0; r < m.num_element_runs; ++r) {
     const Model::ElementRun& run = m.element_runs[r];
     for (int i = run.begin; i < run.end; i += 8) {
       v8d s = {};
       for (int a = run.dof_lo; a <= run.dof_hi; ++a) {
         const int o = a * kMaxElements + i;
-        v8d rn, rp;
-        std::memcpy(&rn, R_n + o, sizeof(v8d));
-        std::memcpy(&rp, R_prev + o, sizeof(v8d));
-        const v8d e = 2.0 * rn - rp;
-        std::memcpy(R2 + o, &e, sizeof(v8d));
-        std::memcpy(R_prev + o, &rn, sizeof(v8d));
-        s += (rn + e) * dq[a];
+        v8d rn, ro, rf;
+        std::memcpy(&rn, R_new + o, sizeof(v8d));
+        std::memcpy(&ro, R_old + o, sizeof(v8d));
+        std::memcpy(&rf, R_from + o, sizeof(v8d));
+        const v8d e = rn + c * (rn - ro);
+        std::memcpy(R_out + o, &e, sizeof(v8d));
+        s += (rf + e) * dq[a];
       }
-      v8d ln;
-      std::memcpy(&ln, L_n + i, sizeof(v8d));
-      const v8d l2 = ln - 0.5 * s;
-      std::memcpy(L2 + i, &l2, sizeof(v8d));
+      v8d lf;
+      std::memcpy(&lf, L_from + i, sizeof(v8d));
+      const v8d lo = lf - 0.5 * s;
+      std::memcpy(L_out + i, &lo, sizeof(v8d));
     }
-  }
-  for (int i = n8; i < n; ++i) {
-    double s = 0;
-    for (int a = 0; a < nq; ++a) {
-      const int o = a * kMaxElements + i;
-      const double e = 2.0 * R_n[o] - R_prev[o];
-      R2[o] = e;
-      s += (R_n[o] + e) * dq[a];
-      R_prev[o] = R_n[o];
-    }
-    L2[i] = L_n[i] - 0.5 * s;
   }
 }
 
+void extrapolate_paths(const Model& m, const PathHistory& ph, double c, const double* L_from, const double* R_from,
+                       const double* q_from, const double* q_to, double* L_out, double* R_out) {
+  const double* R_new = ph.anchor_moment_arm[ph.newest].data();
+  const double* R_old = ph.anchor_moment_arm[1 - ph.newest].data();
+  detail::dispatch_dofs(m.num_dofs, [&](auto N) {
+    extrapolate_paths_n<N>(m, R_old, R_new, c, L_from, R_from, q_from, q_to, L_out, R_out);
+  });
+}
+
+// The exact paths just evaluated at q (jac) become the newest anchor; the newest becomes the old one.
+void add_anchor(const Model& m, PathHistory& ph, const double* q, const StepJacobian& jac) {
+  const int nq = m.num_dofs, n = m.num_elements;
+  if (ph.num_anchors >= 1) {
+    ph.anchor_spacing = ph.steps_since_anchor;
+    std::copy(ph.anchor_q_new.begin(), ph.anchor_q_new.begin() + nq, ph.anchor_q_old.begin());
+    ph.newest ^= 1;
+    ph.num_anchors = 2;
+  } else {
+    ph.anchor_spacing = 0;
+    ph.num_anchors = 1;
+  }
+  // The rows the runs cross (the other rows are zero in both), eight at a time (a library copy per row and run
+  // cost more in calls than in bytes).
+  double* R = ph.anchor_moment_arm[ph.newest].data();
+  const double* src = jac.moment_arm.data();
+  for (int r = 0; r < m.num_element_runs; ++r) {
+    const Model::ElementRun& run = m.element_runs[r];
+    for (int a = run.dof_lo; a <= run.dof_hi; ++a)
+      for (int i = run.begin; i < run.end; i += 8) {
+        detail::v8d v;
+        std::memcpy(&v, src + a * kMaxElements + i, sizeof v);
+        std::memcpy(R + a * kMaxElements + i, &v, sizeof v);
+      }
+  }
+  std::copy(jac.muscle_length.begin(), jac.muscle_length.begin() + n, ph.anchor_muscle_length.begin());
+  std::copy(q, q + nq, ph.anchor_q_new.begin());
+  ph.steps_since_anchor = 0;
+}
+
 // One ROS2 step of h from d.x; leaves the two stage vectors in d.k2 (k1) and d.k4 (k2), x untouched.
+// Paths: a step that continues the history extrapolates its second stage's from the anchors, and so does
+// every other step its first stage's (the step after an exact one); the rest evaluate the polynomials.
 void ros2_stages(const Model& m, Data& d, double h, bool record) {
   const int ns = state_size(m);
   const double* x = d.x.data();
-  const bool extrapolate = ros2_continues_history(m, d, h);
-  forward(m, d, x, d.k1.data(), record, &d.jac);
+  const double* q = x + q_offset(m);
+  PathHistory& ph = d.path_history;
+  StepJacobian& jac = d.jac;
+  if (!ros2_continues_history(m, d, h)) ph.num_anchors = 0;
+  if (ph.num_anchors == 2 && ph.steps_since_anchor < kRos2PathPeriod) {
+    extrapolate_paths(m, ph, static_cast<double>(ph.steps_since_anchor) / ph.anchor_spacing,
+                      ph.anchor_muscle_length.data(),
+                      ph.anchor_moment_arm[ph.newest].data(), ph.anchor_q_new.data(), q, jac.muscle_length.data(),
+                      jac.moment_arm.data());
+    forward_from_paths(m, d, x, jac.muscle_length.data(), jac.moment_arm.data(), d.k1.data(), record, &jac);
+  } else {
+    forward(m, d, x, d.k1.data(), record, &jac);
+    add_anchor(m, ph, q, jac);
+  }
   limit_fibre_overshoot(m, d, x, d.k1.data(), h);
-  jacobian_factor(m, d.jac, kRos2Gamma * h);
-  jacobian_solve(m, d.jac, d.k1.data(), d.k2.data());
+  jacobian_factor(m, jac, kRos2Gamma * h);
+  jacobian_solve(m, jac, d.k1.data(), d.k2.data());
   double* xt = d.xtmp.data();
   for (int k = 0; k < ns; ++k) xt[k] = x[k] + h * d.k2[k];
-  if (extrapolate) {
+  if (ph.num_anchors == 2) {
+    // The second stage is one step past the first (q2 = q_n + h k1_q).
     double L2[kMaxElements];
-    double* R2 = d.path_history.stage2_moment_arm.data();
-    detail::dispatch_dofs(m.num_dofs, [&](auto N) {
-      extrapolate_paths_n<N>(m, d, x + q_offset(m), xt + q_offset(m), L2, R2);
-    });
+    double* R2 = ph.stage2_moment_arm.data();
+    extrapolate_paths(m, ph, static_cast<double>(ph.steps_since_anchor + 1) / ph.anchor_spacing,
+                      jac.muscle_length.data(), jac.moment_arm.data(), q, xt + q_offset(m), L2, R2);
     forward_from_paths(m, d, xt, L2, R2, d.k3.data(), false);
   } else {
     forward(m, d, xt, d.k3.data(), false);
-    const int nr = m.num_dofs * kMaxElements;
-    std::copy(d.jac.moment_arm.begin(), d.jac.moment_arm.begin() + nr, d.path_history.moment_arm.begin());
   }
-  std::copy(x + q_offset(m), x + q_offset(m) + m.num_dofs, d.path_history.q_start.begin());
-  d.path_history.h = 0;  // until ros2_update takes the step
+  ph.h = 0;  // until ros2_update takes the step
   for (int k = 0; k < ns; ++k) d.k3[k] -= 2.0 * d.k2[k];
-  jacobian_solve(m, d.jac, d.k3.data(), d.k4.data());
+  jacobian_solve(m, jac, d.k3.data(), d.k4.data());
 }
 
 // The embedded first-order solution is x_n + h k1 (linearly implicit Euler); their difference
@@ -472,6 +507,7 @@ void ros2_update(const Model& m, Data& d, double h) {
   for (int k = 0; k < ns; ++k) d.x[k] += h * (1.5 * d.k2[k] + 0.5 * d.k4[k]);
   PathHistory& ph = d.path_history;
   ph.h = h;
+  ++ph.steps_since_anchor;
   for (int j = 0; j < m.num_dofs; ++j) {
     ph.q_end[j] = d.x[q_offset(m) + j];
     ph.qd_end[j] = d.x[qd_offset(m) + j];
@@ -489,14 +525,37 @@ bool ros2_continues_history(const Model& m, const Data& d, double h) {
   return same;
 }
 
-void ros2_restore_history(const Model& m, Data& d, const double* q_start, double h) {
+void ros2_restore_history(const Model& m, Data& d, const double* anchor_q, int num_anchors, int anchor_spacing,
+                          int steps_since_anchor, double h) {
   PathHistory& ph = d.path_history;
   ph.h = 0;
-  if (!(h > 0)) return;
-  double L[kMaxElements];
-  m.def->muscle_paths(q_start, L, ph.moment_arm.data());
-  for (int j = 0; j < m.num_dofs; ++j) {
-    ph.q_start[j] = q_start[j];
+  ph.num_anchors = 0;
+  if (!(h > 0) || num_anchors == 0) return;
+  if (num_anchors < 0 || num_anchors > 2)
+    throw std::invalid_argument("ROS2 history: 0, 1 or 2 path anchors, got " + std::to_string(num_anchors));
+  const std::string period = std::to_string(kRos2PathPeriod);
+  if (num_anchors == 2 ? (anchor_spacing < 1 || anchor_spacing > kRos2PathPeriod) : anchor_spacing != 0)
+    throw std::invalid_argument("ROS2 history: anchor spacing " + std::to_string(anchor_spacing) + " with " +
+                                std::to_string(num_anchors) + " anchors (expected 1 to " + period +
+                                " steps with two, 0 with one)");
+  if (steps_since_anchor < 1 || steps_since_anchor > kRos2PathPeriod)
+    throw std::invalid_argument("ROS2 history: steps since the newest anchor must be 1 to " + period + ", got " +
+                                std::to_string(steps_since_anchor));
+  const int nq = m.num_dofs;
+  const double* q_new = anchor_q + (num_anchors - 1) * nq;
+  // The polynomials again at the anchors' q: the same function of the same q, so the same bits.
+  double L_old[kMaxElements];
+  ph.newest = 0;
+  m.def->muscle_paths(q_new, ph.anchor_muscle_length.data(), ph.anchor_moment_arm[0].data());
+  std::copy(q_new, q_new + nq, ph.anchor_q_new.begin());
+  if (num_anchors == 2) {
+    m.def->muscle_paths(anchor_q, L_old, ph.anchor_moment_arm[1].data());
+    std::copy(anchor_q, anchor_q + nq, ph.anchor_q_old.begin());
+  }
+  ph.num_anchors = num_anchors;
+  ph.anchor_spacing = anchor_spacing;
+  ph.steps_since_anchor = steps_since_anchor;
+  for (int j = 0; j < nq; ++j) {
     ph.q_end[j] = d.x[q_offset(m) + j];
     ph.qd_end[j] = d.x[qd_offset(m) + j];
   }

@@ -307,7 +307,7 @@ TEST_CASE("forward() with a Jacobian leaves the kernel's lce-only terms for the 
   }
 }
 
-TEST_CASE("solve_spd: the Cholesky solve for 1-16 DOFs equals Eigen's LLT on mass-matrix-like systems") {
+TEST_CASE("solve_spd: Cholesky (1-7 DOFs) and L D L^T (8-16) solves equal Eigen's LLT on mass-matrix-like systems") {
   // Well and badly scaled SPD matrices (das3's mass matrix spans ~1e-4 to ~1 kg m^2 on its diagonal).
   std::mt19937_64 rng(11);
   std::normal_distribution<double> N(0.0, 1.0);
@@ -435,7 +435,7 @@ double max_q_difference(const Simulator& a, const Simulator& b) {
   return e;
 }
 
-TEST_CASE("das3: ROS2's extrapolated second-stage paths differ from evaluated ones by O(h^2) (4x per halving)") {
+TEST_CASE("das3: ROS2's extrapolated paths differ from evaluated ones by O(h^2) (4x per halving)") {
   // The extrapolation's errors in R and L are O(h^2) and O(h^3) (rosenbrock.cc), so over a fixed time the
   // trajectories with and without it part by O(h^2): ROS2 stays second order.
   const double hs[3] = {2e-3, 1e-3, 5e-4};
@@ -448,33 +448,89 @@ TEST_CASE("das3: ROS2's extrapolated second-stage paths differ from evaluated on
   CHECK(diff[1] < 1e-4);  // 0.006 deg after 0.1 s of girdle and arm motion; ROS2's own error is ~1e-4 rad
 }
 
+TEST_CASE("ROS2 keeps the last block's ghost lanes zero (Model::element_runs reads them)") {
+  // das2's 102 and das3's 138 elements leave 2 ghost lanes in their last block of eight.
+  for (const char* name : {"das2", "das3"}) {
+    CAPTURE(name);
+    const ModelDef* def = find_model(name);
+    REQUIRE(def);
+    auto sim = std::make_unique<Simulator>(*def, Integrator::kRos2, 1e-3);
+    for (int g = 0; g < def->num_groups; ++g) armrt_test::set_group_excitation(*sim, def->groups[g].name, 0.3);
+    const Model& m = sim->model;
+    const Data& d = sim->data;
+    const int n = m.num_elements, end = (n + 7) / 8 * 8;
+    REQUIRE(end > n);
+    for (int k = 0; k < 7; ++k) {  // both kinds of step, and a step after a reset
+      REQUIRE(sim->step());
+      if (k == 3) sim->reset(nullptr, nullptr, nullptr);
+      for (int i = n; i < end; ++i) {
+        CAPTURE(i);
+        CHECK(d.jac.series_stiffness[i] == 0.0);
+        CHECK(d.jac.muscle_length[i] == 0.0);
+        CHECK(d.path_history.anchor_muscle_length[i] == 0.0);
+        for (int j = 0; j < m.num_dofs; ++j) {
+          const int o = j * kMaxElements + i;
+          CHECK(d.jac.moment_arm[o] == 0.0);
+          CHECK(d.path_history.anchor_moment_arm[0][o] == 0.0);
+          CHECK(d.path_history.anchor_moment_arm[1][o] == 0.0);
+          CHECK(d.path_history.stage2_moment_arm[o] == 0.0);
+        }
+      }
+    }
+  }
+}
+
 TEST_CASE("a state restored with its ROS2 history continues bit for bit, one without it by one extrapolation's error") {
-  auto a = das3_run(1e-3, 0.05, false);
-  const PathHistory& ph = a->data.path_history;
-  REQUIRE(ros2_continues_history(a->model, a->data, 1e-3));
-  REQUIRE_FALSE(ros2_continues_history(a->model, a->data, 5e-4));  // another step size starts afresh
-  auto with = std::make_unique<Simulator>(*a->model.def, Integrator::kRos2, 1e-3);
-  auto without = std::make_unique<Simulator>(*a->model.def, Integrator::kRos2, 1e-3);
-  for (Simulator* s : {with.get(), without.get()}) {
-    s->data.x = a->data.x;
-    s->data.excitation = a->data.excitation;
+  // The paths are evaluated at steps 0, 1, then every kRos2PathPeriod-th: stopping after 1 step leaves one
+  // anchor, after 50, 51, 52 each position within the period, so all restorations are covered.
+  for (const int steps : {50, 51, 52, 1}) {
+    CAPTURE(steps);
+    auto a = das3_run(1e-3, steps * 1e-3, false);
+    const PathHistory& ph = a->data.path_history;
+    const int nq = a->model.num_dofs;
+    REQUIRE(ros2_continues_history(a->model, a->data, 1e-3));
+    REQUIRE_FALSE(ros2_continues_history(a->model, a->data, 5e-4));  // another step size starts afresh
+    CHECK(ph.num_anchors == (steps >= 2 ? 2 : 1));
+    CHECK(ph.steps_since_anchor == (steps >= 2 ? (steps - 2) % kRos2PathPeriod + 1 : 1));
+    auto with = std::make_unique<Simulator>(*a->model.def, Integrator::kRos2, 1e-3);
+    auto without = std::make_unique<Simulator>(*a->model.def, Integrator::kRos2, 1e-3);
+    for (Simulator* s : {with.get(), without.get()}) {
+      s->data.x = a->data.x;
+      s->data.excitation = a->data.excitation;
+    }
+    double anchors[2 * kMaxDofs];
+    const double* newest = ph.anchor_q_new.data();
+    if (ph.num_anchors == 2) std::copy(ph.anchor_q_old.begin(), ph.anchor_q_old.begin() + nq, anchors);
+    std::copy(newest, newest + nq, anchors + (ph.num_anchors - 1) * nq);
+    ros2_restore_history(with->model, with->data, anchors, ph.num_anchors, ph.anchor_spacing, ph.steps_since_anchor,
+                         ph.h);
+    CHECK(ros2_continues_history(with->model, with->data, 1e-3));
+    CHECK_FALSE(ros2_continues_history(without->model, without->data, 1e-3));
+    for (int k = 0; k < 20; ++k) {
+      REQUIRE(a->step());
+      REQUIRE(with->step());
+      REQUIRE(without->step());
+    }
+    for (int s = 0; s < state_size(a->model); ++s) CHECK(with->data.x[s] == a->data.x[s]);
+    const double d = max_q_difference(*a, *without);
+    MESSAGE("20 steps from a state without its history: max |q| difference " << d << " rad");
+    CHECK(d > 0.0);
+    CHECK(d < 1e-5);  // 0.0006 deg: the first steps of a fast activation onset are the worst
+    // A state changed from outside is not the one the history ended at: the next step evaluates afresh.
+    with->data.x[qd_offset(with->model)] += 1e-3;
+    CHECK_FALSE(ros2_continues_history(with->model, with->data, 1e-3));
   }
-  ros2_restore_history(with->model, with->data, ph.q_start.data(), ph.h);
-  CHECK(ros2_continues_history(with->model, with->data, 1e-3));
-  CHECK_FALSE(ros2_continues_history(without->model, without->data, 1e-3));
-  for (int k = 0; k < 20; ++k) {
-    REQUIRE(a->step());
-    REQUIRE(with->step());
-    REQUIRE(without->step());
-  }
-  for (int s = 0; s < state_size(a->model); ++s) CHECK(with->data.x[s] == a->data.x[s]);
-  const double d = max_q_difference(*a, *without);
-  MESSAGE("20 steps from a state without its history: max |q| difference " << d << " rad");
-  CHECK(d > 0.0);
-  CHECK(d < 1e-7);
-  // A state changed from outside is not the one the history ended at: the next step evaluates afresh.
-  with->data.x[qd_offset(with->model)] += 1e-3;
-  CHECK_FALSE(ros2_continues_history(with->model, with->data, 1e-3));
+  // Counts that no run of steps leaves are refused by name.
+  auto s = das3_run(1e-3, 0.002, false);
+  double q2[2 * kMaxDofs] = {};
+  CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 3, 1, 1, 1e-3), doctest::Contains("anchors"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 2, 0, 1, 1e-3), doctest::Contains("spacing"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 1, 1, 1, 1e-3), doctest::Contains("spacing"),
+                       std::invalid_argument);
+  CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 1, 0, kRos2PathPeriod + 1, 1e-3),
+                       doctest::Contains("since"), std::invalid_argument);
 }
 
 }  // TEST_SUITE

@@ -243,18 +243,29 @@ PYBIND11_MODULE(_core, mod) {
         raise_if_failed(s);
       }, py::arg("n") = 1)
       .def("clear_error", [](Simulator& s) { s.data.status = Status::kOk; s.data.bad_index = -1; s.data.bad_contact = -1; })
-      // ROS2's memory (data.h PathHistory): (q the last step started at, its h) if the state is where that step
-      // ended, else None; and its restoration for a state restored from a snapshot.
+      // ROS2's memory (data.h PathHistory): (anchors (k, ndof) rad, anchor spacing, steps since the newest
+      // anchor, h) if the state is where the last step ended, else None; and its restoration for a state
+      // restored from a snapshot (k = 0 clears it).
       .def("ros2_history", [](const Simulator& s) -> py::object {
         const PathHistory& ph = s.data.path_history;
-        if (!ros2_continues_history(s.model, s.data, ph.h)) return py::none();
-        Array q(s.model.num_dofs);
-        std::copy(ph.q_start.begin(), ph.q_start.begin() + s.model.num_dofs, q.mutable_data());
-        return py::make_tuple(q, ph.h);
+        if (!ros2_continues_history(s.model, s.data, ph.h) || ph.num_anchors == 0) return py::none();
+        const int nq = s.model.num_dofs;
+        Array q({static_cast<py::ssize_t>(ph.num_anchors), static_cast<py::ssize_t>(nq)});
+        double* out = q.mutable_data();
+        if (ph.num_anchors == 2) std::copy(ph.anchor_q_old.begin(), ph.anchor_q_old.begin() + nq, out);
+        std::copy(ph.anchor_q_new.begin(), ph.anchor_q_new.begin() + nq, out + (ph.num_anchors - 1) * nq);
+        return py::make_tuple(q, ph.anchor_spacing, ph.steps_since_anchor, ph.h);
       })
-      .def("restore_ros2_history", [](Simulator& s, const Array& q_start, double h) {
-        ros2_restore_history(s.model, s.data, checked(q_start, s.model.num_dofs, "previous_q"), h);
-      }, py::arg("q_start"), py::arg("h"))
+      .def("restore_ros2_history", [](Simulator& s, const Array& anchors, int anchor_spacing, int steps_since_anchor,
+                                      double h) {
+        const int nq = s.model.num_dofs;
+        if (anchors.ndim() != 2 || anchors.shape(1) != nq || anchors.shape(0) > 2)
+          throw std::invalid_argument("ROS2 history: anchors must have shape (0, 1 or 2, " + std::to_string(nq) + ")");
+        const int k = static_cast<int>(anchors.shape(0));
+        for (py::ssize_t i = 0; i < anchors.size(); ++i)
+          if (!std::isfinite(anchors.data()[i])) throw std::invalid_argument("ROS2 history: anchors contain NaN or inf");
+        ros2_restore_history(s.model, s.data, anchors.data(), k, anchor_spacing, steps_since_anchor, h);
+      }, py::arg("anchors"), py::arg("anchor_spacing"), py::arg("steps_since_anchor"), py::arg("h"))
       .def("evaluate_outputs", &Simulator::evaluate_outputs)
       .def("outputs", [](Simulator& s) {
         const int n = s.model.num_elements, nq = s.model.num_dofs;

@@ -679,16 +679,17 @@ class Arm:
     # ------------------------------------------------------------------ snapshots
     def get_state(self):
         """An armrt.State: time, q, qdot, lce (fibre lengths), activations, the held excitation and the
-        hand force and moment, and ROS2's memory (previous_q, previous_step: the q the last integration
-        step started from and its size), as copies. set_state(s) later and the same steps give bit for bit
-        the same trajectory (fixed-step integrators; CVODE restarts its history at a restored state)."""
+        hand force and moment, and ROS2's memory (path_anchors, path_anchor_steps, previous_step: where
+        and how many steps ago it last evaluated the muscle paths, and the step size), as copies.
+        set_state(s) later and the same steps give bit for bit the same trajectory (fixed-step
+        integrators; CVODE restarts its history at a restored state)."""
         with self._exclusive():
             return self.data.get_state()
 
     def set_state(self, state) -> None:
         """Restores an armrt.State from get_state() of an arm of the same model (ValueError otherwise, or
-        for a previous_q more than one step at max_joint_speed away from q). ROS2's memory is rebuilt from
-        previous_q; a State without it makes the next step evaluate the paths afresh.
+        for path anchors farther from q than max_joint_speed allows). ROS2's memory is rebuilt from
+        path_anchors; a State without it makes the next step evaluate the paths afresh.
         The excitation is capped at this arm's max_activation; a divergence error is cleared. Strength,
         max_activation, gravity and the integrator are the arm's own, not part of the State."""
         with self._exclusive():

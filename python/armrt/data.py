@@ -26,16 +26,17 @@ class State:
 
     Fields (ndof DOFs, n elements): model (name), source_hash (SHA-256 of the model file), time (s),
     q (ndof,) rad, qdot (ndof,) rad/s, lce (n,) m (fibre lengths), activation (n,), excitation (n,) in
-    [0, 1], hand_force (3,) N and hand_moment (3,) N m (thorax frame), previous_q (ndof,) rad or None,
-    previous_step (s).
+    [0, 1], hand_force (3,) N and hand_moment (3,) N m (thorax frame), path_anchors (k, ndof) rad or None,
+    path_anchor_steps (2 ints), previous_step (s).
 
-    previous_q and previous_step are ROS2's memory: the q the integration step that reached this state
-    started from and that step's size, dt / substeps (a halved ros2_adaptive step's half). The next step's
-    second stage extrapolates the muscle paths from the moment arms there (docs/engine.md); a restored
-    State rebuilds them from previous_q. None and 0.0 (a State built by hand, or not reached by a ROS2
-    step): the next step evaluates the paths afresh, so a run continued from it differs from the original
-    one by one extrapolation's error (das3: about 1e-7 rad after 20 steps, up to 2e-6 rad in fast
-    transients)."""
+    path_anchors, path_anchor_steps and previous_step are ROS2's memory (docs/engine.md): it evaluates the
+    muscle-path polynomials at one step in three of a run of equal steps and extrapolates them from the last
+    two such evaluations everywhere else. path_anchors holds the q of those evaluations (k = 1 or 2, oldest
+    first), path_anchor_steps the steps between them (0 with one) and the steps from the newest to this
+    state, previous_step the step size (dt / substeps; a halved ros2_adaptive step's half). A restored State
+    evaluates the polynomials there again. None (a State built by hand, or not reached by a ROS2 step): the
+    next step evaluates the paths afresh, so a run continued from it differs from the original one by the
+    extrapolation's error (das3: about 1e-6 rad after 20 steps, up to 7e-6 rad in fast transients)."""
 
     model: str                # model name
     source_hash: str          # SHA-256 of the model file: a State fits only the same model
@@ -47,24 +48,29 @@ class State:
     excitation: np.ndarray    # (n,) the held neural excitation in [0, 1]
     hand_force: np.ndarray    # (3,) N, thorax frame
     hand_moment: np.ndarray   # (3,) N m, thorax frame
-    previous_q: np.ndarray | None = None  # (ndof,) rad, q at the start of the ROS2 step that led here
-    previous_step: float = 0.0            # s, that step's size
+    path_anchors: np.ndarray | None = None  # (k, ndof) rad, k = 1 or 2: q of ROS2's last path evaluations
+    path_anchor_steps: tuple = (0, 0)       # (steps between the anchors, steps from the newest to this state)
+    previous_step: float = 0.0              # s, the size of the steps that led here
 
     _ARRAYS = ("q", "qdot", "lce", "activation", "excitation", "hand_force", "hand_moment")
 
     def _array_fields(self) -> tuple:
-        """The array fields this State holds: _ARRAYS, and previous_q unless it is None."""
-        return self._ARRAYS + (("previous_q",) if self.previous_q is not None else ())
+        """The array fields this State holds: _ARRAYS, and path_anchors unless it is None."""
+        return self._ARRAYS + (("path_anchors",) if self.path_anchors is not None else ())
 
     def __post_init__(self):
         for k in ("model", "source_hash"):  # np.load gives 0-d string arrays
             object.__setattr__(self, k, str(getattr(self, k)))
-        if self.previous_q is not None and np.size(self.previous_q) == 0:
-            object.__setattr__(self, "previous_q", None)  # as_dict's stand-in for None (np.savez keeps it)
+        if self.path_anchors is not None and np.size(self.path_anchors) == 0:
+            object.__setattr__(self, "path_anchors", None)  # as_dict's stand-in for None (np.savez keeps it)
         for k in self._array_fields():
             a = np.array(getattr(self, k), dtype=float)
             a.flags.writeable = False
             object.__setattr__(self, k, a)
+        steps = np.asarray(self.path_anchor_steps).ravel()
+        if steps.shape != (2,) or not np.all(steps == np.round(steps)):
+            raise ValueError(f"State.path_anchor_steps must be two whole numbers, got {self.path_anchor_steps!r}")
+        object.__setattr__(self, "path_anchor_steps", (int(steps[0]), int(steps[1])))
         object.__setattr__(self, "time", float(self.time))
         object.__setattr__(self, "previous_step", float(self.previous_step))
 
@@ -72,7 +78,8 @@ class State:
         """Exactly equal (every bit of every value)."""
         if not isinstance(other, State):
             return NotImplemented
-        if (self.previous_q is None) != (other.previous_q is None) or self.previous_step != other.previous_step:
+        if ((self.path_anchors is None) != (other.path_anchors is None) or self.previous_step != other.previous_step
+                or self.path_anchor_steps != other.path_anchor_steps):
             return False
         return (self.model, self.source_hash, self.time) == (other.model, other.source_hash, other.time) and all(
             np.array_equal(getattr(self, k), getattr(other, k)) for k in self._array_fields())
@@ -80,11 +87,13 @@ class State:
     __hash__ = None
 
     def as_dict(self) -> dict:
-        """Plain dict (e.g. for np.savez(**state.as_dict()); State(**d) rebuilds it). A previous_q of None is
-        an empty array here, which np.savez stores without pickling and State() reads back as None."""
+        """Plain dict (e.g. for np.savez(**state.as_dict()); State(**d) rebuilds it). path_anchors of None is
+        an empty array here and path_anchor_steps an integer array, which np.savez stores without pickling
+        and State() reads back."""
         d = {f.name: getattr(self, f.name) for f in fields(self)}
-        if d["previous_q"] is None:
-            d["previous_q"] = np.empty(0)
+        if d["path_anchors"] is None:
+            d["path_anchors"] = np.empty(0)
+        d["path_anchor_steps"] = np.array(d["path_anchor_steps"], dtype=np.int64)
         return d
 
 
@@ -188,13 +197,15 @@ class Data:
     # ------------------------------------------------------------------ snapshots
     def get_state(self) -> State:
         """A State: time, q, qdot, lce, activation, excitation, hand force and moment, and ROS2's memory
-        (previous_q, previous_step; None and 0.0 when the state was not reached by a ROS2 step) (copies)."""
+        (path_anchors, path_anchor_steps, previous_step; None, (0, 0) and 0.0 when the state was not reached
+        by a ROS2 step) (copies)."""
         history = self._sim.ros2_history()
-        previous_q, previous_step = history if history is not None else (None, 0.0)
+        anchors, spacing, since, h = history if history is not None else (None, 0, 0, 0.0)
         return State(model=self.model.name, source_hash=self.model.source_hash, time=self._sim.time,
                      q=self.q, qdot=self.qdot, lce=self.lce, activation=self.activation,
                      excitation=self._sim.excitation, hand_force=self._sim.hand_force,
-                     hand_moment=self._sim.hand_moment, previous_q=previous_q, previous_step=previous_step)
+                     hand_moment=self._sim.hand_moment, path_anchors=anchors, path_anchor_steps=(spacing, since),
+                     previous_step=h)
 
     def set_state(self, state: State) -> None:
         """Restores a State taken from an arm of the same model (ValueError otherwise, or for arrays of
@@ -215,31 +226,45 @@ class Data:
                 raise ValueError(f"State.{k} contains NaN or infinite values")
         if not np.isfinite(state.time):
             raise ValueError(f"State.time must be finite, got {state.time}")
-        if state.previous_q is not None:
-            if state.previous_q.shape != (nd,):
-                raise ValueError(f"State.previous_q must have shape {(nd,)} or be None, got {state.previous_q.shape}")
-            if not np.all(np.isfinite(state.previous_q)):
-                raise ValueError("State.previous_q contains NaN or infinite values")
         if not (np.isfinite(state.previous_step) and state.previous_step >= 0):
             raise ValueError(f"State.previous_step must be finite and >= 0 (s), got {state.previous_step}")
-        if state.previous_q is not None and state.previous_step > 0:
-            # One step from previous_q to q: no joint faster than the arm's bound (a mistaken previous_q would
-            # otherwise only show as a distorted or diverging next step).
-            speed = np.abs(state.q - state.previous_q) / state.previous_step
-            j = int(np.argmax(speed))
-            if speed[j] > self._sim.max_joint_speed:
-                raise ValueError(f"State.previous_q is not one step of {state.previous_step:g} s before q: "
-                                 f"{self.model.dof_names[j]} would have moved at {speed[j]:.3g} rad/s, beyond "
-                                 f"max_joint_speed {self._sim.max_joint_speed:g} rad/s")
+        history = None
+        if state.path_anchors is not None:
+            anchors = state.path_anchors
+            if anchors.ndim != 2 or anchors.shape[0] not in (1, 2) or anchors.shape[1] != nd:
+                raise ValueError(f"State.path_anchors must have shape (1, {nd}) or (2, {nd}) or be None, "
+                                 f"got {anchors.shape}")
+            if not np.all(np.isfinite(anchors)):
+                raise ValueError("State.path_anchors contains NaN or infinite values")
+            spacing, since = state.path_anchor_steps
+            h = state.previous_step
+            if h > 0:
+                # The anchors some steps before q: no joint faster than the arm's bound between them (a
+                # mistaken anchor would otherwise only show as a distorted or diverging next step).
+                gaps = [("path_anchors[-1]", anchors[-1], state.q, since)]
+                if anchors.shape[0] == 2:
+                    gaps.append(("path_anchors[0]", anchors[0], anchors[1], spacing))
+                for name, a, b, steps in gaps:
+                    if steps < 1:
+                        continue  # refused below with the counts
+                    speed = np.abs(b - a) / (steps * h)
+                    j = int(np.argmax(speed))
+                    if speed[j] > self._sim.max_joint_speed:
+                        raise ValueError(f"State.{name} is not {steps} step(s) of {h:g} s before the next anchor or "
+                                         f"q: {self.model.dof_names[j]} would have moved at {speed[j]:.3g} rad/s, "
+                                         f"beyond max_joint_speed {self._sim.max_joint_speed:g} rad/s")
+                history = (anchors, spacing, since, h)
         x = np.empty(self._sim.state.shape)
         for k, (o, n) in self.model.state_layout.items():
             x[o:o + n] = getattr(state, k)
-        history = (state.previous_q, state.previous_step) if state.previous_q is not None else None
-        self._load(x, state.excitation, state.hand_force, state.hand_moment, state.time, history)
+        try:
+            self._load(x, state.excitation, state.hand_force, state.hand_moment, state.time, history)
+        except ValueError as e:  # the counts, checked where they are defined (rosenbrock.cc)
+            raise ValueError(f"State.path_anchor_steps {state.path_anchor_steps}: {e}") from None
 
     def _load(self, x, excitation, hand_force, hand_moment, time: float, ros2_history=None) -> None:
         """Writes a state as is (set_state validates first; Arm.__deepcopy__ copies a diverged state too);
-        ros2_history: (previous_q, previous_step) or None."""
+        ros2_history: (anchors (k, ndof), anchor spacing, steps since the newest anchor, step size) or None."""
         self._sim.state[:] = x
         self._sim.excitation[:] = excitation
         self._sim.hand_force[:] = hand_force
@@ -247,9 +272,10 @@ class Data:
         self._sim.time = time
         self._sim.clear_error()
         if ros2_history is None:
-            self._sim.restore_ros2_history(np.zeros(self.model.n_dofs), 0.0)  # clears it
+            self._sim.restore_ros2_history(np.zeros((0, self.model.n_dofs)), 0, 0, 0.0)  # clears it
         else:
-            self._sim.restore_ros2_history(np.asarray(ros2_history[0], dtype=float), float(ros2_history[1]))
+            anchors, spacing, since, h = ros2_history
+            self._sim.restore_ros2_history(np.asarray(anchors, dtype=float), int(spacing), int(since), float(h))
         # CVODE keeps a history of past steps: start it afresh from the restored state.
         if self._sim.integrator == "cvode":
             self._sim.set_integrator("cvode", self._sim.dt, self._sim.substeps)

@@ -72,16 +72,24 @@ struct StepJacobian {
   std::array<double, kMaxElements> tmp{};               // scratch of one solve
 };
 
-// What ROS2's second stage extrapolates its paths from (rosenbrock.cc): the moment arms at the first stage
-// of the last step and the state that step ended at. A step continues that history only if it starts
-// from exactly that state with the same h; anything else (a reset, a state set from outside, another
-// step size) makes it evaluate the paths afresh.
+// What ROS2 extrapolates the muscle paths from (rosenbrock.cc): the last two exact evaluations of the path
+// polynomials ("anchors", every other step once a run is under way) and the state the last step ended at.
+// A step continues that history only if it starts from exactly that state with the same h; anything else
+// (a reset, a state set from outside, another step size) starts afresh: exact paths in both stages.
 struct PathHistory {
-  std::array<double, kMaxDofs * kMaxElements> moment_arm{};  // m, R(q_start), by DOF as StepJacobian's
+  // m, moment arms at the anchors by DOF (as StepJacobian's): anchor_moment_arm[newest] at anchor_q_new, the
+  // other at anchor_q_old (two slots, so that a new anchor replaces the oldest without a copy). Rows an
+  // element run does not cross (Model::element_runs) stay zero.
+  std::array<double, kMaxDofs * kMaxElements> anchor_moment_arm[2]{};
+  int newest = 0;
+  std::array<double, kMaxElements> anchor_muscle_length{};  // m, at anchor_q_new
+  std::array<double, kMaxDofs> anchor_q_old{}, anchor_q_new{};  // rad
+  int num_anchors = 0;         // 0, 1 (anchor_q_new only) or 2
+  int anchor_spacing = 0;      // steps of h from anchor_q_old to anchor_q_new (1 or 2; 0 with one anchor)
+  int steps_since_anchor = 0;  // steps of h from anchor_q_new to where the last step ended (1 or 2)
   // m, the second stage's extrapolated moment arms, by DOF; written only where Model::element_runs cross (and
   // the elements past them), so zero wherever the polynomials' are.
   std::array<double, kMaxDofs * kMaxElements> stage2_moment_arm{};
-  std::array<double, kMaxDofs> q_start{};  // rad, q the last step started at
   std::array<double, kMaxDofs> q_end{};   // rad, q the last step ended at
   std::array<double, kMaxDofs> qd_end{};  // rad/s, and qdot
   double h = 0;                           // s, that step's size; 0: no history
@@ -155,7 +163,7 @@ struct Data {
   // Integrator workspace.
   StateVec k1{}, k2{}, k3{}, k4{}, xtmp{};
   StepJacobian jac;  // linearly implicit steps (rosenbrock.cc)
-  PathHistory path_history;  // ROS2's second-stage paths (rosenbrock.cc)
+  PathHistory path_history;  // ROS2's path extrapolation (rosenbrock.cc)
 };
 
 void data_reset(const Model& m, Data& d, const double* q /* num_dofs or nullptr: rest posture */);

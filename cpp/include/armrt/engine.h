@@ -72,7 +72,8 @@ void hand_position_in_thorax(const Model& m, const double* q, double* p_thorax);
 void girdle_forces(const Model& m, const double* q, double* tau, double* stiffness, GirdleState* state);
 // skeleton.cc. M(q) (n x n, row-major, kg m^2) and qdd (rad/s^2) from M qdd = tau + b(q, qd, g).
 void skeleton_dynamics(const Model& m, const double* q, const double* qd, const double* tau, double* M, double* qdd);
-// Solves A x = b for a symmetric positive definite n x n A (row-major, n <= kMaxDofs), e.g. M(q) qdd = tau.
+// Solves A x = b for a symmetric positive definite n x n A (row-major, n <= kMaxDofs), e.g. M(q) qdd = tau:
+// Cholesky below 8 DOFs, L D L^T (no square roots) from 8.
 void solve_spd(const double* A, const double* b, int n, double* x);
 // gh_reaction.cc. Force of the humeral head on the glenoid (N, scapula frame, which moves with q when the
 // girdle does) from the tendon forces F, the hand load f_ext (base frame) and the arm's weight and
@@ -101,16 +102,20 @@ void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* 
 // slack tendon engaging), stiffens d.jac's CE mode so that the step stops there (rosenbrock.cc). Call it
 // after forward(m, d, x, xdot, ..., &d.jac) at the same x: it reads what that evaluation left in d.jac.
 void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const double* xdot, double h);
-// One ROS2 step of h (s) from d.x (no TET, no state check: step() adds both). Its second stage extrapolates
-// the paths from d.path_history when the step continues it (data.h PathHistory).
+// One ROS2 step of h (s) from d.x (no TET, no state check: step() adds both). When the step continues
+// d.path_history (data.h PathHistory) its second stage extrapolates the paths, and every other step its first
+// stage's too; the others evaluate the polynomials.
 void step_ros2(const Model& m, Data& d, double h, bool record);
 // Whether the next ROS2 step of h from d.x continues d.path_history (the last step was of h and ended at d.x's
 // q and qdot).
 bool ros2_continues_history(const Model& m, const Data& d, double h);
-// Rebuilds d.path_history as a ROS2 step of h (s) that started at q_start (rad, num_dofs) and ended at d.x
-// would have left it (the paths at q_start are evaluated again, the same function of the same q), so that a
-// restored state continues bit for bit; h <= 0 clears it.
-void ros2_restore_history(const Model& m, Data& d, const double* q_start, double h);
+// Rebuilds d.path_history as the ROS2 steps of h (s) that reached d.x would have left it: num_anchors (0, 1 or 2)
+// exact path evaluations at anchor_q (num_anchors x num_dofs, rad, oldest first), anchor_spacing steps apart (1
+// or 2; 0 with one anchor), the newest steps_since_anchor steps (1 or 2) before d.x (PathHistory). The paths
+// at the anchors are evaluated again, the same function of the same q, so that a restored state continues
+// bit for bit; h <= 0 or num_anchors = 0 clears it. Throws std::invalid_argument for counts out of range.
+void ros2_restore_history(const Model& m, Data& d, const double* anchor_q, int num_anchors, int anchor_spacing,
+                          int steps_since_anchor, double h);
 // One ROS2 step of h, redone as two steps of h/2 when the embedded error estimate exceeds the
 // tolerances (kRos2AdaptiveTol*). Returns the number of steps taken (1 or 2). Not for hard real time:
 // a halved step costs about three normal ones.

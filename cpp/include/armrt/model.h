@@ -49,6 +49,9 @@ enum class Integrator { kEuler = 0, kRk4 = 1, kCvode = 2, kRos2 = 3, kRos2Adapti
 // (x lceopt) of the embedded error estimate.
 inline constexpr double kRos2AdaptiveTolQ = 1e-5;
 inline constexpr double kRos2AdaptiveTolLce = 1e-3;
+// ROS2 evaluates the muscle-path polynomials at one step in kRos2PathPeriod of a run of equal steps and
+// extrapolates them in between and at every second stage (rosenbrock.cc, PathHistory in data.h).
+inline constexpr int kRos2PathPeriod = 3;
 
 struct ElementConstants {
   double fmax;          // N, after strength scaling
@@ -99,14 +102,17 @@ struct Model {
   // about it are zero outside, so the ROS2 stiffness R^T diag(k) R sums each row over that range only
   // (das3: SC is crossed within elements 0-100, GH within 36-102, the elbow within 82-137; rosenbrock.cc).
   std::array<int, kMaxDofs> dof_elements_begin{}, dof_elements_end{};
-  // The whole blocks of eight elements (the engine's vector width, lanes.h) as runs of consecutive blocks that
+  // The elements in blocks of eight (the engine's vector width, lanes.h) as runs of consecutive blocks that
   // cross the same range of DOFs: a run's moment arms are zero outside [dof_lo, dof_hi] (the lowest and highest
   // DOF any of its elements crosses). Loops over moment-arm pairs skip the zero rows with them (das3: 10 runs
-  // over 17 blocks; its R^T diag(k) R needs 320 eight-wide multiply-adds instead of 791 by dof_elements_*).
+  // over 18 blocks; its R^T diag(k) R needs 320 eight-wide multiply-adds instead of 791 by dof_elements_*).
+  // The last block may end past num_elements (at the next multiple of 8): the engine's per-element arrays
+  // (Data, StepJacobian, PathHistory) are zero there, so its ghost lanes add zeros.
   struct ElementRun {
     int begin, end;       // elements [begin, end), multiples of 8
     int dof_lo, dof_hi;   // DOFs crossed, inclusive
   };
+  static_assert(kMaxElements % 8 == 0, "per-element arrays hold whole blocks of eight");
   std::array<ElementRun, kMaxElements / 8> element_runs{};
   int num_element_runs = 0;
 };

@@ -50,17 +50,18 @@ inline double damping_floor(double damping_slope, double afl) {
 //   - the slack points of tendon, PEE and compressive element are C1 (quadratics from zero), so the
 //     first derivatives are continuous there; the concentric/eccentric switch at v = 0 is C1 too (g and
 //     g' match).
-inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lslack, double thickness,
-                                      double min_lce, double vmax, double k_see, double k_pee, double pee_slack,
-                                      double compress_length, double k_compress, double ecc_c,
-                                      double damping_slope, double b0, double L, double lce, double a,
-                                      double* force, double* velocity, MuscleDerivatives* der) {
-  const bool above_floor = lce > min_lce;
-  lce = above_floor ? lce : min_lce;
-  // Fibre length projected on the tendon, lce cos(pennation) = sqrt(lce^2 - thickness^2): one square
-  // root and one division give it, 1/lce_along and 1/lce, so cos(pennation) and its inverse (division and
-  // square root dominate the loop: one 8-wide division costs about nine multiply-adds on this machine).
-  const double lce_along = std::sqrt(lce * lce - thickness * thickness);
+//
+// muscle_kernel_derivatives_along is the same at a CE length lce >= min_lce whose projection on the tendon,
+// lce_along = sqrt(lce^2 - thickness^2), the caller has already (rosenbrock.cc's operating point is built
+// from it: one square root fewer per element).
+inline void muscle_kernel_derivatives_along(double fmax, double inv_lceopt, double lslack, double thickness,
+                                            double vmax, double k_see, double k_pee, double pee_slack,
+                                            double compress_length, double k_compress, double ecc_c,
+                                            double damping_slope, double b0, double L, double lce, double lce_along,
+                                            bool above_floor, double a, double* force, double* velocity,
+                                            MuscleDerivatives* der) {
+  // One division gives 1/lce_along and 1/lce, so cos(pennation) and its inverse (division and square root
+  // dominate the loop: one 8-wide division costs about nine multiply-adds on this machine).
   const double inv_lce_lce_along = 1.0 / (lce * lce_along);
   const double inv_lce_along = lce * inv_lce_lce_along;
   const double inv_lce = lce_along * inv_lce_lce_along;
@@ -137,6 +138,20 @@ inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lsl
   der->inv_cos_pennation = inv_cos;
   der->pee_force = f_pee;
   der->compress_force = f_compress;
+}
+
+inline void muscle_kernel_derivatives(double fmax, double inv_lceopt, double lslack, double thickness,
+                                      double min_lce, double vmax, double k_see, double k_pee, double pee_slack,
+                                      double compress_length, double k_compress, double ecc_c,
+                                      double damping_slope, double b0, double L, double lce, double a,
+                                      double* force, double* velocity, MuscleDerivatives* der) {
+  const bool above_floor = lce > min_lce;
+  lce = above_floor ? lce : min_lce;
+  // Fibre length projected on the tendon, lce cos(pennation) = sqrt(lce^2 - thickness^2).
+  const double lce_along = std::sqrt(lce * lce - thickness * thickness);
+  muscle_kernel_derivatives_along(fmax, inv_lceopt, lslack, thickness, vmax, k_see, k_pee, pee_slack, compress_length,
+                                  k_compress, ecc_c, damping_slope, b0, L, lce, lce_along, above_floor, a, force,
+                                  velocity, der);
 }
 
 // The same element without derivatives: what forward() evaluates at every RK4 stage.
