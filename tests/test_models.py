@@ -227,8 +227,27 @@ def test_state_carries_ros2_history(tmp_path):
         arm.set_state(armrt.State(**{**s.as_dict(), "previous_step": -1.0}))
     with pytest.raises(ValueError, match="path_anchor_steps must be two whole numbers"):
         armrt.State(**{**s.as_dict(), "path_anchor_steps": (1.5, 1)})
-    with pytest.raises(ValueError, match=r"path_anchor_steps \(2, 7\): .*steps since the newest anchor must be 1 to 3"):
-        arm.set_state(armrt.State(**{**s.as_dict(), "path_anchor_steps": (2, 7)}))
+    with pytest.raises(ValueError, match=r"path_anchor_steps \(3, 7\): .*steps since the newest anchor must be 1 to 3"):
+        arm.set_state(armrt.State(**{**s.as_dict(), "path_anchor_steps": (3, 7)}))
+    with pytest.raises(ValueError, match=r"path_anchor_steps \(2, 1\): .*anchor spacing 2 with 2 anchors"):
+        arm.set_state(armrt.State(**{**s.as_dict(), "path_anchor_steps": (2, 1)}))  # no run leaves it
+    with pytest.raises(ValueError, match=r"path_anchor_steps \(0, 2\): .*must be 1 to 1 with 1 anchor"):
+        arm.set_state(armrt.State(**{**s.as_dict(), "path_anchors": s.path_anchors[1:], "path_anchor_steps": (0, 2)}))
+    with pytest.raises(ValueError, match=r"previous_step must be > 0 \(s\) with path_anchors"):
+        arm.set_state(armrt.State(**{**s.as_dict(), "previous_step": 0.0}))
+    with pytest.raises(ValueError, match=r"path_anchor_steps must be \(0, 0\) without path_anchors"):
+        armrt.State(**{**s.as_dict(), "path_anchors": None})
+    with pytest.raises(ValueError, match="path_anchor_steps must be two whole numbers"):
+        armrt.State(**{**s.as_dict(), "path_anchor_steps": ("3", "x")})
+    # A State saved by an older armrt (previous_q, no anchors): read back with a warning, restored without memory.
+    old = {k: v for k, v in bare.as_dict().items() if not k.startswith("path_anchor")}
+    with pytest.warns(UserWarning, match="previous_q .* is no longer ROS2's memory"):
+        legacy = armrt.State(**old, previous_q=s.q)
+    assert legacy == bare
+    # An Arm pickled by an older armrt carried (previous_q, step) as its ROS2 memory: unpickled without it.
+    func, (cls, model, settings, raw, extras) = arm.__reduce__()
+    older = func(cls, model, settings, raw[:5] + ((arm.q.copy(), 1e-3),), extras)
+    assert older.get_state().path_anchors is None and np.array_equal(older.q, arm.q)
     far = s.path_anchors.copy()
     far[-1] = s.q + np.array([0.3, 0, 0, 0, 0]) * s.path_anchor_steps[1]
     with pytest.raises(ValueError, match=r"path_anchors\[-1\] is not \d step\(s\) of 0.001 s before the next anchor or q: "

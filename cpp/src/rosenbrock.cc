@@ -533,14 +533,17 @@ void ros2_restore_history(const Model& m, Data& d, const double* anchor_q, int n
   if (!(h > 0) || num_anchors == 0) return;
   if (num_anchors < 0 || num_anchors > 2)
     throw std::invalid_argument("ROS2 history: 0, 1 or 2 path anchors, got " + std::to_string(num_anchors));
+  // Only what a run of steps leaves: one anchor after its first step; then anchors 1 step apart (its first two
+  // evaluations) or kRos2PathPeriod apart, the newest 1 to kRos2PathPeriod steps back.
   const std::string period = std::to_string(kRos2PathPeriod);
-  if (num_anchors == 2 ? (anchor_spacing < 1 || anchor_spacing > kRos2PathPeriod) : anchor_spacing != 0)
+  if (num_anchors == 2 ? (anchor_spacing != 1 && anchor_spacing != kRos2PathPeriod) : anchor_spacing != 0)
     throw std::invalid_argument("ROS2 history: anchor spacing " + std::to_string(anchor_spacing) + " with " +
-                                std::to_string(num_anchors) + " anchors (expected 1 to " + period +
+                                std::to_string(num_anchors) + " anchors (a run leaves 1 or " + period +
                                 " steps with two, 0 with one)");
-  if (steps_since_anchor < 1 || steps_since_anchor > kRos2PathPeriod)
-    throw std::invalid_argument("ROS2 history: steps since the newest anchor must be 1 to " + period + ", got " +
-                                std::to_string(steps_since_anchor));
+  if (steps_since_anchor < 1 || steps_since_anchor > (num_anchors == 2 ? kRos2PathPeriod : 1))
+    throw std::invalid_argument("ROS2 history: steps since the newest anchor must be 1 to " +
+                                std::string(num_anchors == 2 ? period : "1") + " with " +
+                                std::to_string(num_anchors) + " anchor(s), got " + std::to_string(steps_since_anchor));
   const int nq = m.num_dofs;
   const double* q_new = anchor_q + (num_anchors - 1) * nq;
   // The polynomials again at the anchors' q: the same function of the same q, so the same bits.

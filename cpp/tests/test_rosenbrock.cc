@@ -529,6 +529,11 @@ TEST_CASE("a state restored with its ROS2 history continues bit for bit, one wit
                        std::invalid_argument);
   CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 1, 1, 1, 1e-3), doctest::Contains("spacing"),
                        std::invalid_argument);
+  if (kRos2PathPeriod > 2)  // anchors are 1 or kRos2PathPeriod steps apart, nothing between
+    CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 2, 2, 1, 1e-3), doctest::Contains("spacing"),
+                         std::invalid_argument);
+  CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 1, 0, 2, 1e-3), doctest::Contains("since"),
+                       std::invalid_argument);  // one anchor: only right after a run's first step
   CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 1, 0, kRos2PathPeriod + 1, 1e-3),
                        doctest::Contains("since"), std::invalid_argument);
 }

@@ -11,7 +11,8 @@ Arm (armrt/arm.py) steps a Data with an integrator; Arm.data is its Data.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+import warnings
+from dataclasses import InitVar, dataclass, fields
 
 import numpy as np
 
@@ -51,6 +52,8 @@ class State:
     path_anchors: np.ndarray | None = None  # (k, ndof) rad, k = 1 or 2: q of ROS2's last path evaluations
     path_anchor_steps: tuple = (0, 0)       # (steps between the anchors, steps from the newest to this state)
     previous_step: float = 0.0              # s, the size of the steps that led here
+    # armrt before 2026-11-30 saved ROS2's memory as previous_q: accepted when read back, and dropped (below).
+    previous_q: InitVar[np.ndarray | None] = None
 
     _ARRAYS = ("q", "qdot", "lce", "activation", "excitation", "hand_force", "hand_moment")
 
@@ -58,7 +61,11 @@ class State:
         """The array fields this State holds: _ARRAYS, and path_anchors unless it is None."""
         return self._ARRAYS + (("path_anchors",) if self.path_anchors is not None else ())
 
-    def __post_init__(self):
+    def __post_init__(self, previous_q=None):
+        if previous_q is not None and np.size(previous_q) > 0:
+            warnings.warn("State.previous_q (a State saved by an older armrt) is no longer ROS2's memory and is "
+                          "ignored: the next ROS2 step evaluates the muscle paths afresh, so the continuation "
+                          "differs from the original run by about 1e-6 rad", stacklevel=3)
         for k in ("model", "source_hash"):  # np.load gives 0-d string arrays
             object.__setattr__(self, k, str(getattr(self, k)))
         if self.path_anchors is not None and np.size(self.path_anchors) == 0:
@@ -67,10 +74,16 @@ class State:
             a = np.array(getattr(self, k), dtype=float)
             a.flags.writeable = False
             object.__setattr__(self, k, a)
-        steps = np.asarray(self.path_anchor_steps).ravel()
-        if steps.shape != (2,) or not np.all(steps == np.round(steps)):
-            raise ValueError(f"State.path_anchor_steps must be two whole numbers, got {self.path_anchor_steps!r}")
+        try:
+            steps = np.asarray(self.path_anchor_steps, dtype=float).ravel()
+        except (TypeError, ValueError):
+            steps = np.empty(0)
+        if steps.shape != (2,) or not np.all((steps == np.round(steps)) & (steps >= 0) & (steps < 1e6)):
+            raise ValueError(f"State.path_anchor_steps must be two whole numbers >= 0, got {self.path_anchor_steps!r}")
         object.__setattr__(self, "path_anchor_steps", (int(steps[0]), int(steps[1])))
+        if self.path_anchors is None and self.path_anchor_steps != (0, 0):
+            raise ValueError(f"State.path_anchor_steps must be (0, 0) without path_anchors, got "
+                             f"{self.path_anchor_steps}")
         object.__setattr__(self, "time", float(self.time))
         object.__setattr__(self, "previous_step", float(self.previous_step))
 
@@ -238,22 +251,25 @@ class Data:
                 raise ValueError("State.path_anchors contains NaN or infinite values")
             spacing, since = state.path_anchor_steps
             h = state.previous_step
-            if h > 0:
-                # The anchors some steps before q: no joint faster than the arm's bound between them (a
-                # mistaken anchor would otherwise only show as a distorted or diverging next step).
-                gaps = [("path_anchors[-1]", anchors[-1], state.q, since)]
-                if anchors.shape[0] == 2:
-                    gaps.append(("path_anchors[0]", anchors[0], anchors[1], spacing))
-                for name, a, b, steps in gaps:
-                    if steps < 1:
-                        continue  # refused below with the counts
-                    speed = np.abs(b - a) / (steps * h)
-                    j = int(np.argmax(speed))
-                    if speed[j] > self._sim.max_joint_speed:
-                        raise ValueError(f"State.{name} is not {steps} step(s) of {h:g} s before the next anchor or "
-                                         f"q: {self.model.dof_names[j]} would have moved at {speed[j]:.3g} rad/s, "
-                                         f"beyond max_joint_speed {self._sim.max_joint_speed:g} rad/s")
-                history = (anchors, spacing, since, h)
+            if not h > 0:
+                raise ValueError(f"State.previous_step must be > 0 (s) with path_anchors, got {h}")
+            # The anchors some steps before q: no joint faster than the arm's bound between them. This catches
+            # a mistaken anchor that would otherwise only show as a distorted or diverging next step; anchors
+            # are the q of exact evaluations and must come from get_state unchanged (an edit within the bound
+            # moves the continuation by what it implies).
+            gaps = [("path_anchors[-1]", anchors[-1], state.q, since)]
+            if anchors.shape[0] == 2:
+                gaps.append(("path_anchors[0]", anchors[0], anchors[1], spacing))
+            for name, a, b, steps in gaps:
+                if steps < 1:
+                    continue  # refused below with the counts
+                speed = np.abs(b - a) / (steps * h)
+                j = int(np.argmax(speed))
+                if speed[j] > self._sim.max_joint_speed:
+                    raise ValueError(f"State.{name} is not {steps} step(s) of {h:g} s before the next anchor or "
+                                     f"q: {self.model.dof_names[j]} would have moved at {speed[j]:.3g} rad/s, "
+                                     f"beyond max_joint_speed {self._sim.max_joint_speed:g} rad/s")
+            history = (anchors, spacing, since, h)
         x = np.empty(self._sim.state.shape)
         for k, (o, n) in self.model.state_layout.items():
             x[o:o + n] = getattr(state, k)
@@ -271,7 +287,7 @@ class Data:
         self._sim.hand_moment[:] = hand_moment
         self._sim.time = time
         self._sim.clear_error()
-        if ros2_history is None:
+        if ros2_history is None or len(ros2_history) == 2:  # 2: (previous_q, h) of an Arm pickled by an older armrt
             self._sim.restore_ros2_history(np.zeros((0, self.model.n_dofs)), 0, 0, 0.0)  # clears it
         else:
             anchors, spacing, since, h = ros2_history
