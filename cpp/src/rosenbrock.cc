@@ -5,7 +5,7 @@
 //   (I - h gamma J) k2 = f(x_n + h k1) - 2 k1
 //   x_{n+1} = x_n + h (3/2 k1 + 1/2 k2)
 // Along a run of equal steps the muscle paths are evaluated at one step in kRos2PathPeriod and extrapolated
-// from the last two evaluations at every other evaluation of f (extrapolate_paths_n), which keeps the order.
+// from the last two evaluations at all other evaluations of f (extrapolate_paths_n), which keeps the order.
 // J is the structured ("arrow") Jacobian of data.h StepJacobian. The linear systems are never formed
 // as a state-sized matrix (214 x 214 for das2): the activation rows are scalar, each CE-length row is
 // scalar once the joint part is known, and what remains is an n x n Schur complement (n = num_dofs) in
@@ -160,10 +160,8 @@ void jacobian_factor_n(const Model& m, StepJacobian& jac, double hg) {
     jac.lce_from_q[i] = hg * jac.dvel_dL[i] * jac.inv_lce[i];
     jac.series_stiffness[i] = jac.dforce_dL[i] + jac.dforce_dlce[i] * jac.lce_from_q[i];
   }
-  // K_eff = diag(dtau_passive/dq) + dtau_girdle/dq - R^T diag(series_stiffness) R, R by DOF (data.h): each
-  // entry K[a][b] (b >= a) a sum across the elements, eight per multiply-add, row a's sums side by side in
-  // registers; only over the elements that cross DOF a (Model::dof_elements_begin, _end: das3's arm-only and
-  // girdle-only elements leave a block of each row out), the elements past the last whole eight in scalars.
+  // K_eff = diag(dtau_passive/dq) + dtau_girdle/dq - R^T diag(series_stiffness) R, R by DOF (data.h), row by row
+  // (stiffness_row: over the element runs that cross each row's DOF).
   double K[nq * nq];
   [&]<int... A>(std::integer_sequence<int, A...>) {
     (stiffness_row<nq, A>(m, R, jac.series_stiffness.data(), K), ...);
@@ -372,8 +370,8 @@ namespace {
 // of the polynomials (evaluated at both stages of every step, they were 30 % of a das3 step):
 //   R_out = R_new + c (R_new - R_old)                   (linear in time: c = steps past q_new / anchor spacing)
 //   L_out = L_from - (R_from + R_out)/2 . (q_to - q_from)   (trapezoid along the step, R = -dL/dq)
-// The anchors are at most two steps apart and the extrapolation reaches at most two steps past the newest, all
-// of them h qd + O(h^2) apart, so the moment arms' error is O(h^2) and the lengths' O(h^3): ROS2 stays second
+// The anchors are at most kRos2PathPeriod steps apart and the extrapolation reaches at most that far past the
+// newest, each step h qd + O(h^2), so the moment arms' error is O(h^2) and the lengths' O(h^3): ROS2 stays second
 // order (tests/test_rosenbrock.cc checks 4x per halving of h), as with any O(h^2) error in an evaluation of f.
 // Moment arms by DOF (data.h), so each line below runs across eight elements at a time; each block of eight
 // only over the DOFs its run crosses (Model::element_runs): the other rows of R_out are left as they are (zero
@@ -448,8 +446,8 @@ void add_anchor(const Model& m, PathHistory& ph, const double* q, const StepJaco
 }
 
 // One ROS2 step of h from d.x; leaves the two stage vectors in d.k2 (k1) and d.k4 (k2), x untouched.
-// Paths: a step that continues the history extrapolates its second stage's from the anchors, and so does
-// every other step its first stage's (the step after an exact one); the rest evaluate the polynomials.
+// Paths: a step that continues the history extrapolates its second stage's from the anchors, and so do the
+// kRos2PathPeriod - 1 steps after an exact one their first stage's; the rest evaluate the polynomials.
 void ros2_stages(const Model& m, Data& d, double h, bool record) {
   const int ns = state_size(m);
   const double* x = d.x.data();

@@ -73,7 +73,8 @@ struct StepJacobian {
 };
 
 // What ROS2 extrapolates the muscle paths from (rosenbrock.cc): the last two exact evaluations of the path
-// polynomials ("anchors", every other step once a run is under way) and the state the last step ended at.
+// polynomials ("anchors", one step in kRos2PathPeriod once a run is under way) and the state the last step
+// ended at.
 // A step continues that history only if it starts from exactly that state with the same h; anything else
 // (a reset, a state set from outside, another step size) starts afresh: exact paths in both stages.
 struct PathHistory {
@@ -85,8 +86,8 @@ struct PathHistory {
   std::array<double, kMaxElements> anchor_muscle_length{};  // m, at anchor_q_new
   std::array<double, kMaxDofs> anchor_q_old{}, anchor_q_new{};  // rad
   int num_anchors = 0;         // 0, 1 (anchor_q_new only) or 2
-  int anchor_spacing = 0;      // steps of h from anchor_q_old to anchor_q_new (1 or 2; 0 with one anchor)
-  int steps_since_anchor = 0;  // steps of h from anchor_q_new to where the last step ended (1 or 2)
+  int anchor_spacing = 0;      // steps of h from anchor_q_old to anchor_q_new (1 or kRos2PathPeriod; 0 with one)
+  int steps_since_anchor = 0;  // steps of h from anchor_q_new to where the last step ended (1 to kRos2PathPeriod)
   // m, the second stage's extrapolated moment arms, by DOF; written only where Model::element_runs cross (and
   // the elements past them), so zero wherever the polynomials' are.
   std::array<double, kMaxDofs * kMaxElements> stage2_moment_arm{};

@@ -103,8 +103,8 @@ void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* 
 // after forward(m, d, x, xdot, ..., &d.jac) at the same x: it reads what that evaluation left in d.jac.
 void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const double* xdot, double h);
 // One ROS2 step of h (s) from d.x (no TET, no state check: step() adds both). When the step continues
-// d.path_history (data.h PathHistory) its second stage extrapolates the paths, and every other step its first
-// stage's too; the others evaluate the polynomials.
+// d.path_history (data.h PathHistory) its second stage extrapolates the paths, and so do all but one step in
+// kRos2PathPeriod their first stage's; the others evaluate the polynomials.
 void step_ros2(const Model& m, Data& d, double h, bool record);
 // Whether the next ROS2 step of h from d.x continues d.path_history (the last step was of h and ended at d.x's
 // q and qdot).

@@ -99,8 +99,8 @@ struct Model {
   double rest_fibre_rate = 0;
   int rest_fibre_element = 0;
   // For each DOF, the elements [begin, end) that span those crossing it (by their dof_mask): the moment arms
-  // about it are zero outside, so the ROS2 stiffness R^T diag(k) R sums each row over that range only
-  // (das3: SC is crossed within elements 0-100, GH within 36-102, the elbow within 82-137; rosenbrock.cc).
+  // about it are zero outside, so R^T F sums each row over that range only (das3: SC is crossed within
+  // elements 0-100, GH within 36-102, the elbow within 82-137; muscles.cc generalised_force).
   std::array<int, kMaxDofs> dof_elements_begin{}, dof_elements_end{};
   // The elements in blocks of eight (the engine's vector width, lanes.h) as runs of consecutive blocks that
   // cross the same range of DOFs: a run's moment arms are zero outside [dof_lo, dof_hi] (the lowest and highest
