@@ -229,8 +229,11 @@ def test_state_carries_ros2_history(tmp_path):
         armrt.State(**{**s.as_dict(), "path_anchor_steps": (1.5, 1)})
     with pytest.raises(ValueError, match=r"path_anchor_steps \(3, 7\): .*steps since the newest anchor must be 1 to 3"):
         arm.set_state(armrt.State(**{**s.as_dict(), "path_anchor_steps": (3, 7)}))
+    before_refusal = arm.get_state()
     with pytest.raises(ValueError, match=r"path_anchor_steps \(2, 1\): .*anchor spacing 2 with 2 anchors"):
-        arm.set_state(armrt.State(**{**s.as_dict(), "path_anchor_steps": (2, 1)}))  # no run leaves it
+        arm.set_state(armrt.State(**{**s.as_dict(), "path_anchor_steps": (2, 1),
+                                     "q": s.q + 0.01}))  # no run leaves it
+    assert arm.get_state() == before_refusal  # refused before anything was written
     with pytest.raises(ValueError, match=r"path_anchor_steps \(0, 2\): .*must be 1 to 1 with 1 anchor"):
         arm.set_state(armrt.State(**{**s.as_dict(), "path_anchors": s.path_anchors[1:], "path_anchor_steps": (0, 2)}))
     with pytest.raises(ValueError, match=r"previous_step must be > 0 \(s\) with path_anchors"):

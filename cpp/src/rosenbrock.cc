@@ -523,25 +523,29 @@ bool ros2_continues_history(const Model& m, const Data& d, double h) {
   return same;
 }
 
+std::string ros2_history_error(int num_anchors, int anchor_spacing, int steps_since_anchor) {
+  if (num_anchors < 0 || num_anchors > 2) return "0, 1 or 2 path anchors, got " + std::to_string(num_anchors);
+  if (num_anchors == 0) return "";
+  // Only what a run of steps leaves: one anchor after its first step; then anchors 1 step apart (its first two
+  // evaluations) or kRos2PathPeriod apart, the newest 1 to kRos2PathPeriod steps back.
+  const std::string period = std::to_string(kRos2PathPeriod);
+  if (num_anchors == 2 ? (anchor_spacing != 1 && anchor_spacing != kRos2PathPeriod) : anchor_spacing != 0)
+    return "anchor spacing " + std::to_string(anchor_spacing) + " with " + std::to_string(num_anchors) +
+           " anchors (a run leaves 1 or " + period + " steps with two, 0 with one)";
+  if (steps_since_anchor < 1 || steps_since_anchor > (num_anchors == 2 ? kRos2PathPeriod : 1))
+    return "steps since the newest anchor must be 1 to " + std::string(num_anchors == 2 ? period : "1") + " with " +
+           std::to_string(num_anchors) + " anchor(s), got " + std::to_string(steps_since_anchor);
+  return "";
+}
+
 void ros2_restore_history(const Model& m, Data& d, const double* anchor_q, int num_anchors, int anchor_spacing,
                           int steps_since_anchor, double h) {
   PathHistory& ph = d.path_history;
   ph.h = 0;
   ph.num_anchors = 0;
   if (!(h > 0) || num_anchors == 0) return;
-  if (num_anchors < 0 || num_anchors > 2)
-    throw std::invalid_argument("ROS2 history: 0, 1 or 2 path anchors, got " + std::to_string(num_anchors));
-  // Only what a run of steps leaves: one anchor after its first step; then anchors 1 step apart (its first two
-  // evaluations) or kRos2PathPeriod apart, the newest 1 to kRos2PathPeriod steps back.
-  const std::string period = std::to_string(kRos2PathPeriod);
-  if (num_anchors == 2 ? (anchor_spacing != 1 && anchor_spacing != kRos2PathPeriod) : anchor_spacing != 0)
-    throw std::invalid_argument("ROS2 history: anchor spacing " + std::to_string(anchor_spacing) + " with " +
-                                std::to_string(num_anchors) + " anchors (a run leaves 1 or " + period +
-                                " steps with two, 0 with one)");
-  if (steps_since_anchor < 1 || steps_since_anchor > (num_anchors == 2 ? kRos2PathPeriod : 1))
-    throw std::invalid_argument("ROS2 history: steps since the newest anchor must be 1 to " +
-                                std::string(num_anchors == 2 ? period : "1") + " with " +
-                                std::to_string(num_anchors) + " anchor(s), got " + std::to_string(steps_since_anchor));
+  const std::string error = ros2_history_error(num_anchors, anchor_spacing, steps_since_anchor);
+  if (!error.empty()) throw std::invalid_argument("ROS2 history: " + error);
   const int nq = m.num_dofs;
   const double* q_new = anchor_q + (num_anchors - 1) * nq;
   // The polynomials again at the anchors' q: the same function of the same q, so the same bits.

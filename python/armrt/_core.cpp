@@ -166,6 +166,9 @@ PYBIND11_MODULE(_core, mod) {
   mod.def("default_substeps", [](const std::string& integrator, double dt) { return default_substeps(parse_integrator(integrator), dt); },
           "Integration steps per control step dt (s) by default.");
   mod.def("model_names", []() { return model_names(); });
+  // Why these counts are not a ROS2 history a run leaves ("" if they are): checked before a State is written.
+  mod.def("ros2_history_error", &ros2_history_error, py::arg("num_anchors"), py::arg("anchor_spacing"),
+          py::arg("steps_since_anchor"));
   // The name service (names.h): the Python API's lookups and messages come from here.
   mod.def("find_elements", [](const std::string& model, const std::string& name) {
         std::vector<int> ix;

@@ -253,6 +253,9 @@ class Data:
             h = state.previous_step
             if not h > 0:
                 raise ValueError(f"State.previous_step must be > 0 (s) with path_anchors, got {h}")
+            error = _core.ros2_history_error(anchors.shape[0], spacing, since)
+            if error:  # counts no run leaves, by the engine's own rule (rosenbrock.cc), before anything is written
+                raise ValueError(f"State.path_anchor_steps {state.path_anchor_steps}: {error}")
             # The anchors some steps before q: no joint faster than the arm's bound between them. This catches
             # a mistaken anchor that would otherwise only show as a distorted or diverging next step; anchors
             # are the q of exact evaluations and must come from get_state unchanged (an edit within the bound
@@ -261,8 +264,6 @@ class Data:
             if anchors.shape[0] == 2:
                 gaps.append(("path_anchors[0]", anchors[0], anchors[1], spacing))
             for name, a, b, steps in gaps:
-                if steps < 1:
-                    continue  # refused below with the counts
                 speed = np.abs(b - a) / (steps * h)
                 j = int(np.argmax(speed))
                 if speed[j] > self._sim.max_joint_speed:
@@ -273,10 +274,7 @@ class Data:
         x = np.empty(self._sim.state.shape)
         for k, (o, n) in self.model.state_layout.items():
             x[o:o + n] = getattr(state, k)
-        try:
-            self._load(x, state.excitation, state.hand_force, state.hand_moment, state.time, history)
-        except ValueError as e:  # the counts, checked where they are defined (rosenbrock.cc)
-            raise ValueError(f"State.path_anchor_steps {state.path_anchor_steps}: {e}") from None
+        self._load(x, state.excitation, state.hand_force, state.hand_moment, state.time, history)
 
     def _load(self, x, excitation, hand_force, hand_moment, time: float, ros2_history=None) -> None:
         """Writes a state as is (set_state validates first; Arm.__deepcopy__ copies a diverged state too);

@@ -13,6 +13,8 @@
 //   kinematics.cc    outputs derived from q: thorax-humerus angles
 #pragma once
 
+#include <string>
+
 #include "armrt/data.h"
 #include "armrt/model.h"
 #include "armrt/muscle_kernel.h"
@@ -114,6 +116,9 @@ bool ros2_continues_history(const Model& m, const Data& d, double h);
 // or 2; 0 with one anchor), the newest steps_since_anchor steps (1 or 2) before d.x (PathHistory). The paths
 // at the anchors are evaluated again, the same function of the same q, so that a restored state continues
 // bit for bit; h <= 0 or num_anchors = 0 clears it. Throws std::invalid_argument for counts out of range.
+// Why (num_anchors, anchor_spacing, steps_since_anchor) is not a ROS2 history a run of steps leaves (the
+// counts ros2_restore_history accepts), or "" if it is one.
+std::string ros2_history_error(int num_anchors, int anchor_spacing, int steps_since_anchor);
 void ros2_restore_history(const Model& m, Data& d, const double* anchor_q, int num_anchors, int anchor_spacing,
                           int steps_since_anchor, double h);
 // One ROS2 step of h, redone as two steps of h/2 when the embedded error estimate exceeds the
