@@ -100,9 +100,12 @@ void generalised_force(const double* moment_arm, const double* force, int n, int
   detail::dispatch_dofs(ndof, [&](auto N) { generalised_force_n<N>(moment_arm, force, n, tau, dof_begin, dof_end); });
 }
 
-void moment_arms_by_element(const double* moment_arm, int n, int ndof, double* out) {
+void muscle_paths_by_element(const ModelDef& def, const double* q, double* L, double* moment_arm) {
+  double by_dof[kMaxDofs * kMaxElements];
+  def.muscle_paths(q, L, by_dof);
+  const int n = def.num_elements, ndof = def.num_dofs;
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < ndof; ++j) out[i * ndof + j] = moment_arm[j * kMaxElements + i];
+    for (int j = 0; j < ndof; ++j) moment_arm[i * ndof + j] = by_dof[j * kMaxElements + i];
 }
 
 }  // namespace armrt

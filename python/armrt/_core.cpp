@@ -280,11 +280,10 @@ PYBIND11_MODULE(_core, mod) {
         };
         o["qddot"] = copy(s.data.qdd.data(), {nq});
         o["muscle_length"] = copy(s.data.muscle_length.data(), {n});
-        {  // at the outputs' q (data.h), as (element, DOF) for Python; the engine keeps them by DOF
-          std::vector<double> L(n), R(static_cast<size_t>(s.model.num_dofs) * kMaxElements);
-          s.model.def->muscle_paths(s.data.output_q.data(), L.data(), R.data());
+        {  // at the outputs' q (data.h)
+          double L[kMaxElements];
           Array r({n, nq});
-          moment_arms_by_element(R.data(), n, nq, r.mutable_data());
+          muscle_paths_by_element(*s.model.def, s.data.output_q.data(), L, r.mutable_data());
           o["moment_arm"] = r;
         }
         o["muscle_force"] = copy(s.data.muscle_force.data(), {n});
@@ -391,9 +390,7 @@ PYBIND11_MODULE(_core, mod) {
         const double* qp = checked(q, nq, "q");
         const int n = s.model.num_elements;
         Array L({n}), R({n, nq});
-        double by_dof[kMaxDofs * kMaxElements];
-        s.model.def->muscle_paths(qp, L.mutable_data(), by_dof);
-        moment_arms_by_element(by_dof, n, nq, R.mutable_data());
+        muscle_paths_by_element(*s.model.def, qp, L.mutable_data(), R.mutable_data());
         return py::make_tuple(L, R);
       })
       .def("gh_directions", [](const Simulator& s, const Array& q) {

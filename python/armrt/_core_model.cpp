@@ -75,11 +75,8 @@ void bind_model(py::module_& mod) {
       // Shapes: q is (ndof,) or (k, ndof); outputs gain the same leading k. Frames: scapula.
       .def("muscle_paths", [](const ModelDef& d, const Array& q) {
         const py::ssize_t n = d.num_elements;
-        auto o = per_pose(d, q, {{n}, {n, d.num_dofs}}, [&](const double* qk, double** out) {
-          double by_dof[kMaxDofs * kMaxElements];  // the generated layout (model_def.h)
-          d.muscle_paths(qk, out[0], by_dof);
-          moment_arms_by_element(by_dof, d.num_elements, d.num_dofs, out[1]);
-        });
+        auto o = per_pose(d, q, {{n}, {n, d.num_dofs}},
+                          [&](const double* qk, double** out) { muscle_paths_by_element(d, qk, out[0], out[1]); });
         return py::make_tuple(o[0], o[1]);
       }, py::arg("q"))
       .def("muscle_lengths", [](const ModelDef& d, const Array& q) {

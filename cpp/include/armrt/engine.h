@@ -56,8 +56,10 @@ void muscle_dynamics(const Model& m, const double* excitation, const double* mus
 // arms being zero outside; without them over all n.
 void generalised_force(const double* moment_arm, const double* force, int n, int ndof, double* tau,
                        const int* dof_begin = nullptr, const int* dof_end = nullptr);
-// Moment arms by DOF (as above) -> (n, ndof) by element, row-major: the layout the Python API returns.
-void moment_arms_by_element(const double* moment_arm, int n, int ndof, double* out);
+// The model's path polynomials at q (rad, num_dofs): lengths L (m, num_elements) and moment arms (m) as
+// (num_elements, num_dofs) by element, row-major, the layout the Python API returns (the generated function
+// writes them by DOF, model_def.h).
+void muscle_paths_by_element(const ModelDef& def, const double* q, double* L, double* moment_arm);
 // passive_joints.cc. Passive joint moments (N m) at q, qd.
 void passive_joint_torque(const ModelDef& def, const double* q, const double* qd, double* tau);
 // Their derivatives (diagonal): d tau / dq (N m/rad) and d tau / dqd (N m s/rad).
