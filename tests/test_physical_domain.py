@@ -123,6 +123,13 @@ def test_an_explicit_step_the_model_cannot_take_is_refused_before_any_data(integ
     with pytest.raises(armrt.SimulationError, match=r"step too large for integrator .*stable for steps <= .* ms.*ros2"):
         arm.simulate({"bicl": 0.5}, 1.0)
     assert arm.time == 0.0
+    # das3 needs more substeps than were validated: the whole advice arrives (a 256-byte buffer cut it short).
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", armrt.StepSizeWarning)
+        das3 = armrt.Arm(model="das3", integrator=integrator)
+    with pytest.raises(armrt.SimulationError, match=r"needs at least substeps=\d+ for that fibre alone and was "
+                                                    r"not validated with explicit steps$"):
+        das3.step(1)
     # The validated default substeps run the same input.
     ok = armrt.Arm(integrator=integrator)
     ok.reset()

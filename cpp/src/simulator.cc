@@ -148,7 +148,7 @@ std::string Simulator::domain_error_message() const {
 
 std::string Simulator::error_message() const {
   char name[96];
-  char buf[256];
+  char buf[512];  // the explicit-step refusal below runs to about 330 characters
   switch (data.status) {
     case Status::kOk: return "";
     case Status::kNonFinite:
