@@ -1108,11 +1108,18 @@ def main(argv=None) -> int:
         # The banner names the standard command for the project's models (whatever paths were typed, so
         # regeneration stays byte-identical), and the command as typed for any other model file or an
         # on-demand build (--entry-point).
-        in_models = Path(args.model).resolve().parent == Path(__file__).resolve().parents[1] / "models"
+        root = Path(__file__).resolve().parents[1]
+        in_models = Path(args.model).resolve().parent == root / "models"
         command = f"python -m codegen.generate --model {args.model} --out {args.out}"
-        generate(args.model, args.out, verbose=True,
-                 command=None if in_models and not args.entry_point else
-                 command + (" --entry-point" if args.entry_point else ""), entry_point=args.entry_point)
+        if in_models and not args.entry_point:
+            # cpp/generated or cpp/tests/generated, named from the root whatever the working directory;
+            # elsewhere (a scratch directory) the standard cpp/generated one.
+            out = Path(args.out).resolve()
+            command = (f"python -m codegen.generate --model models/{Path(args.model).name} --out {out.relative_to(root)}"
+                       if out.is_relative_to(root) else None)
+        elif args.entry_point:
+            command += " --entry-point"
+        generate(args.model, args.out, verbose=True, command=command, entry_point=args.entry_point)
     except ModelFileError as exc:
         print(f"codegen.generate: {exc}", file=sys.stderr)
         return 2

@@ -180,7 +180,7 @@ def build_das3_model(das3_dir: Path, paths_file: Path = DAS3_PATHS) -> dict:
 
     forces = girdle_forces(files["model_struct.mat"])
     contact = {p["name"]: np.asarray(p["point"]) for p in forces["contact"]["points"]}
-    glenoid = glenoid_geometry(np.asarray(named["humerus"]["joint"]["location_in_parent"]), contact["TS"], contact["AI"])
+    glenoid = glenoid_geometry(np.asarray(named["humerus"]["joint"]["location_in_parent"]))
 
     elements = []
     for e in struct.elements:

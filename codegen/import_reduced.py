@@ -202,11 +202,7 @@ def build_reduced_model(mat_path, free: list[str], name: str, posture: dict[str,
                                                                               "radius": "ulna", "hand": "radius"}[body],
                        "mass": s.mass, "com": s.com.tolist(), "inertia": s.inertia.tolist(), "joint": joint})
 
-    if struct.ts_projection is None or struct.ai_projection is None:
-        raise ModelInputError(f"{mat_path.name}: model.TSprojection / AIprojection missing (needed to place the "
-                              f"glenoid by the DSEM landmarks)")
-    glenoid = glenoid_geometry(np.asarray(bodies[0]["joint"]["location_in_parent"]), struct.ts_projection,
-                               struct.ai_projection)
+    glenoid = glenoid_geometry(np.asarray(bodies[0]["joint"]["location_in_parent"]))
 
     elements, dropped, no_direction = [], [], []
     for e in struct.elements:

@@ -181,3 +181,90 @@ def test_committed_model_file():
         lo, hi = d["range"]
         dlo, dhi = d["das3_range"]
         assert dlo <= lo < hi <= dhi
+
+
+# ----------------------------------------------------------------------------- the glenoid (issue 24)
+
+from codegen.import_das3 import (GH_CENTRE_TOLERANCE_M, INCLINATION_RANGE_DEG, VERSION_RANGE_DEG,  # noqa: E402
+                                 glenoid_geometry, glenoid_version_inclination, landmarks_in_scapula)
+
+MODEL_FILES = ["das2", "das3", "participant_A", "participant_A_FES", "participant_A_injured", "participant_A_paralysed"]
+# The basis every model carried before issue 24: the DSEM landmarks Kabsch-fitted onto DAS3's
+# TSprojection/AIprojection (thorax-surface points), 10.3 mm rms residual (models/das2.json at 0fc0442).
+OLD_KABSCH_NORMAL = [-0.9919263132468168, 0.07241959091211116, -0.10410375565127088]
+
+
+def test_landmark_frame_is_the_scapula_frame():
+    """The DSEM GH centre, expressed in the landmark frame by the README's recipe, is das3.osim's gh1
+    location in scapula_r (0.002, -0.023, -0.0439): the two frames are one, no registration needed."""
+    lm = landmarks_in_scapula()
+    np.testing.assert_allclose(lm["AA"], 0.0, atol=1e-15)
+    assert abs(lm["TS"][1]) < 1e-12 and abs(lm["TS"][2]) < 1e-12 and lm["TS"][0] < 0  # x from TS to AA
+    assert abs(lm["AI"][2]) < 1e-12 and lm["AI"][1] < 0                                 # AI in the x-y plane, inferior
+    assert np.linalg.norm(lm["GH"] - [0.002, -0.023, -0.0439]) < 1e-4
+
+
+@pytest.mark.parametrize("name", MODEL_FILES)
+def test_model_glenoid_in_its_scapula_frame(name):
+    """Every DAS3-family model: the (scaled) DSEM GH centre in the model's scapula frame is its GH joint
+    centre within 1 mm; the normal's clinical version and inclination are anatomical; the stored
+    basis is the landmark-frame one."""
+    m = json.loads((ROOT / "models" / f"{name}.json").read_text())
+    g = m["glenoid"]
+    humerus = next(b for b in m["bodies"] if b["name"] == "humerus")
+    gh_joint = np.array(humerus["joint"]["location_in_parent"])
+    np.testing.assert_allclose(g["gh_centre"], gh_joint, atol=1e-12)
+    scale = g["frame"]["scapula_scale"]
+    assert 0.9 < scale < 1.1
+    assert np.linalg.norm(scale * landmarks_in_scapula()["GH"] - gh_joint) < GH_CENTRE_TOLERANCE_M
+    if name.startswith("das"):  # DAS3 itself is not scaled
+        assert abs(scale - 1.0) < 2e-3 and np.linalg.norm(landmarks_in_scapula()["GH"] - gh_joint) < 1e-3
+    version, inclination = glenoid_version_inclination(g["normal"])
+    assert VERSION_RANGE_DEG[0] <= version <= VERSION_RANGE_DEG[1]
+    assert INCLINATION_RANGE_DEG[0] <= inclination <= INCLINATION_RANGE_DEG[1]
+    assert version == pytest.approx(g["version_deg"]) and inclination == pytest.approx(g["inclination_deg"])
+    lm = landmarks_in_scapula()
+    n = (lm["glenoid"] - lm["GH"]) / np.linalg.norm(lm["glenoid"] - lm["GH"])
+    np.testing.assert_allclose(g["normal"], n, atol=1e-12)
+    B = np.array([g["normal"], g["major_axis"], g["minor_axis"]])
+    np.testing.assert_allclose(B @ B.T, np.eye(3), atol=1e-12)
+    assert np.linalg.det(B) > 0 and g["major_axis"][1] > 0.99  # right-handed; major axis superior
+    # The glenoid centre lies 2.3 cm (scaled) from the GH centre along the normal (DSEM).
+    d = np.array(g["glenoid_centre"]) - gh_joint
+    assert np.linalg.norm(d) == pytest.approx(0.02314 * scale, abs=1e-4)
+
+
+def test_old_registration_fails_the_anatomy_check():
+    """The Kabsch-fitted basis of before issue 24 is 28 deg retroverted: outside every published range,
+    so the version check refuses it, while the landmark-frame normal passes."""
+    version, _ = glenoid_version_inclination(OLD_KABSCH_NORMAL)
+    assert version < VERSION_RANGE_DEG[0]
+    assert version == pytest.approx(-27.7, abs=0.1)
+    new = np.array(glenoid_geometry(np.array([0.002, -0.023, -0.0439]))["normal"])
+    assert math.degrees(math.acos(float(new @ OLD_KABSCH_NORMAL))) == pytest.approx(14.85, abs=0.05)
+
+
+def test_version_inclination_by_hand():
+    """The clinical angles of faces turned by known angles about the scapular axis' frame."""
+    lm = landmarks_in_scapula()
+    axis = (lm["glenoid"] - lm["TS"]) / np.linalg.norm(lm["glenoid"] - lm["TS"])
+    posterior = np.array([0.0, 0.0, 1.0]) - axis[2] * axis
+    posterior /= np.linalg.norm(posterior)
+    superior = np.cross(posterior, axis)
+    for a in (-15.0, 0.0, 7.5):
+        face = math.cos(math.radians(a)) * axis - math.sin(math.radians(a)) * posterior  # anterior = -posterior
+        v, i = glenoid_version_inclination(-face)
+        assert v == pytest.approx(a, abs=1e-9) and i == pytest.approx(0.0, abs=1e-9)
+        face = math.cos(math.radians(a)) * axis + math.sin(math.radians(a)) * superior
+        v, i = glenoid_version_inclination(-face)
+        assert v == pytest.approx(0.0, abs=1e-9) and i == pytest.approx(a, abs=1e-9)
+    with pytest.raises(ValueError, match="zero"):
+        glenoid_version_inclination([0.0, 0.0, 0.0])
+
+
+def test_foreign_scapula_frame_is_refused():
+    """A GH centre that the DSEM landmark frame cannot give (another scapula frame) is refused, naming it."""
+    with pytest.raises(ModelInputError, match="not DAS3's scapula_r"):
+        glenoid_geometry(np.array([0.03, -0.01, 0.0]))
+    with pytest.raises(ModelInputError, match="best scale"):
+        glenoid_geometry(np.array([0.0, -0.046, -0.0878]) * 0.5 + np.array([0.004, 0.0, 0.0]))

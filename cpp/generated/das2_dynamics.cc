@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/das2.json --out cpp/generated`
-// from the model file das2.json (sha256 973b99849a1cad41d71742fa7ae6c48046a52e88e4b91a74e1b104b72a56dc57).
+// from the model file das2.json (sha256 69aacd6ac52703df8467776e9c81629f0b676b236d6c6c4aae92c6b97957a4f2).
 // Change the model file or the generator and regenerate instead.
 
 #include <cmath>

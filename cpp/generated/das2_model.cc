@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/das2.json --out cpp/generated`
-// from the model file das2.json (sha256 973b99849a1cad41d71742fa7ae6c48046a52e88e4b91a74e1b104b72a56dc57).
+// from the model file das2.json (sha256 69aacd6ac52703df8467776e9c81629f0b676b236d6c6c4aae92c6b97957a4f2).
 // Change the model file or the generator and regenerate instead.
 
 #include "das2.h"
@@ -196,7 +196,7 @@ const char* const kBodyNames[4] = {"humerus", "ulna", "radius", "hand"};
 
 const ModelDef kModel = {
     .name = "das2",
-    .source_hash = "973b99849a1cad41d71742fa7ae6c48046a52e88e4b91a74e1b104b72a56dc57",
+    .source_hash = "69aacd6ac52703df8467776e9c81629f0b676b236d6c6c4aae92c6b97957a4f2",
     .num_dofs = 5,
     .num_elements = 102,
     .dofs = kDofs,
@@ -215,9 +215,9 @@ const ModelDef kModel = {
     .humerus_body = 0,
     .girdle = nullptr,
     .gh_centre = {0.002, -0.023, -0.043900000000000002},
-    .glenoid_normal = {-0.99192631324681679, 0.072419590912111156, -0.10410375565127088},
-    .glenoid_major_axis = {0.075486086245136821, 0.9968125288727907, -0.025819238285113719},
-    .glenoid_minor_axis = {0.10190210926162814, -0.033469166920528398, -0.99423124824845255},
+    .glenoid_normal = {-0.98162192074614485, 0.11772169614089467, 0.15019989004110462},
+    .glenoid_major_axis = {0.11636734308752369, 0.99304662642683139, -0.017805594767928572},
+    .glenoid_minor_axis = {-0.15125159891187798, 3.4694469519536142e-18, -0.98849529782725831},
     .rim_half_angle_major = 0.77440258910988402,
     .rim_half_angle_minor = 0.67282442664381403,
     .arm_mass = 3.6696999999999997,

@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/das3.json --out cpp/generated`
-// from the model file das3.json (sha256 3cfb3672b1db2e9f9591f0a78eb4f1b3c7dd5f8f643741fce032c2590277f36a).
+// from the model file das3.json (sha256 45d6e3596ef8950f1c0775f0317c3e04c8f2bdad244931f0e59f3ff8138660fa).
 // Change the model file or the generator and regenerate instead.
 #pragma once
 

@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/das3.json --out cpp/generated`
-// from the model file das3.json (sha256 3cfb3672b1db2e9f9591f0a78eb4f1b3c7dd5f8f643741fce032c2590277f36a).
+// from the model file das3.json (sha256 45d6e3596ef8950f1c0775f0317c3e04c8f2bdad244931f0e59f3ff8138660fa).
 // Change the model file or the generator and regenerate instead.
 
 #include "das3.h"
@@ -271,7 +271,7 @@ const GirdleDef kGirdle = {
 
 const ModelDef kModel = {
     .name = "das3",
-    .source_hash = "3cfb3672b1db2e9f9591f0a78eb4f1b3c7dd5f8f643741fce032c2590277f36a",
+    .source_hash = "45d6e3596ef8950f1c0775f0317c3e04c8f2bdad244931f0e59f3ff8138660fa",
     .num_dofs = 11,
     .num_elements = 138,
     .dofs = kDofs,
@@ -290,9 +290,9 @@ const ModelDef kModel = {
     .humerus_body = 2,
     .girdle = &kGirdle,
     .gh_centre = {0.002, -0.023, -0.043900000000000002},
-    .glenoid_normal = {-0.99192631324681679, 0.072419590912111156, -0.10410375565127088},
-    .glenoid_major_axis = {0.075486086245136821, 0.9968125288727907, -0.025819238285113719},
-    .glenoid_minor_axis = {0.10190210926162814, -0.033469166920528398, -0.99423124824845255},
+    .glenoid_normal = {-0.98162192074614485, 0.11772169614089467, 0.15019989004110462},
+    .glenoid_major_axis = {0.11636734308752369, 0.99304662642683139, -0.017805594767928572},
+    .glenoid_minor_axis = {-0.15125159891187798, 3.4694469519536142e-18, -0.98849529782725831},
     .rim_half_angle_major = 0.77440258910988402,
     .rim_half_angle_minor = 0.67282442664381403,
     .arm_mass = 3.6696999999999997,

@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/participant_A.json --out cpp/generated`
-// from the model file participant_A.json (sha256 a16b40f11dac3788bfbcead1d42799439af7374618332248e40139a73b438068).
+// from the model file participant_A.json (sha256 903af86a45ee66c979ac5c63507d6bdfa5c9f74282ceae7acb5ee37214a160bd).
 // Change the model file or the generator and regenerate instead.
 #pragma once
 

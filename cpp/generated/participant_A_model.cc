@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/participant_A.json --out cpp/generated`
-// from the model file participant_A.json (sha256 a16b40f11dac3788bfbcead1d42799439af7374618332248e40139a73b438068).
+// from the model file participant_A.json (sha256 903af86a45ee66c979ac5c63507d6bdfa5c9f74282ceae7acb5ee37214a160bd).
 // Change the model file or the generator and regenerate instead.
 
 #include "participant_A.h"
@@ -105,7 +105,7 @@ const char* const kBodyNames[4] = {"humerus", "ulna", "radius", "hand"};
 
 const ModelDef kModel = {
     .name = "participant_A",
-    .source_hash = "a16b40f11dac3788bfbcead1d42799439af7374618332248e40139a73b438068",
+    .source_hash = "903af86a45ee66c979ac5c63507d6bdfa5c9f74282ceae7acb5ee37214a160bd",
     .num_dofs = 2,
     .num_elements = 42,
     .dofs = kDofs,
@@ -124,9 +124,9 @@ const ModelDef kModel = {
     .humerus_body = 0,
     .girdle = nullptr,
     .gh_centre = {0.0019292302570501929, -0.022102996186110207, -0.042267248431348436},
-    .glenoid_normal = {-0.99136982462603673, 0.070107126094706124, -0.11077392153246805},
-    .glenoid_major_axis = {0.073371473657725186, 0.99697433274955283, -0.025667229922172925},
-    .glenoid_minor_axis = {0.10863930078122806, -0.03357336309226313, -0.99351413257006072},
+    .glenoid_normal = {-0.98162192074614485, 0.11772169614089467, 0.15019989004110462},
+    .glenoid_major_axis = {0.11636734308752369, 0.99304662642683139, -0.017805594767928572},
+    .glenoid_minor_axis = {-0.15125159891187798, 3.4694469519536142e-18, -0.98849529782725831},
     .rim_half_angle_major = 0.77440258910988402,
     .rim_half_angle_minor = 0.67282442664381403,
     .arm_mass = 6.4609553994725069,

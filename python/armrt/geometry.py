@@ -137,15 +137,18 @@ class ArmGeometry:
         self.ulna_distal_in_ulna = r0_u + axis_u * float(np.dot(wrist_u - r0_u, axis_u))
 
     def _derive_scapula_points(self) -> None:
-        """Scapula-frame points drawn with the scapula: the DSEM landmarks TS and AI registered onto the
-        model's scapula (by GH centre, AA = scapula origin, glenoid centre), and the contact points."""
+        """Scapula-frame points drawn with the scapula: the DSEM landmarks TS and AI in the model's scapula
+        frame (the model file's glenoid.landmarks_scapula_m; older files: registered by GH centre, AA =
+        scapula origin and glenoid centre), and the contact points."""
         self.scapula_landmarks: dict[str, np.ndarray] = {}
         self.contact_points_scapula: dict[str, np.ndarray] = {}
         m = self.model_json
         if m is None:
             return
         g = m.get("glenoid", {})
-        if "landmarks_dsem_cm" in g and "glenoid_centre" in g:
+        if "landmarks_scapula_m" in g:
+            self.scapula_landmarks = {k: np.asarray(g["landmarks_scapula_m"][k], dtype=float) for k in ("TS", "AI")}
+        elif "landmarks_dsem_cm" in g and "glenoid_centre" in g:
             lm = {k: np.asarray(v, dtype=float) / 100.0 for k, v in g["landmarks_dsem_cm"].items()}
             R, t = _kabsch(np.array([lm["GH"], lm["AA"], lm["glenoid"]]),
                            np.array([self.gh_centre_scapula, np.zeros(3), np.asarray(g["glenoid_centre"], dtype=float)]))

@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/participant_A_FES.json --out cpp/tests/generated`
-// from the model file participant_A_FES.json (sha256 17e8e25d99f33bc075e15c19a20e3aab8e9c0b38092473af66cc730c1c346606).
+// from the model file participant_A_FES.json (sha256 a6b73006f7bd66708bb0af94f23a21910ada134588c9d0322f3a4473e2ebce21).
 // Change the model file or the generator and regenerate instead.
 
 #include "participant_A_FES.h"
@@ -105,7 +105,7 @@ const char* const kBodyNames[4] = {"humerus", "ulna", "radius", "hand"};
 
 const ModelDef kModel = {
     .name = "participant_A_FES",
-    .source_hash = "17e8e25d99f33bc075e15c19a20e3aab8e9c0b38092473af66cc730c1c346606",
+    .source_hash = "a6b73006f7bd66708bb0af94f23a21910ada134588c9d0322f3a4473e2ebce21",
     .num_dofs = 2,
     .num_elements = 42,
     .dofs = kDofs,
@@ -124,9 +124,9 @@ const ModelDef kModel = {
     .humerus_body = 0,
     .girdle = nullptr,
     .gh_centre = {0.0019292302570501929, -0.022102996186110207, -0.042267248431348436},
-    .glenoid_normal = {-0.99136982462603673, 0.070107126094706124, -0.11077392153246805},
-    .glenoid_major_axis = {0.073371473657725186, 0.99697433274955283, -0.025667229922172925},
-    .glenoid_minor_axis = {0.10863930078122806, -0.03357336309226313, -0.99351413257006072},
+    .glenoid_normal = {-0.98162192074614485, 0.11772169614089467, 0.15019989004110462},
+    .glenoid_major_axis = {0.11636734308752369, 0.99304662642683139, -0.017805594767928572},
+    .glenoid_minor_axis = {-0.15125159891187798, 3.4694469519536142e-18, -0.98849529782725831},
     .rim_half_angle_major = 0.77440258910988402,
     .rim_half_angle_minor = 0.67282442664381403,
     .arm_mass = 6.4609553994725069,

@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/participant_A_FES.json --out cpp/tests/generated`
-// from the model file participant_A_FES.json (sha256 17e8e25d99f33bc075e15c19a20e3aab8e9c0b38092473af66cc730c1c346606).
+// from the model file participant_A_FES.json (sha256 a6b73006f7bd66708bb0af94f23a21910ada134588c9d0322f3a4473e2ebce21).
 // Change the model file or the generator and regenerate instead.
 
 #include <cmath>
