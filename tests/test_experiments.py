@@ -18,17 +18,9 @@ def baseline():
 def test_baseline_rotator_cuff(baseline):
     levels = np.array(list(baseline.levels.values()))
     assert set(baseline.levels) == set(ex.CUFF)
-    if not baseline.met:
-        # No common cuff level reaches GHstab < 0.5 (docs/experiments.md says why): the scan covers no cuff
-        # up to full activation, none is below the limit, and the baseline is the scan's lowest GHstab.
-        scan = baseline.scan
-        assert min(scan) == 0.0 and max(scan) == 1.0 and len(scan) >= 5
-        assert min(scan.values()) >= ex.GH_LIMIT
-        assert levels.min() == levels.max() == min(scan, key=scan.get)
-        assert baseline.settled.gh_stab_tail == min(scan.values())
-        assert baseline.settled.speed < 0.05
-        assert abs(math.degrees(baseline.settled.elevation)) < 20.0
-        return
+    # The paper's Table III is reachable: some cuff activation holds the hanging arm inside half the rim
+    # (before issue 24 the mis-registered glenoid put the resting arm at 0.61, out of reach).
+    assert baseline.met
     # Low-level activations (the paper's largest: 0.07), inside half the rim, the arm at rest, not twisted.
     assert levels.max() < 0.25 and levels.min() >= 0.0
     assert baseline.settled.gh_stab_tail < ex.GH_LIMIT
@@ -78,8 +70,8 @@ def test_deltoid_without_and_with_cuff(baseline):
     # force leaves the glenoid.
     assert abs(ex.plateau_elevation(fig2) - 45.0) < 3.0
     assert fig2.gh_stab.max() > 1.0
-    limit = ex.fig3_limit(baseline)       # 0.5, or 10 % above the resting arm's GHstab where 0.5 is out of reach
-    assert limit == ex.GH_LIMIT if baseline.met else limit > ex.GH_LIMIT
+    limit = ex.fig3_limit(baseline)       # the paper's 0.5 (safety factor two)
+    assert limit == ex.GH_LIMIT
     tuned = ex.tune_cuff_boost(baseline.levels, deltoid, level, q0,
                                min_elevation_deg=ex.plateau_elevation(fig2) - 5.0, limit=limit)
     assert len(tuned.boost) == 4 and 0.0 < max(tuned.boost) <= 1.0 and min(tuned.boost) >= 0.0
@@ -93,6 +85,40 @@ def test_deltoid_without_and_with_cuff(baseline):
     assert th3[:, 1].max() >= th2[:, 1].max() - 5.0
     # Back to hanging after the ramp-down.
     assert th3[-1, 1] < 20.0
+
+
+def test_static_support_matches_the_engines_gh_force(baseline):
+    """Where the passive arm has settled (no acceleration left), the GH force summed in numpy from the
+    tendon forces, lines of action and weight equals the engine's GH stage (which also has the
+    inertial terms), and the muscles carry most of the weight, the rest pressing into the glenoid."""
+    arm = ex.new_arm()
+    q = baseline.passive.q
+    arm.reset(q=q)
+    arm.simulate(np.zeros(arm.n_elements), duration=1.0, record_every=100)
+    out = arm.outputs()
+    sup = ex.static_support(arm, arm.q.copy())
+    np.testing.assert_allclose(sup.gh_force, out["gh_force"], atol=0.3)
+    assert abs(sup.gh_stab - out["gh_stab"]) < 0.02
+    assert 0.5 < sup.shares().sum() < 1.0
+    n = np.asarray(arm.model.glenoid["glenoid_normal"])
+    assert sup.gh_force @ n > 0.8 * np.linalg.norm(sup.gh_force)  # compressive: into the glenoid
+    assert sup.gh_stab < ex.GH_LIMIT and baseline.passive.gh_stab_tail < ex.GH_LIMIT
+
+
+def test_table_iii_at_das3_equilibrium_posture_held():
+    """At DAS3's own equilibrium.mat posture (the model's rest posture, elbow 37.6 deg) held still, the
+    passive muscles lift less of the arm and the head is pushed inferiorly out of the glenoid; a
+    low-level cuff activation (the paper's Table III: at most 0.07) brings it inside half the rim."""
+    arm = ex.new_arm()
+    rest = arm.model.rest_posture
+    assert math.degrees(rest[3]) == pytest.approx(37.6, abs=0.1)
+    passive = ex.static_support(arm, rest)
+    assert passive.gh_stab > 1.0 and passive.gh_theta < 0.0      # towards the inferior rim
+    held = ex.held_baseline(arm, rest)
+    levels = np.array(list(held["levels"].values()))
+    assert held["gh_stab"] < ex.GH_LIMIT and 0.0 < levels.max() <= 0.07
+    scan = dict(held["common_level_scan"])
+    assert scan[0.0] == pytest.approx(passive.gh_stab) and scan[0.02] < ex.GH_LIMIT
 
 
 def test_default_rk4_control_step_matches_cvode():

@@ -156,8 +156,8 @@ def find_baseline(arm: Arm | None = None, progress: Progress | None = None) -> B
     while hi < 1.0 and common_margin(hi) > 0:
         hi = min(1.0, 2 * hi)
     if hi >= 1.0 and common_margin(1.0) > 0:
-        # No cuff level meets the constraint (in DAS3 the cuff's lines of action are far from the glenoid
-        # normal, docs/experiments.md): report it and keep the level with the lowest GHstab.
+        # No cuff level meets the constraint (a model file whose glenoid or cuff disagrees with DAS3's):
+        # report it and keep the level with the lowest GHstab.
         scan = {level: s.gh_stab_tail for level, s in settled_at.items()}
         best = min(scan, key=scan.get)
         if progress:
@@ -187,6 +187,137 @@ def find_baseline(arm: Arm | None = None, progress: Progress | None = None) -> B
         progress.step("baseline rotator-cuff activations")
     return Baseline(levels=dict(zip(CUFF, map(float, levels))), settled=final, passive=passive,
                     evaluations=evals[0], axial_reference=axial_ref)
+
+
+# ----------------------------------------------------------------------------- what carries the hanging arm
+
+@dataclass
+class Support:
+    """The arm held still at one posture: who carries its weight, and the GH force that is left."""
+    q: np.ndarray               # (ndof,) rad
+    element_force: np.ndarray   # (n,) N, tendon force (fibres in static equilibrium)
+    element_lift: np.ndarray    # (n,) N, upward (against gravity) component of each element's pull on the arm
+    weight: float               # N, the arm's weight
+    gh_force: np.ndarray        # (3,) N, humeral head on glenoid, scapula frame, with no acceleration
+    gh_theta: float             # rad
+    gh_phi: float               # rad
+    gh_stab: float
+
+    def shares(self) -> np.ndarray:
+        """(n,) fraction of the arm's weight each element lifts."""
+        return self.element_lift / self.weight
+
+
+def static_support(arm: Arm, q, activation=None) -> Support:
+    """The hanging arm held still at posture q (rad) with activations (n,) (default zero): each element's
+    tendon force with its fibre in static equilibrium, the part of the arm's weight it lifts, and the
+    GH force sum_i F_i d_i + m g with no acceleration (docs/conventions.md), in numpy from the engine's
+    tendon forces and lines of action, independently of the engine's own GH stage. Resets the arm."""
+    q = np.asarray(q, dtype=float)
+    arm.reset(q=q, activation=np.zeros(arm.n_elements) if activation is None else activation)
+    force = np.asarray(arm.outputs()["muscle_force"], dtype=float)
+    d = arm.gh_directions(q)
+    g = np.asarray(arm.model.gravity_base, dtype=float)
+    if arm.model.info["scapula_body"] >= 0:  # das3: gravity into the moving scapula's frame
+        g = arm.model._scapula_in_base(q)[0].T @ g
+    mass = float(arm.info["arm_mass"])
+    up = -g / np.linalg.norm(g)
+    f_gh = force @ d + mass * g
+    theta, phi, stab = arm.gh_stability(f_gh)
+    return Support(q=q, element_force=force, element_lift=force * (d @ up), weight=mass * float(np.linalg.norm(g)),
+                   gh_force=f_gh, gh_theta=float(theta), gh_phi=float(phi), gh_stab=float(stab))
+
+
+def support_table(arm: Arm, sup: Support, peeslack: dict[str, float] | None = None, top: int = 12) -> list[dict]:
+    """The elements lifting most of the arm's weight: name, tendon force (N), lift (N), share, PEEslack."""
+    names = arm.element_names
+    order = np.argsort(-sup.element_lift)[:top]
+    return [{"element": names[i], "force_N": float(sup.element_force[i]), "lift_N": float(sup.element_lift[i]),
+             "share": float(sup.shares()[i]), "peeslack": (peeslack or {}).get(names[i])} for i in order]
+
+
+def held_baseline(arm: Arm, q, limit: float = GH_LIMIT) -> dict:
+    """Table III at a posture held still (static_support): the smallest sum of the four cuff activations
+    keeping the static GHstab below 0.98 limit (scipy COBYLA, each evaluation one static equilibrium), and
+    the static GHstab for one common cuff level. Resets the arm."""
+    from scipy.optimize import minimize
+
+    def stab(a):
+        return static_support(arm, q, cuff_excitation(arm, np.clip(a, 0.0, 1.0))).gh_stab
+    scan = [(lvl, stab([lvl] * 4)) for lvl in (0.0, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0)]
+    if scan[0][1] < 0.98 * limit:
+        return {"levels": dict.fromkeys(CUFF, 0.0), "gh_stab": scan[0][1], "common_level_scan": scan}
+    start = next((lvl for lvl, st in scan if st < 0.98 * limit), 1.0)
+    res = minimize(lambda a: float(np.sum(a)), x0=np.full(4, start), method="COBYLA",
+                   constraints=[{"type": "ineq", "fun": lambda a: 0.98 * limit - stab(a)},
+                                {"type": "ineq", "fun": lambda a: a}, {"type": "ineq", "fun": lambda a: 1 - a}],
+                   options={"rhobeg": max(start / 3, 0.005), "maxiter": 200, "tol": 1e-5})
+    levels = np.clip(res.x, 0.0, 1.0)
+    if stab(levels) >= limit:  # COBYLA's point may sit on the wrong side of the constraint
+        levels = np.full(4, start)
+    return {"levels": dict(zip(CUFF, map(float, levels))), "gh_stab": stab(levels), "common_level_scan": scan}
+
+
+def _rotation(axis, angle: float) -> np.ndarray:
+    """Rotation matrix about unit axis (3,) by angle (rad), Rodrigues' formula."""
+    k = np.asarray(axis, dtype=float) / np.linalg.norm(axis)
+    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + math.sin(angle) * K + (1 - math.cos(angle)) * K @ K
+
+
+def normal_sensitivity(arm: Arm, force, tilts_deg=(1.0, 2.0, 5.0)) -> dict:
+    """GHstab of one GH force (3,) N, scapula frame, with the glenoid basis tilted: the normal turned by
+    each tilt (deg) towards superior, inferior, +minor and -minor, and the humeral-head-centre variant
+    (the normal from the model's GH joint centre, das3.osim's gh1, to the DSEM glenoid centre rather
+    than from the DSEM GH centre). A basis turned by R gives the GHstab of R^T F in the model's basis,
+    so the engine's definition (Arm.gh_stability) is used for every row."""
+    f = np.asarray(force, dtype=float)
+    g = arm.model.glenoid
+    n, major, minor = (np.asarray(g[k], dtype=float) for k in ("glenoid_normal", "glenoid_major_axis",
+                                                               "glenoid_minor_axis"))
+    rows = []
+    for tilt in tilts_deg:
+        # About +minor, n turns towards +major (superior): minor x n = major for n, major, minor right-handed.
+        for label, axis in (("superior", minor), ("inferior", -minor), ("+minor", -major), ("-minor", major)):
+            R = _rotation(axis, math.radians(tilt))
+            rows.append({"tilt_deg": tilt, "towards": label, "gh_stab": float(arm.gh_stability(R.T @ f)[2])})
+    out = {"gh_stab": float(arm.gh_stability(f)[2]), "tilts": rows}
+    from .geometry import find_model_file
+    import json as _json
+    path = find_model_file(arm.model.name)
+    lm = _json.loads(Path(path).read_text())["glenoid"].get("landmarks_scapula_m") if path else None
+    if lm:
+        n_hh = np.asarray(lm["glenoid"]) - np.asarray(g["gh_centre"])
+        n_hh /= np.linalg.norm(n_hh)
+        axis = np.cross(n, n_hh)
+        angle = math.asin(min(1.0, float(np.linalg.norm(axis))))
+        R = _rotation(axis, angle) if angle > 0 else np.eye(3)
+        out["humeral_head_centre"] = {"angle_deg": math.degrees(angle), "gh_stab": float(arm.gh_stability(R.T @ f)[2])}
+    return out
+
+
+def passive_support_summary(arm: Arm, settled_q) -> dict:
+    """Table III explained: who carries the passively hanging arm where it settles and at DAS3's
+    equilibrium.mat posture (the model's rest posture) held still, and Table III at that held posture."""
+    import json as _json
+    from .geometry import find_model_file
+    path = find_model_file(arm.model.name)
+    pee = ({e["name"]: e["peeslack"] for e in _json.loads(Path(path).read_text())["elements"]}
+           if path is not None else None)
+    out = {"peeslack_not_1": sorted(k for k, v in (pee or {}).items() if v != 1.0)}
+    for key, q in (("settled", settled_q), ("equilibrium_mat", arm.model.rest_posture)):
+        sup = static_support(arm, q)
+        crossing = np.abs(sup.element_lift) > 0
+        out[key] = {"posture_deg": np.degrees(sup.q).round(2).tolist(), "weight_N": sup.weight,
+                    "muscle_lift_N": float(sup.element_lift.sum()), "muscle_share": float(sup.shares().sum()),
+                    "gh_force_N": sup.gh_force.tolist(), "gh_force_norm_N": float(np.linalg.norm(sup.gh_force)),
+                    "gh_theta_deg": math.degrees(sup.gh_theta), "gh_phi_deg": math.degrees(sup.gh_phi),
+                    "gh_stab": sup.gh_stab, "elements_lifting": int(crossing.sum()),  # pulling up or down
+                    "top": support_table(arm, sup, pee)}
+    out["held_baseline"] = held_baseline(arm, arm.model.rest_posture)
+    out["normal_sensitivity"] = normal_sensitivity(arm, out["settled"]["gh_force_N"])
+    arm.reset()
+    return out
 
 
 # ----------------------------------------------------------------------------- stimulation sequences
@@ -348,9 +479,10 @@ class CuffBoost:
 
 
 def fig3_limit(base: "Baseline") -> float:
-    """The GHstab Fig. 3's cuff boost must stay below: the paper's 0.5 (safety factor two), or, where no
-    cuff activation gets the resting arm below 0.5 (Baseline.met is False), 10 % above the resting arm's
-    own GHstab: the cuff then keeps the deltoid from pushing the head towards the rim."""
+    """The GHstab Fig. 3's cuff boost must stay below: the paper's 0.5 (safety factor two; das2 and das3
+    meet it at rest), or, for a model where no cuff activation gets the resting arm below 0.5
+    (Baseline.met is False), 10 % above the resting arm's own GHstab: the cuff then keeps the deltoid
+    from pushing the head towards the rim."""
     return GH_LIMIT if base.met else round(1.1 * base.settled.gh_stab_tail, 3)
 
 
@@ -613,6 +745,7 @@ def _run_all(out: Path, quick: bool, prog: Progress) -> int:
                            "axial_rotation_deg": math.degrees(base.settled.axial),
                            "evaluations": base.evaluations, "met": base.met,
                            "common_level_scan": sorted(base.scan.items()) if base.scan else None}
+    summary["support"] = passive_support_summary(arm, base.passive.q)
 
     prog.start("Fig. 1")
     arm1, res1 = run_sequence(seq1)
@@ -681,13 +814,44 @@ def report(s: dict) -> str:
     if not b.get("met", True):
         scan = ", ".join(f"{lvl:g}: {g:.3f}" for lvl, g in b["common_level_scan"])
         lines += ["No cuff activation brings the hanging arm below GHstab 0.5 in this model (common cuff level: "
-                  f"settled GHstab {scan}); the level with the lowest GHstab is kept as the baseline. DAS3's cuff "
-                  "lines of action are 25-45 deg from the glenoid normal, so the cuff raises GHstab at rest. "
-                  "See docs/experiments.md.", ""]
+                  f"settled GHstab {scan}); the level with the lowest GHstab is kept as the baseline.", ""]
     elif max(b["levels"].values()) == 0.0:
-        lines += ["The passively hanging arm already meets GHstab < 0.5 in this model, so the minimum is zero: "
-                  "DAS3's passive muscle forces (supraspinatus, clavicular pectoralis, deltoid) carry the arm's "
-                  "weight and press the head into the glenoid. See docs/experiments.md.", ""]
+        lines += ["The passively hanging arm already meets GHstab < 0.5 in this model, so the minimum is zero "
+                  "(what carries it: below; docs/experiments.md).", ""]
+    sup = s.get("support")
+    if sup:
+        lines += ["### What carries the hanging arm (held still, no muscle excited)", "",
+                  "| posture | GHy GHz GHyy ELx PSy (deg) | lifted by muscles | GH force | theta, phi (deg) | GHstab |",
+                  "|---|---|---|---|---|---|"]
+        for key, label in (("settled", "where it settles"), ("equilibrium_mat", "DAS3 equilibrium.mat")):
+            r = sup[key]
+            lines.append(f"| {label} | {r['posture_deg']} | {r['muscle_lift_N']:.1f} of {r['weight_N']:.1f} N "
+                         f"({100 * r['muscle_share']:.0f} %, {r['elements_lifting']} elements pulling) | "
+                         f"{r['gh_force_norm_N']:.1f} N | {r['gh_theta_deg']:.1f}, {r['gh_phi_deg']:.1f} | "
+                         f"{r['gh_stab']:.3f} |")
+        lines += ["", "Largest lifts where the arm settles (tendon force, upward component, share of the arm's weight, "
+                  "PEEslack):", "", "| element | force (N) | lift (N) | share | PEEslack |", "|---|---|---|---|---|"]
+        lines += [f"| {t['element']} | {t['force_N']:.2f} | {t['lift_N']:.2f} | {100 * t['share']:.1f} % | "
+                  f"{t['peeslack'] if t['peeslack'] is not None else '-'} |" for t in sup["settled"]["top"]]
+        hb = sup["held_baseline"]
+        scan = ", ".join(f"{lvl:g}: {g:.3f}" for lvl, g in hb["common_level_scan"])
+        lines += ["", "Table III at DAS3's equilibrium.mat posture held still (static GHstab, COBYLA): "
+                  + ", ".join(f"{m} {v:.4f}" for m, v in hb["levels"].items())
+                  + f" (GHstab {hb['gh_stab']:.3f}); one common cuff level gives {scan}.", ""]
+        ns = sup.get("normal_sensitivity")
+        if ns:
+            lines += ["### GHstab of the settled arm's GH force with the glenoid normal tilted", "",
+                      "| tilt (deg) | superior | inferior | +minor (anterior) | -minor (posterior) |", "|---|---|---|---|---|"]
+            for tilt in sorted({r["tilt_deg"] for r in ns["tilts"]}):
+                row = {r["towards"]: r["gh_stab"] for r in ns["tilts"] if r["tilt_deg"] == tilt}
+                lines.append(f"| {tilt:g} | {row['superior']:.3f} | {row['inferior']:.3f} | {row['+minor']:.3f} | "
+                             f"{row['-minor']:.3f} |")
+            lines += ["", f"Untilted: {ns['gh_stab']:.3f}."]
+            hh = ns.get("humeral_head_centre")
+            if hh:
+                lines[-1] += (f" Humeral-head-centre normal (from das3.osim's gh1 rather than the DSEM GH centre, "
+                              f"{hh['angle_deg']:.2f} deg away): {hh['gh_stab']:.3f}.")
+            lines.append("")
     f1 = s["fig1"]
     lines += ["## Fig. 1: elbow flexors, co-contraction, pronators", "",
               f"Levels on top of the baseline: flexors {f1['levels']['flex']}, triceps {f1['levels']['ext']}, "
