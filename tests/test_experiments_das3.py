@@ -176,6 +176,11 @@ def test_full_das3_experiments(tmp_path):
             assert a["max_deg"] < 0.1, (run, a)
     assert all(abs(r["difference_ros2_deg"]) < SETTLE_BOUND_DEG for r in s["settling"]["table"])
     assert s["rhythm"]["runs"][f"{X.RHYTHM_REFERENCE_LEVEL:g}"]["fit"]["slope"] > 0
+    # The paper's GH findings on das3 (issue 24): the deltoid alone takes the head past the rim (Fig. 2),
+    # and a cuff boost tuned on das3 by the paper's method keeps it inside half the rim (Fig. 3).
+    assert s["protocols"]["fig2"]["das3"]["gh_stab_max"] > 1.0
+    own = s["fig3_das3_boost"]
+    assert own["limit"] == 0.5 and own["summary"]["gh_stab_max"] < 0.5 and max(own["cuff_boost"].values()) > 0
 
 
 def test_at_range_limit_names_the_girdle_dofs_past_their_range_ends(settled):

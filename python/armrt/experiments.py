@@ -492,14 +492,17 @@ class _Found(Exception):
 
 def tune_cuff_boost(baseline: dict[str, float], deltoid: list[str], level: float, q0=None,
                     min_elevation_deg: float = -np.inf,
-                    grid=tuple(np.round(np.arange(0.0, 0.3001, 0.05), 3)), limit: float = GH_LIMIT) -> CuffBoost:
+                    grid=tuple(np.round(np.arange(0.0, 0.3001, 0.05), 3)), limit: float = GH_LIMIT,
+                    run=None) -> CuffBoost:
     """A small cuff boost keeping GHstab < limit (0.5 by default) throughout the Fig. 3 sequence while the humerus
     still reaches min_elevation_deg (the paper's "resulting motion is quite similar"); a boost that
     holds the arm down counts as failing, by 1 + the shortfall in tens of degrees.
 
     First one common boost for the four muscles (scan, then bisection). If none on the grid is
     enough, the boost pattern is searched (Nelder-Mead on the worst GHstab, stopped once it is below
-    0.9 limit) and then scaled down by bisection to the smallest multiple that still keeps GHstab < limit."""
+    0.9 limit) and then scaled down by bisection to the smallest multiple that still keeps GHstab < limit.
+    run: seq -> (arm, Result recorded at every control step), the model to tune on (default das2,
+    run_sequence); q0 must be that model's posture."""
     from scipy.optimize import minimize
 
     evals = [0]
@@ -508,7 +511,7 @@ def tune_cuff_boost(baseline: dict[str, float], deltoid: list[str], level: float
         evals[0] += 1
         seq = deltoid_sequence("fig3", baseline, deltoid, level, np.clip(boost, 0.0, 1.0), q0)
         # Every control step: GHstab has ~10 ms spikes when the deltoid comes on.
-        _, res = run_sequence(seq, record_every=1)
+        _, res = run(seq) if run is not None else run_sequence(seq, record_every=1)
         shortfall = min_elevation_deg - plateau_elevation(res)
         return float(res.gh_stab.max()) + (1.0 + shortfall / 10.0 if shortfall > 0 else 0.0)
 
