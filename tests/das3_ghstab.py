@@ -63,18 +63,17 @@ CASES = [
 
 def glenoid_axis_error_deg() -> float:
     """Angle (deg) between DAS3's glenoid axis (glenoid_scap: arcsines of the cm vector from the GH
-    centre to the glenoid centre in the landmark frame) and the direction of that vector."""
+    centre to the glenoid centre in the landmark frame) and the direction of that vector, which the
+    model file records (glenoid.normal_in_landmark_frame, written by codegen/import_das3.py)."""
+    import json
+
+    import armrt
+    glenoid = json.loads(armrt.Model("das2").model_file.read_text())["glenoid"]
     d = {k: np.asarray(v, float) for k, v in DSEM_CM.items()}
-    x = d["AA"] - d["TS"]
-    x /= np.linalg.norm(x)
-    z = np.cross(x, d["AA"] - d["AI"])
-    z /= np.linalg.norm(z)
-    S = np.array([x, np.cross(z, x), z])
-    g = S @ (d["glenoid"] - d["GH"])            # cm, as DAS3 leaves it
-    theta = np.arcsin(-g[1])                   # DAS3: asin of the unnormalised component
-    theta_true = np.arcsin(-g[1] / np.linalg.norm(g))
-    # Both frames share phi (it is normalised in DAS3 too); the axis differs by theta only.
-    return float(np.degrees(abs(theta - theta_true)))
+    unit = np.asarray(glenoid["normal_in_landmark_frame"])
+    g = unit * np.linalg.norm(d["glenoid"] - d["GH"])   # cm, as DAS3 leaves it
+    # DAS3 takes asin of the unnormalised component; phi it normalises, so the axes differ by theta only.
+    return float(np.degrees(abs(np.arcsin(-g[1]) - np.arcsin(-unit[1]))))
 
 
 def table() -> str:
