@@ -339,7 +339,7 @@ def test_runner_runs_das3_over_udp_and_fails_safe(tmp_path):
 
 def test_state_packets_of_another_model_are_refused_not_misread():
     """A das2 client (or viewer) on a das3 runner, and the reverse, counts the packets as bad with the
-    reason, instead of decoding das3's 30 values as das2's 18 (wrong angles, silently)."""
+    reason, instead of decoding das3's 34 values as das2's 22 (wrong angles, silently)."""
     from armrt import realtime as rt
     n3, n2 = armrt.Model("das3").n_elements, armrt.Model("das2").n_elements
     f2, f3 = rt.state_fields("das2"), rt.state_fields("das3")

@@ -88,7 +88,7 @@ def test_layout_comes_from_the_cpp_definition():
     assert rt.HEADER_SIZE == _rt.HEADER_SIZE == rt.HEADER.size
     assert [f[0] for f in rt.HEADER_FIELDS] == ["magic", "version", "type", "seq", "length", "count", "flags", "session"]
     assert rt.STATE_FIELDS[-2:] == ["lag", "overruns"] and rt.STATE_FIXED_VALUES == len(_rt.state_fields("das2"))
-    assert rt.VERSION == _rt.VERSION == 2
+    assert rt.VERSION == _rt.VERSION == 3
     assert rt.parse_endpoint("localhost:9") == ("127.0.0.1", 9) == rt.parse_endpoint(":9")
     for bad in ("nohost", "1.2.3.4:70000", "example.org:5", "1.2.3.4:x"):
         with pytest.raises(ValueError):

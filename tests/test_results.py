@@ -12,7 +12,7 @@ from armrt.arm import RESULT_MEMORY_LIMIT  # noqa: E402
 def test_an_hour_at_1_ms_is_refused_with_the_record_every_that_fits(arm):
     """The issue's example: simulate(duration=3600) would record 15 GB."""
     rows = 3_600_001
-    assert arm.result_bytes(3600) == rows * 8 * (5 * 102 + 24)          # 15.38 GB
+    assert arm.result_bytes(3600) == rows * 8 * (5 * 102 + 26)          # 15.44 GB
     with pytest.raises(MemoryError, match=r"would record 3600001 rows = 15.4 GB") as err:
         arm.simulate({"bicb": 0.1}, 3600)
     k = int(re.search(r"record_every=(\d+)", str(err.value)).group(1))
@@ -70,7 +70,7 @@ def test_to_dataframe(arm):
     pd = pytest.importorskip("pandas")
     res = arm.simulate({"bicb": 0.3}, 0.02, record_every=5)
     df = res.to_dataframe()
-    assert isinstance(df, pd.DataFrame) and df.shape == (5, 533)
+    assert isinstance(df, pd.DataFrame) and df.shape == (5, 535)
     np.testing.assert_array_equal(df.index.to_numpy(), res.time)
     np.testing.assert_array_equal(df["q.ELx"].to_numpy(), res.q[:, 3])
     np.testing.assert_array_equal(df["activation.bicb1"].to_numpy(), res.activation[:, res.element_names.index("bicb1")])

@@ -140,7 +140,8 @@ def test_udp_source_decodes_state_packets(geom):
     try:
         q = geom.rest + 0.1
         exc = np.linspace(0, 1, len(src.element_names))
-        values = np.concatenate([[1.25], q, np.zeros(5), np.zeros(3), [1.7, -1, 0.004, 2], exc])
+        # ..., gh_stab, gh_theta, gh_phi, gh_rim_margin, gh_rim_direction, last_seq, lag, overruns
+        values = np.concatenate([[1.25], q, np.zeros(5), np.zeros(3), [1.7, 0.5, -0.6, -0.1, -0.87, -1, 0.004, 2], exc])
         assert len(values) == realtime.STATE_FIXED_VALUES + len(exc)
         with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as tx:
             tx.sendto(b"not a packet", ("127.0.0.1", src.port))
@@ -152,6 +153,7 @@ def test_udp_source_decodes_state_packets(geom):
         f = src.latest()
         assert f is not None, "no state decoded"
         assert f.time == 1.25 and f.gh_stab == 1.7 and f.lag == 0.004 and f.overrun
+        assert f.gh_rim_margin == -0.1 and f.gh_rim_direction == -0.87
         assert f.kind == "excitation received"
         np.testing.assert_allclose(f.activation, exc)
         np.testing.assert_allclose(f.q, q)

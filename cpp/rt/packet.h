@@ -1,11 +1,11 @@
-// The armrt real-time UDP packet format, version 2 (specification: docs/realtime.md). This header is
+// The armrt real-time UDP packet format, version 3 (specification: docs/realtime.md). This header is
 // the only definition of the layout: armrt._rt exports it to Python (armrt.realtime reads offsets,
 // sizes, types, flags and the state value names from there). All fields are little-endian; values
 // are IEEE-754 float64.
 //
 //   offset size  field
 //   0      4     magic    "ARMR" (0x41 0x52 0x4D 0x52)
-//   4      2     version  2
+//   4      2     version  3
 //   6      2     type     PacketType
 //   8      4     seq      sender's sequence number (wraps modulo 2^32)
 //   12     4     length   total packet length in bytes, = 24 + 8 * count (+ 32 with kFlagAuth)
@@ -24,7 +24,8 @@
 namespace armrt::rt {
 
 inline constexpr std::uint8_t kMagic[4] = {'A', 'R', 'M', 'R'};
-inline constexpr std::uint16_t kVersion = 2;
+// 3: the GH force's angles, rim margin and rim direction follow gh_stab in the state (moving the later values).
+inline constexpr std::uint16_t kVersion = 3;
 inline constexpr int kHeaderSize = 24;
 inline constexpr int kMaxValues = 512;
 inline constexpr int kTagSize = 32;  // HMAC-SHA256
@@ -63,12 +64,16 @@ enum PacketFlags : std::uint16_t {
 //   q0 .. q{n-1}         rad, in the model's DOF order (das2: GHy GHz GHyy ELx PSy)
 //   qd0 .. qd{n-1}       rad/s
 //   hand_x hand_y hand_z m, thorax frame
-//   gh_stab              1
+//   gh_stab              1, (theta/theta_a)^2 + (phi/phi_a)^2
+//   gh_theta gh_phi      rad, GH force from the glenoid normal along the major (+ superior) / minor (+ anterior) axis
+//   gh_rim_margin        rad, how far the GH force can still turn towards the rim (< 0: beyond it)
+//   gh_rim_direction     rad, atan2(gh_phi, gh_theta): 0 superior, pi/2 anterior (armrt/engine.h GHStability)
 //   last_seq             last applied excitation seq (-1: none in this session)
 //   lag                  s, simulated time behind the wall-clock schedule
 //   overruns             overrun cycles since the start
 struct StateLayout {
-  int time = 0, q = 1, qd = 0, hand = 0, gh_stab = 0, last_seq = 0, lag = 0, overruns = 0;
+  int time = 0, q = 1, qd = 0, hand = 0, gh_stab = 0, gh_theta = 0, gh_phi = 0, gh_rim_margin = 0, gh_rim_direction = 0;
+  int last_seq = 0, lag = 0, overruns = 0;
   int fixed_values = 0;  // values before the optional force / excitation blocks
 };
 inline StateLayout state_layout(int num_dofs) {
@@ -76,7 +81,11 @@ inline StateLayout state_layout(int num_dofs) {
   s.qd = s.q + num_dofs;
   s.hand = s.qd + num_dofs;
   s.gh_stab = s.hand + 3;
-  s.last_seq = s.gh_stab + 1;
+  s.gh_theta = s.gh_stab + 1;
+  s.gh_phi = s.gh_theta + 1;
+  s.gh_rim_margin = s.gh_phi + 1;
+  s.gh_rim_direction = s.gh_rim_margin + 1;
+  s.last_seq = s.gh_rim_direction + 1;
   s.lag = s.last_seq + 1;
   s.overruns = s.lag + 1;
   s.fixed_values = s.overruns + 1;
@@ -87,7 +96,8 @@ inline std::vector<std::string> state_field_names(int num_dofs) {
   std::vector<std::string> f{"time"};
   for (int j = 0; j < num_dofs; ++j) f.push_back("q" + std::to_string(j));
   for (int j = 0; j < num_dofs; ++j) f.push_back("qd" + std::to_string(j));
-  for (const char* n : {"hand_x", "hand_y", "hand_z", "gh_stab", "last_seq", "lag", "overruns"}) f.push_back(n);
+  for (const char* n : {"hand_x", "hand_y", "hand_z", "gh_stab", "gh_theta", "gh_phi", "gh_rim_margin", "gh_rim_direction",
+                        "last_seq", "lag", "overruns"}) f.push_back(n);
   return f;
 }
 

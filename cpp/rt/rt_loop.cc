@@ -462,6 +462,10 @@ void RtLoop::send_state() {
   for (int j = 0; j < m.num_dofs; ++j) v[st.qd + j] = d.x[qd_offset(m) + j];
   for (int j = 0; j < 3; ++j) v[st.hand + j] = d.hand_position[j];
   v[st.gh_stab] = d.gh_stab;
+  v[st.gh_theta] = d.gh_theta;
+  v[st.gh_phi] = d.gh_phi;
+  v[st.gh_rim_margin] = d.gh_rim_margin;
+  v[st.gh_rim_direction] = d.gh_rim_direction;
   v[st.last_seq] = have_seq_ ? static_cast<double>(last_seq_) : -1.0;
   v[st.lag] = static_cast<double>(missed_) * period_ns_ * 1e-9;
   v[st.overruns] = static_cast<double>(overruns_);

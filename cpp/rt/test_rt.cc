@@ -626,8 +626,10 @@ TEST_CASE("state packets reach the controller and describe the arm") {
   CHECK(h.type == kState);
   CHECK(h.session == a.session);
   const StateLayout st = state_layout(loop.simulator().model.num_dofs);
-  CHECK(st.fixed_values == 18);  // das2: 5 DOFs
-  CHECK(state_field_names(5).size() == 18u);
+  CHECK(st.fixed_values == 22);  // das2: 5 DOFs
+  CHECK(state_field_names(5).size() == 22u);
+  CHECK(state_field_names(5)[st.gh_rim_margin] == "gh_rim_margin");
+  CHECK(state_field_names(5)[st.gh_rim_direction] == "gh_rim_direction");
   CHECK(h.count == st.fixed_values + 2 * n_el);
   CHECK((h.flags & kFlagForces) != 0);
   CHECK((h.flags & kFlagExcitation) != 0);
@@ -636,6 +638,16 @@ TEST_CASE("state packets reach the controller and describe the arm") {
   CHECK(get_f64(b + kHeaderSize + 8 * st.last_seq) == static_cast<double>(a.seq));
   CHECK(get_f64(b + kHeaderSize + 8 * st.lag) >= 0.0);
   CHECK(get_f64(b + kHeaderSize + 8 * (st.fixed_values + n_el)) == doctest::Approx(0.125));  // excitation
+  // The GH values are one evaluation's: stab, margin and direction those of the sent theta and phi.
+  auto value = [&](int k) { return get_f64(b + kHeaderSize + 8 * k); };
+  const armrt::ModelDef& def = *loop.simulator().model.def;
+  const double th = value(st.gh_theta), ph = value(st.gh_phi);
+  const double rt = th / def.rim_half_angle_major, rp = ph / def.rim_half_angle_minor;
+  CHECK(th != 0.0);
+  CHECK(value(st.gh_stab) == doctest::Approx(rt * rt + rp * rp).epsilon(1e-12));
+  CHECK(value(st.gh_rim_direction) == doctest::Approx(std::atan2(ph, th)).epsilon(1e-12));
+  const double rim = 1.0 / std::sqrt(rt * rt + rp * rp) * std::hypot(th, ph);  // rho / sqrt(GHstab)
+  CHECK(value(st.gh_rim_margin) == doctest::Approx(rim - std::hypot(th, ph)).epsilon(1e-12));
 }
 
 TEST_CASE("lag and overrun flag: skip and report, --max-lag stops") {

@@ -76,7 +76,13 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
   }
   hand_position_in_thorax(m, q, d.hand_position.data());
   // GH reaction.
-  gh_reaction(m, q, qd, qdd, force, f_ext, d.gh_force.data(), &d.gh_theta, &d.gh_phi, &d.gh_stab);
+  GHStability gh;
+  gh_reaction(m, q, qd, qdd, force, f_ext, d.gh_force.data(), &gh);
+  d.gh_theta = gh.theta;
+  d.gh_phi = gh.phi;
+  d.gh_stab = gh.stab;
+  d.gh_rim_direction = gh.rim_direction;
+  d.gh_rim_margin = gh.rim_margin;
 }
 
 }  // namespace armrt

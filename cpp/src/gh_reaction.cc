@@ -9,21 +9,36 @@
 
 namespace armrt {
 
-void gh_stability(const ModelDef& def, const double* f, double* theta, double* phi, double* stab) {
+GHStability gh_stability(const ModelDef& def, const double* f) {
   double fn = 0, fmaj = 0, fmin = 0;
   for (int k = 0; k < 3; ++k) {
     fn += f[k] * def.glenoid_normal[k];
     fmaj += f[k] * def.glenoid_major_axis[k];
     fmin += f[k] * def.glenoid_minor_axis[k];
   }
-  *theta = std::atan2(fmaj, fn);
-  *phi = std::atan2(fmin, fn);
-  const double rt = *theta / def.rim_half_angle_major, rp = *phi / def.rim_half_angle_minor;
-  *stab = rt * rt + rp * rp;
+  GHStability s;
+  s.theta = std::atan2(fmaj, fn);
+  s.phi = std::atan2(fmin, fn);
+  const double ta = def.rim_half_angle_major, pa = def.rim_half_angle_minor;
+  const double rt = s.theta / ta, rp = s.phi / pa;
+  s.stab = rt * rt + rp * rp;
+  // The rim along psi, from the unit direction (cos psi, sin psi) = (theta, phi) / rho rather than from
+  // cos(psi) and sin(psi): no further transcendental call, and with rho = 0 taken as psi = 0 (atan2(0, -0)
+  // would give pi) the margin there is theta_a, the rim's radius along the major axis.
+  const double rho = std::hypot(s.theta, s.phi);
+  double c = 1.0, sn = 0.0;
+  if (rho > 0.0) {
+    c = s.theta / rho;
+    sn = s.phi / rho;
+    s.rim_direction = std::atan2(s.phi, s.theta);
+  }
+  const double rim_radius = 1.0 / std::sqrt(c * c / (ta * ta) + sn * sn / (pa * pa));
+  s.rim_margin = rim_radius - rho;
+  return s;
 }
 
 void gh_reaction(const Model& m, const double* q, const double* qd, const double* qdd, const double* force,
-                 const double* f_ext_base, double* gh_force, double* theta, double* phi, double* stab) {
+                 const double* f_ext_base, double* gh_force, GHStability* stab) {
   const ModelDef& def = *m.def;
   const int nq = m.num_dofs, n = m.num_elements;
   double dir[kMaxElements * 3];
@@ -54,7 +69,7 @@ void gh_reaction(const Model& m, const double* q, const double* qd, const double
   gh_force[0] = f_scapula[0] + fx;
   gh_force[1] = f_scapula[1] + fy;
   gh_force[2] = f_scapula[2] + fz;
-  gh_stability(def, gh_force, theta, phi, stab);
+  *stab = gh_stability(def, gh_force);
 }
 
 }  // namespace armrt

@@ -27,6 +27,8 @@ void add_row(Recording& r, const Simulator& s, const double* x, double time, dou
   r.gh_stab.push_back(d.gh_stab);
   r.gh_angles.push_back(d.gh_theta);
   r.gh_angles.push_back(d.gh_phi);
+  r.gh_rim_margin.push_back(d.gh_rim_margin);
+  r.gh_rim_direction.push_back(d.gh_rim_direction);
   put(r.hand_position, d.hand_position.data(), 3);
   double angles[3];
   thorax_humerus_angles(m, x + q_offset(m), angles);
@@ -47,7 +49,7 @@ long simulate_recorded(Simulator& s, const double* u, bool held, long n_steps, l
   r.num_elements = n;
   r.num_contact_points = s.model.def->girdle ? s.model.def->girdle->num_contact_points : 0;
   const long n_rec = n_steps / record_every + 1;
-  for (auto* v : {&r.time, &r.gh_stab, &r.tet_ns}) v->reserve(n_rec);
+  for (auto* v : {&r.time, &r.gh_stab, &r.gh_rim_margin, &r.gh_rim_direction, &r.tet_ns}) v->reserve(n_rec);
   for (auto* v : {&r.q, &r.qdot}) v->reserve(n_rec * nq);
   for (auto* v : {&r.lce, &r.activation, &r.excitation, &r.muscle_force, &r.muscle_length}) v->reserve(n_rec * n);
   for (auto* v : {&r.gh_force, &r.hand_position, &r.thorax_humerus}) v->reserve(n_rec * 3);

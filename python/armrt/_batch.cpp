@@ -93,6 +93,8 @@ PYBIND11_MODULE(_batch, mod) {
       .def_property_readonly("gh_stab", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_stab, 0, self); })
       .def_property_readonly("gh_theta", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_theta, 0, self); })
       .def_property_readonly("gh_phi", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_phi, 0, self); })
+      .def_property_readonly("gh_rim_margin", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_rim_margin, 0, self); })
+      .def_property_readonly("gh_rim_direction", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_rim_direction, 0, self); })
       .def_property_readonly("qddot", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.qdd.data(), b.arm(0).model.num_dofs, self); })
       .def_property_readonly("muscle_force", [](py::object self) {
         auto& b = self.cast<Batch&>();

@@ -296,6 +296,8 @@ PYBIND11_MODULE(_core, mod) {
         o["gh_theta"] = s.data.gh_theta;
         o["gh_phi"] = s.data.gh_phi;
         o["gh_stab"] = s.data.gh_stab;
+        o["gh_rim_margin"] = s.data.gh_rim_margin;
+        o["gh_rim_direction"] = s.data.gh_rim_direction;
         if (const GirdleDef* g = s.model.def->girdle) {
           const int P = g->num_contact_points;
           o["girdle_torque"] = copy(s.data.girdle_torque.data(), {nq});
@@ -374,6 +376,8 @@ PYBIND11_MODULE(_core, mod) {
         out["gh_force"] = arr(r.gh_force, 3);
         out["gh_stab"] = arr(r.gh_stab, 0);
         out["gh_angles"] = arr(r.gh_angles, 2);
+        out["gh_rim_margin"] = arr(r.gh_rim_margin, 0);
+        out["gh_rim_direction"] = arr(r.gh_rim_direction, 0);
         out["hand_position"] = arr(r.hand_position, 3);
         out["thorax_humerus"] = arr(r.thorax_humerus, 3);
         out["tet_ns"] = arr(r.tet_ns, 0);
@@ -453,8 +457,7 @@ PYBIND11_MODULE(_core, mod) {
         return muscle_equilibrium_lce(s.model.element[i], s.model.fibre_damping, L, a);
       })
       .def("gh_stability", [](const Simulator& s, const Array& f) {
-        double th, ph, st;
-        gh_stability(*s.model.def, checked(f, 3, "force"), &th, &ph, &st);
-        return py::make_tuple(th, ph, st);
+        const GHStability g = gh_stability(*s.model.def, checked(f, 3, "force"));
+        return py::make_tuple(g.theta, g.phi, g.stab);
       });
 }

@@ -21,7 +21,8 @@ namespace {
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 using Shape = std::vector<py::ssize_t>;
 
-// Leading (batch) shape of q: () for one pose (ndof,), (k,) for k poses (k, ndof).
+// Leading (batch) shape of q: () for one pose (ndof,), (k,) for k poses (k, ndof); likewise for any
+// per-row input of width ndof (a force: 3).
 Shape batch_shape(const Array& q, int ndof, const char* what) {
   if (q.ndim() == 1 && q.shape(0) == ndof) return {};
   if (q.ndim() == 2 && q.shape(1) == ndof) return {q.shape(0)};
@@ -43,10 +44,10 @@ py::ssize_t count_of(const Shape& s) {
   return n;
 }
 
-// Applies f(q_k, out_k...) to every pose; outputs have shape batch + tails[i].
+// Applies f(x_k, out_k...) to every row x_k (of `width` values) of x; outputs have shape batch + tails[i].
 template <class F>
-std::vector<Array> per_pose(const ModelDef& def, const Array& q, const std::vector<Shape>& tails, F f) {
-  const Shape batch = batch_shape(q, def.num_dofs, "q");
+std::vector<Array> per_row(const Array& q, int width, const char* what, const std::vector<Shape>& tails, F f) {
+  const Shape batch = batch_shape(q, width, what);
   const py::ssize_t k = count_of(batch);
   std::vector<Array> out;
   std::vector<py::ssize_t> stride;
@@ -57,9 +58,15 @@ std::vector<Array> per_pose(const ModelDef& def, const Array& q, const std::vect
   std::vector<double*> ptr(out.size());
   for (py::ssize_t i = 0; i < k; ++i) {
     for (size_t j = 0; j < out.size(); ++j) ptr[j] = out[j].mutable_data() + i * stride[j];
-    f(q.data() + i * def.num_dofs, ptr.data());
+    f(q.data() + i * width, ptr.data());
   }
   return out;
+}
+
+// per_row over poses q (ndof,) or (k, ndof).
+template <class F>
+std::vector<Array> per_pose(const ModelDef& def, const Array& q, const std::vector<Shape>& tails, F f) {
+  return per_row(q, def.num_dofs, "q", tails, f);
 }
 
 }  // namespace
@@ -99,6 +106,19 @@ void bind_model(py::module_& mod) {
         auto o = per_pose(d, q, {{d.num_bodies, 3, 3}, {d.num_bodies, 3}}, [&](const double* qk, double** out) { d.body_poses(qk, out[0], out[1]); });
         return py::make_tuple(o[0], o[1]);
       }, py::arg("q"))
+      // The engine's gh_stability of forces (3,) or (k, 3) (N, scapula frame): theta, phi, GHstab, rim margin,
+      // rim direction, each () or (k,).
+      .def("gh_stability", [](const ModelDef& d, const Array& f) {
+        auto o = per_row(f, 3, "force", {{}, {}, {}, {}, {}}, [&](const double* fk, double** out) {
+          const GHStability g = gh_stability(d, fk);
+          *out[0] = g.theta;
+          *out[1] = g.phi;
+          *out[2] = g.stab;
+          *out[3] = g.rim_margin;
+          *out[4] = g.rim_direction;
+        });
+        return py::make_tuple(o[0], o[1], o[2], o[3], o[4]);
+      }, py::arg("force"))
       .def("bias_force", [](const ModelDef& d, const Array& q, const Array& qd, const Array& g) {
         if (qd.size() != d.num_dofs || g.size() != 3 || q.ndim() != 1)
           throw py::value_error("bias_force takes one pose: q and qdot of " + std::to_string(d.num_dofs) + ", gravity of 3");

@@ -119,8 +119,10 @@ def known_model(name) -> str:
 
 
 def _row_bytes(n_elements: int, n_dofs: int = 5) -> int:
-    """Bytes of one recorded row of a Result: 5 per-element channels, q and qdot, 14 other values, float64."""
-    return 8 * (5 * n_elements + 2 * n_dofs + 14)
+    """Bytes of one recorded row of a Result: 5 per-element channels, q and qdot, 16 other values (time 1,
+    gh_force 3, gh_stab 1, gh_angles 2, gh_rim_margin 1, gh_rim_direction 1, hand_position 3, thorax_humerus 3,
+    tet_ns 1), float64."""
+    return 8 * (5 * n_elements + 2 * n_dofs + 16)
 
 
 def _recorded_rows(n_steps: int, record_every: int) -> int:
@@ -151,8 +153,10 @@ class Result:
     muscle_force: np.ndarray    # (T, n) N
     muscle_length: np.ndarray   # (T, n) m, muscle-tendon lengths
     gh_force: np.ndarray        # (T, 3) N, humeral head on glenoid, scapula frame
-    gh_stab: np.ndarray         # (T,)
-    gh_angles: np.ndarray       # (T, 2) rad, theta (major axis), phi (minor axis)
+    gh_stab: np.ndarray         # (T,) 1, (theta/theta_a)^2 + (phi/phi_a)^2; > 1 beyond the rim
+    gh_angles: np.ndarray       # (T, 2) rad, theta (major axis, + superior), phi (minor axis, + anterior)
+    gh_rim_margin: np.ndarray   # (T,) rad, how far the GH force can still turn towards the rim; < 0 beyond it
+    gh_rim_direction: np.ndarray  # (T,) rad, psi = atan2(phi, theta): 0 superior, pi/2 anterior
     hand_position: np.ndarray   # (T, 3) m, thorax frame
     thorax_humerus: np.ndarray  # (T, 3) rad: plane of elevation, elevation, axial rotation
     tet_ns: np.ndarray          # (T,) ns, task execution time of the step that started at that row
@@ -169,7 +173,11 @@ class Result:
     conoid_tension: np.ndarray | None = None    # (T,) N
 
     ARRAYS = ("time", "q", "qdot", "lce", "activation", "excitation", "muscle_force", "muscle_length",
-              "gh_force", "gh_stab", "gh_angles", "hand_position", "thorax_humerus", "tet_ns")
+              "gh_force", "gh_stab", "gh_angles", "gh_rim_margin", "gh_rim_direction", "hand_position",
+              "thorax_humerus", "tet_ns")
+    # Arrays added after the first file format: a file without them gets them from its gh_force
+    # through the engine (Model.gh_rim), so that older results load whole.
+    _DERIVED_FROM_GH_FORCE = ("gh_rim_margin", "gh_rim_direction")
     OPTIONAL_ARRAYS = ("contact_distance", "conoid_tension")
 
     @property
@@ -181,7 +189,7 @@ class Result:
     _ELEMENT_CHANNELS = ("lce", "activation", "excitation", "muscle_force", "muscle_length")
     _OTHER_COLUMNS = {"gh_force": ("x", "y", "z"), "gh_angles": ("theta", "phi"), "hand_position": ("x", "y", "z"),
                       "thorax_humerus": ("plane_of_elevation", "elevation", "axial_rotation"),
-                      "gh_stab": None, "tet_ns": None, "contact_distance": ("TS", "AI"), "conoid_tension": None}
+                      "gh_stab": None, "gh_rim_margin": None, "gh_rim_direction": None, "tet_ns": None, "contact_distance": ("TS", "AI"), "conoid_tension": None}
 
     def channels(self) -> list[str]:
         """The time-series names this Result has besides time: ARRAYS, and the girdle arrays when present."""
@@ -300,11 +308,12 @@ class Result:
         if not hasattr(z, "files"):
             raise ValueError(f"{path}: not an armrt result (a single .npy array, not an .npz)")
         with z:
-            missing = [k for k in (*cls.ARRAYS, "dof_names", "element_names", "model") if k not in z.files]
+            missing = [k for k in (*cls.ARRAYS, "dof_names", "element_names", "model")
+                       if k not in z.files and k not in cls._DERIVED_FROM_GH_FORCE]
             if missing:
                 raise ValueError(f"{path}: not an armrt result, missing arrays {missing}")
             try:
-                fields = {k: np.asarray(z[k], dtype=float) for k in cls.ARRAYS}
+                fields = {k: np.asarray(z[k], dtype=float) for k in cls.ARRAYS if k in z.files}
                 fields.update({k: np.asarray(z[k], dtype=float) for k in cls.OPTIONAL_ARRAYS if k in z.files})
                 meta = dict(dof_names=[str(s) for s in z["dof_names"]],
                             element_names=[str(s) for s in z["element_names"]],
@@ -328,11 +337,28 @@ class Result:
             raise ValueError(f"{path}: the result's model field {meta['model'][:80]!r} is not a known model "
                              f"(registered: {_core.model_names()}; a model built on demand: armrt.Model.load(its file) "
                              f"first)") from None
+        absent = [k for k in cls._DERIVED_FROM_GH_FORCE if k not in fields]
+        if absent:
+            fields.update(_rim_of_recorded_force(meta["model"], fields["gh_force"], path, absent))
         T = fields["time"].shape[0] if fields["time"].ndim == 1 else -1
         bad = [k for k, v in fields.items() if v.ndim == 0 or v.shape[0] != T]
         if T < 0 or bad:
             raise ValueError(f"{path}: corrupt armrt result: arrays {bad or ['time']} do not have one row per time")
         return cls(**fields, **meta)
+
+
+def _rim_of_recorded_force(model: str, gh_force: np.ndarray, path: str, keys) -> dict:
+    """`keys` of Model.gh_rim for a recorded gh_force (T, 3): NaN where the row is NaN (a replay)."""
+    from .model import Model
+    if gh_force.ndim != 2 or gh_force.shape[1] != 3:
+        raise ValueError(f"{path}: corrupt armrt result: gh_force has shape {gh_force.shape}, expected (T, 3)")
+    ok = np.all(np.isfinite(gh_force), axis=1)
+    out = {k: np.full(len(gh_force), np.nan) for k in keys}
+    if ok.any():
+        rim = Model(model).gh_rim(gh_force[ok])
+        for k in keys:
+            out[k][ok] = rim[k]
+    return out
 
 
 class Arm:
@@ -889,7 +915,7 @@ class Arm:
     def outputs(self) -> dict:
         """Outputs at the current state: qddot, muscle_force (N), muscle_length (m), moment_arm
         (n x ndof, m), fibre_velocity, torques, hand_position (thorax frame), gh_force (scapula frame),
-        gh_theta, gh_phi, gh_stab; and the girdle stage's girdle_torque (ndof,) N m, contact_distance
+        gh_theta, gh_phi, gh_stab, gh_rim_margin, gh_rim_direction (rad; see gh_rim); and the girdle stage's girdle_torque (ndof,) N m, contact_distance
         and contact_force (contact points: TS, AI) m and N, conoid_length m, conoid_tension N (only for a
         model whose scapula moves, such as das3)."""
         with self._exclusive():
@@ -898,7 +924,29 @@ class Arm:
 
     @property
     def gh_stab(self) -> float:
+        """1, (theta/theta_a)^2 + (phi/phi_a)^2 of the GH force now (the paper's eq. (5)); > 1 beyond the rim."""
         return self.outputs()["gh_stab"]
+
+    @property
+    def gh_theta(self) -> float:
+        """rad, angle of the GH force from the glenoid normal along the major axis (+ superior)."""
+        return self.outputs()["gh_theta"]
+
+    @property
+    def gh_phi(self) -> float:
+        """rad, angle of the GH force from the glenoid normal along the minor axis (+ anterior)."""
+        return self.outputs()["gh_phi"]
+
+    @property
+    def gh_rim_margin(self) -> float:
+        """rad, how far the GH force can still turn towards gh_rim_direction before it reaches the rim
+        (< 0: beyond it); see gh_rim."""
+        return self.outputs()["gh_rim_margin"]
+
+    @property
+    def gh_rim_direction(self) -> float:
+        """rad, psi = atan2(phi, theta), where in the glenoid the GH force leans: 0 superior, pi/2 anterior."""
+        return self.outputs()["gh_rim_direction"]
 
     @property
     def hand_position(self) -> np.ndarray:
@@ -943,6 +991,14 @@ class Arm:
         if f.shape != (3,) or not np.all(np.isfinite(f)):
             raise ValueError(f"force must be 3 finite values, got {force!r}")
         return self._sim.gh_stability(f)
+
+    def gh_rim(self, force) -> dict:
+        """theta, phi, GHstab, the margin to the rim and the rim direction of any forces of the humeral head
+        on the glenoid, for a controller to weigh a force before it applies it. force: (3,) or (k, 3) N,
+        scapula frame; returns {"gh_theta", "gh_phi", "gh_stab", "gh_rim_margin", "gh_rim_direction"}, each
+        of shape () or (k,), rad (gh_stab 1), the same numbers as the properties of those names give for
+        arm.outputs()["gh_force"] (armrt.Model.gh_rim, docs/conventions.md)."""
+        return self.model.gh_rim(force)
 
 
 def _unpickle_arm(cls, model, settings: dict, raw: tuple, extras: dict) -> Arm:

@@ -92,8 +92,8 @@ class ArmBatch:
         # The state layout is the engine's (data.h), read from it: {block: (offset, size)}.
         views = {k: state[:, o:o + size] for k, (o, size) in self.info["state_layout"].items()}
         views["time"] = self._raw.time
-        for name in ("hand_position", "gh_force", "gh_stab", "gh_theta", "gh_phi", "muscle_force",
-                     "muscle_length", "qddot") + (GIRDLE_OUTPUTS if self.info["girdle"] else ()):
+        for name in ("hand_position", "gh_force", "gh_stab", "gh_theta", "gh_phi", "gh_rim_margin",
+                     "gh_rim_direction", "muscle_force", "muscle_length", "qddot") + (GIRDLE_OUTPUTS if self.info["girdle"] else ()):
             views[name] = getattr(self._raw, name)
         for v in views.values():
             v.flags.writeable = False
@@ -302,11 +302,12 @@ class ArmBatch:
     def outputs(self) -> dict:
         """Copies of the outputs at each arm's current state (as Arm.outputs(), one row per arm):
         qddot (n, dofs), muscle_force and muscle_length (n, elements), hand_position and gh_force
-        (n, 3), gh_theta, gh_phi, gh_stab (n,); for a model whose scapula moves (das3) also girdle_torque
+        (n, 3), gh_theta, gh_phi, gh_stab, gh_rim_margin, gh_rim_direction (n,); for a model whose scapula moves (das3) also girdle_torque
         (n, dofs) N m, contact_distance and contact_force (n, contact points: TS, AI) m and N, conoid_length
         (n,) m and conoid_tension (n,) N. Rows of diverged arms are as they stopped."""
         return {k: np.array(self._views[k]) for k in ("qddot", "muscle_force", "muscle_length", "hand_position",
-                                                      "gh_force", "gh_theta", "gh_phi", "gh_stab")
+                                                      "gh_force", "gh_theta", "gh_phi", "gh_stab",
+                                                      "gh_rim_margin", "gh_rim_direction")
                 + (GIRDLE_OUTPUTS if self.info["girdle"] else ())}
 
     @property
@@ -335,6 +336,10 @@ class ArmBatch:
     gh_stab = property(lambda self: self._views["gh_stab"], doc="(n,) GH stability; > 1: dislocating")
     gh_theta = property(lambda self: self._views["gh_theta"], doc="(n,) rad, GH force from the glenoid normal, major axis")
     gh_phi = property(lambda self: self._views["gh_phi"], doc="(n,) rad, minor axis")
+    gh_rim_margin = property(lambda self: self._views["gh_rim_margin"],
+                             doc="(n,) rad, how far the GH force can still turn towards the rim; < 0 beyond it")
+    gh_rim_direction = property(lambda self: self._views["gh_rim_direction"],
+                                doc="(n,) rad, psi = atan2(phi, theta): 0 superior, pi/2 anterior")
     muscle_force = property(lambda self: self._views["muscle_force"], doc="(n, elements) N, tendon forces")
     muscle_length = property(lambda self: self._views["muscle_length"], doc="(n, elements) m, muscle-tendon lengths")
     qddot = property(lambda self: self._views["qddot"], doc="(n, dofs) rad/s^2")

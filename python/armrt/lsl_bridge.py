@@ -28,19 +28,22 @@ import time
 
 import numpy as np
 
-from .realtime import GroupMapping, PacketError, State, UdpClient, decode_packet, parse_endpoint
+from .realtime import GH_RIM_FIELDS, GroupMapping, PacketError, State, UdpClient, decode_packet, parse_endpoint
 
 
 
 def state_channels(model: str = "das2") -> tuple[list[str], list[str], list[str]]:
     """Labels, units and types of the state stream's channels for `model` (its DOF names from the
-    engine): time, one angle and one angular velocity per DOF, hand position, GHstab, lag, overrun."""
+    engine): time, one angle and one angular velocity per DOF, hand position, GHstab, the GH force's
+    angles, rim margin and rim direction (State's GH_RIM_FIELDS), lag, overrun."""
     from . import _core
     dofs = [d["name"] for d in _core.model_info(model)["dofs"]]
     n = len(dofs)
-    labels = ["time"] + dofs + [f"{d}_dot" for d in dofs] + ["hand_x", "hand_y", "hand_z", "gh_stab", "lag", "overrun"]
-    units = ["s"] + ["rad"] * n + ["rad/s"] * n + ["m"] * 3 + ["1", "s", "1"]
-    types = ["time"] + ["angle"] * n + ["angular_velocity"] * n + ["position"] * 3 + ["stability", "lag", "flag"]
+    labels = (["time"] + dofs + [f"{d}_dot" for d in dofs] + ["hand_x", "hand_y", "hand_z", "gh_stab",
+              *GH_RIM_FIELDS, "lag", "overrun"])
+    units = ["s"] + ["rad"] * n + ["rad/s"] * n + ["m"] * 3 + ["1"] + ["rad"] * len(GH_RIM_FIELDS) + ["s", "1"]
+    types = (["time"] + ["angle"] * n + ["angular_velocity"] * n + ["position"] * 3 + ["stability"]
+             + ["angle", "angle", "margin", "direction"] + ["lag", "flag"])
     return labels, units, types
 
 
@@ -250,7 +253,8 @@ class LslBridge:
         self._last_time = st.time
         if st.overrun:
             self.warn("overrun", f"the runner overran (lag {st.lag:.3f} s): see the lag and overrun channels")
-        sample = [st.time, *st.q, *st.qdot, *st.hand_position, st.gh_stab, st.lag, float(st.overrun)]
+        sample = [st.time, *st.q, *st.qdot, *st.hand_position, st.gh_stab,
+                  *(getattr(st, k) for k in GH_RIM_FIELDS), st.lag, float(st.overrun)]
         if self.forces:
             sample += list(st.muscle_force)
         self.outlet.push_sample(sample, self.pylsl.local_clock())

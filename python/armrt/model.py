@@ -361,6 +361,26 @@ class Model:
         """(ndof, ndof) kg m^2 (symmetric positive definite); (k, ndof, ndof) for q (k, ndof)."""
         return self._def.mass_matrix(self._q(q))
 
+    # Keys of gh_rim, in the order the engine's gh_stability returns them; the names of the Arm properties.
+    GH_RIM_KEYS = ("gh_theta", "gh_phi", "gh_stab", "gh_rim_margin", "gh_rim_direction")
+
+    def gh_rim(self, force) -> dict:
+        """Where forces of the humeral head on the glenoid point (the engine's gh_stability, the one
+        definition; docs/conventions.md). force: (3,) or (k, 3) N, scapula frame. Returns a dict of arrays
+        of shape () or (k,): gh_theta, gh_phi (rad, from the glenoid normal along the major (+ superior)
+        and minor (+ anterior) axes), gh_stab (1, the paper's eq. (5); > 1 beyond the rim), gh_rim_margin
+        (rad, how far the force can still turn towards gh_rim_direction before it reaches the rim; < 0
+        beyond it; theta_a for a force along the normal) and gh_rim_direction (rad, psi = atan2(phi, theta)
+        in (-pi, pi]: 0 superior, pi/2 anterior, +-pi inferior, -pi/2 posterior). ValueError for another
+        shape or a non-finite force, TypeError for a complex or non-numeric one."""
+        from .arm import real_array
+        f = np.ascontiguousarray(real_array(force, "force"))
+        if f.ndim not in (1, 2) or f.shape[-1:] != (3,):
+            raise ValueError(f"force must have shape (3,) or (k, 3) (N, scapula frame), got {f.shape}")
+        if not np.all(np.isfinite(f)):
+            raise ValueError("force contains NaN or infinite values")
+        return dict(zip(self.GH_RIM_KEYS, self._def.gh_stability(f)))
+
     @property
     def body_names(self) -> tuple[str, ...]:
         """The moving bodies body_poses returns, in order: das2 humerus, ulna, radius, hand; das3

@@ -194,7 +194,8 @@ class Motion:
         qdot = np.gradient(self.q, self.time, axis=0) if T > 1 else np.zeros_like(self.q)
         return Result(time=self.time.copy(), q=self.q.copy(), qdot=qdot, lce=nan(n), activation=nan(n),
                       excitation=nan(n), muscle_force=nan(n), muscle_length=nan(n), gh_force=nan(3),
-                      gh_stab=np.full(T, np.nan), gh_angles=nan(2), hand_position=nan(3),
+                      gh_stab=np.full(T, np.nan), gh_angles=nan(2), gh_rim_margin=np.full(T, np.nan),
+                      gh_rim_direction=np.full(T, np.nan), hand_position=nan(3),
                       thorax_humerus=np.array([arm.thorax_humerus_angles(q) for q in self.q]),
                       tet_ns=np.zeros(T), dof_names=list(arm.dof_names), element_names=list(arm.element_names),
                       integrator="", dt=float(np.median(np.diff(self.time))) if T > 1 else 0.0, model=self.model)

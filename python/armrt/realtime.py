@@ -33,6 +33,8 @@ from . import _rt
 # The layout is defined once, in cpp/rt/packet.h; armrt._rt exports it and the codec is built from it.
 MAGIC: bytes = _rt.MAGIC
 VERSION: int = _rt.VERSION
+# The GH values a state packet carries beside gh_stab (cpp/rt/packet.h), and State's fields of those names.
+GH_RIM_FIELDS = ("gh_theta", "gh_phi", "gh_rim_margin", "gh_rim_direction")
 HEADER_SIZE: int = _rt.HEADER_SIZE
 MAX_VALUES: int = _rt.MAX_VALUES
 TAG_SIZE: int = _rt.TAG_SIZE
@@ -67,7 +69,7 @@ def state_fields(model: str = "das2") -> list:
     return list(_rt.state_fields(model))
 
 
-STATE_FIELDS: list = state_fields("das2")   # the default model's (das2: 18 values)
+STATE_FIELDS: list = state_fields("das2")   # the default model's (das2: 22 values)
 STATE_FIXED_VALUES = len(STATE_FIELDS)
 
 MAPPING_TYPES = {"elements": EXC_ELEMENTS, "muscles": EXC_MUSCLES, "groups": EXC_GROUPS, "channels": EXC_CHANNELS}
@@ -163,7 +165,7 @@ class State:
     q: np.ndarray               # (n_dofs,) rad
     qdot: np.ndarray            # (n_dofs,) rad/s
     hand_position: np.ndarray   # (3,) m, thorax frame
-    gh_stab: float
+    gh_stab: float              # 1, (theta/theta_a)^2 + (phi/phi_a)^2; > 1 beyond the rim
     last_applied_seq: int       # sequence number of the last excitation applied in this session (-1: none)
     flags: int
     lag: float = 0.0            # s, simulated time behind the wall-clock schedule (skipped periods)
@@ -172,6 +174,11 @@ class State:
     excitation: np.ndarray | None = None    # (n,) applied element excitations (--excitations)
     session: int = 0
     received_at: float = 0.0    # time.monotonic() at reception
+    # The GH force where GHstab is (armrt.Arm.gh_rim, docs/conventions.md).
+    gh_theta: float = float("nan")          # rad, from the glenoid normal along the major axis (+ superior)
+    gh_phi: float = float("nan")            # rad, along the minor axis (+ anterior)
+    gh_rim_margin: float = float("nan")     # rad, how far it can still turn towards the rim; < 0 beyond it
+    gh_rim_direction: float = float("nan")  # rad, atan2(phi, theta): 0 superior, pi/2 anterior
 
     @property
     def stopped(self) -> bool:
@@ -195,7 +202,7 @@ class State:
     def from_packet(cls, p: Packet, fields: Sequence[str] | None = None, n_elements: int | None = None) -> "State":
         """fields: the model's state_fields() (default: das2's); n_elements: the model's element count,
         checked against the forces/excitations blocks when given. PacketError if the packet's size does
-        not fit them: a runner of another model (das2's 18 fixed values, das3's 30) is refused, not
+        not fit them: a runner of another model (das2's 22 fixed values, das3's 34) is refused, not
         decoded into wrong angles."""
         if p.type != STATE:
             raise PacketError(f"not a state packet (type {p.type})")
@@ -220,7 +227,8 @@ class State:
         q0, qd0 = st["q0"], st["qd0"]
         return cls(p.seq, float(v[st["time"]]), v[q0:q0 + n_dofs].copy(), v[qd0:qd0 + n_dofs].copy(),
                    v[st["hand_x"]:st["hand_z"] + 1].copy(), float(v[st["gh_stab"]]), int(v[st["last_seq"]]),
-                   p.flags, float(v[st["lag"]]), int(v[st["overruns"]]), forces, exc, p.session)
+                   p.flags, float(v[st["lag"]]), int(v[st["overruns"]]), forces, exc, p.session,
+                   **{k: float(v[st[k]]) for k in GH_RIM_FIELDS})
 
 
 # ---------------------------------------------------------------------------------------- mappings

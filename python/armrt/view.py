@@ -51,6 +51,8 @@ class Frame:
     q: np.ndarray                      # (n_dofs,) rad
     activation: np.ndarray | None      # (n,) or None
     gh_stab: float = float("nan")
+    gh_rim_margin: float = float("nan")     # rad, how far the GH force can still turn towards the rim
+    gh_rim_direction: float = float("nan")  # rad, where it leans: 0 superior, pi/2 anterior
     lag: float | None = None           # s behind wall time (real-time runner only)
     overrun: bool = False              # the runner overran since its previous state packet
     timed_out: bool = False            # the runner has no controller (excitation zero)
@@ -117,8 +119,10 @@ class SimulationSource:
         self.manual = u
 
     def _snapshot(self) -> Frame:
+        out = self.arm.outputs()
         return Frame(time=self.arm.time, q=self.arm.q.copy(), activation=self.arm.activation.copy(),
-                     gh_stab=float(self.arm.gh_stab))
+                     gh_stab=float(out["gh_stab"]), gh_rim_margin=float(out["gh_rim_margin"]),
+                     gh_rim_direction=float(out["gh_rim_direction"]))
 
     def _run(self) -> None:
         from .arm import SimulationError
@@ -214,7 +218,8 @@ class ResultSource:
         act = np.asarray(r.activation[k])
         # A kinematic replay (a .mot) has no activations: NaN rows are shown as none.
         return Frame(time=float(r.time[k]), q=np.asarray(r.q[k]), activation=None if np.isnan(act).all() else act,
-                     gh_stab=float(r.gh_stab[k]))
+                     gh_stab=float(r.gh_stab[k]), gh_rim_margin=float(r.gh_rim_margin[k]),
+                     gh_rim_direction=float(r.gh_rim_direction[k]))
 
     def close(self) -> None:
         pass
@@ -264,7 +269,8 @@ class UdpSource:
                 s = rt.State.from_packet(rt.decode_packet(data, self._key), self._state_fields,
                                          len(self.element_names))
                 self._frame = Frame(time=s.time, q=np.asarray(s.q, dtype=float), activation=s.excitation,
-                                    gh_stab=s.gh_stab, lag=s.lag, overrun=s.overrun, timed_out=s.timed_out,
+                                    gh_stab=s.gh_stab, gh_rim_margin=s.gh_rim_margin,
+                                    gh_rim_direction=s.gh_rim_direction, lag=s.lag, overrun=s.overrun, timed_out=s.timed_out,
                                     kind="excitation received")
                 self.packets += 1
             except Exception as exc:
@@ -288,6 +294,22 @@ class UdpSource:
 def stab_colour(gh_stab: float) -> tuple[int, int, int]:
     """Green while GHstab <= 1 (force inside the glenoid rim), red above."""
     return STAB_BAD if (np.isfinite(gh_stab) and gh_stab > 1.0) else STAB_OK
+
+
+# Where the GH force leans, by rim direction psi in 45-degree sectors from 0 (superior) through pi/2
+# (+ minor axis: anterior for a right scapula, docs/conventions.md).
+RIM_SECTORS = ("superior", "superior-anterior", "anterior", "inferior-anterior", "inferior",
+               "inferior-posterior", "posterior", "superior-posterior")
+
+
+def rim_text(margin: float, direction: float) -> str:
+    """The status line's rim part: the margin in degrees and the side the force leans towards
+    ("n/a" when unknown); a negative margin is how far beyond the rim the force points."""
+    if not (np.isfinite(margin) and np.isfinite(direction)):
+        return "rim margin n/a"
+    side = RIM_SECTORS[int(np.round(direction / (np.pi / 4))) % 8]
+    where = "to the rim" if margin >= 0 else "beyond the rim"
+    return f"rim margin {np.degrees(abs(margin)):.1f}&deg; {where}, leaning {side} ({np.degrees(direction):.0f}&deg;)"
 
 
 def activation_colours(a: np.ndarray) -> np.ndarray:
@@ -505,7 +527,8 @@ class Viewer:
                 rt_line = f"  \nlag behind wall time {f.lag * 1e3:.0f} ms" + (
                     "  \n**OVERRUN** (the runner missed a deadline)" if f.overrun else "") + (
                     "  \nno controller: excitation zero" if f.timed_out else "")
-            self._status.content = f"**t = {f.time:7.2f} s**  \nGHstab = {stab}{flag}{rt_line}"
+            self._status.content = (f"**t = {f.time:7.2f} s**  \nGHstab = {stab}{flag}  \n"
+                                    f"{rim_text(f.gh_rim_margin, f.gh_rim_direction)}{rt_line}")
             self._stab_bar.value = float(np.clip(50 * f.gh_stab, 0, 100)) if np.isfinite(f.gh_stab) else 0.0
             self._stab_bar.color = "red" if colour == STAB_BAD else "green"
             self._stab_history.append((f.time, f.gh_stab))

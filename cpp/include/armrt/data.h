@@ -148,6 +148,8 @@ struct Data {
   std::array<double, 3> gh_force{};       // N, humeral head on glenoid, scapula frame
   double gh_theta = 0, gh_phi = 0;        // rad, from the glenoid normal along the major / minor axis
   double gh_stab = 0;                     // (theta/theta_a)^2 + (phi/phi_a)^2; > 1: dislocating
+  double gh_rim_direction = 0;            // rad, psi = atan2(phi, theta): 0 superior, pi/2 anterior (GHStability)
+  double gh_rim_margin = 0;               // rad, how far the force can still turn along psi to the rim; < 0 beyond
 
   // Errors: set by step(), never thrown in the hot path.
   Status status = Status::kOk;

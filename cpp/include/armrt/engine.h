@@ -79,13 +79,26 @@ void skeleton_dynamics(const Model& m, const double* q, const double* qd, const 
 // Solves A x = b for a symmetric positive definite n x n A (row-major, n <= kMaxDofs), e.g. M(q) qdd = tau:
 // Cholesky below 8 DOFs, L D L^T (no square roots) from 8.
 void solve_spd(const double* A, const double* b, int n, double* x);
+// gh_reaction.cc. Where a force of the humeral head on the glenoid points, relative to the glenoid's
+// elliptical rim (docs/conventions.md). theta, phi: angles of the force from the normal in the
+// (normal, major) and (normal, minor) planes; the rim is (theta/theta_a)^2 + (phi/phi_a)^2 = 1 in the
+// (theta, phi) plane, and direction and margin are polar coordinates in that plane.
+struct GHStability {
+  double theta = 0;          // rad, atan2(F.e_major, F.n): + superior
+  double phi = 0;            // rad, atan2(F.e_minor, F.n): + along e_minor (anterior for a right scapula)
+  double stab = 0;           // 1, (theta/theta_a)^2 + (phi/phi_a)^2 (the paper's eq. (5)); > 1: beyond the rim
+  double rim_direction = 0;  // rad, psi = atan2(phi, theta) in (-pi, pi]: 0 superior, pi/2 anterior; 0 at rho = 0
+  double rim_margin = 0;     // rad, r(psi) - rho: how far (theta, phi) can still move along psi before the rim,
+                             // rho = |(theta, phi)|, r(psi) the rim's radius along psi; < 0 beyond the rim
+};
 // gh_reaction.cc. Force of the humeral head on the glenoid (N, scapula frame, which moves with q when the
 // girdle does) from the tendon forces F, the hand load f_ext (base frame) and the arm's weight and
-// acceleration; its angles and GHstab.
+// acceleration; its angles, GHstab and margin to the rim.
 void gh_reaction(const Model& m, const double* q, const double* qd, const double* qdd, const double* force,
-                 const double* f_ext_base, double* gh_force, double* theta, double* phi, double* stab);
-// GH stability of a force of the humeral head on the glenoid (scapula frame).
-void gh_stability(const ModelDef& def, const double* force, double* theta, double* phi, double* stab);
+                 const double* f_ext_base, double* gh_force, GHStability* stab);
+// GH stability of a force of the humeral head on the glenoid (scapula frame): the one definition of
+// theta, phi, GHstab (the paper's eq. (5)), the rim direction and the margin (docs/conventions.md).
+GHStability gh_stability(const ModelDef& def, const double* force);
 
 // ---- integrate.cc
 // Advances d by one step of dt with the fixed-step integrator; with record, the outputs of d describe

@@ -13,11 +13,12 @@ struct Recording {
   int num_dofs = 0, num_elements = 0;
   int num_contact_points = 0;  // girdle contact points (das3: TS, AI); 0 for a fixed girdle
   // Per row: time (s); q, qdot (num_dofs); lce, activation, excitation, muscle_force, muscle_length
-  // (num_elements); gh_force (3, N), gh_stab, gh_angles (theta, phi, rad), hand_position (3, m, thorax),
+  // (num_elements); gh_force (3, N), gh_stab, gh_angles (theta, phi, rad), gh_rim_margin (rad),
+  // gh_rim_direction (rad; both engine.h GHStability), hand_position (3, m, thorax),
   // thorax_humerus (3, rad), tet_ns (the step's TET; 0 for the final state); with girdle forces also
   // contact_distance (num_contact_points, m, negative: inside the thorax) and conoid_tension (N).
   std::vector<double> time, q, qdot, lce, activation, excitation, muscle_force, muscle_length, gh_force, gh_stab,
-      gh_angles, hand_position, thorax_humerus, tet_ns, contact_distance, conoid_tension;
+      gh_angles, gh_rim_margin, gh_rim_direction, hand_position, thorax_humerus, tet_ns, contact_distance, conoid_tension;
   long rows() const { return static_cast<long>(time.size()); }
 };
 
