@@ -64,13 +64,13 @@ CASES = [
 def glenoid_axis_error_deg() -> float:
     """Angle (deg) between DAS3's glenoid axis (glenoid_scap: arcsines of the cm vector from the GH
     centre to the glenoid centre in the landmark frame) and the direction of that vector, which the
-    model file records (glenoid.normal_in_landmark_frame, written by codegen/import_das3.py)."""
+    model file records (glenoid.normal: the scapula frame is the landmark frame, codegen/import_das3.py)."""
     import json
 
     import armrt
     glenoid = json.loads(armrt.Model("das2").model_file.read_text())["glenoid"]
     d = {k: np.asarray(v, float) for k, v in DSEM_CM.items()}
-    unit = np.asarray(glenoid["normal_in_landmark_frame"])
+    unit = np.asarray(glenoid["normal"])
     g = unit * np.linalg.norm(d["glenoid"] - d["GH"])   # cm, as DAS3 leaves it
     # DAS3 takes asin of the unnormalised component; phi it normalises, so the axes differ by theta only.
     return float(np.degrees(abs(np.arcsin(-g[1]) - np.arcsin(-unit[1]))))
