@@ -109,18 +109,25 @@ def test_result_records_margin_and_direction(tmp_path, moving_arm):
     np.testing.assert_array_equal(back.gh_rim_direction, res.gh_rim_direction)
 
 
-def test_result_file_from_before_the_rim_arrays_loads_them_from_gh_force(tmp_path, moving_arm):
+def test_result_file_from_before_the_rim_arrays_loads_them_from_its_own_angles(tmp_path, moving_arm):
+    """A file saved before the rim arrays existed gets them from its recorded gh_angles, which are right
+    for the glenoid it was recorded with, even when today's model file has another glenoid basis (as
+    every file from before issue 24: there recomputing from gh_force would mix the two)."""
     res = moving_arm.simulate({"deltoid": 0.3}, duration=0.05)
-    res.gh_force[2] = np.nan          # a row without a force (as a replay's) stays NaN
+    res.gh_angles[2] = np.nan         # a row without angles (as a replay's) stays NaN
     res.save(tmp_path / "new.npz")
     with np.load(tmp_path / "new.npz") as z:
         old = {k: z[k] for k in z.files if k not in ("gh_rim_margin", "gh_rim_direction")}
+    # Another glenoid's record: the force turned 15 deg about the minor axis, its angles left as recorded.
+    R = np.array([[1, 0, 0], [0, math.cos(0.26), -math.sin(0.26)], [0, math.sin(0.26), math.cos(0.26)]])
+    old["gh_force"] = old["gh_force"] @ R.T
     np.savez_compressed(tmp_path / "old.npz", **old)
     back = armrt.Result.load(tmp_path / "old.npz")
-    ok = np.isfinite(res.gh_force).all(axis=1)
-    np.testing.assert_allclose(back.gh_rim_margin[ok], res.gh_rim_margin[ok], rtol=1e-15)
-    np.testing.assert_allclose(back.gh_rim_direction[ok], res.gh_rim_direction[ok], rtol=1e-15)
+    ok = np.isfinite(res.gh_angles).all(axis=1)
+    np.testing.assert_allclose(back.gh_rim_margin[ok], res.gh_rim_margin[ok], rtol=1e-14, atol=1e-15)
+    np.testing.assert_allclose(back.gh_rim_direction[ok], res.gh_rim_direction[ok], rtol=1e-14, atol=1e-15)
     assert np.isnan(back.gh_rim_margin[2]) and np.isnan(back.gh_rim_direction[2])
+    assert np.all(np.sign(back.gh_rim_margin[ok]) == np.sign(1 - back.gh_stab[ok]))
 
 
 def test_batch_views_equal_lone_arms():

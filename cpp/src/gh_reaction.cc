@@ -9,6 +9,21 @@
 
 namespace armrt {
 
+void gh_rim(double theta, double phi, double theta_a, double phi_a, double* direction, double* margin) {
+  // The rim along psi, from the unit direction (cos psi, sin psi) = (theta, phi) / rho rather than from
+  // cos(psi) and sin(psi): no further transcendental call, and with rho = 0 taken as psi = 0 (atan2(0, -0)
+  // would give pi) the margin there is theta_a, the rim's radius along the major axis.
+  const double rho = std::hypot(theta, phi);
+  double c = 1.0, sn = 0.0;
+  *direction = 0.0;
+  if (rho > 0.0) {
+    c = theta / rho;
+    sn = phi / rho;
+    *direction = std::atan2(phi, theta);
+  }
+  *margin = 1.0 / std::sqrt(c * c / (theta_a * theta_a) + sn * sn / (phi_a * phi_a)) - rho;
+}
+
 GHStability gh_stability(const ModelDef& def, const double* f) {
   double fn = 0, fmaj = 0, fmin = 0;
   for (int k = 0; k < 3; ++k) {
@@ -22,18 +37,7 @@ GHStability gh_stability(const ModelDef& def, const double* f) {
   const double ta = def.rim_half_angle_major, pa = def.rim_half_angle_minor;
   const double rt = s.theta / ta, rp = s.phi / pa;
   s.stab = rt * rt + rp * rp;
-  // The rim along psi, from the unit direction (cos psi, sin psi) = (theta, phi) / rho rather than from
-  // cos(psi) and sin(psi): no further transcendental call, and with rho = 0 taken as psi = 0 (atan2(0, -0)
-  // would give pi) the margin there is theta_a, the rim's radius along the major axis.
-  const double rho = std::hypot(s.theta, s.phi);
-  double c = 1.0, sn = 0.0;
-  if (rho > 0.0) {
-    c = s.theta / rho;
-    sn = s.phi / rho;
-    s.rim_direction = std::atan2(s.phi, s.theta);
-  }
-  const double rim_radius = 1.0 / std::sqrt(c * c / (ta * ta) + sn * sn / (pa * pa));
-  s.rim_margin = rim_radius - rho;
+  gh_rim(s.theta, s.phi, ta, pa, &s.rim_direction, &s.rim_margin);
   return s;
 }
 

@@ -119,6 +119,14 @@ void bind_model(py::module_& mod) {
         });
         return py::make_tuple(o[0], o[1], o[2], o[3], o[4]);
       }, py::arg("force"))
+      // The engine's gh_rim of recorded angles (2,) or (k, 2) (theta, phi, rad) on this model's rim: rim
+      // margin and rim direction, each () or (k,).
+      .def("gh_rim_of_angles", [](const ModelDef& d, const Array& a) {
+        auto o = per_row(a, 2, "gh_angles", {{}, {}}, [&](const double* ak, double** out) {
+          gh_rim(ak[0], ak[1], d.rim_half_angle_major, d.rim_half_angle_minor, out[1], out[0]);
+        });
+        return py::make_tuple(o[0], o[1]);
+      }, py::arg("angles"))
       .def("bias_force", [](const ModelDef& d, const Array& q, const Array& qd, const Array& g) {
         if (qd.size() != d.num_dofs || g.size() != 3 || q.ndim() != 1)
           throw py::value_error("bias_force takes one pose: q and qdot of " + std::to_string(d.num_dofs) + ", gravity of 3");

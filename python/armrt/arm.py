@@ -175,8 +175,8 @@ class Result:
     ARRAYS = ("time", "q", "qdot", "lce", "activation", "excitation", "muscle_force", "muscle_length",
               "gh_force", "gh_stab", "gh_angles", "gh_rim_margin", "gh_rim_direction", "hand_position",
               "thorax_humerus", "tet_ns")
-    # Arrays added after the first file format: a file without them gets them from its gh_force
-    # through the engine (Model.gh_rim), so that older results load whole.
+    # Arrays added after the first file format: a file without them gets them from its own recorded
+    # gh_angles through the engine (gh_rim), so that older results load whole.
     _DERIVED_FROM_GH_FORCE = ("gh_rim_margin", "gh_rim_direction")
     OPTIONAL_ARRAYS = ("contact_distance", "conoid_tension")
 
@@ -339,7 +339,7 @@ class Result:
                              f"first)") from None
         absent = [k for k in cls._DERIVED_FROM_GH_FORCE if k not in fields]
         if absent:
-            fields.update(_rim_of_recorded_force(meta["model"], fields["gh_force"], path, absent))
+            fields.update(_rim_of_recorded_angles(meta["model"], fields["gh_angles"], path, absent))
         T = fields["time"].shape[0] if fields["time"].ndim == 1 else -1
         bad = [k for k, v in fields.items() if v.ndim == 0 or v.shape[0] != T]
         if T < 0 or bad:
@@ -347,15 +347,18 @@ class Result:
         return cls(**fields, **meta)
 
 
-def _rim_of_recorded_force(model: str, gh_force: np.ndarray, path: str, keys) -> dict:
-    """`keys` of Model.gh_rim for a recorded gh_force (T, 3): NaN where the row is NaN (a replay)."""
+def _rim_of_recorded_angles(model: str, gh_angles: np.ndarray, path: str, keys) -> dict:
+    """`keys` (gh_rim_margin, gh_rim_direction) of a result's own recorded gh_angles (T, 2) (theta, phi,
+    rad) on the model's rim (the engine's gh_rim): the file's angles, not its gh_force through today's
+    glenoid basis, which may not be the one it was recorded with. NaN where the row is NaN (a replay)."""
     from .model import Model
-    if gh_force.ndim != 2 or gh_force.shape[1] != 3:
-        raise ValueError(f"{path}: corrupt armrt result: gh_force has shape {gh_force.shape}, expected (T, 3)")
-    ok = np.all(np.isfinite(gh_force), axis=1)
-    out = {k: np.full(len(gh_force), np.nan) for k in keys}
+    if gh_angles.ndim != 2 or gh_angles.shape[1] != 2:
+        raise ValueError(f"{path}: corrupt armrt result: gh_angles has shape {gh_angles.shape}, expected (T, 2)")
+    ok = np.all(np.isfinite(gh_angles), axis=1)
+    out = {k: np.full(len(gh_angles), np.nan) for k in keys}
     if ok.any():
-        rim = Model(model).gh_rim(gh_force[ok])
+        margin, direction = Model(model)._def.gh_rim_of_angles(np.ascontiguousarray(gh_angles[ok], dtype=float))
+        rim = {"gh_rim_margin": margin, "gh_rim_direction": direction}
         for k in keys:
             out[k][ok] = rim[k]
     return out

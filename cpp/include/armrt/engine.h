@@ -99,6 +99,9 @@ void gh_reaction(const Model& m, const double* q, const double* qd, const double
 // GH stability of a force of the humeral head on the glenoid (scapula frame): the one definition of
 // theta, phi, GHstab (the paper's eq. (5)), the rim direction and the margin (docs/conventions.md).
 GHStability gh_stability(const ModelDef& def, const double* force);
+// Rim direction psi and margin (rad) of the angles theta, phi (rad) on a rim of half-angles theta_a, phi_a:
+// the part of gh_stability that needs no glenoid basis (a recorded result's angles are enough).
+void gh_rim(double theta, double phi, double theta_a, double phi_a, double* direction, double* margin);
 
 // ---- integrate.cc
 // Advances d by one step of dt with the fixed-step integrator; with record, the outputs of d describe
