@@ -120,8 +120,16 @@ def glenoid_version_inclination(normal: np.ndarray) -> tuple[float, float]:
     (Friedman's axis, taken in 3-D). Version: the face's angle from that axis towards anterior in the
     plane of the axis and the scapular plane's normal (z, posterior for a right scapula), so
     retroversion is negative. Inclination: its angle from the axis towards superior in the plane of the
-    axis and the in-plane superior direction. Raises ValueError for a zero normal."""
-    n = np.asarray(normal, dtype=float)
+    axis and the in-plane superior direction. Raises ValueError for a zero, non-finite or non-(3,)
+    normal, TypeError for a non-numeric one."""
+    try:
+        n = np.asarray(normal, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"glenoid normal must be 3 real numbers, got {normal!r}") from None
+    if n.shape != (3,):
+        raise ValueError(f"glenoid normal must have shape (3,), got {n.shape}")
+    if not np.all(np.isfinite(n)):
+        raise ValueError(f"glenoid normal contains NaN or infinite values: {n.tolist()}")
     if not np.linalg.norm(n) > 0:
         raise ValueError("glenoid normal is zero")
     face = -n / np.linalg.norm(n)

@@ -119,6 +119,11 @@ def test_table_iii_at_das3_equilibrium_posture_held():
     assert held["gh_stab"] < ex.GH_LIMIT and 0.0 < levels.max() <= 0.07
     scan = dict(held["common_level_scan"])
     assert scan[0.0] == pytest.approx(passive.gh_stab) and scan[0.02] < ex.GH_LIMIT
+    # Its posture is checked as the API checks one.
+    with pytest.raises(TypeError):
+        ex.static_support(arm, rest + 0j)
+    with pytest.raises(ValueError, match="degrees"):
+        ex.static_support(arm, np.degrees(rest))
 
 
 def test_default_rk4_control_step_matches_cvode():

@@ -260,6 +260,11 @@ def test_version_inclination_by_hand():
         assert v == pytest.approx(0.0, abs=1e-9) and i == pytest.approx(a, abs=1e-9)
     with pytest.raises(ValueError, match="zero"):
         glenoid_version_inclination([0.0, 0.0, 0.0])
+    for bad, err, needle in (([np.nan, 0.0, 0.0], ValueError, "NaN"), ([1.0, 0.0], ValueError, "shape"),
+                             (np.eye(3), ValueError, "shape"), (["a", "b", "c"], TypeError, "real numbers"),
+                             (None, ValueError, "shape")):
+        with pytest.raises(err, match=needle):
+            glenoid_version_inclination(bad)
 
 
 def test_foreign_scapula_frame_is_refused():

@@ -213,8 +213,9 @@ def static_support(arm: Arm, q, activation=None) -> Support:
     tendon force with its fibre in static equilibrium, the part of the arm's weight it lifts, and the
     GH force sum_i F_i d_i + m g with no acceleration (docs/conventions.md), in numpy from the engine's
     tendon forces and lines of action, independently of the engine's own GH stage. Resets the arm."""
-    q = np.asarray(q, dtype=float)
+    # reset() checks q as the API does everywhere (shape, finiteness, type, joint ranges).
     arm.reset(q=q, activation=np.zeros(arm.n_elements) if activation is None else activation)
+    q = np.array(arm.q, dtype=float)
     force = np.asarray(arm.outputs()["muscle_force"], dtype=float)
     d = arm.gh_directions(q)
     g = np.asarray(arm.model.gravity_base, dtype=float)
@@ -238,7 +239,7 @@ def support_table(arm: Arm, sup: Support, peeslack: dict[str, float] | None = No
 
 def held_baseline(arm: Arm, q, limit: float = GH_LIMIT) -> dict:
     """Table III at a posture held still (static_support): the smallest sum of the four cuff activations
-    keeping the static GHstab below 0.98 limit (scipy COBYLA, each evaluation one static equilibrium), and
+    keeping the static GHstab below 0.98 x limit (scipy COBYLA, each evaluation one static equilibrium), and
     the static GHstab for one common cuff level. Resets the arm."""
     from scipy.optimize import minimize
 
