@@ -177,7 +177,7 @@ class Result:
               "thorax_humerus", "tet_ns")
     # Arrays added after the first file format: a file without them gets them from its own recorded
     # gh_angles through the engine (gh_rim), so that older results load whole.
-    _DERIVED_FROM_GH_FORCE = ("gh_rim_margin", "gh_rim_direction")
+    _DERIVED_FROM_GH_ANGLES = ("gh_rim_margin", "gh_rim_direction")
     OPTIONAL_ARRAYS = ("contact_distance", "conoid_tension")
 
     @property
@@ -309,7 +309,7 @@ class Result:
             raise ValueError(f"{path}: not an armrt result (a single .npy array, not an .npz)")
         with z:
             missing = [k for k in (*cls.ARRAYS, "dof_names", "element_names", "model")
-                       if k not in z.files and k not in cls._DERIVED_FROM_GH_FORCE]
+                       if k not in z.files and k not in cls._DERIVED_FROM_GH_ANGLES]
             if missing:
                 raise ValueError(f"{path}: not an armrt result, missing arrays {missing}")
             try:
@@ -337,7 +337,7 @@ class Result:
             raise ValueError(f"{path}: the result's model field {meta['model'][:80]!r} is not a known model "
                              f"(registered: {_core.model_names()}; a model built on demand: armrt.Model.load(its file) "
                              f"first)") from None
-        absent = [k for k in cls._DERIVED_FROM_GH_FORCE if k not in fields]
+        absent = [k for k in cls._DERIVED_FROM_GH_ANGLES if k not in fields]
         if absent:
             fields.update(_rim_of_recorded_angles(meta["model"], fields["gh_angles"], path, absent))
         T = fields["time"].shape[0] if fields["time"].ndim == 1 else -1

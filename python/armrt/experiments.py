@@ -266,12 +266,19 @@ def _rotation(axis, angle: float) -> np.ndarray:
     return np.eye(3) + math.sin(angle) * K + (1 - math.cos(angle)) * K @ K
 
 
-def normal_sensitivity(arm: Arm, force, tilts_deg=(1.0, 2.0, 5.0)) -> dict:
+def _model_file_json(arm: Arm) -> dict | None:
+    """The arm's model file (Model.model_file) as parsed JSON, or None where it is not found."""
+    path = arm.model.model_file
+    return json.loads(Path(path).read_text()) if path is not None else None
+
+
+def normal_sensitivity(arm: Arm, force, tilts_deg=(1.0, 2.0, 5.0), model_json: dict | None = None) -> dict:
     """GHstab of one GH force (3,) N, scapula frame, with the glenoid basis tilted: the normal turned by
     each tilt (deg) towards superior, inferior, +minor and -minor, and the humeral-head-centre variant
     (the normal from the model's GH joint centre, das3.osim's gh1, to the DSEM glenoid centre rather
-    than from the DSEM GH centre). A basis turned by R gives the GHstab of R^T F in the model's basis,
-    so the engine's definition (Arm.gh_stability) is used for every row."""
+    than from the DSEM GH centre; from the model file, model_json, read when not given). A basis turned by
+    R gives the GHstab of R^T F in the model's basis, so the engine's definition (Arm.gh_stability) is
+    used for every row."""
     f = np.asarray(force, dtype=float)
     g = arm.model.glenoid
     n, major, minor = (np.asarray(g[k], dtype=float) for k in ("glenoid_normal", "glenoid_major_axis",
@@ -283,10 +290,8 @@ def normal_sensitivity(arm: Arm, force, tilts_deg=(1.0, 2.0, 5.0)) -> dict:
             R = _rotation(axis, math.radians(tilt))
             rows.append({"tilt_deg": tilt, "towards": label, "gh_stab": float(arm.gh_stability(R.T @ f)[2])})
     out = {"gh_stab": float(arm.gh_stability(f)[2]), "tilts": rows}
-    from .geometry import find_model_file
-    import json as _json
-    path = find_model_file(arm.model.name)
-    lm = _json.loads(Path(path).read_text())["glenoid"].get("landmarks_scapula_m") if path else None
+    spec = model_json if model_json is not None else _model_file_json(arm)
+    lm = spec["glenoid"].get("landmarks_scapula_m") if spec else None
     if lm:
         n_hh = np.asarray(lm["glenoid"]) - np.asarray(g["gh_centre"])
         n_hh /= np.linalg.norm(n_hh)
@@ -300,11 +305,8 @@ def normal_sensitivity(arm: Arm, force, tilts_deg=(1.0, 2.0, 5.0)) -> dict:
 def passive_support_summary(arm: Arm, settled_q) -> dict:
     """Table III explained: who carries the passively hanging arm where it settles and at DAS3's
     equilibrium.mat posture (the model's rest posture) held still, and Table III at that held posture."""
-    import json as _json
-    from .geometry import find_model_file
-    path = find_model_file(arm.model.name)
-    pee = ({e["name"]: e["peeslack"] for e in _json.loads(Path(path).read_text())["elements"]}
-           if path is not None else None)
+    spec = _model_file_json(arm)
+    pee = {e["name"]: e["peeslack"] for e in spec["elements"]} if spec else None
     out = {"peeslack_not_1": sorted(k for k, v in (pee or {}).items() if v != 1.0)}
     for key, q in (("settled", settled_q), ("equilibrium_mat", arm.model.rest_posture)):
         sup = static_support(arm, q)
@@ -316,7 +318,7 @@ def passive_support_summary(arm: Arm, settled_q) -> dict:
                     "gh_stab": sup.gh_stab, "elements_lifting": int(crossing.sum()),  # pulling up or down
                     "top": support_table(arm, sup, pee)}
     out["held_baseline"] = held_baseline(arm, arm.model.rest_posture)
-    out["normal_sensitivity"] = normal_sensitivity(arm, out["settled"]["gh_force_N"])
+    out["normal_sensitivity"] = normal_sensitivity(arm, out["settled"]["gh_force_N"], model_json=spec)
     arm.reset()
     return out
 
