@@ -105,6 +105,16 @@ def test_static_support_matches_the_engines_gh_force(baseline):
     assert sup.gh_stab < ex.GH_LIMIT and baseline.passive.gh_stab_tail < ex.GH_LIMIT
 
 
+@pytest.mark.parametrize("level", [0.02, 1.0])
+def test_cuff_at_rest_stays_inside_half_the_rim(baseline, level):
+    """The issue's examples: with the mis-registered glenoid the settled arm had GHstab 0.73 with the cuff
+    at 0.02 and 0.78 at 1.0 (above the passive 0.61). With the glenoid in its own frame both settle
+    inside half the rim, as the passive arm does."""
+    arm = ex.new_arm()
+    s = ex.settle(arm, ex.cuff_excitation(arm, [level] * 4))
+    assert s.gh_stab_tail < ex.GH_LIMIT and baseline.passive.gh_stab_tail < ex.GH_LIMIT
+
+
 def test_table_iii_at_das3_equilibrium_posture_held():
     """At DAS3's own equilibrium.mat posture (the model's rest posture, elbow 37.6 deg) held still, the
     passive muscles lift less of the arm and the head is pushed inferiorly out of the glenoid; a
