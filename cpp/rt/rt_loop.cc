@@ -141,9 +141,9 @@ RtLoop::RtLoop(const RtConfig& config) : cfg_(config) {
       throw std::invalid_argument("max activation of '" + name + "' must be a number in [0, 1], got '" + item.substr(eq + 1) + "'");
     std::vector<int> ix;
     if (!find_elements(*def, name, ix)) throw std::invalid_argument("--max-activation: " + unknown_names_message(*def, {name}));
-    for (int i : ix) sim_->model.element[i].max_activation = v;
+    for (int i : ix) sim_->data.settings.max_activation[i] = v;
   }
-  if (!cfg_.max_activation.empty()) model_update_derived(sim_->model);
+  if (!cfg_.max_activation.empty()) sim_->apply_settings();
 
   auto build = [](Mapping& m, const GroupDef* g, int n) {
     m.offsets.assign(1, 0);
@@ -385,7 +385,7 @@ void RtLoop::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in&
   else for (int i = 0; i < n_el_; ++i) sim_->data.excitation[i] = values_[i];
   // Held (and streamed with --excitations) as the dynamics use it: capped at max_activation.
   for (int i = 0; i < n_el_; ++i)
-    sim_->data.excitation[i] = std::min(sim_->data.excitation[i], sim_->model.muscles.max_activation[i]);
+    sim_->data.excitation[i] = std::min(sim_->data.excitation[i], sim_->data.muscles.max_activation[i]);
   have_seq_ = true;
   last_seq_ = h.seq;
   last_valid_s_ = now_s;

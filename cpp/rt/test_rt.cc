@@ -751,7 +751,7 @@ TEST_CASE("divergence stops the loop cleanly with the message") {
   RtConfig c = test_config();
   c.listen.clear();
   RtLoop loop(c);
-  loop.simulator().model.max_joint_speed = 1e-9;  // any motion counts as divergence
+  loop.simulator().data.settings.max_joint_speed = 1e-9;  // any motion counts as divergence
   loop.simulator().data.excitation.fill(1.0);
   loop.run_cycles(1000);
   const RtStats st = loop.stats();

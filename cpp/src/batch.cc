@@ -22,7 +22,7 @@ int Batch::step(long steps, int num_threads, bool outputs) {
   // every arm on one thread for the whole call, which is all determinism needs.
 #pragma omp parallel for num_threads(num_threads) schedule(dynamic, 1) reduction(+ : failed)
   for (int i = 0; i < n; ++i) {
-    Simulator& s = arms_[i];
+    Arm& s = arms_[i];
     newly_failed_[i] = 0;
     if (s.data.status != Status::kOk) continue;
     // Outputs are not recorded while stepping (they would be overwritten); evaluated once at the end.

@@ -69,7 +69,7 @@ void CvodeIntegrator::reinit() {
 }
 
 bool CvodeIntegrator::advance(double dt) {
-  forward(m_, d_, d_.x.data(), d_.k1.data(), true);
+  forward(m_, d_, d_.x.data(), xdot_scratch_, true);
   N_Vector y = static_cast<N_Vector>(y_);
   // Inputs are piecewise constant per interval: restart when they jump so the BDF history does not
   // straddle a discontinuity, and keep the history (and large steps) while they are constant.

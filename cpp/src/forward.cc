@@ -34,7 +34,7 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
   // Muscles.
   double force[kMaxElements];
   double tau_muscle[kMaxDofs];
-  muscle_dynamics(m, d.excitation.data(), L, R, x + ia, x + il, xdot + ia, xdot + il, force, tau_muscle, jac);
+  muscle_dynamics(m, d.muscles, d.excitation.data(), L, R, x + ia, x + il, xdot + ia, xdot + il, force, tau_muscle, jac);
 
   // Passive joints.
   double tau_passive[kMaxDofs];
@@ -55,7 +55,7 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
   for (int j = 0; j < nq; ++j) tau[j] = tau_muscle[j] + tau_passive[j] + tau_ext[j] + tau_girdle[j];
   double M[kMaxDofs * kMaxDofs];
   double qdd[kMaxDofs];
-  skeleton_dynamics(m, q, qd, tau, M, qdd);
+  skeleton_dynamics(m, d.settings.gravity.data(), q, qd, tau, M, qdd);
   if (jac) std::copy(M, M + nq * nq, jac->mass_matrix.begin());
   for (int j = 0; j < nq; ++j) {
     xdot[iq + j] = qd[j];
@@ -77,7 +77,7 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
   hand_position_in_thorax(m, q, d.hand_position.data());
   // GH reaction.
   GHStability gh;
-  gh_reaction(m, q, qd, qdd, force, f_ext, d.gh_force.data(), &gh);
+  gh_reaction(m, d.settings.gravity.data(), q, qd, qdd, force, f_ext, d.gh_force.data(), &gh);
   d.gh_theta = gh.theta;
   d.gh_phi = gh.phi;
   d.gh_stab = gh.stab;

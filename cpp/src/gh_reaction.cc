@@ -41,7 +41,7 @@ GHStability gh_stability(const ModelDef& def, const double* f) {
   return s;
 }
 
-void gh_reaction(const Model& m, const double* q, const double* qd, const double* qdd, const double* force,
+void gh_reaction(const Model& m, const double* gravity, const double* q, const double* qd, const double* qdd, const double* force,
                  const double* f_ext_base, double* gh_force, GHStability* stab) {
   const ModelDef& def = *m.def;
   const int nq = m.num_dofs, n = m.num_elements;
@@ -53,7 +53,7 @@ void gh_reaction(const Model& m, const double* q, const double* qd, const double
   for (int k = 0; k < 3; ++k) {
     double Aqdd = 0.0;
     for (int j = 0; j < nq; ++j) Aqdd += A[k * nq + j] * qdd[j];
-    f_base[k] = f_ext_base[k] + def.arm_mass * m.gravity_base[k] - (Aqdd + c[k]);
+    f_base[k] = f_ext_base[k] + def.arm_mass * gravity[k] - (Aqdd + c[k]);
   }
   double f_scapula[3] = {f_base[0], f_base[1], f_base[2]};
   if (def.scapula_body >= 0) {

@@ -1,5 +1,6 @@
-// Fixed-step integrators: explicit Euler and RK4 (the paper's), and the linearly implicit ROS2
-// (rosenbrock.cc). TET (task execution time) is measured around whole control steps by Simulator::step.
+// integrate.cc: (model, data, stepper, h) -> data advanced by one integration step of h (explicit Euler and
+// RK4, the paper's; the linearly implicit ROS2 in ros2.cc), then checked against the physical domain.
+// TET (task execution time) is measured around whole control steps by step() (stepper.cc).
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -51,7 +52,7 @@ bool check_state(const Model& m, Data& d) {
   }
   const int iqd = qd_offset(m);
   for (int j = 0; j < m.num_dofs; ++j) {
-    if (std::fabs(d.x[iqd + j]) > m.max_joint_speed) {
+    if (std::fabs(d.x[iqd + j]) > d.settings.max_joint_speed) {
       d.status = Status::kTooFast;
       d.bad_index = iqd + j;
       d.bad_time = d.time;
@@ -62,7 +63,7 @@ bool check_state(const Model& m, Data& d) {
   // joint angles are visibly wrong; the forces clamp lce at min_lce, so without this check a state below
   // it would go on silently.
   const int n = m.num_elements, iq = q_offset(m), il = lce_offset(m), ia = act_offset(m);
-  const MuscleArrays& mc = m.muscles;
+  const MuscleArrays& mc = d.muscles;
   int outside = 0;
 #pragma omp simd reduction(| : outside)
   for (int i = 0; i < n; ++i) {
@@ -90,23 +91,14 @@ bool check_state(const Model& m, Data& d) {
   return true;
 }
 
-double explicit_stability_limit(Integrator integrator) {
-  // Real stability intervals [-limit, 0] of the stability functions: Euler 1 + z; RK4 the degree-4
-  // Taylor polynomial of exp(z) (|R(-2.785)| = 1).
-  switch (integrator) {
-    case Integrator::kEuler: return 2.0;
-    case Integrator::kRk4: return 2.785;
-    default: return std::numeric_limits<double>::infinity();
-  }
-}
-
-bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record) {
+bool integrate(const Model& m, Data& d, Stepper& s, double dt, bool record) {
+  const Integrator integrator = s.integrator;
   // An explicit step beyond the stability limit of the model at rest cannot hold even the resting arm:
   // refuse it before producing any data (measured: RK4 at 1 ms otherwise runs for 0.3-0.9 s, up to tens
   // of degrees off CVODE, before anything diverges).
-  if (dt * -m.rest_fibre_rate > explicit_stability_limit(integrator)) {
+  if (dt * -d.rest_fibre_rate > explicit_stability_limit(integrator)) {
     d.status = Status::kUnstableStep;
-    d.bad_index = lce_offset(m) + m.rest_fibre_element;
+    d.bad_index = lce_offset(m) + d.rest_fibre_element;
     d.bad_time = d.time;
     return false;
   }
@@ -114,26 +106,29 @@ bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record
   double* x = d.x.data();
   switch (integrator) {
     case Integrator::kRos2:
-      step_ros2(m, d, dt, record);
+      step_ros2(m, d, s.ros2, dt, record);
       break;
     case Integrator::kRos2Adaptive:
-      step_ros2_adaptive(m, d, dt, record);
+      step_ros2_adaptive(m, d, s.ros2, dt, record);
       break;
-    case Integrator::kEuler:
-      forward(m, d, x, d.k1.data(), record);
-      for (int k = 0; k < ns; ++k) x[k] += dt * d.k1[k];
+    case Integrator::kEuler: {
+      ExplicitWorkspace& w = s.explicit_ws;
+      forward(m, d, x, w.k1.data(), record);
+      for (int k = 0; k < ns; ++k) x[k] += dt * w.k1[k];
       break;
-    default: {  // RK4 (CVODE is driven by Simulator, never by step())
-      forward(m, d, x, d.k1.data(), record);
-      double* xt = d.xtmp.data();
-      for (int k = 0; k < ns; ++k) xt[k] = x[k] + 0.5 * dt * d.k1[k];
-      forward(m, d, xt, d.k2.data(), false);
-      for (int k = 0; k < ns; ++k) xt[k] = x[k] + 0.5 * dt * d.k2[k];
-      forward(m, d, xt, d.k3.data(), false);
-      for (int k = 0; k < ns; ++k) xt[k] = x[k] + dt * d.k3[k];
-      forward(m, d, xt, d.k4.data(), false);
+    }
+    default: {  // RK4 (CVODE is driven by step(), never by integrate())
+      ExplicitWorkspace& w = s.explicit_ws;
+      forward(m, d, x, w.k1.data(), record);
+      double* xt = w.x_stage.data();
+      for (int k = 0; k < ns; ++k) xt[k] = x[k] + 0.5 * dt * w.k1[k];
+      forward(m, d, xt, w.k2.data(), false);
+      for (int k = 0; k < ns; ++k) xt[k] = x[k] + 0.5 * dt * w.k2[k];
+      forward(m, d, xt, w.k3.data(), false);
+      for (int k = 0; k < ns; ++k) xt[k] = x[k] + dt * w.k3[k];
+      forward(m, d, xt, w.k4.data(), false);
       const double h6 = dt / 6.0;
-      for (int k = 0; k < ns; ++k) x[k] += h6 * (d.k1[k] + 2.0 * (d.k2[k] + d.k3[k]) + d.k4[k]);
+      for (int k = 0; k < ns; ++k) x[k] += h6 * (w.k1[k] + 2.0 * (w.k2[k] + w.k3[k]) + w.k4[k]);
     }
   }
   d.time += dt;

@@ -10,55 +10,80 @@ namespace armrt {
 
 namespace {
 
-void find_rest_fibre_rate(Model& m) {
+// The stiffest CE mode of the resting arm under d's settings (Data::rest_fibre_rate).
+void find_rest_fibre_rate(const Model& m, Data& d) {
   const ModelDef& def = *m.def;
   double q[kMaxDofs], L[kMaxElements];
   for (int j = 0; j < def.num_dofs; ++j) q[j] = def.dofs[j].rest;
   def.muscle_lengths(q, L);
-  m.rest_fibre_rate = 0;
-  m.rest_fibre_element = 0;
+  d.rest_fibre_rate = 0;
+  d.rest_fibre_element = 0;
   for (int i = 0; i < m.num_elements; ++i) {
-    const ElementConstants& e = m.element[i];
+    const ElementConstants e = data_element(m, d, i);
     const double lce = muscle_equilibrium_lce(e, m.fibre_damping, L[i], 0.0);
     MuscleDerivatives der;
     muscle_element_derivatives(e, m.fibre_damping, L[i], lce, 0.0, &der);
-    if (der.dvel_dlce < m.rest_fibre_rate) {
-      m.rest_fibre_rate = der.dvel_dlce;
-      m.rest_fibre_element = i;
+    if (der.dvel_dlce < d.rest_fibre_rate) {
+      d.rest_fibre_rate = der.dvel_dlce;
+      d.rest_fibre_element = i;
     }
   }
 }
 
 }  // namespace
 
-void model_update_derived(Model& m) {
+ElementConstants element_constants(const ElementParams& p, double strength_scale, double max_activation) {
+  ElementConstants e{};
+  e.strength_scale = strength_scale;
+  e.max_activation = max_activation;
+  e.fmax = p.fmax * strength_scale;
+  e.lceopt = p.lceopt;
+  e.lslack = p.lslack;
+  e.thickness = p.lceopt * std::sin(p.pennopt);
+  e.vmax = p.vmax * p.lceopt;
+  const double tendon_stretch_at_fmax = kTendonStrainAtFmax * p.lslack;
+  e.k_see = e.fmax / (tendon_stretch_at_fmax * tendon_stretch_at_fmax);
+  const double pee_stretch_at_fmax = kForceLengthWidth * p.lceopt;
+  e.k_pee = e.fmax / (pee_stretch_at_fmax * pee_stretch_at_fmax);
+  e.pee_slack = p.peeslack * p.lceopt;
+  e.c2 = 1.0 / p.tdeact;
+  e.c1 = 1.0 / p.tact - e.c2;
+  // The eccentric branch (gmax v + c)/(v + c) has slope (gmax - 1)/c at v = 0; matching the concentric
+  // slope (1 + A)/(A vmax) keeps dF/dv continuous, which the explicit velocity inversion relies on.
+  e.ecc_c = (kEccentricFmax - 1.0) * kHillA * e.vmax / (1.0 + kHillA);
+  e.damping_slope = e.fmax * (1.0 + kHillA) / (kHillA * e.vmax);
+  e.inv_lceopt = 1.0 / p.lceopt;
+  // Fibres cannot be shorter than the muscle is thick; the floor also keeps 1/cos(pennation) finite.
+  e.min_lce = std::max(1.001 * e.thickness, 0.05 * p.lceopt);
+  e.compress_length = std::max(kCompressOnset * p.lceopt, e.min_lce + kCompressMinSpan * p.lceopt);
+  const double compress_span = e.compress_length - e.min_lce;
+  e.k_compress = kCompressForceAtMin * e.fmax / (compress_span * compress_span);
+  e.max_lce = e.pee_slack + std::sqrt(kMaxPeeForce) * pee_stretch_at_fmax;
+  return e;
+}
+
+ElementConstants data_element(const Model& m, const Data& d, int i) {
+  return element_constants(m.def->elements[i], d.settings.strength_scale[i], d.settings.max_activation[i]);
+}
+
+void data_apply_settings(const Model& m, Data& d) {
+  const ArmSettings& st = d.settings;
   for (int i = 0; i < m.num_elements; ++i) {
-    const ElementParams& p = m.def->elements[i];
-    ElementConstants& e = m.element[i];
-    e.fmax = p.fmax * e.strength_scale;
-    e.lceopt = p.lceopt;
-    e.lslack = p.lslack;
-    e.thickness = p.lceopt * std::sin(p.pennopt);
-    e.vmax = p.vmax * p.lceopt;
-    const double tendon_stretch_at_fmax = kTendonStrainAtFmax * p.lslack;
-    e.k_see = e.fmax / (tendon_stretch_at_fmax * tendon_stretch_at_fmax);
-    const double pee_stretch_at_fmax = kForceLengthWidth * p.lceopt;
-    e.k_pee = e.fmax / (pee_stretch_at_fmax * pee_stretch_at_fmax);
-    e.pee_slack = p.peeslack * p.lceopt;
-    e.c2 = 1.0 / p.tdeact;
-    e.c1 = 1.0 / p.tact - e.c2;
-    // The eccentric branch (gmax v + c)/(v + c) has slope (gmax - 1)/c at v = 0; matching the concentric
-    // slope (1 + A)/(A vmax) keeps dF/dv continuous, which the explicit velocity inversion relies on.
-    e.ecc_c = (kEccentricFmax - 1.0) * kHillA * e.vmax / (1.0 + kHillA);
-    e.damping_slope = e.fmax * (1.0 + kHillA) / (kHillA * e.vmax);
-    e.inv_lceopt = 1.0 / p.lceopt;
-    // Fibres cannot be shorter than the muscle is thick; the floor also keeps 1/cos(pennation) finite.
-    e.min_lce = std::max(1.001 * e.thickness, 0.05 * p.lceopt);
-    e.compress_length = std::max(kCompressOnset * p.lceopt, e.min_lce + kCompressMinSpan * p.lceopt);
-    const double compress_span = e.compress_length - e.min_lce;
-    e.k_compress = kCompressForceAtMin * e.fmax / (compress_span * compress_span);
-    e.max_lce = e.pee_slack + std::sqrt(kMaxPeeForce) * pee_stretch_at_fmax;
-    MuscleArrays& a = m.muscles;
+    const char* name = m.def->elements[i].name;
+    if (!(st.strength_scale[i] >= 0.0) || !std::isfinite(st.strength_scale[i]))
+      throw std::invalid_argument(std::string("strength of ") + name + " must be finite and >= 0, got " +
+                                  std::to_string(st.strength_scale[i]));
+    if (!(st.max_activation[i] >= 0.0 && st.max_activation[i] <= 1.0))
+      throw std::invalid_argument(std::string("max_activation of ") + name + " must lie in [0, 1], got " +
+                                  std::to_string(st.max_activation[i]));
+  }
+  if (!(st.max_joint_speed > 0.0))
+    throw std::invalid_argument("max_joint_speed must be positive, got " + std::to_string(st.max_joint_speed));
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(st.gravity[k])) throw std::invalid_argument("gravity must be finite");
+  MuscleArrays& a = d.muscles;
+  for (int i = 0; i < m.num_elements; ++i) {
+    const ElementConstants e = data_element(m, d, i);
     a.fmax[i] = e.fmax, a.inv_lceopt[i] = e.inv_lceopt, a.lslack[i] = e.lslack, a.thickness[i] = e.thickness;
     a.min_lce[i] = e.min_lce, a.vmax[i] = e.vmax, a.k_see[i] = e.k_see, a.k_pee[i] = e.k_pee;
     a.pee_slack[i] = e.pee_slack, a.compress_length[i] = e.compress_length, a.k_compress[i] = e.k_compress;
@@ -68,7 +93,8 @@ void model_update_derived(Model& m) {
     a.inv_taut_stretch[i] = 1.0 / (0.1 * kTendonStrainAtFmax * e.lslack);
     a.max_lce[i] = e.max_lce;
   }
-  find_rest_fibre_rate(m);
+  find_rest_fibre_rate(m, d);
+  d.settings_applied = true;
 }
 
 void model_init(Model& m, const ModelDef& def) {
@@ -104,8 +130,7 @@ void model_init(Model& m, const ModelDef& def) {
       m.dof_elements_begin[j] = std::min(m.dof_elements_begin[j], i);
       m.dof_elements_end[j] = std::max(m.dof_elements_end[j], i + 1);
     }
-    m.element[i].strength_scale = 1.0;
-    m.element[i].max_activation = def.elements[i].max_activation;
+    m.element[i] = element_constants(def.elements[i], 1.0, def.elements[i].max_activation);
   }
   m.num_element_runs = 0;
   const unsigned all_dofs = (1u << m.num_dofs) - 1u;
@@ -120,18 +145,41 @@ void model_init(Model& m, const ModelDef& def) {
     if (last && last->dof_lo == lo && last->dof_hi == hi) last->end = b + 8;
     else m.element_runs[m.num_element_runs++] = {b, b + 8, lo, hi};
   }
-  model_update_derived(m);
+}
+
+void data_init(const Model& m, Data& d) {
+  d = Data{};
+  for (int i = 0; i < m.num_elements; ++i) {
+    d.settings.strength_scale[i] = 1.0;
+    d.settings.max_activation[i] = m.def->elements[i].max_activation;
+  }
+  d.settings.gravity = m.gravity_base;
+  d.settings.max_joint_speed = kDefaultMaxJointSpeed;
+  data_apply_settings(m, d);
+  data_reset(m, d, nullptr);
 }
 
 void data_reset(const Model& m, Data& d, const double* q) {
-  d = Data{};
+  if (!d.settings_applied)
+    throw std::logic_error("data_reset: this Data has no settings yet (data_init it for its model first)");
+  // Everything but the settings (and what they derive) and the inputs starts afresh.
+  Data fresh;
+  fresh.settings_applied = true;
+  fresh.settings = d.settings;
+  fresh.muscles = d.muscles;
+  fresh.rest_fibre_rate = d.rest_fibre_rate;
+  fresh.rest_fibre_element = d.rest_fibre_element;
+  fresh.excitation = d.excitation;
+  fresh.hand_force = d.hand_force;
+  fresh.hand_moment = d.hand_moment;
+  d = fresh;
   for (int j = 0; j < m.num_dofs; ++j) d.x[q_offset(m) + j] = q ? q[j] : m.def->dofs[j].rest;
   double L[kMaxElements];
   m.def->muscle_lengths(&d.x[q_offset(m)], L);
   const int ia = act_offset(m), il = lce_offset(m);
   for (int i = 0; i < m.num_elements; ++i) {
     d.x[ia + i] = 0.0;
-    d.x[il + i] = muscle_equilibrium_lce(m.element[i], m.fibre_damping, L[i], 0.0);
+    d.x[il + i] = muscle_equilibrium_lce(data_element(m, d, i), m.fibre_damping, L[i], 0.0);
   }
 }
 

@@ -49,11 +49,10 @@ void generalised_force_n(const double* moment_arm, const double* force, int n, d
 
 }  // namespace
 
-void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
+void muscle_dynamics(const Model& m, const MuscleArrays& mc, const double* excitation, const double* muscle_length,
                      const double* moment_arm, const double* act, const double* lce, double* act_dot,
                      double* lce_dot, double* force, double* tau, StepJacobian* jac) {
   const int n = m.num_elements;
-  const MuscleArrays& mc = m.muscles;
   const double b = m.fibre_damping;
   if (!jac) {
 #pragma omp simd

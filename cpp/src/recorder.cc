@@ -10,7 +10,7 @@ namespace armrt {
 namespace {
 
 // One row: the state x at `time` and the outputs forward() left in s.data for that state.
-void add_row(Recording& r, const Simulator& s, const double* x, double time, double tet_ns) {
+void add_row(Recording& r, const Arm& s, const double* x, double time, double tet_ns) {
   const Model& m = s.model;
   const Data& d = s.data;
   const int n = m.num_elements, nq = m.num_dofs;
@@ -42,7 +42,7 @@ void add_row(Recording& r, const Simulator& s, const double* x, double time, dou
 
 }  // namespace
 
-long simulate_recorded(Simulator& s, const double* u, bool held, long n_steps, long record_every, Recording& r,
+long simulate_recorded(Arm& s, const double* u, bool held, long n_steps, long record_every, Recording& r,
                        bool (*stop)(void*), void* ctx) {
   const int n = s.model.num_elements, nq = s.model.num_dofs;
   r.num_dofs = nq;

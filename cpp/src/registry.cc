@@ -3,6 +3,8 @@
 #include <dlfcn.h>
 
 #include <cstring>
+#include <map>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 
@@ -22,7 +24,22 @@ struct Registry {
   std::mutex mutex;
   std::vector<const ModelDef*> models{&generated::das2::model_def(), &generated::das3::model_def(),
                                       &generated::participant_A::model_def()};
+  // The one Model of each ModelDef, built on first use and never freed (like the model libraries).
+  std::map<const ModelDef*, std::unique_ptr<const Model>> shared;
+  std::vector<std::unique_ptr<const Model>> replaced;
 };
+
+// Whether m was built from def's tables as they are now (the constants model_init copied).
+bool same_tables(const Model& m, const ModelDef& def) {
+  auto fresh = std::make_unique<Model>();
+  model_init(*fresh, def);
+  const Model& f = *fresh;
+  for (int i = 0; i < def.num_elements; ++i)
+    if (std::memcmp(&f.element[i], &m.element[i], sizeof(ElementConstants)) != 0) return false;
+  return f.gravity_base == m.gravity_base && f.dof_elements_begin == m.dof_elements_begin &&
+         f.dof_elements_end == m.dof_elements_end && f.num_element_runs == m.num_element_runs &&
+         std::memcmp(f.element_runs.data(), m.element_runs.data(), sizeof m.element_runs) == 0;
+}
 
 Registry& registry() {
   static Registry r;
@@ -36,6 +53,25 @@ const ModelDef* find_locked(Registry& r, const std::string& name) {
 }
 
 }  // namespace
+
+const Model& shared_model(const ModelDef& def) {
+  Registry& r = registry();
+  std::lock_guard<std::mutex> lock(r.mutex);
+  auto it = r.shared.find(&def);
+  // A ModelDef that is not a library's or built in (a test's copy on the stack) may reuse the address of
+  // one that is gone: a Model whose tables are not this def's is replaced (and kept: arms may still use it).
+  if (it != r.shared.end() && it->second->def == &def && it->second->num_elements == def.num_elements &&
+      it->second->num_dofs == def.num_dofs && same_tables(*it->second, def))
+    return *it->second;
+  auto m = std::make_unique<Model>();
+  model_init(*m, def);  // throws for a model the engine cannot take; nothing is kept then
+  if (it != r.shared.end()) {
+    r.replaced.push_back(std::move(it->second));
+    it->second = std::move(m);
+    return *it->second;
+  }
+  return *r.shared.emplace(&def, std::move(m)).first->second;
+}
 
 const ModelDef* find_model(const std::string& name) {
   Registry& r = registry();
@@ -110,7 +146,7 @@ const ModelDef& load_model_library(const std::string& path) {
     const char* err = dlerror();
     throw std::runtime_error("cannot load model library " + path + ": " + (err ? err : "dlopen failed"));
   }
-  // Never dlclose: Simulators hold raw pointers into the library's tables and functions.
+  // Never dlclose: Models and Arms hold raw pointers into the library's tables and functions.
   using AbiFn = int (*)();
   using DefFn = const ModelDef* (*)();
   auto abi = reinterpret_cast<AbiFn>(dlsym(handle, kModelAbiSymbol));

@@ -91,10 +91,10 @@ void solve_spd(const double* A, const double* b, int n, double* x) {
   detail::dispatch_dofs(n, [&](auto N) { solve_spd_n<N>(A, b, x); });
 }
 
-void skeleton_dynamics(const Model& m, const double* q, const double* qd, const double* tau, double* M, double* qdd) {
+void skeleton_dynamics(const Model& m, const double* gravity, const double* q, const double* qd, const double* tau, double* M, double* qdd) {
   const int nq = m.num_dofs;
   double rhs[kMaxDofs];
-  m.def->dynamics(q, qd, m.gravity_base.data(), M, rhs);
+  m.def->dynamics(q, qd, gravity, M, rhs);
   for (int j = 0; j < nq; ++j) rhs[j] += tau[j];
   solve_spd(M, rhs, nq, qdd);
 }

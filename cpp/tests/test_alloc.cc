@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "armrt/registry.h"
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 #include "pendulum2.h"
 #include "test_util.h"
 
@@ -54,7 +54,7 @@ TEST_CASE("the counting operator new is in effect") {
 }
 
 // Steps `sim` 1000 times under a hand load and stimulation and counts the heap allocations, which must be none.
-void check_1000_steps_allocate_nothing(Simulator& sim, std::initializer_list<std::pair<const char*, double>> groups) {
+void check_1000_steps_allocate_nothing(Arm& sim, std::initializer_list<std::pair<const char*, double>> groups) {
   for (const auto& [group, u] : groups) armrt_test::set_group_excitation(sim, group, u);
   sim.data.hand_force = {0.0, -9.81, 0.0};  // exercises the hand Jacobian branch too
   bool ok = true;
@@ -71,7 +71,7 @@ TEST_CASE("no heap allocation during 1000 steps (euler, rk4, ros2, ros2_adaptive
     CAPTURE(integrator_name(integ));
     // (RK4 at 2.5e-4 s: stable for this stimulation; the cost per step does not depend on dt.)
     const double dt = integ == Integrator::kEuler ? 1e-4 : integ == Integrator::kRk4 ? 2.5e-4 : default_max_step(integ);
-    auto sim = std::make_unique<Simulator>(armrt_test::das2(), integ, dt);
+    auto sim = std::make_unique<Arm>(armrt_test::das2(), integ, dt);
     check_1000_steps_allocate_nothing(*sim, {{"elbow_flexors", 0.3}, {"rotator_cuff", 0.05}});
   }
 }
@@ -80,7 +80,7 @@ TEST_CASE("no heap allocation during 1000 steps of a second model (the 2-DOF pen
   for (Integrator integ : {Integrator::kEuler, Integrator::kRk4, Integrator::kRos2, Integrator::kRos2Adaptive}) {
     CAPTURE(integrator_name(integ));
     const double dt = integ == Integrator::kEuler ? 2e-5 : integ == Integrator::kRk4 ? 1e-4 : default_max_step(integ);
-    auto sim = std::make_unique<Simulator>(generated::pendulum2::model_def(), integ, dt);
+    auto sim = std::make_unique<Arm>(generated::pendulum2::model_def(), integ, dt);
     check_1000_steps_allocate_nothing(*sim, {{"elbow", 0.3}, {"pronator", 0.2}});
   }
 }
@@ -90,7 +90,7 @@ TEST_CASE("no heap allocation during 1000 steps of the moving-girdle model (das3
   REQUIRE(def != nullptr);
   for (Integrator integ : {Integrator::kRos2, Integrator::kRos2Adaptive}) {
     CAPTURE(integrator_name(integ));
-    auto sim = std::make_unique<Simulator>(*def, integ, default_max_step(integ));
+    auto sim = std::make_unique<Arm>(*def, integ, default_max_step(integ));
     check_1000_steps_allocate_nothing(*sim, {{"serratus_anterior", 0.3}, {"deltoid", 0.2}});
   }
 }

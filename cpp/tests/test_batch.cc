@@ -1,4 +1,4 @@
-// Batch (batch.cc): each arm bit-identical to a lone Simulator for 1 and 2 threads; a diverging arm
+// Batch (batch.cc): each arm bit-identical to a lone Arm for 1 and 2 threads; a diverging arm
 // stops alone.
 #include <doctest/doctest.h>
 
@@ -27,7 +27,7 @@ extern "C" void* malloc(std::size_t size) {
 namespace {
 
 // Arm i gets its own excitation pattern and posture, so the arms really differ.
-void set_up(Simulator& s, int i) {
+void set_up(Arm& s, int i) {
   double q[kDas2Dofs];
   for (int j = 0; j < kDas2Dofs; ++j) q[j] = s.model.def->dofs[j].rest + 0.05 * i * (j % 2 ? 1 : -1);
   s.reset(q, nullptr, nullptr);
@@ -38,7 +38,7 @@ void set_up(Simulator& s, int i) {
 
 TEST_SUITE("batch") {
 
-TEST_CASE("every arm matches a lone Simulator bit for bit, on 1, 2 and 3 threads") {
+TEST_CASE("every arm matches a lone Arm bit for bit, on 1, 2 and 3 threads") {
   const int n = 5;
   const long steps = 30;
   for (Integrator integ : {Integrator::kRos2, Integrator::kRk4})
@@ -51,7 +51,7 @@ TEST_CASE("every arm matches a lone Simulator bit for bit, on 1, 2 and 3 threads
     CHECK(batch.step(steps / 2, threads, true) == 0);
     CHECK(batch.step(steps - steps / 2, threads, true) == 0);
     for (int i = 0; i < n; ++i) {
-      Simulator lone(armrt_test::das2(), integ, 1e-3, sub);
+      Arm lone(armrt_test::das2(), integ, 1e-3, sub);
       set_up(lone, i);
       for (long k = 0; k < steps; ++k) REQUIRE(lone.step());
       lone.evaluate_outputs();
@@ -65,7 +65,7 @@ TEST_CASE("every arm matches a lone Simulator bit for bit, on 1, 2 and 3 threads
 
 TEST_CASE("a diverging arm stops alone and is flagged; the others go on") {
   Batch batch(armrt_test::das2(), 3, Integrator::kRk4, 1e-3, 6);
-  batch.arm(1).data.x[kQd + 3] = 5.0 * batch.arm(1).model.max_joint_speed;
+  batch.arm(1).data.x[kQd + 3] = 5.0 * batch.arm(1).data.settings.max_joint_speed;
   CHECK(batch.step(10, 2, true) == 1);
   CHECK(batch.newly_failed()[1] == 1);
   CHECK(batch.newly_failed()[0] == 0);

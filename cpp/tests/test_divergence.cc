@@ -1,4 +1,4 @@
-// Divergence reporting (integrate.cc: check_state, state_name; Simulator::error_message).
+// Divergence reporting (integrate.cc: check_state, state_name; Arm::error_message).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "armrt/engine.h"
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 #include "test_util.h"
 
 using namespace armrt;
@@ -15,7 +15,7 @@ using armrt_test::kDas2Dofs, armrt_test::kQ, armrt_test::kQd, armrt_test::kLce;
 TEST_SUITE("divergence") {
 
 TEST_CASE("NaN in the state: kNonFinite with the index, message names the state and the time") {
-  Simulator sim(armrt_test::das2(), Integrator::kEuler, 1e-4);
+  Arm sim(armrt_test::das2(), Integrator::kEuler, 1e-4);
   for (int k = 0; k < 10; ++k) REQUIRE(sim.step());
   // NaN elbow angle: with Euler only q[ELx] itself is non-finite after one step (the other angles
   // advance with the old, finite velocities), so the first bad index is that of q[ELx].
@@ -39,7 +39,7 @@ TEST_CASE("NaN in the state: kNonFinite with the index, message names the state 
 }
 
 TEST_CASE("NaN activation: the bad index names the element") {
-  Simulator sim(armrt_test::das2(), Integrator::kEuler, 1e-4);
+  Arm sim(armrt_test::das2(), Integrator::kEuler, 1e-4);
   const int i = armrt_test::element_index(*sim.model.def, "bicl");
   REQUIRE(i >= 0);
   sim.data.x[act_offset(sim.model) + i] = std::numeric_limits<double>::quiet_NaN();
@@ -53,13 +53,13 @@ TEST_CASE("NaN activation: the bad index names the element") {
 TEST_CASE("huge joint velocity: kTooFast naming qdot[...] and the time") {
   for (Integrator integ : {Integrator::kEuler, Integrator::kRk4}) {
     CAPTURE(integrator_name(integ));
-    Simulator sim(armrt_test::das2(), integ, 1e-4);
-    sim.data.x[kQd + 3] = 5.0 * sim.model.max_joint_speed;
+    Arm sim(armrt_test::das2(), integ, 1e-4);
+    sim.data.x[kQd + 3] = 5.0 * sim.data.settings.max_joint_speed;
     CHECK_FALSE(sim.step());
     CHECK(sim.data.status == Status::kTooFast);
     REQUIRE(sim.data.bad_index >= kQd);
     REQUIRE(sim.data.bad_index < kQd + kDas2Dofs);
-    CHECK(std::fabs(sim.data.x[sim.data.bad_index]) > sim.model.max_joint_speed);
+    CHECK(std::fabs(sim.data.x[sim.data.bad_index]) > sim.data.settings.max_joint_speed);
     const std::string msg = sim.error_message();
     INFO(msg);
     CHECK(msg.find("qdot[" + std::string(sim.model.def->dofs[sim.data.bad_index - kQd].name) + "]") !=
@@ -70,8 +70,8 @@ TEST_CASE("huge joint velocity: kTooFast naming qdot[...] and the time") {
 }
 
 TEST_CASE("elbow velocity beyond the bound: qdot[ELx]") {
-  Simulator sim(armrt_test::das2(), Integrator::kEuler, 1e-5);
-  sim.data.x[kQd + 3] = 1.5 * sim.model.max_joint_speed;
+  Arm sim(armrt_test::das2(), Integrator::kEuler, 1e-5);
+  sim.data.x[kQd + 3] = 1.5 * sim.data.settings.max_joint_speed;
   CHECK_FALSE(sim.step());
   CHECK(sim.data.status == Status::kTooFast);
   CHECK(sim.data.bad_index == kQd + 3);
@@ -101,7 +101,7 @@ TEST_CASE("domain check: a CE length, activation or joint angle out of its physi
   for (const Case& c : cases) {
     const std::string what = c.what;
     CAPTURE(what);
-    Simulator sim(armrt_test::das2(), Integrator::kRos2, 1e-3);
+    Arm sim(armrt_test::das2(), Integrator::kRos2, 1e-3);
     for (int k = 0; k < 6; ++k) REQUIRE(sim.step());
     // The state a step would have produced (check_state runs after every step).
     sim.data.x[c.index] = c.value;
@@ -120,8 +120,10 @@ TEST_CASE("domain check: a CE length, activation or joint angle out of its physi
 TEST_CASE("explicit steps beyond the model's stability limit at rest are refused before any data") {
   Model m;
   model_init(m, armrt_test::das2());
+  Data d0;
+  data_init(m, d0);
   // The stiffest fibre at rest, cross-checked by a finite difference of its CE velocity.
-  const int i = m.rest_fibre_element;
+  const int i = d0.rest_fibre_element;
   const ElementConstants& e = m.element[i];
   double q[kDas2Dofs], L[kMaxElements];
   for (int j = 0; j < kDas2Dofs; ++j) q[j] = m.def->dofs[j].rest;
@@ -129,12 +131,12 @@ TEST_CASE("explicit steps beyond the model's stability limit at rest are refused
   const double lce = muscle_equilibrium_lce(e, m.fibre_damping, L[i], 0.0), h = 1e-9;
   const double fd = (muscle_element(e, m.fibre_damping, L[i], lce + h, 0.0).fibre_velocity -
                      muscle_element(e, m.fibre_damping, L[i], lce - h, 0.0).fibre_velocity) / (2 * h);
-  MESSAGE("stiffest fibre at rest: " << std::string(m.def->elements[i].name) << ", " << m.rest_fibre_rate << " 1/s");
-  CHECK(m.rest_fibre_rate == doctest::Approx(fd).epsilon(1e-4));
-  CHECK(m.rest_fibre_rate < -2.785e3);  // beyond RK4 at 1 ms
+  MESSAGE("stiffest fibre at rest: " << std::string(m.def->elements[i].name) << ", " << d0.rest_fibre_rate << " 1/s");
+  CHECK(d0.rest_fibre_rate == doctest::Approx(fd).epsilon(1e-4));
+  CHECK(d0.rest_fibre_rate < -2.785e3);  // beyond RK4 at 1 ms
   for (Integrator integ : {Integrator::kRk4, Integrator::kEuler}) {
     CAPTURE(integrator_name(integ));
-    Simulator one(armrt_test::das2(), integ, 1e-3);  // substeps = 1
+    Arm one(armrt_test::das2(), integ, 1e-3);  // substeps = 1
     CHECK_FALSE(one.step());
     CHECK(one.data.status == Status::kUnstableStep);
     CHECK(one.data.time == 0.0);
@@ -143,10 +145,10 @@ TEST_CASE("explicit steps beyond the model's stability limit at rest are refused
     CHECK(msg.find("step too large") != std::string::npos);
     CHECK(msg.find(m.def->elements[i].name) != std::string::npos);
     // The default substeps (the validated step) run.
-    Simulator ok(armrt_test::das2(), integ, 1e-3, default_substeps(integ, 1e-3));
+    Arm ok(armrt_test::das2(), integ, 1e-3, default_substeps(integ, 1e-3));
     for (int k = 0; k < 20; ++k) CHECK(ok.step());
   }
-  Simulator ros2(armrt_test::das2(), Integrator::kRos2, 1e-3);
+  Arm ros2(armrt_test::das2(), Integrator::kRos2, 1e-3);
   CHECK(ros2.step());  // L-stable: no such limit
 }
 

@@ -109,7 +109,7 @@ TEST_CASE("force tilted by the rim half-angle: stability exactly 1; beyond: > 1"
 }
 
 TEST_CASE("forward() records the GH force and its stability consistently") {
-  Simulator sim(das2(), Integrator::kRos2, 1e-3);
+  Arm sim(das2(), Integrator::kRos2, 1e-3);
   armrt_test::set_group_excitation(sim, "rotator_cuff", 0.2);
   for (int k = 0; k < 50; ++k) REQUIRE(sim.step());
   sim.evaluate_outputs();

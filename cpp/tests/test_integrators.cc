@@ -9,7 +9,7 @@
 #include <string>
 
 #include "armrt/engine.h"
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 #include "test_util.h"
 
 using namespace armrt;
@@ -34,14 +34,18 @@ struct Run {
   bool ok = false;
 };
 
-Run run(const Model& m, Integrator integ, double dt, double duration) {
+Run run(const Model& m, Integrator integ, double dt, double duration, double strength = 1.0) {
   auto d = std::make_unique<Data>();
-  data_reset(m, *d, nullptr);
+  data_init(m, *d);
+  for (int i = 0; i < m.num_elements; ++i) d->settings.strength_scale[i] = strength;
+  data_apply_settings(m, *d);
+  auto s = std::make_unique<Stepper>();
+  stepper_init(m, *d, *s, integ, dt);
   excite(m, *d);
   const int n = static_cast<int>(std::lround(duration / dt));
   Run r;
   r.ok = true;
-  for (int k = 0; k < n && r.ok; ++k) r.ok = step(m, *d, integ, dt);
+  for (int k = 0; k < n && r.ok; ++k) r.ok = integrate(m, *d, *s, dt);
   r.x = d->x;
   return r;
 }
@@ -64,15 +68,12 @@ TEST_SUITE("integrators") {
 void convergence(Integrator integ, const double (&dts)[3], double (&err)[3], bool smooth = false) {
   Model m;
   model_init(m, das2());
-  if (smooth) {
-    for (int i = 0; i < m.num_elements; ++i) m.element[i].strength_scale = 0.0;
-    model_update_derived(m);
-  }
+  const double strength = smooth ? 0.0 : 1.0;
   const double T = 0.05;
-  const Run ref = run(m, Integrator::kRk4, 1e-3 / 1024, T);
+  const Run ref = run(m, Integrator::kRk4, 1e-3 / 1024, T, strength);
   REQUIRE(ref.ok);
   for (int k = 0; k < 3; ++k) {
-    const Run r = run(m, integ, dts[k], T);
+    const Run r = run(m, integ, dts[k], T, strength);
     REQUIRE(r.ok);
     err[k] = q_error(r.x, ref.x);
   }
@@ -109,15 +110,15 @@ namespace {
 // 0.3 from t = 0.5 s. CVODE advances in 1 ms intervals; RK4 at dt (a divisor of 1 ms).
 void compare_with_cvode(double dt, int substeps = 1, Integrator integ = Integrator::kRk4) {
   const int per = static_cast<int>(std::lround(1e-3 / dt));
-  Simulator rk4(das2(), integ, dt, substeps);
-  Simulator cv(das2(), Integrator::kCvode, 1e-3);
-  for (Simulator* s : {&rk4, &cv}) armrt_test::set_group_excitation(*s, "rotator_cuff", 0.05);
+  Arm rk4(das2(), integ, dt, substeps);
+  Arm cv(das2(), Integrator::kCvode, 1e-3);
+  for (Arm* s : {&rk4, &cv}) armrt_test::set_group_excitation(*s, "rotator_cuff", 0.05);
   double worst[kDas2Dofs] = {0, 0, 0, 0, 0};
   double worst_t = 0, worst_all = 0;
   const int n = 2000;
   for (int k = 0; k < n; ++k) {
     if (k == 500) {
-      for (Simulator* s : {&rk4, &cv}) armrt_test::set_group_excitation(*s, "elbow_flexors", 0.3);
+      for (Arm* s : {&rk4, &cv}) armrt_test::set_group_excitation(*s, "elbow_flexors", 0.3);
     }
     for (int r = 0; r < per; ++r) REQUIRE_MESSAGE(rk4.step(), rk4.error_message());
     REQUIRE_MESSAGE(cv.step(), cv.error_message());
@@ -191,14 +192,14 @@ TEST_CASE("RK4 at 0.1 ms matches CVODE within 0.1 deg on every joint over a 2 s 
 }
 
 TEST_CASE("step() reports the outputs of the state at the start of the step and advances time") {
-  Simulator sim(das2(), Integrator::kEuler, 1e-4);
+  Arm sim(das2(), Integrator::kEuler, 1e-4);
   const StateVec x0 = sim.data.x;
   REQUIRE(sim.step());
   CHECK(sim.data.time == doctest::Approx(1e-4));
   CHECK(sim.data.tet.count == 1);
   // Euler: x1 = x0 + dt * f(x0), and k1 holds f(x0).
   for (int k = 0; k < state_size(sim.model); ++k)
-    CHECK(sim.data.x[k] == doctest::Approx(x0[k] + 1e-4 * sim.data.k1[k]).epsilon(1e-14));
+    CHECK(sim.data.x[k] == doctest::Approx(x0[k] + 1e-4 * sim.stepper.explicit_ws.k1[k]).epsilon(1e-14));
 }
 
 }  // TEST_SUITE

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "armrt/registry.h"
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 #include "test_util.h"
 
 using namespace armrt;

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <memory>
 #include <limits>
 #include <vector>
 
@@ -18,6 +19,15 @@ struct Fixture {
   Model m;
   Fixture() { model_init(m, das2()); }
 };
+
+// A Data of m at strength s for every element (data_apply_settings).
+std::unique_ptr<Data> data_at_strength(const Model& m, double s) {
+  auto d = std::make_unique<Data>();
+  data_init(m, *d);
+  for (int i = 0; i < m.num_elements; ++i) d->settings.strength_scale[i] = s;
+  data_apply_settings(m, *d);
+  return d;
+}
 
 // First element with zero optimal pennation.
 int unpennated_element(const Model& m) {
@@ -215,14 +225,14 @@ TEST_CASE("a tendon cannot push: the tendon force is never negative (every eleme
 }
 
 TEST_CASE("strength 0.5 halves the isometric force exactly, active and passive alike") {
-  Model full, half;
+  Model full;
   model_init(full, armrt_test::das2());
-  model_init(half, armrt_test::das2());
-  for (int i = 0; i < half.num_elements; ++i) half.element[i].strength_scale = 0.5;
-  model_update_derived(half);
+  const auto weak = data_at_strength(full, 0.5);
   const double b = full.fibre_damping;
   for (int i = 0; i < full.num_elements; ++i) {
-    const ElementConstants &e = full.element[i], &h = half.element[i];
+    const ElementConstants &e = full.element[i], h = data_element(full, *weak, i);
+    CHECK(h.fmax == 0.5 * e.fmax);
+    CHECK(weak->muscles.fmax[i] == h.fmax);
     CAPTURE(full.def->elements[i].name);
     for (double Lf : {0.95, 1.0, 1.03, 1.1}) {
       const double L = Lf * (e.lceopt + e.lslack);
@@ -331,7 +341,7 @@ TEST_CASE("finite CE velocity at zero activation over a range of lengths") {
 TEST_CASE("activation dynamics: da/dt = (c1 u + c2)(u - a), time constants tact and tdeact") {
   Fixture f;
   Data d;
-  data_reset(f.m, d, nullptr);
+  data_init(f.m, d);
   const int n = f.m.num_elements, ia = act_offset(f.m);
   // Element i gets excitation / activation chosen per case.
   const double us[] = {1.0, 0.0, 0.5, 0.5, 0.2};
@@ -359,16 +369,16 @@ TEST_CASE("activation dynamics: da/dt = (c1 u + c2)(u - a), time constants tact 
 TEST_CASE("activation dynamics: excitation capped at max_activation, clipped to [0, 1]") {
   Fixture f;
   const int i = 0;
-  f.m.element[i].max_activation = 0.4;
-  model_update_derived(f.m);
   Data d;
-  data_reset(f.m, d, nullptr);
+  data_init(f.m, d);
+  d.settings.max_activation[i] = 0.4;
+  data_apply_settings(f.m, d);
   d.excitation[i] = 1.0;
   d.excitation[1] = -0.5;
   StateVec xdot{};
   forward(f.m, d, d.x.data(), xdot.data(), false);
   const int ia = act_offset(f.m);
-  const ElementConstants& e = f.m.element[i];
+  const ElementConstants e = data_element(f.m, d, i);
   CHECK(xdot[ia + i] == doctest::Approx((e.c1 * 0.4 + e.c2) * 0.4).epsilon(1e-12));
   CHECK(xdot[ia + 1] == 0.0);  // u clipped to 0, a = 0
 }

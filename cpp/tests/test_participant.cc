@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "armrt/engine.h"
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 #include "participant_A_FES.h"
 
 using namespace armrt;
@@ -39,12 +39,15 @@ TEST_CASE("model_init starts each element's maximum activation at the model's va
   def.elements = els.data();
   Model m;
   model_init(m, def);
+  Data d;
+  data_init(m, d);
   for (int i = 0; i < m.num_elements; ++i) {
     CHECK(m.element[i].max_activation == doctest::Approx(0.01 * i));
-    CHECK(m.muscles.max_activation[i] == doctest::Approx(0.01 * i));
+    CHECK(d.settings.max_activation[i] == doctest::Approx(0.01 * i));
+    CHECK(d.muscles.max_activation[i] == doctest::Approx(0.01 * i));
   }
   // The cap holds in the dynamics: at full excitation the activation of element 3 (max 0.03) settles there.
-  Simulator sim(def, Integrator::kRos2, 1e-3, 1);
+  Arm sim(def, Integrator::kRos2, 1e-3, 1);
   sim.reset(nullptr, nullptr, nullptr);
   for (int i = 0; i < m.num_elements; ++i) sim.data.excitation[i] = 1.0;
   for (int k = 0; k < 500; ++k) REQUIRE(sim.step());
@@ -56,7 +59,7 @@ TEST_CASE("model_init starts each element's maximum activation at the model's va
 // run the variants as profiles on one geometry (docs/experiments.md) rests on these agreeing.
 namespace {
 
-std::vector<double> fig1_full_stimulation(Simulator& sim) {
+std::vector<double> fig1_full_stimulation(Arm& sim) {
   const Model& m = sim.model;
   auto in = [](const char* mu, std::initializer_list<const char*> g) {
     for (const char* s : g)
@@ -86,15 +89,15 @@ std::vector<double> fig1_full_stimulation(Simulator& sim) {
 TEST_CASE("participant_A with the FES profile moves as the FES model compiled on its own") {
   const ModelDef& fes = generated::participant_A_FES::model_def();
   const ModelDef& intact = *find_model("participant_A");
-  Simulator exact(fes, Integrator::kRos2, 1e-3, 1), profiled(intact, Integrator::kRos2, 1e-3, 1);
+  Arm exact(fes, Integrator::kRos2, 1e-3, 1), profiled(intact, Integrator::kRos2, 1e-3, 1);
   for (int i = 0; i < exact.model.num_elements; ++i)   // the file's maxact, from the generated tables
     CHECK(exact.model.element[i].max_activation == fes.elements[i].max_activation);
   CHECK(exact.model.element[0].max_activation == doctest::Approx(0.4203335240475676));   // bicl
   for (int i = 0; i < intact.num_elements; ++i) {
-    profiled.model.element[i].strength_scale = fes.elements[i].fmax / intact.elements[i].fmax;
-    profiled.model.element[i].max_activation = fes.elements[i].max_activation;
+    profiled.data.settings.strength_scale[i] = fes.elements[i].fmax / intact.elements[i].fmax;
+    profiled.data.settings.max_activation[i] = fes.elements[i].max_activation;
   }
-  model_update_derived(profiled.model);
+  profiled.apply_settings();
   const auto a = fig1_full_stimulation(exact), b = fig1_full_stimulation(profiled);
   double worst = 0.0, moved = 0.0;
   for (size_t k = 0; k < a.size(); ++k) {

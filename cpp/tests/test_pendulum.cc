@@ -12,7 +12,7 @@
 #include <string>
 
 #include "armrt/engine.h"
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 #include "pendulum2.h"
 
 using namespace armrt;
@@ -55,7 +55,7 @@ const ModelDef& detached() {
   return def;
 }
 
-double energy(const Simulator& s) {
+double energy(const Arm& s) {
   const double* x = s.data.x.data();
   const double q0 = x[0], q1 = x[1], w0 = x[2], w1 = x[3];
   return 0.5 * kInertiaEl * w0 * w0 + 0.5 * kInertiaPs * w1 * w1 + kG * kMassMoment * (1.0 - std::cos(q0)) +
@@ -111,7 +111,7 @@ TEST_CASE("small-oscillation period: 2 pi sqrt(I / (g sum m d + k))") {
   for (Integrator integ : {Integrator::kRk4, Integrator::kRos2}) {
     CAPTURE(integrator_name(integ));
     const double dt = integ == Integrator::kRk4 ? 1e-4 : 1e-3;
-    Simulator s(detached(), integ, dt);
+    Arm s(detached(), integ, dt);
     const double q0[2] = {0.01, 0.0};
     s.reset(q0, nullptr, nullptr);
     // Times of downward zero crossings of q_el, linearly interpolated; the mean spacing is the period.
@@ -136,7 +136,7 @@ TEST_CASE("small-oscillation period: 2 pi sqrt(I / (g sum m d + k))") {
 }
 
 TEST_CASE("energy is conserved without damping or muscles (large swing, both DOFs)") {
-  Simulator s(detached(), Integrator::kRk4, 1e-4);
+  Arm s(detached(), Integrator::kRk4, 1e-4);
   const double q0[2] = {1.0, 0.0}, qd0[2] = {0.0, 1.0};
   s.reset(q0, qd0, nullptr);
   const double e0 = energy(s);
@@ -152,7 +152,7 @@ TEST_CASE("energy is conserved without damping or muscles (large swing, both DOF
 }
 
 TEST_CASE("static equilibrium: moment arm x force balances gravity and the joint spring") {
-  Simulator s(pendulum(), Integrator::kRos2, 1e-3);
+  Arm s(pendulum(), Integrator::kRos2, 1e-3);
   const Model& m = s.model;
   double act[5] = {0.3, 0.3, 0.02, 0.05, 0.05};
   s.reset(nullptr, nullptr, act);
@@ -178,7 +178,7 @@ TEST_CASE("static equilibrium: moment arm x force balances gravity and the joint
 }
 
 TEST_CASE("a hand force enters as J^T F") {
-  Simulator s(pendulum(), Integrator::kRos2, 1e-3);
+  Arm s(pendulum(), Integrator::kRos2, 1e-3);
   const double q[2] = {0.6, 0.4};
   s.reset(q, nullptr, nullptr);
   s.data.hand_force = {0.0, -10.0, 0.0};
@@ -192,7 +192,7 @@ TEST_CASE("a hand force enters as J^T F") {
 TEST_CASE("every integrator runs the small model (CVODE as the reference for ROS2 and RK4)") {
   double act[5] = {0.2, 0.2, 0.1, 0.3, 0.0};
   auto run = [&](Integrator integ, double dt) {
-    auto s = std::make_unique<Simulator>(pendulum(), integ, dt);
+    auto s = std::make_unique<Arm>(pendulum(), integ, dt);
     for (int i = 0; i < 5; ++i) s->data.excitation[i] = act[i];
     const long steps = std::lround(1.0 / dt);  // 1 s
     for (long k = 0; k < steps; ++k) REQUIRE(s->step());

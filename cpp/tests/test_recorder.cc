@@ -1,4 +1,4 @@
-// Recording (recorder.h) and TET (Simulator::step, the one place it is measured), on the pendulum.
+// Recording (recorder.h) and TET (Arm::step, the one place it is measured), on the pendulum.
 #include <doctest/doctest.h>
 
 #include <vector>
@@ -11,7 +11,7 @@ using namespace armrt;
 TEST_SUITE("recorder") {
 
 TEST_CASE("rows are consistent time points; the final state is added when the last step is due") {
-  Simulator s(generated::pendulum2::model_def(), Integrator::kRos2, 1e-3);
+  Arm s(generated::pendulum2::model_def(), Integrator::kRos2, 1e-3);
   const int n = s.model.num_elements, nq = s.model.num_dofs;
   const std::vector<double> x_start(s.data.x.begin(), s.data.x.begin() + state_size(s.model));
   std::vector<double> u(n, 0.3);
@@ -32,18 +32,18 @@ TEST_CASE("rows are consistent time points; the final state is added when the la
   CHECK(r.tet_ns[0] > 0);
   CHECK(r.tet_ns[2] == 0.0);  // the final state was not stepped from
   // Forces of a row are those of its state (outputs evaluated at the start of the step).
-  Simulator t(generated::pendulum2::model_def(), Integrator::kRos2, 1e-3);
+  Arm t(generated::pendulum2::model_def(), Integrator::kRos2, 1e-3);
   t.evaluate_outputs();
   CHECK(r.muscle_force[0] == t.data.muscle_force[0]);
 
   Recording r2;
-  Simulator s2(generated::pendulum2::model_def(), Integrator::kRos2, 1e-3);
+  Arm s2(generated::pendulum2::model_def(), Integrator::kRos2, 1e-3);
   CHECK(simulate_recorded(s2, u.data(), true, 10, 3, r2) == 10);
   CHECK(r2.rows() == 4);  // steps 0, 3, 6, 9; 10 % 3 != 0: no final row
 }
 
 TEST_CASE("a stop request ends the loop after the current step") {
-  Simulator s(generated::pendulum2::model_def(), Integrator::kRos2, 1e-3);
+  Arm s(generated::pendulum2::model_def(), Integrator::kRos2, 1e-3);
   std::vector<double> u(s.model.num_elements, 0.0);
   int calls = 0;
   auto stop = [](void* c) { return ++*static_cast<int*>(c) >= 4; };
@@ -55,7 +55,7 @@ TEST_CASE("a stop request ends the loop after the current step") {
 TEST_CASE("TET: one entry per control step, whatever the integrator and substeps") {
   for (auto [integ, substeps] : {std::pair{Integrator::kRos2, 1}, {Integrator::kRk4, 10}, {Integrator::kEuler, 50},
                                  {Integrator::kCvode, 1}, {Integrator::kRos2Adaptive, 1}}) {
-    Simulator s(generated::pendulum2::model_def(), integ, 1e-3, substeps);
+    Arm s(generated::pendulum2::model_def(), integ, 1e-3, substeps);
     for (int k = 0; k < 7; ++k) REQUIRE(s.step());
     CHECK(s.data.tet.count == 7);
     CHECK(s.data.tet.last_ns > 0);

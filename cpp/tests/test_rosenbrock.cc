@@ -14,7 +14,7 @@
 
 #include "armrt/engine.h"
 #include "armrt/muscle_kernel.h"
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 #include "test_util.h"
 
 using namespace armrt;
@@ -146,8 +146,8 @@ TEST_CASE("muscle kernel derivatives at the kinks: slack tendon, concentric/ecce
 namespace {
 
 // A stimulated, moving state: 300 ms of ROS2 at 1 ms with flexors, cuff and deltoid on, a hand load.
-std::unique_ptr<Simulator> moving_state() {
-  auto sim = std::make_unique<Simulator>(das2(), Integrator::kRos2, 1e-3);
+std::unique_ptr<Arm> moving_state() {
+  auto sim = std::make_unique<Arm>(das2(), Integrator::kRos2, 1e-3);
   armrt_test::set_group_excitation(*sim, "elbow_flexors", 0.4);
   armrt_test::set_group_excitation(*sim, "rotator_cuff", 0.1);
   armrt_test::set_group_excitation(*sim, "deltoid", 0.2);
@@ -162,10 +162,11 @@ TEST_CASE("the structured Jacobian's exact blocks match finite differences of fo
   auto sim = moving_state();
   const Model& m = sim->model;
   Data& d = sim->data;
+  Ros2Workspace& ws = sim->stepper.ros2;
   const int n = m.num_elements, ia = act_offset(m);
   StateVec x = d.x, f0{}, fp{}, fm{};
-  forward(m, d, x.data(), f0.data(), false, &d.jac);
-  const StepJacobian& J = d.jac;
+  forward(m, d, x.data(), f0.data(), false, &ws.jac);
+  const StepJacobian& J = ws.jac;
   Eigen::Matrix<double, kDas2Dofs, kDas2Dofs, Eigen::RowMajor> M;
   for (int k = 0; k < kDas2Dofs * kDas2Dofs; ++k) M.data()[k] = J.mass_matrix[k];
   const auto Minv = M.inverse().eval();
@@ -219,16 +220,17 @@ TEST_CASE("the structured Jacobian's exact blocks match finite differences of fo
 
 // The Schur-complement solve of jacobian_solve against a dense LU of the same state-sized matrix
 // I - h gamma J, written out from the StepJacobian (test only: the engine never forms it).
-static void check_schur_solve(Simulator& sim) {
+static void check_schur_solve(Arm& sim) {
   const Model& m = sim.model;
   Data& d = sim.data;
+  Ros2Workspace& ws = sim.stepper.ros2;
   const int n = m.num_elements, nq = m.num_dofs, ns = state_size(m);
   const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
   StateVec f{};
-  forward(m, d, d.x.data(), f.data(), false, &d.jac);
+  forward(m, d, d.x.data(), f.data(), false, &ws.jac);
   const double hg = 1.7071067811865475e-3;
-  jacobian_factor(m, d.jac, hg);
-  const StepJacobian& J = d.jac;
+  jacobian_factor(m, ws.jac, hg);
+  const StepJacobian& J = ws.jac;
   Eigen::MatrixXd Jd = Eigen::MatrixXd::Zero(ns, ns), M(nq, nq), R(n, nq), G(nq, nq);
   for (int a = 0; a < nq; ++a)
     for (int b = 0; b < nq; ++b) {
@@ -259,7 +261,7 @@ static void check_schur_solve(Simulator& sim) {
     Eigen::VectorXd r(ns);
     for (int k = 0; k < ns; ++k) r[k] = trial == 0 ? f[k] : N(rng);
     StateVec k_schur{};
-    jacobian_solve(m, d.jac, r.data(), k_schur.data());
+    jacobian_solve(m, ws.jac, r.data(), k_schur.data());
     const Eigen::VectorXd k_dense = A.partialPivLu().solve(r);
     const Eigen::VectorXd ks = Eigen::Map<const Eigen::VectorXd>(k_schur.data(), ns);
     CAPTURE(trial);
@@ -276,7 +278,7 @@ TEST_CASE("the Schur-complement solve equals a dense LU of I - h gamma J") {
 TEST_CASE("das3: the Schur-complement solve (stiffness and solves by DOF, girdle stiffness) equals a dense LU") {
   const ModelDef* def = find_model("das3");
   REQUIRE(def);
-  auto sim = std::make_unique<Simulator>(*def, Integrator::kRos2, 1e-3);
+  auto sim = std::make_unique<Arm>(*def, Integrator::kRos2, 1e-3);
   for (const char* g : {"deltoid", "serratus_anterior", "elbow_flexors"}) armrt_test::set_group_excitation(*sim, g, 0.3);
   sim->data.hand_force = {0.0, -10.0, 0.0};
   for (int k = 0; k < 300; ++k) REQUIRE(sim->step());
@@ -287,23 +289,24 @@ TEST_CASE("forward() with a Jacobian leaves the kernel's lce-only terms for the 
   auto sim = moving_state();
   const Model& m = sim->model;
   Data& d = sim->data;
+  Ros2Workspace& ws = sim->stepper.ros2;
   StateVec f{};
-  forward(m, d, d.x.data(), f.data(), false, &d.jac);
-  const MuscleArrays& mc = m.muscles;
+  forward(m, d, d.x.data(), f.data(), false, &ws.jac);
+  const MuscleArrays& mc = d.muscles;
   for (int i = 0; i < m.num_elements; ++i) {
     const double lce_x = d.x[kLce + i];
     const double lce = lce_x > mc.min_lce[i] ? lce_x : mc.min_lce[i];
     const double xfl = (lce * mc.inv_lceopt[i] - 1.0) / kForceLengthWidth;
     CAPTURE(i);
-    CHECK(d.jac.force_length[i] == doctest::Approx(std::exp(-xfl * xfl)).epsilon(1e-14));
+    CHECK(ws.jac.force_length[i] == doctest::Approx(std::exp(-xfl * xfl)).epsilon(1e-14));
     const double lce_along = std::sqrt(lce * lce - mc.thickness[i] * mc.thickness[i]);
-    CHECK(d.jac.lce_along[i] == doctest::Approx(lce_along).epsilon(1e-14));
-    CHECK(d.jac.cos_pennation[i] == doctest::Approx(lce_along / lce).epsilon(1e-14));
-    CHECK(d.jac.inv_cos_pennation[i] == doctest::Approx(lce / lce_along).epsilon(1e-14));
+    CHECK(ws.jac.lce_along[i] == doctest::Approx(lce_along).epsilon(1e-14));
+    CHECK(ws.jac.cos_pennation[i] == doctest::Approx(lce_along / lce).epsilon(1e-14));
+    CHECK(ws.jac.inv_cos_pennation[i] == doctest::Approx(lce / lce_along).epsilon(1e-14));
     // PEE quadratic beyond its slack length, compressive element quadratic below compress_length (muscle.cc)
     const double stretch = std::max(lce - mc.pee_slack[i], 0.0), compression = std::max(mc.compress_length[i] - lce, 0.0);
-    CHECK(d.jac.pee_force[i] == doctest::Approx(mc.k_pee[i] * stretch * stretch).epsilon(1e-14).scale(1e-9));
-    CHECK(d.jac.compress_force[i] == doctest::Approx(mc.k_compress[i] * compression * compression).epsilon(1e-14).scale(1e-9));
+    CHECK(ws.jac.pee_force[i] == doctest::Approx(mc.k_pee[i] * stretch * stretch).epsilon(1e-14).scale(1e-9));
+    CHECK(ws.jac.compress_force[i] == doctest::Approx(mc.k_compress[i] * compression * compression).epsilon(1e-14).scale(1e-9));
   }
 }
 
@@ -373,9 +376,9 @@ TEST_CASE("generalised_force: R^T F for 1-16 DOFs, any number of elements and DO
 TEST_CASE("a slack tendon engaging within a 1 ms step: the CE stops near where it takes up the load") {
   // teres major from rest: its tendon is slack, excitation 0.65 makes the CE shorten at about 1 m/s
   // until the 6 mm tendon engages ~20 ms later, stiffly (4 % strain at fmax).
-  Simulator ros2(das2(), Integrator::kRos2, 1e-3);
-  Simulator fine(das2(), Integrator::kRk4, 1e-3, 100);
-  for (Simulator* s : {&ros2, &fine}) armrt_test::set_group_excitation(*s, "termaj", 0.65);
+  Arm ros2(das2(), Integrator::kRos2, 1e-3);
+  Arm fine(das2(), Integrator::kRk4, 1e-3, 100);
+  for (Arm* s : {&ros2, &fine}) armrt_test::set_group_excitation(*s, "termaj", 0.65);
   const int i = armrt_test::element_index(das2(), "termaj1");
   double worst_lce = 0, worst_q = 0;
   for (int k = 0; k < 80; ++k) {
@@ -395,19 +398,20 @@ TEST_CASE("a slack tendon engaging within a 1 ms step: the CE stops near where i
 }
 
 TEST_CASE("ros2_adaptive: a rejected 2 ms step is redone from its start as two ROS2 steps of 1 ms") {
-  Simulator a(das2(), Integrator::kRos2Adaptive, 2e-3);
+  Arm a(das2(), Integrator::kRos2Adaptive, 2e-3);
   armrt_test::set_group_excitation(a, "elbow_flexors", 1.0);
   armrt_test::set_group_excitation(a, "deltoid", 1.0);
   int halved_at = -1;
   for (int k = 0; k < 1000 && halved_at < 0; ++k) {
     auto before = std::make_unique<Data>(a.data);
+    auto before_ws = std::make_unique<Ros2Workspace>(a.stepper.ros2);
     const std::int64_t h0 = a.data.halved_steps;
     REQUIRE_MESSAGE(a.step(), a.error_message());
     if (a.data.halved_steps == h0) continue;
     halved_at = k;
     // The same start state, two plain half steps: identical to the rejected-and-redone step.
-    step_ros2(a.model, *before, 1e-3, false);
-    step_ros2(a.model, *before, 1e-3, false);
+    step_ros2(a.model, *before, *before_ws, 1e-3, false);
+    step_ros2(a.model, *before, *before_ws, 1e-3, false);
     for (int s = 0; s < state_size(a.model); ++s) CHECK(before->x[s] == a.data.x[s]);
   }
   MESSAGE("first halved step at step " << halved_at << "; total halved " << a.data.halved_steps);
@@ -416,20 +420,33 @@ TEST_CASE("ros2_adaptive: a rejected 2 ms step is redone from its start as two R
 
 // A das3 arm moving its girdle and arm: n_steps ROS2 steps of h, the second stage's paths extrapolated
 // (the default) or, with fresh_paths, evaluated at every step (the history cleared before each one).
-std::unique_ptr<Simulator> das3_run(double h, double duration, bool fresh_paths) {
+std::unique_ptr<Arm> das3_run(double h, double duration, bool fresh_paths) {
   const ModelDef* def = find_model("das3");
   REQUIRE(def);
-  auto sim = std::make_unique<Simulator>(*def, Integrator::kRos2, h);
+  auto sim = std::make_unique<Arm>(*def, Integrator::kRos2, h);
   for (const char* g : {"deltoid", "serratus_anterior", "elbow_flexors"}) armrt_test::set_group_excitation(*sim, g, 0.3);
   const int n = static_cast<int>(std::lround(duration / h));
   for (int k = 0; k < n; ++k) {
-    if (fresh_paths) sim->data.path_history.h = 0;
+    if (fresh_paths) sim->stepper.ros2.path_history.h = 0;
     REQUIRE_MESSAGE(sim->step(), sim->error_message());
   }
   return sim;
 }
 
-double max_q_difference(const Simulator& a, const Simulator& b) {
+// Whether the next ROS2 step of h continues the arm's path history.
+bool continues_history(const Arm& a, double h) {
+  return path_history_continues(a.model, a.stepper.ros2.path_history, a.data.x.data() + q_offset(a.model),
+                                a.data.x.data() + qd_offset(a.model), h);
+}
+
+void restore_history(Arm& a, const double* anchor_q, int num_anchors, int anchor_spacing, int steps_since_anchor,
+                     double h) {
+  path_history_restore(a.model, a.stepper.ros2.path_history, a.data.x.data() + q_offset(a.model),
+                       a.data.x.data() + qd_offset(a.model), anchor_q, num_anchors, anchor_spacing, steps_since_anchor,
+                       h);
+}
+
+double max_q_difference(const Arm& a, const Arm& b) {
   double e = 0;
   for (int j = 0; j < a.model.num_dofs; ++j) e = std::max(e, std::fabs(a.data.x[j] - b.data.x[j]));
   return e;
@@ -454,10 +471,11 @@ TEST_CASE("ROS2 keeps the last block's ghost lanes zero (Model::element_runs rea
     CAPTURE(name);
     const ModelDef* def = find_model(name);
     REQUIRE(def);
-    auto sim = std::make_unique<Simulator>(*def, Integrator::kRos2, 1e-3);
+    auto sim = std::make_unique<Arm>(*def, Integrator::kRos2, 1e-3);
     for (int g = 0; g < def->num_groups; ++g) armrt_test::set_group_excitation(*sim, def->groups[g].name, 0.3);
     const Model& m = sim->model;
     const Data& d = sim->data;
+    const Ros2Workspace& ws = sim->stepper.ros2;
     const int n = m.num_elements, end = (n + 7) / 8 * 8;
     REQUIRE(end > n);
     for (int k = 0; k < 7; ++k) {  // both kinds of step, and a step after a reset
@@ -465,15 +483,15 @@ TEST_CASE("ROS2 keeps the last block's ghost lanes zero (Model::element_runs rea
       if (k == 3) sim->reset(nullptr, nullptr, nullptr);
       for (int i = n; i < end; ++i) {
         CAPTURE(i);
-        CHECK(d.jac.series_stiffness[i] == 0.0);
-        CHECK(d.jac.muscle_length[i] == 0.0);
-        CHECK(d.path_history.anchor_muscle_length[i] == 0.0);
+        CHECK(ws.jac.series_stiffness[i] == 0.0);
+        CHECK(ws.jac.muscle_length[i] == 0.0);
+        CHECK(ws.path_history.anchor_muscle_length[i] == 0.0);
         for (int j = 0; j < m.num_dofs; ++j) {
           const int o = j * kMaxElements + i;
-          CHECK(d.jac.moment_arm[o] == 0.0);
-          CHECK(d.path_history.anchor_moment_arm[0][o] == 0.0);
-          CHECK(d.path_history.anchor_moment_arm[1][o] == 0.0);
-          CHECK(d.path_history.stage2_moment_arm[o] == 0.0);
+          CHECK(ws.jac.moment_arm[o] == 0.0);
+          CHECK(ws.path_history.anchor_moment_arm[0][o] == 0.0);
+          CHECK(ws.path_history.anchor_moment_arm[1][o] == 0.0);
+          CHECK(ws.path_history.stage2_moment_arm[o] == 0.0);
         }
       }
     }
@@ -486,15 +504,15 @@ TEST_CASE("a state restored with its ROS2 history continues bit for bit, one wit
   for (const int steps : {50, 51, 52, 1}) {
     CAPTURE(steps);
     auto a = das3_run(1e-3, steps * 1e-3, false);
-    const PathHistory& ph = a->data.path_history;
+    const PathHistory& ph = a->stepper.ros2.path_history;
     const int nq = a->model.num_dofs;
-    REQUIRE(ros2_continues_history(a->model, a->data, 1e-3));
-    REQUIRE_FALSE(ros2_continues_history(a->model, a->data, 5e-4));  // another step size starts afresh
+    REQUIRE(continues_history(*a, 1e-3));
+    REQUIRE_FALSE(continues_history(*a, 5e-4));  // another step size starts afresh
     CHECK(ph.num_anchors == (steps >= 2 ? 2 : 1));
     CHECK(ph.steps_since_anchor == (steps >= 2 ? (steps - 2) % kRos2PathPeriod + 1 : 1));
-    auto with = std::make_unique<Simulator>(*a->model.def, Integrator::kRos2, 1e-3);
-    auto without = std::make_unique<Simulator>(*a->model.def, Integrator::kRos2, 1e-3);
-    for (Simulator* s : {with.get(), without.get()}) {
+    auto with = std::make_unique<Arm>(*a->model.def, Integrator::kRos2, 1e-3);
+    auto without = std::make_unique<Arm>(*a->model.def, Integrator::kRos2, 1e-3);
+    for (Arm* s : {with.get(), without.get()}) {
       s->data.x = a->data.x;
       s->data.excitation = a->data.excitation;
     }
@@ -502,10 +520,10 @@ TEST_CASE("a state restored with its ROS2 history continues bit for bit, one wit
     const double* newest = ph.anchor_q_new.data();
     if (ph.num_anchors == 2) std::copy(ph.anchor_q_old.begin(), ph.anchor_q_old.begin() + nq, anchors);
     std::copy(newest, newest + nq, anchors + (ph.num_anchors - 1) * nq);
-    ros2_restore_history(with->model, with->data, anchors, ph.num_anchors, ph.anchor_spacing, ph.steps_since_anchor,
+    restore_history(*with, anchors, ph.num_anchors, ph.anchor_spacing, ph.steps_since_anchor,
                          ph.h);
-    CHECK(ros2_continues_history(with->model, with->data, 1e-3));
-    CHECK_FALSE(ros2_continues_history(without->model, without->data, 1e-3));
+    CHECK(continues_history(*with, 1e-3));
+    CHECK_FALSE(continues_history(*without, 1e-3));
     for (int k = 0; k < 20; ++k) {
       REQUIRE(a->step());
       REQUIRE(with->step());
@@ -518,23 +536,23 @@ TEST_CASE("a state restored with its ROS2 history continues bit for bit, one wit
     CHECK(d < 1e-5);  // 0.0006 deg: the first steps of a fast activation onset are the worst
     // A state changed from outside is not the one the history ended at: the next step evaluates afresh.
     with->data.x[qd_offset(with->model)] += 1e-3;
-    CHECK_FALSE(ros2_continues_history(with->model, with->data, 1e-3));
+    CHECK_FALSE(continues_history(*with, 1e-3));
   }
   // Counts that no run of steps leaves are refused by name.
   auto s = das3_run(1e-3, 0.002, false);
   double q2[2 * kMaxDofs] = {};
-  CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 3, 1, 1, 1e-3), doctest::Contains("anchors"),
+  CHECK_THROWS_WITH_AS(restore_history(*s, q2, 3, 1, 1, 1e-3), doctest::Contains("anchors"),
                        std::invalid_argument);
-  CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 2, 0, 1, 1e-3), doctest::Contains("spacing"),
+  CHECK_THROWS_WITH_AS(restore_history(*s, q2, 2, 0, 1, 1e-3), doctest::Contains("spacing"),
                        std::invalid_argument);
-  CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 1, 1, 1, 1e-3), doctest::Contains("spacing"),
+  CHECK_THROWS_WITH_AS(restore_history(*s, q2, 1, 1, 1, 1e-3), doctest::Contains("spacing"),
                        std::invalid_argument);
   if (kRos2PathPeriod > 2)  // anchors are 1 or kRos2PathPeriod steps apart, nothing between
-    CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 2, 2, 1, 1e-3), doctest::Contains("spacing"),
+    CHECK_THROWS_WITH_AS(restore_history(*s, q2, 2, 2, 1, 1e-3), doctest::Contains("spacing"),
                          std::invalid_argument);
-  CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 1, 0, 2, 1e-3), doctest::Contains("since"),
+  CHECK_THROWS_WITH_AS(restore_history(*s, q2, 1, 0, 2, 1e-3), doctest::Contains("since"),
                        std::invalid_argument);  // one anchor: only right after a run's first step
-  CHECK_THROWS_WITH_AS(ros2_restore_history(s->model, s->data, q2, 1, 0, kRos2PathPeriod + 1, 1e-3),
+  CHECK_THROWS_WITH_AS(restore_history(*s, q2, 1, 0, kRos2PathPeriod + 1, 1e-3),
                        doctest::Contains("since"), std::invalid_argument);
 }
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 
 namespace armrt_test {
 
@@ -34,7 +34,7 @@ inline const armrt::GroupDef* find_group(const armrt::GroupDef* groups, int n, c
 }
 
 // Sets the excitation of every element of a group (or muscle) name.
-inline void set_group_excitation(armrt::Simulator& sim, const char* name, double u) {
+inline void set_group_excitation(armrt::Arm& sim, const char* name, double u) {
   const armrt::ModelDef& def = *sim.model.def;
   const armrt::GroupDef* g = find_group(def.groups, def.num_groups, name);
   if (!g) g = find_group(def.muscles, def.num_muscles, name);

@@ -25,7 +25,7 @@
 #include "armrt/cvode.h"
 #include "armrt/clock.h"
 #include "armrt/engine.h"
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 
 using namespace armrt;
 
@@ -84,7 +84,7 @@ void mkdirs(const std::string& path) {
 }
 
 // Runs the fixed-step stimulation used by every stepping item: rotator cuff 0.05, elbow flexors 0.3.
-void excite(Simulator& sim) {
+void excite(Arm& sim) {
   const ModelDef& def = *sim.model.def;
   for (int g = 0; g < def.num_groups; ++g) {
     const double u = std::strcmp(def.groups[g].name, "rotator_cuff") == 0    ? 0.05
@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
   results.push_back(time_it("clock_overhead", reps, 1, [] {}, "empty timed region (clock_gettime pair)"));
 
   // Derivative and its parts, at a stimulated, moving state (after 300 ms of ROS2 at 1 ms).
-  auto sim = std::make_unique<Simulator>(*def, Integrator::kRos2, 1e-3);
+  auto sim = std::make_unique<Arm>(*def, Integrator::kRos2, 1e-3);
   excite(*sim);
   for (int k = 0; k < 300; ++k) sim->step();
   const Model& m = sim->model;
@@ -154,7 +154,7 @@ int main(int argc, char** argv) {
     auto* xd = xdot->data();
     def->muscle_paths(x->data() + iq, L, R);
     results.push_back(time_it("stage_muscles", reps, batch, [&] {
-      muscle_dynamics(m, d.excitation.data(), L, R, x->data() + ia, x->data() + il, xd + ia, xd + il, force, tau);
+      muscle_dynamics(m, d.muscles, d.excitation.data(), L, R, x->data() + ia, x->data() + il, xd + ia, xd + il, force, tau);
       sink = tau[0]; }, "muscles.cc: activation and CE dynamics, tendon forces, R^T F"));
     results.push_back(time_it("stage_passive_joints", reps, batch, [&] {
       passive_joint_torque(*def, x->data() + iq, x->data() + iqd, tau2); sink = tau2[0]; }, "passive_joints.cc"));
@@ -164,7 +164,7 @@ int main(int argc, char** argv) {
     results.push_back(time_it("stage_girdle_jacobian", reps, batch, [&] {
       girdle_forces(m, x->data() + iq, tau2, K, nullptr); sink = K[0]; }, "girdle.cc with its stiffness J^T dF/dp J"));
     results.push_back(time_it("stage_skeleton", reps, batch, [&] {
-      skeleton_dynamics(m, x->data() + iq, x->data() + iqd, tau, M, b); sink = b[0]; },
+      skeleton_dynamics(m, d.settings.gravity.data(), x->data() + iq, x->data() + iqd, tau, M, b); sink = b[0]; },
       "skeleton.cc: M(q), b(q, qd), Cholesky solve"));
   }
 
@@ -174,7 +174,7 @@ int main(int argc, char** argv) {
   // kRos2PathPeriod, so its steps are timed in such runs: a single step's median would be one kind's).
   auto step_item = [&](const char* name, Integrator integ, double dt, const char* note, int min_batch) {
     const int step_batch = std::max(batch, min_batch);
-    auto s = std::make_unique<Simulator>(*def, integ, dt);
+    auto s = std::make_unique<Arm>(*def, integ, dt);
     excite(*s);
     const long steps_per_window = static_cast<long>(std::lround(2.0 / dt));
     long k = 0, diverged = 0;
@@ -211,18 +211,18 @@ int main(int argc, char** argv) {
     if (diverged) n += "; diverged " + std::to_string(diverged) + "x (samples dropped)";
     results.push_back(summarise(name, t, step_batch, n));
   };
-  step_item("euler_step", Integrator::kEuler, 1e-4, "Simulator::step, Euler, dt = 0.1 ms (1 derivative)", 1);
+  step_item("euler_step", Integrator::kEuler, 1e-4, "Arm::step, Euler, dt = 0.1 ms (1 derivative)", 1);
   // One RK4 step costs the same at any step size; 1/6 ms is the default substep (1 ms is refused: unstable).
-  step_item("rk4_step", Integrator::kRk4, 1e-3 / 6, "Simulator::step, RK4, dt = 1/6 ms (4 derivatives)", 1);
+  step_item("rk4_step", Integrator::kRk4, 1e-3 / 6, "Arm::step, RK4, dt = 1/6 ms (4 derivatives)", 1);
   const std::string period = std::to_string(kRos2PathPeriod);
   step_item("ros2_step", Integrator::kRos2, 1e-3,
-            ("Simulator::step, ROS2, dt = 1 ms (2 derivatives, Jacobian, n x n Schur LU; per step of runs of " +
+            ("Arm::step, ROS2, dt = 1 ms (2 derivatives, Jacobian, n x n Schur LU; per step of runs of " +
              period + ": the paths are evaluated at one step in " + period + ")").c_str(),
             kRos2PathPeriod);
   {
     // CVODE: 1 ms advances over a 2 s stimulation (elbow flexors switched on at 0.5 s: one restart).
     const long cv_reps = std::min<long>(reps, 2000);
-    auto s = std::make_unique<Simulator>(*def, Integrator::kCvode, 1e-3);
+    auto s = std::make_unique<Arm>(*def, Integrator::kCvode, 1e-3);
     const ModelDef& dd = *def;
     for (int g = 0; g < dd.num_groups; ++g)
       if (std::strcmp(dd.groups[g].name, "rotator_cuff") == 0)

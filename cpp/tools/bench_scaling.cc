@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <sstream>
@@ -30,7 +31,7 @@
 
 #include "armrt/clock.h"
 #include "armrt/engine.h"
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 
 #ifdef ARMRT_SCALING_NS
 #define ARMRT_STR2(x) #x
@@ -76,7 +77,7 @@ Item time_it(const std::string& name, int n, long reps, const std::function<void
   return summarise(name, n, batch, t);
 }
 
-void excite(Simulator& sim) {
+void excite(Arm& sim) {
   const ModelDef& def = *sim.model.def;
   for (int g = 0; g < def.num_groups; ++g) {
     const double u = std::strcmp(def.groups[g].name, "rotator_cuff") == 0    ? 0.05
@@ -91,9 +92,12 @@ void excite(Simulator& sim) {
 }
 
 // A simulator restricted to the first n elements, stimulated, after `warm` steps.
-std::unique_ptr<Simulator> make_sim(const ModelDef& def, int n, Integrator integ, double dt, int warm) {
-  auto s = std::make_unique<Simulator>(def, integ, dt);
-  s->model.num_elements = n;
+// (The Model is immutable: the restriction is a copy of the ModelDef with n elements, kept for the process.)
+std::unique_ptr<Arm> make_sim(const ModelDef& def, int n, Integrator integ, double dt, int warm) {
+  static std::deque<ModelDef> restricted;
+  ModelDef& first_n = restricted.emplace_back(def);
+  first_n.num_elements = n;
+  auto s = std::make_unique<Arm>(first_n, integ, dt);
   s->reset(nullptr, nullptr, nullptr);
   excite(*s);
   for (int k = 0; k < warm && s->step(); ++k) {
@@ -179,7 +183,7 @@ int main(int argc, char** argv) {
     items.push_back(time_it("muscle_lengths", nmax, reps, [&] { def->muscle_lengths(q, L); sink = L[0]; }));
     items.push_back(time_it("mass_matrix", nmax, reps, [&] { def->mass_matrix(q, M); sink = M[6]; }));
     items.push_back(time_it("dynamics", nmax, reps, [&] {
-      def->dynamics(q, q + qd_offset(s->model), s->model.gravity_base.data(), M, b);
+      def->dynamics(q, q + qd_offset(s->model), s->data.settings.gravity.data(), M, b);
       sink = M[6] + b[2];
     }));
   }
@@ -197,7 +201,7 @@ int main(int argc, char** argv) {
     // The muscle stage of forward() (activation dynamics + Hill kernel + R^T F), over n elements.
     auto loop = [&] {
       double force[kMaxElements], tau[kMaxDofs];
-      muscle_dynamics(m, d.excitation.data(), L, R, x->data() + ia, x->data() + lce_offset(m), xdot->data() + ia,
+      muscle_dynamics(m, d.muscles, d.excitation.data(), L, R, x->data() + ia, x->data() + lce_offset(m), xdot->data() + ia,
                       xdot->data() + lce_offset(m), force, tau);
       sink = tau[0] + tau[3];
     };

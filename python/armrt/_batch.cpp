@@ -1,5 +1,5 @@
 // pybind11 bindings of armrt::Batch (armrt/batch.py validates inputs and names things). State, inputs
-// and outputs are zero-copy (n, ...) views whose row stride is one Simulator: no copy per step.
+// and outputs are zero-copy (n, ...) views whose row stride is one Arm: no copy per step.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -18,7 +18,7 @@ namespace {
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 using IndexArray = py::array_t<long, py::array::c_style | py::array::forcecast>;
 
-// A (n,) or (n, width) view of one field of every arm's Simulator, kept alive by `owner`.
+// A (n,) or (n, width) view of one field of every arm's Arm, kept alive by `owner`.
 py::array arm_view(Batch& b, const double* field_of_arm0, py::ssize_t width, py::handle owner) {
   const py::ssize_t n = b.size();
   const auto row = static_cast<py::ssize_t>(Batch::stride());
@@ -73,9 +73,9 @@ PYBIND11_MODULE(_batch, mod) {
       .def_property_readonly("n", &Batch::size)
       .def_property_readonly("num_elements", [](Batch& b) { return b.arm(0).model.num_elements; })
       .def_property_readonly("state_size", [](Batch& b) { return state_size(b.arm(0).model); })
-      .def_property_readonly("substeps", [](Batch& b) { return b.arm(0).substeps; })
-      .def_property_readonly("dt", [](Batch& b) { return b.arm(0).dt; })
-      .def_property_readonly("integrator", [](Batch& b) { return integrator_name(b.arm(0).integrator); })
+      .def_property_readonly("substeps", [](Batch& b) { return b.arm(0).stepper.substeps; })
+      .def_property_readonly("dt", [](Batch& b) { return b.arm(0).stepper.dt; })
+      .def_property_readonly("integrator", [](Batch& b) { return integrator_name(b.arm(0).stepper.integrator); })
       // Zero-copy views.
       .def_property_readonly("state", [](py::object self) {
         auto& b = self.cast<Batch&>();
@@ -158,7 +158,7 @@ PYBIND11_MODULE(_batch, mod) {
         const int ne = b.arm(0).model.num_elements;
         const double* ap = rows(act, aa, m, ne, "activation");
         for (py::ssize_t r = 0; r < m; ++r) {
-          Simulator& s = b.arm(idx[r]);
+          Arm& s = b.arm(idx[r]);
           s.data.status = Status::kOk;
           s.data.bad_index = -1;
           s.data.bad_contact = -1;
@@ -171,14 +171,14 @@ PYBIND11_MODULE(_batch, mod) {
         const int ne = b.arm(0).model.num_elements;
         Array a({static_cast<py::ssize_t>(b.size()), static_cast<py::ssize_t>(ne)});
         for (int i = 0; i < b.size(); ++i)
-          for (int e = 0; e < ne; ++e) a.mutable_data()[i * ne + e] = b.arm(i).model.element[e].strength_scale;
+          for (int e = 0; e < ne; ++e) a.mutable_data()[i * ne + e] = b.arm(i).data.settings.strength_scale[e];
         return a;
       })
       .def("get_max_activation", [](Batch& b) {
         const int ne = b.arm(0).model.num_elements;
         Array a({static_cast<py::ssize_t>(b.size()), static_cast<py::ssize_t>(ne)});
         for (int i = 0; i < b.size(); ++i)
-          for (int e = 0; e < ne; ++e) a.mutable_data()[i * ne + e] = b.arm(i).model.element[e].max_activation;
+          for (int e = 0; e < ne; ++e) a.mutable_data()[i * ne + e] = b.arm(i).data.settings.max_activation[e];
         return a;
       })
       // strength and max_activation: (n, elements) each.
@@ -188,12 +188,18 @@ PYBIND11_MODULE(_batch, mod) {
         const double* st = rows(strength, sa, b.size(), ne, "strength");
         const double* mx = rows(maxact, ma, b.size(), ne, "max_activation");
         for (int i = 0; i < b.size(); ++i) {
-          Model& m = b.arm(i).model;
+          Arm& arm = b.arm(i);
+          const ArmSettings before = arm.data.settings;
           for (int e = 0; e < ne; ++e) {
-            m.element[e].strength_scale = st[i * ne + e];
-            m.element[e].max_activation = mx[i * ne + e];
+            arm.data.settings.strength_scale[e] = st[i * ne + e];
+            arm.data.settings.max_activation[e] = mx[i * ne + e];
           }
-          model_update_derived(m);
+          try {
+            arm.apply_settings();
+          } catch (...) {
+            arm.data.settings = before;  // refused: this arm keeps what it had
+            throw;
+          }
         }
       })
       .def("tet_mean_ns", [](Batch& b) {

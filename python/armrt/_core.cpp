@@ -13,7 +13,7 @@
 #include "armrt/engine.h"
 #include "armrt/names.h"
 #include "armrt/recorder.h"
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 
 namespace py = pybind11;
 using namespace armrt;
@@ -39,7 +39,7 @@ const double* checked(const Array& a, py::ssize_t n, const char* what) {
   return a.data();
 }
 
-void raise_if_failed(const Simulator& s) {
+void raise_if_failed(const Arm& s) {
   if (s.data.status != Status::kOk) throw std::runtime_error(s.error_message());
 }
 
@@ -56,8 +56,7 @@ py::dict model_info(const ModelDef& def) {
   info["num_dofs"] = def.num_dofs;
   info["num_elements"] = def.num_elements;
   // The state layout, defined once in data.h: {block: (offset, size)} of x = [q | qdot | lce | activation].
-  Model m;
-  model_init(m, def);
+  const Model& m = shared_model(def);
   py::dict layout;
   layout["q"] = py::make_tuple(q_offset(m), m.num_dofs);
   layout["qdot"] = py::make_tuple(qd_offset(m), m.num_dofs);
@@ -167,7 +166,7 @@ PYBIND11_MODULE(_core, mod) {
           "Integration steps per control step dt (s) by default.");
   mod.def("model_names", []() { return model_names(); });
   // Why these counts are not a ROS2 history a run leaves ("" if they are): checked before a State is written.
-  mod.def("ros2_history_error", &ros2_history_error, py::arg("num_anchors"), py::arg("anchor_spacing"),
+  mod.def("ros2_history_error", &path_history_error, py::arg("num_anchors"), py::arg("anchor_spacing"),
           py::arg("steps_since_anchor"));
   // The name service (names.h): the Python API's lookups and messages come from here.
   mod.def("find_elements", [](const std::string& model, const std::string& name) {
@@ -193,36 +192,36 @@ PYBIND11_MODULE(_core, mod) {
         return close_matches(require_model(model), name, dofs ? NameKind::kDofs : NameKind::kElementsMusclesGroups);
       }, py::arg("model"), py::arg("name"), py::arg("dofs") = false);
 
-  py::class_<Simulator>(mod, "Simulator")
+  py::class_<Arm>(mod, "Simulator")
       .def(py::init([](const std::string& model, const std::string& integrator, double dt, int substeps) {
-             return std::make_unique<Simulator>(require_model(model), parse_integrator(integrator), dt, substeps);
+             return std::make_unique<Arm>(require_model(model), parse_integrator(integrator), dt, substeps);
            }),
            py::arg("model"), py::arg("integrator"), py::arg("dt"), py::arg("substeps") = 1)
       .def(py::init([](const ModelDef& model, const std::string& integrator, double dt, int substeps) {
-             return std::make_unique<Simulator>(model, parse_integrator(integrator), dt, substeps);
+             return std::make_unique<Arm>(model, parse_integrator(integrator), dt, substeps);
            }),
            py::arg("model"), py::arg("integrator"), py::arg("dt"), py::arg("substeps") = 1)
-      .def_property_readonly("substeps", [](const Simulator& s) { return s.substeps; })
-      .def_property_readonly("num_elements", [](const Simulator& s) { return s.model.num_elements; })
-      .def_property_readonly("num_dofs", [](const Simulator& s) { return s.model.num_dofs; })
-      .def_property_readonly("model_name", [](const Simulator& s) { return std::string(s.model.def->name); })
-      .def_property_readonly("dt", [](const Simulator& s) { return s.dt; })
-      .def_property_readonly("integrator", [](const Simulator& s) { return integrator_name(s.integrator); })
-      .def("set_integrator", [](Simulator& s, const std::string& name, double dt, int substeps) { s.set_integrator(parse_integrator(name), dt, substeps); },
+      .def_property_readonly("substeps", [](const Arm& s) { return s.stepper.substeps; })
+      .def_property_readonly("num_elements", [](const Arm& s) { return s.model.num_elements; })
+      .def_property_readonly("num_dofs", [](const Arm& s) { return s.model.num_dofs; })
+      .def_property_readonly("model_name", [](const Arm& s) { return std::string(s.model.def->name); })
+      .def_property_readonly("dt", [](const Arm& s) { return s.stepper.dt; })
+      .def_property_readonly("integrator", [](const Arm& s) { return integrator_name(s.stepper.integrator); })
+      .def("set_integrator", [](Arm& s, const std::string& name, double dt, int substeps) { s.set_integrator(parse_integrator(name), dt, substeps); },
            py::arg("integrator"), py::arg("dt"), py::arg("substeps") = 1)
-      .def_property("time", [](const Simulator& s) { return s.data.time; }, [](Simulator& s, double t) { s.data.time = t; })
+      .def_property("time", [](const Arm& s) { return s.data.time; }, [](Arm& s, double t) { s.data.time = t; })
       // Zero-copy views of the state and inputs.
       .def_property_readonly("state", [](py::object self) {
-        auto& s = self.cast<Simulator&>();
+        auto& s = self.cast<Arm&>();
         return view(s.data.x.data(), {state_size(s.model)}, self);
       })
       .def_property_readonly("excitation", [](py::object self) {
-        auto& s = self.cast<Simulator&>();
+        auto& s = self.cast<Arm&>();
         return view(s.data.excitation.data(), {s.model.num_elements}, self);
       })
-      .def_property_readonly("hand_force", [](py::object self) { return view(self.cast<Simulator&>().data.hand_force.data(), {3}, self); })
-      .def_property_readonly("hand_moment", [](py::object self) { return view(self.cast<Simulator&>().data.hand_moment.data(), {3}, self); })
-      .def("reset", [](Simulator& s, py::object q, py::object qd, py::object act) {
+      .def_property_readonly("hand_force", [](py::object self) { return view(self.cast<Arm&>().data.hand_force.data(), {3}, self); })
+      .def_property_readonly("hand_moment", [](py::object self) { return view(self.cast<Arm&>().data.hand_moment.data(), {3}, self); })
+      .def("reset", [](Arm& s, py::object q, py::object qd, py::object act) {
         Array qa, qda, aa;
         const double *qp = nullptr, *qdp = nullptr, *ap = nullptr;
         const int nq = s.model.num_dofs;
@@ -231,7 +230,7 @@ PYBIND11_MODULE(_core, mod) {
         if (!act.is_none()) { aa = act.cast<Array>(); ap = checked(aa, s.model.num_elements, "activation"); }
         s.reset(qp, qdp, ap);
       }, py::arg("q") = py::none(), py::arg("qdot") = py::none(), py::arg("activation") = py::none())
-      .def("step", [](Simulator& s, long n) {
+      .def("step", [](Arm& s, long n) {
         bool interrupted = false;
         {
           py::gil_scoped_release release;
@@ -245,13 +244,16 @@ PYBIND11_MODULE(_core, mod) {
         if (interrupted) throw py::error_already_set();
         raise_if_failed(s);
       }, py::arg("n") = 1)
-      .def("clear_error", [](Simulator& s) { s.data.status = Status::kOk; s.data.bad_index = -1; s.data.bad_contact = -1; })
+      .def("clear_error", [](Arm& s) { s.data.status = Status::kOk; s.data.bad_index = -1; s.data.bad_contact = -1; })
       // ROS2's memory (data.h PathHistory): (anchors (k, ndof) rad, anchor spacing, steps since the newest
       // anchor, h) if the state is where the last step ended, else None; and its restoration for a state
       // restored from a snapshot (k = 0 clears it).
-      .def("ros2_history", [](const Simulator& s) -> py::object {
-        const PathHistory& ph = s.data.path_history;
-        if (!ros2_continues_history(s.model, s.data, ph.h) || ph.num_anchors == 0) return py::none();
+      .def("ros2_history", [](const Arm& s) -> py::object {
+        const PathHistory& ph = s.stepper.ros2.path_history;
+        const double* x = s.data.x.data();
+        if (!path_history_continues(s.model, ph, x + q_offset(s.model), x + qd_offset(s.model), ph.h) ||
+            ph.num_anchors == 0)
+          return py::none();
         const int nq = s.model.num_dofs;
         Array q({static_cast<py::ssize_t>(ph.num_anchors), static_cast<py::ssize_t>(nq)});
         double* out = q.mutable_data();
@@ -259,7 +261,7 @@ PYBIND11_MODULE(_core, mod) {
         std::copy(ph.anchor_q_new.begin(), ph.anchor_q_new.begin() + nq, out + (ph.num_anchors - 1) * nq);
         return py::make_tuple(q, ph.anchor_spacing, ph.steps_since_anchor, ph.h);
       })
-      .def("restore_ros2_history", [](Simulator& s, const Array& anchors, int anchor_spacing, int steps_since_anchor,
+      .def("restore_ros2_history", [](Arm& s, const Array& anchors, int anchor_spacing, int steps_since_anchor,
                                       double h) {
         const int nq = s.model.num_dofs;
         if (anchors.ndim() != 2 || anchors.shape(1) != nq || anchors.shape(0) > 2)
@@ -267,10 +269,12 @@ PYBIND11_MODULE(_core, mod) {
         const int k = static_cast<int>(anchors.shape(0));
         for (py::ssize_t i = 0; i < anchors.size(); ++i)
           if (!std::isfinite(anchors.data()[i])) throw std::invalid_argument("ROS2 history: anchors contain NaN or inf");
-        ros2_restore_history(s.model, s.data, anchors.data(), k, anchor_spacing, steps_since_anchor, h);
+        const double* x = s.data.x.data();
+        path_history_restore(s.model, s.stepper.ros2.path_history, x + q_offset(s.model), x + qd_offset(s.model),
+                             anchors.data(), k, anchor_spacing, steps_since_anchor, h);
       }, py::arg("anchors"), py::arg("anchor_spacing"), py::arg("steps_since_anchor"), py::arg("h"))
-      .def("evaluate_outputs", &Simulator::evaluate_outputs)
-      .def("outputs", [](Simulator& s) {
+      .def("evaluate_outputs", &Arm::evaluate_outputs)
+      .def("outputs", [](Arm& s) {
         const int n = s.model.num_elements, nq = s.model.num_dofs;
         py::dict o;
         auto copy = [](const double* p, std::vector<py::ssize_t> shape) {
@@ -308,37 +312,43 @@ PYBIND11_MODULE(_core, mod) {
         }
         return o;
       })
-      .def("tet_stats", [](const Simulator& s) {
+      .def("tet_stats", [](const Arm& s) {
         const TetStats& t = s.data.tet;
         return py::dict(py::arg("count") = t.count, py::arg("mean_ns") = t.mean_ns, py::arg("min_ns") = t.min_ns,
                         py::arg("max_ns") = t.max_ns, py::arg("last_ns") = t.last_ns);
       })
-      .def("reset_tet", [](Simulator& s) { s.data.tet = TetStats{}; })
-      .def("get_strength", [](const Simulator& s) {
+      .def("reset_tet", [](Arm& s) { s.data.tet = TetStats{}; })
+      .def("get_strength", [](const Arm& s) {
         Array a({s.model.num_elements});
-        for (int i = 0; i < s.model.num_elements; ++i) a.mutable_data()[i] = s.model.element[i].strength_scale;
+        for (int i = 0; i < s.model.num_elements; ++i) a.mutable_data()[i] = s.data.settings.strength_scale[i];
         return a;
       })
-      .def("get_max_activation", [](const Simulator& s) {
+      .def("get_max_activation", [](const Arm& s) {
         Array a({s.model.num_elements});
-        for (int i = 0; i < s.model.num_elements; ++i) a.mutable_data()[i] = s.model.element[i].max_activation;
+        for (int i = 0; i < s.model.num_elements; ++i) a.mutable_data()[i] = s.data.settings.max_activation[i];
         return a;
       })
-      .def("set_strength_and_max_activation", [](Simulator& s, const Array& strength, const Array& maxact) {
+      .def("set_strength_and_max_activation", [](Arm& s, const Array& strength, const Array& maxact) {
         const double* st = checked(strength, s.model.num_elements, "strength");
         const double* ma = checked(maxact, s.model.num_elements, "max_activation");
+        const ArmSettings before = s.data.settings;
         for (int i = 0; i < s.model.num_elements; ++i) {
-          s.model.element[i].strength_scale = st[i];
-          s.model.element[i].max_activation = ma[i];
+          s.data.settings.strength_scale[i] = st[i];
+          s.data.settings.max_activation[i] = ma[i];
         }
-        model_update_derived(s.model);
+        try {
+          s.apply_settings();
+        } catch (...) {
+          s.data.settings = before;  // refused: the arm keeps what it had
+          throw;
+        }
       })
-      .def_property("gravity", [](const Simulator& s) { return std::vector<double>(s.model.gravity_base.begin(), s.model.gravity_base.end()); },
-                    [](Simulator& s, const Array& g) { const double* p = checked(g, 3, "gravity"); for (int k = 0; k < 3; ++k) s.model.gravity_base[k] = p[k]; })
-      .def_property("max_joint_speed", [](const Simulator& s) { return s.model.max_joint_speed; },
-                    [](Simulator& s, double v) { s.model.max_joint_speed = v; })
+      .def_property("gravity", [](const Arm& s) { return std::vector<double>(s.data.settings.gravity.begin(), s.data.settings.gravity.end()); },
+                    [](Arm& s, const Array& g) { const double* p = checked(g, 3, "gravity"); for (int k = 0; k < 3; ++k) s.data.settings.gravity[k] = p[k]; })
+      .def_property("max_joint_speed", [](const Arm& s) { return s.data.settings.max_joint_speed; },
+                    [](Arm& s, double v) { s.data.settings.max_joint_speed = v; })
       // simulate: excitation is (T, n) (one row per step) or (1, n) (held); the loop runs without the GIL.
-      .def("simulate", [](Simulator& s, const Array& excitation, long n_steps, long record_every) {
+      .def("simulate", [](Arm& s, const Array& excitation, long n_steps, long record_every) {
         const int n = s.model.num_elements, nq = s.model.num_dofs;
         if (excitation.ndim() != 2 || excitation.shape(1) != n || (excitation.shape(0) != n_steps && excitation.shape(0) != 1))
           throw py::value_error("excitation must have shape (" + std::to_string(n_steps) + ", " + std::to_string(n) + ") or (1, " + std::to_string(n) + ")");
@@ -389,7 +399,7 @@ PYBIND11_MODULE(_core, mod) {
         return out;
       }, py::arg("excitation"), py::arg("n_steps"), py::arg("record_every") = 1)
       // Model functions at any pose.
-      .def("muscle_paths", [](const Simulator& s, const Array& q) {
+      .def("muscle_paths", [](const Arm& s, const Array& q) {
         const int nq = s.model.num_dofs;
         const double* qp = checked(q, nq, "q");
         const int n = s.model.num_elements;
@@ -397,34 +407,34 @@ PYBIND11_MODULE(_core, mod) {
         muscle_paths_by_element(*s.model.def, qp, L.mutable_data(), R.mutable_data());
         return py::make_tuple(L, R);
       })
-      .def("gh_directions", [](const Simulator& s, const Array& q) {
+      .def("gh_directions", [](const Arm& s, const Array& q) {
         Array d({s.model.num_elements, 3});
         s.model.def->gh_directions(checked(q, s.model.num_dofs, "q"), d.mutable_data());
         return d;
       })
-      .def("mass_matrix", [](const Simulator& s, const Array& q) {
+      .def("mass_matrix", [](const Arm& s, const Array& q) {
         Array M({s.model.num_dofs, s.model.num_dofs});
         s.model.def->mass_matrix(checked(q, s.model.num_dofs, "q"), M.mutable_data());
         return M;
       })
-      .def("bias_force", [](const Simulator& s, const Array& q, const Array& qd) {
+      .def("bias_force", [](const Arm& s, const Array& q, const Array& qd) {
         Array b({s.model.num_dofs});
-        s.model.def->bias_force(checked(q, s.model.num_dofs, "q"), checked(qd, s.model.num_dofs, "qdot"), s.model.gravity_base.data(), b.mutable_data());
+        s.model.def->bias_force(checked(q, s.model.num_dofs, "q"), checked(qd, s.model.num_dofs, "qdot"), s.data.settings.gravity.data(), b.mutable_data());
         return b;
       })
-      .def("body_poses", [](const Simulator& s, const Array& q) {
+      .def("body_poses", [](const Arm& s, const Array& q) {
         const int nb = s.model.def->num_bodies;
         Array R({nb, 3, 3}), p({nb, 3});
         s.model.def->body_poses(checked(q, s.model.num_dofs, "q"), R.mutable_data(), p.mutable_data());
         return py::make_tuple(R, p);
       })
-      .def("arm_momentum_rate", [](const Simulator& s, const Array& q, const Array& qd) {
+      .def("arm_momentum_rate", [](const Arm& s, const Array& q, const Array& qd) {
         const int nq = s.model.num_dofs;
         Array A({3, nq}), c({3});
         s.model.def->arm_momentum_rate(checked(q, nq, "q"), checked(qd, nq, "qdot"), A.mutable_data(), c.mutable_data());
         return py::make_tuple(A, c);
       })
-      .def("girdle_forces", [](const Simulator& s, const Array& q) {
+      .def("girdle_forces", [](const Arm& s, const Array& q) {
         const int nq = s.model.num_dofs;
         Array tau({nq}), K({nq, nq});
         GirdleState st;
@@ -437,26 +447,26 @@ PYBIND11_MODULE(_core, mod) {
                         py::arg("contact_force") = force, py::arg("conoid_length") = st.conoid_length,
                         py::arg("conoid_tension") = st.conoid_tension);
       })
-      .def("thorax_humerus_angles", [](const Simulator& s, const Array& q) {
+      .def("thorax_humerus_angles", [](const Arm& s, const Array& q) {
         Array a({3});
         thorax_humerus_angles(s.model, checked(q, s.model.num_dofs, "q"), a.mutable_data());
         return a;
       })
-      .def("passive_joint_torque", [](const Simulator& s, const Array& q, const Array& qd) {
+      .def("passive_joint_torque", [](const Arm& s, const Array& q, const Array& qd) {
         Array t({s.model.num_dofs});
         passive_joint_torque(*s.model.def, checked(q, s.model.num_dofs, "q"), checked(qd, s.model.num_dofs, "qdot"), t.mutable_data());
         return t;
       })
-      .def("muscle_element", [](const Simulator& s, int i, double L, double lce, double a) {
+      .def("muscle_element", [](const Arm& s, int i, double L, double lce, double a) {
         if (i < 0 || i >= s.model.num_elements) throw py::index_error("element index out of range");
-        const MuscleOut o = muscle_element(s.model.element[i], s.model.fibre_damping, L, lce, a);
+        const MuscleOut o = muscle_element(data_element(s.model, s.data, i), s.model.fibre_damping, L, lce, a);
         return py::make_tuple(o.force, o.fibre_velocity);
       })
-      .def("muscle_equilibrium_lce", [](const Simulator& s, int i, double L, double a) {
+      .def("muscle_equilibrium_lce", [](const Arm& s, int i, double L, double a) {
         if (i < 0 || i >= s.model.num_elements) throw py::index_error("element index out of range");
-        return muscle_equilibrium_lce(s.model.element[i], s.model.fibre_damping, L, a);
+        return muscle_equilibrium_lce(data_element(s.model, s.data, i), s.model.fibre_damping, L, a);
       })
-      .def("gh_stability", [](const Simulator& s, const Array& f) {
+      .def("gh_stability", [](const Arm& s, const Array& f) {
         const GHStability g = gh_stability(*s.model.def, checked(f, 3, "force"));
         return py::make_tuple(g.theta, g.phi, g.stab);
       });

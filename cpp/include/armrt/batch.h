@@ -1,6 +1,6 @@
 // Many independent arms of one model stepped together across threads (OpenMP): offline sweeps,
-// optimisation and vectorised reinforcement-learning environments. Each arm is a whole Simulator,
-// stepped with Simulator::step(), so every integrator the Simulator supports works here and each
+// optimisation and vectorised reinforcement-learning environments: one shared Model and n arms, each its own
+// Data and Stepper (arm.h), stepped with step(), so every integrator works here and each
 // arm's trajectory is bit-identical to stepping it alone, whatever the thread count: arms share no
 // state, and each arm is advanced by one thread at a time in its own sequential order.
 #pragma once
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 
 namespace armrt {
 
@@ -17,19 +17,19 @@ class Batch {
  public:
   // n arms of `def`, each at the rest posture; throws std::invalid_argument for n < 1 or a bad dt.
   Batch(const ModelDef& def, int n, Integrator integrator, double dt, int substeps = 1);
-  Batch(const Batch&) = delete;             // CVODE integrators keep pointers into their Simulator
+  Batch(const Batch&) = delete;             // CVODE steppers keep pointers into their arm's Data
   Batch& operator=(const Batch&) = delete;
 
   int size() const { return static_cast<int>(arms_.size()); }
-  Simulator& arm(int i) { return arms_[i]; }
-  const Simulator& arm(int i) const { return arms_[i]; }
-  // Bytes from one arm's Simulator to the next: the stride of zero-copy (n, ...) views.
-  static constexpr std::ptrdiff_t stride() { return sizeof(Simulator); }
+  Arm& arm(int i) { return arms_[i]; }
+  const Arm& arm(int i) const { return arms_[i]; }
+  // Bytes from one arm to the next: the stride of zero-copy (n, ...) views.
+  static constexpr std::ptrdiff_t stride() { return sizeof(Arm); }
 
   // Advances each arm whose status is kOk by up to `steps` control steps on `num_threads` threads
   // (< 1: OpenMP's default; never more than the arms). An arm that diverges stops there; the others
   // go on. With `outputs`, each live arm's outputs (forces, hand position, GH stability) are evaluated
-  // at its final state; without, they are left as they were (Simulator::step(false)).
+  // at its final state; without, they are left as they were (Arm::step(false)).
   // Writes 1 to newly_failed[i] for each arm that diverged during this call (0 otherwise) and
   // returns how many did. No heap allocation after the first call (OpenMP keeps its thread pool).
   int step(long steps, int num_threads, bool outputs);
@@ -40,7 +40,7 @@ class Batch {
   const std::vector<unsigned char>& newly_failed() const { return newly_failed_; }
 
  private:
-  std::vector<Simulator> arms_;            // reserved once, never reallocated
+  std::vector<Arm> arms_;            // reserved once, never reallocated
   std::vector<unsigned char> newly_failed_;
 };
 

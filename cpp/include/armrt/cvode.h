@@ -32,6 +32,7 @@ class CvodeIntegrator {
   bool have_inputs_ = false;
   double last_excitation_[kMaxElements] = {};
   double last_load_[6] = {};
+  double xdot_scratch_[kMaxState] = {};  // the derivative of the outputs' forward(), discarded
 };
 
 }  // namespace armrt

@@ -1,6 +1,8 @@
-// Data: everything that changes during a simulation (like mjData / pinocchio::Data): the state, the
-// inputs, the outputs of the last forward() and the integrators' workspace. Fixed-size: creating one
-// allocates nothing afterwards, and stepping never touches the heap.
+// Data: everything of one arm that is not the shared Model (like mjData / pinocchio::Data): its settings
+// (strength, maximum activation, gravity) with the muscle constants they scale, the state, the inputs, the
+// outputs of the last forward(), errors and statistics. The integrator and its workspace are the arm's
+// Stepper (stepper.h). Fixed-size: creating one allocates nothing afterwards, and stepping never touches
+// the heap.
 #pragma once
 
 #include <array>
@@ -33,69 +35,6 @@ struct TetStats {
   }
 };
 
-// The structured ("arrow") Jacobian of forward() at one state, filled by forward(..., jac) and
-// factored by rosenbrock.cc (docs/engine.md): per-element derivatives of the muscle kernel, the moment
-// arms and mass matrix at that state, and the passive joint stiffness and damping. Moment-arm
-// derivatives, gravity, Coriolis and dM/dq are left out (docs/engine.md says why).
-struct StepJacobian {
-  // Filled by forward() with a non-null jac.
-  std::array<double, kMaxElements> dforce_dL{};    // N/m, tendon force vs muscle-tendon length
-  std::array<double, kMaxElements> dforce_dlce{};  // N/m, tendon force vs CE length
-  std::array<double, kMaxElements> dvel_dL{};      // 1/s, CE velocity vs muscle-tendon length
-  std::array<double, kMaxElements> dvel_dlce{};    // 1/s, CE velocity vs CE length
-  std::array<double, kMaxElements> dvel_da{};      // m/s, CE velocity vs activation
-  std::array<double, kMaxElements> act_rate{};     // 1/s, -d(activation rate)/d(activation) = c1 u + c2
-  // The kernel's lce-only terms at this state (MuscleDerivatives), for limit_fibre_overshoot.
-  std::array<double, kMaxElements> force_length{};    // f(lce)
-  std::array<double, kMaxElements> lce_along{};       // m, lce cos(pennation)
-  std::array<double, kMaxElements> cos_pennation{};   // lce_along / lce
-  std::array<double, kMaxElements> inv_cos_pennation{};  // lce / lce_along
-  std::array<double, kMaxElements> pee_force{};       // N
-  std::array<double, kMaxElements> compress_force{};  // N
-  std::array<double, kMaxElements> muscle_length{};          // m
-  std::array<double, kMaxDofs * kMaxElements> moment_arm{};  // m, by DOF: [dof][element], row stride kMaxElements (model_def.h)
-  std::array<double, kMaxDofs * kMaxDofs> mass_matrix{};     // kg m^2, num_dofs x num_dofs row-major
-  std::array<double, kMaxDofs> dtau_passive_dq{};   // N m/rad, diagonal
-  std::array<double, kMaxDofs> dtau_passive_dqd{};  // N m s/rad, diagonal
-  std::array<double, kMaxDofs * kMaxDofs> dtau_girdle_dq{};  // N m/rad, girdle contact and conoid (girdle.cc)
-
-  // Factorisation of I - h gamma J for one h gamma (rosenbrock.cc).
-  double hg = 0;                                    // s, h * gamma it was built for
-  std::array<double, kMaxElements> inv_act{};       // 1 / (1 + hg act_rate)
-  std::array<double, kMaxElements> inv_lce{};       // 1 / (1 - hg dvel_dlce)
-  std::array<double, kMaxElements> lce_from_q{};    // hg dvel_dL / (1 - hg dvel_dlce), m/m
-  std::array<double, kMaxElements> series_stiffness{};  // N/m, dforce_dL + dforce_dlce * lce_from_q
-  std::array<double, kMaxDofs * kMaxDofs> schur_lu{};   // LU of the num_dofs x num_dofs Schur complement
-  std::array<int, kMaxDofs> schur_perm{};               // its row permutation
-  std::array<double, kMaxDofs> schur_inv_diag{};        // 1 / U's diagonal
-  std::array<double, kMaxDofs * kMaxDofs> stiffness{};  // N m/rad, K_eff = diag(dtau_passive_dq) + dtau_girdle_dq - R^T diag(series_stiffness) R
-  std::array<double, kMaxElements> tmp{};               // scratch of one solve
-};
-
-// What ROS2 extrapolates the muscle paths from (rosenbrock.cc): the last two exact evaluations of the path
-// polynomials ("anchors", one step in kRos2PathPeriod once a run is under way) and the state the last step
-// ended at.
-// A step continues that history only if it starts from exactly that state with the same h; anything else
-// (a reset, a state set from outside, another step size) starts afresh: exact paths in both stages.
-struct PathHistory {
-  // m, moment arms at the anchors by DOF (as StepJacobian's): anchor_moment_arm[newest] at anchor_q_new, the
-  // other at anchor_q_old (two slots, so that a new anchor replaces the oldest without a copy). Rows an
-  // element run does not cross (Model::element_runs) stay zero.
-  std::array<double, kMaxDofs * kMaxElements> anchor_moment_arm[2]{};
-  int newest = 0;
-  std::array<double, kMaxElements> anchor_muscle_length{};  // m, at anchor_q_new
-  std::array<double, kMaxDofs> anchor_q_old{}, anchor_q_new{};  // rad
-  int num_anchors = 0;         // 0, 1 (anchor_q_new only) or 2
-  int anchor_spacing = 0;      // steps of h from anchor_q_old to anchor_q_new (1 or kRos2PathPeriod; 0 with one)
-  int steps_since_anchor = 0;  // steps of h from anchor_q_new to where the last step ended (1 to kRos2PathPeriod)
-  // m, the second stage's extrapolated moment arms, by DOF; written only where Model::element_runs cross (and
-  // the elements past them), so zero wherever the polynomials' are.
-  std::array<double, kMaxDofs * kMaxElements> stage2_moment_arm{};
-  std::array<double, kMaxDofs> q_end{};   // rad, q the last step ended at
-  std::array<double, kMaxDofs> qd_end{};  // rad/s, and qdot
-  double h = 0;                           // s, that step's size; 0: no history
-};
-
 // The girdle stage's outputs (girdle.cc), for models whose scapula moves.
 struct GirdleState {
   std::array<double, kMaxContactPoints> contact_distance{};  // m, first-order signed distance of TS, AI from
@@ -115,7 +54,25 @@ enum class Status { kOk = 0, kNonFinite = 1, kTooFast = 2, kCvodeFailed = 3, kOu
 // Grouped like mjData and pinocchio::Data: state, inputs, then the outputs of forward() by the stage
 // that fills them (forward.cc lists the stages; outputs are filled only with record = true and describe
 // the state forward() was evaluated at), then errors, statistics and workspace.
+// Per-arm settings: set between runs (data_apply_settings derives Data::muscles from them), never by a step.
+struct ArmSettings {
+  std::array<double, kMaxElements> strength_scale{};  // multiplies DAS3 fmax (1 = intact; weakness < 1)
+  std::array<double, kMaxElements> max_activation{};  // [0, 1], the cap on excitation and activation (paralysis)
+  std::array<double, 3> gravity{};                    // m/s^2, base frame (e.g. a lying posture)
+  double max_joint_speed = kDefaultMaxJointSpeed;     // rad/s; faster means the simulation diverged
+};
+
 struct Data {
+  // Settings, and what they derive (data_apply_settings).
+  ArmSettings settings;
+  MuscleArrays muscles{};   // the elements' constants at settings' strength and maximum activation
+  // The stiffest CE mode at the rest posture with zero activation: its eigenvalue dvel/dlce (1/s, negative)
+  // and element. An explicit step h with h |rate| beyond the method's stability interval cannot hold the
+  // resting arm (integrate.cc refuses it).
+  double rest_fibre_rate = 0;
+  int rest_fibre_element = 0;
+  bool settings_applied = false;  // set by data_apply_settings: a Data without it has no muscles (all zero)
+
   // State.
   double time = 0;   // s
   StateVec x{};      // [q | qdot | lce | activation], offsets above
@@ -159,16 +116,21 @@ struct Data {
   double bad_time = 0;
 
   // Statistics.
-  TetStats tet;                          // wall time of whole control steps (Simulator::step)
+  TetStats tet;                          // wall time of whole control steps (step(), stepper.h)
   std::int64_t halved_steps = 0;         // ROS2 steps redone as two halves (Integrator::kRos2Adaptive)
-  std::int64_t limited_fibre_steps = 0;  // ROS2: element-steps whose CE mode was stiffened (rosenbrock.cc)
-
-  // Integrator workspace.
-  StateVec k1{}, k2{}, k3{}, k4{}, xtmp{};
-  StepJacobian jac;  // linearly implicit steps (rosenbrock.cc)
-  PathHistory path_history;  // ROS2's path extrapolation (rosenbrock.cc)
+  std::int64_t limited_fibre_steps = 0;  // ROS2: element-steps whose CE mode was stiffened (fibre_limiter.cc)
 };
 
-void data_reset(const Model& m, Data& d, const double* q /* num_dofs or nullptr: rest posture */);
+// A Data for m at its rest posture, with the model's own settings (intact strength, the model file's
+// maximum activation and gravity).
+void data_init(const Model& m, Data& d);
+// Derives d.muscles and the rest fibre rate from d.settings (after a change of strength or maximum activation;
+// gravity and the speed bound need nothing). Throws std::invalid_argument for a setting out of range.
+void data_apply_settings(const Model& m, Data& d);
+// One element's constants under d.settings (what d.muscles holds, as a struct): for scalar uses.
+ElementConstants data_element(const Model& m, const Data& d, int i);
+// Back to time 0 at q (num_dofs or nullptr: rest posture), at rest, zero activation, CE lengths in static
+// equilibrium; settings, inputs and statistics are kept, errors and outputs cleared.
+void data_reset(const Model& m, Data& d, const double* q);
 
 }  // namespace armrt

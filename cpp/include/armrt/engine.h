@@ -7,8 +7,12 @@
 //     girdle.cc          q -> tau_girdle (scapulothoracic contact, conoid ligament; das3)
 //     skeleton.cc        q, qd, tau -> M(q), qdd
 //     gh_reaction.cc     q, qd, qdd, forces, hand load -> GH force and stability
-//   integrate.cc     fixed-step Euler, RK4 and ROS2 (TET: Simulator::step, simulator.cc)
-//   rosenbrock.cc    the linearly implicit ROS2 step: structured Jacobian, Schur-complement solve
+//   stepper.cc       step(model, data, stepper, n): control steps, substeps, TET; error messages
+//   integrate.cc     one integration step: explicit Euler and RK4, ROS2 (ros2.cc); the state check
+//   ros2.cc          the linearly implicit ROS2 step: its two stages, the step-halving mode
+//   step_jacobian.cc the structured Jacobian's factorisation and Schur-complement solve
+//   fibre_limiter.cc ROS2's limit on a CE running through its operating point within a step
+//   path_history.cc  ROS2's path anchors and extrapolation
 //   cvode.cc         SUNDIALS CVODE (BDF), the accurate reference
 //   kinematics.cc    outputs derived from q: thorax-humerus angles
 #pragma once
@@ -18,6 +22,7 @@
 #include "armrt/data.h"
 #include "armrt/model.h"
 #include "armrt/muscle_kernel.h"
+#include "armrt/stepper.h"
 
 namespace armrt {
 
@@ -42,12 +47,13 @@ double muscle_equilibrium_lce(const ElementConstants& e, double fibre_damping, d
 void forward(const Model& m, Data& d, const double* x, double* xdot, bool record, StepJacobian* jac = nullptr);
 // forward() after its paths stage, with the muscle-tendon lengths L (m, num_elements) and moment arms R (m, by
 // DOF as ModelDef::muscle_paths writes them) at x's q given: for ROS2's second stage, whose paths are
-// extrapolated (rosenbrock.cc).
+// extrapolated (ros2.cc).
 void forward_from_paths(const Model& m, Data& d, const double* x, const double* L, const double* R, double* xdot,
                         bool record, StepJacobian* jac = nullptr);
 // muscles.cc. The muscle stage of forward(): activation dynamics and CE velocity of every element (a vectorised
-// loop), their tendon forces (N) and the generalised muscle forces tau = R^T F (N m).
-void muscle_dynamics(const Model& m, const double* excitation, const double* muscle_length,
+// loop) with the arm's constants mc (Data::muscles), their tendon forces (N) and the generalised muscle forces
+// tau = R^T F (N m). The excitation is capped at mc.max_activation here, the one place the cap is applied.
+void muscle_dynamics(const Model& m, const MuscleArrays& mc, const double* excitation, const double* muscle_length,
                      const double* moment_arm, const double* act, const double* lce, double* act_dot,
                      double* lce_dot, double* force, double* tau, StepJacobian* jac = nullptr);
 // Generalised forces tau = R^T F (N m) of n element forces F (N) with moment arms R (m) by DOF, as
@@ -74,8 +80,10 @@ void hand_position_in_thorax(const Model& m, const double* q, double* p_thorax);
 // with a fixed girdle); with a non-null stiffness also d tau/dq (n x n row-major, N m/rad), with a
 // non-null state the contact distances and forces and the conoid's length and tension.
 void girdle_forces(const Model& m, const double* q, double* tau, double* stiffness, GirdleState* state);
-// skeleton.cc. M(q) (n x n, row-major, kg m^2) and qdd (rad/s^2) from M qdd = tau + b(q, qd, g).
-void skeleton_dynamics(const Model& m, const double* q, const double* qd, const double* tau, double* M, double* qdd);
+// skeleton.cc. M(q) (n x n, row-major, kg m^2) and qdd (rad/s^2) from M qdd = tau + b(q, qd, g), gravity g
+// (m/s^2, base frame).
+void skeleton_dynamics(const Model& m, const double* gravity, const double* q, const double* qd, const double* tau,
+                       double* M, double* qdd);
 // Solves A x = b for a symmetric positive definite n x n A (row-major, n <= kMaxDofs), e.g. M(q) qdd = tau:
 // Cholesky below 8 DOFs, L D L^T (no square roots) from 8.
 void solve_spd(const double* A, const double* b, int n, double* x);
@@ -93,8 +101,8 @@ struct GHStability {
 };
 // gh_reaction.cc. Force of the humeral head on the glenoid (N, scapula frame, which moves with q when the
 // girdle does) from the tendon forces F, the hand load f_ext (base frame) and the arm's weight and
-// acceleration; its angles, GHstab and margin to the rim.
-void gh_reaction(const Model& m, const double* q, const double* qd, const double* qdd, const double* force,
+// acceleration under gravity (m/s^2, base frame); its angles, GHstab and margin to the rim.
+void gh_reaction(const Model& m, const double* gravity, const double* q, const double* qd, const double* qdd, const double* force,
                  const double* f_ext_base, double* gh_force, GHStability* stab);
 // GH stability of a force of the humeral head on the glenoid (scapula frame): the one definition of
 // theta, phi, GHstab (the paper's eq. (5)), the rim direction and the margin (docs/conventions.md).
@@ -104,45 +112,26 @@ GHStability gh_stability(const ModelDef& def, const double* force);
 void gh_rim(double theta, double phi, double theta_a, double phi_a, double* direction, double* margin);
 
 // ---- integrate.cc
-// Advances d by one step of dt with the fixed-step integrator; with record, the outputs of d describe
-// the state at the start of the step. Returns false (and sets d.status) if the state became
-// non-finite or a joint moved faster than m.max_joint_speed. (TET is measured by Simulator::step.)
-bool step(const Model& m, Data& d, Integrator integrator, double dt, bool record = true);
+// Whether d.x lies in the physical domain (model.h); sets d.status and returns false otherwise.
 bool check_state(const Model& m, Data& d);
-// Real stability interval [-limit, 0] of an explicit integrator (Euler 2, RK4 2.785; infinity otherwise).
-double explicit_stability_limit(Integrator integrator);
 const char* state_name(const Model& m, int index, char* buf, int buflen);
 
-// ---- rosenbrock.cc
-// Factors I - hg J for the structured Jacobian in jac (filled by forward(..., &jac)); hg = h gamma (s).
-void jacobian_factor(const Model& m, StepJacobian& jac, double hg);
-// Solves (I - hg J) k = r for state-sized vectors r and k (distinct arrays).
-void jacobian_solve(const Model& m, StepJacobian& jac, const double* r, double* k);
-// For every element whose CE would run through its operating point within a ROS2 step of h (s) (a
-// slack tendon engaging), stiffens d.jac's CE mode so that the step stops there (rosenbrock.cc). Call it
-// after forward(m, d, x, xdot, ..., &d.jac) at the same x: it reads what that evaluation left in d.jac.
-void limit_fibre_overshoot(const Model& m, Data& d, const double* x, const double* xdot, double h);
-// One ROS2 step of h (s) from d.x (no TET, no state check: step() adds both). When the step continues
-// d.path_history (data.h PathHistory) its second stage extrapolates the paths, and so do all but one step in
+// ---- ros2.cc
+// One ROS2 step of h (s) from d.x in s's workspace (no TET, no state check: integrate() adds it). When the step
+// continues s.ros2.path_history its second stage extrapolates the paths, and so do all but one step in
 // kRos2PathPeriod their first stage's; the others evaluate the polynomials.
-void step_ros2(const Model& m, Data& d, double h, bool record);
-// Whether the next ROS2 step of h from d.x continues d.path_history (the last step was of h and ended at d.x's
-// q and qdot).
-bool ros2_continues_history(const Model& m, const Data& d, double h);
-// Rebuilds d.path_history as the ROS2 steps of h (s) that reached d.x would have left it: num_anchors (0, 1 or 2)
-// exact path evaluations at anchor_q (num_anchors x num_dofs, rad, oldest first), anchor_spacing steps apart (1
-// or 2; 0 with one anchor), the newest steps_since_anchor steps (1 or 2) before d.x (PathHistory). The paths
-// at the anchors are evaluated again, the same function of the same q, so that a restored state continues
-// bit for bit; h <= 0 or num_anchors = 0 clears it. Throws std::invalid_argument for counts out of range.
-// Why (num_anchors, anchor_spacing, steps_since_anchor) is not a ROS2 history a run of steps leaves (the
-// counts ros2_restore_history accepts), or "" if it is one.
-std::string ros2_history_error(int num_anchors, int anchor_spacing, int steps_since_anchor);
-void ros2_restore_history(const Model& m, Data& d, const double* anchor_q, int num_anchors, int anchor_spacing,
-                          int steps_since_anchor, double h);
-// One ROS2 step of h, redone as two steps of h/2 when the embedded error estimate exceeds the
-// tolerances (kRos2AdaptiveTol*). Returns the number of steps taken (1 or 2). Not for hard real time:
-// a halved step costs about three normal ones.
-int step_ros2_adaptive(const Model& m, Data& d, double h, bool record);
+void step_ros2(const Model& m, Data& d, Ros2Workspace& w, double h, bool record);
+// One ROS2 step of h, redone as two steps of h/2 when the embedded error estimate exceeds the tolerances
+// (kRos2AdaptiveTol*). Returns the number of steps taken (1 or 2). Not for hard real time: a halved step
+// costs about three normal ones.
+int step_ros2_adaptive(const Model& m, Data& d, Ros2Workspace& w, double h, bool record);
+
+// ---- fibre_limiter.cc
+// For every element whose CE would run through its operating point within a ROS2 step of h (s) (a slack
+// tendon engaging), stiffens jac's CE mode so that the step stops there. Call it after
+// forward(m, d, x, xdot, ..., &jac) at the same x: it reads what that evaluation left in jac. Adds the
+// element-steps it changed to d.limited_fibre_steps.
+void limit_fibre_overshoot(const Model& m, Data& d, StepJacobian& jac, const double* x, const double* xdot, double h);
 
 // ---- kinematics.cc
 // Thorax-humerus angles (rad): plane of elevation, elevation, axial rotation (Y-Z-Y sequence in the

@@ -1,6 +1,7 @@
-// Model: the immutable description of one arm (like mjModel / pinocchio::Model). It is built once from
-// a generated ModelDef; per-element strength and maximum activation may be changed between runs
-// (weakness and paralysis), after which derived constants are recomputed by update_derived().
+// Model: the immutable description of one arm model (like mjModel / pinocchio::Model), built once per
+// generated ModelDef (shared_model() in registry.h) and shared by every arm of it. What may differ between
+// arms of one model (strength, maximum activation, gravity, the divergence bound) is in Data::settings
+// (data.h), with the muscle constants scaled by it.
 #pragma once
 
 #include <array>
@@ -41,18 +42,6 @@ inline constexpr double kMaxContactPenetration = 0.02;  // m
 inline constexpr double kFibreDamping = 10.0;      // N/(m/s), parallel to the contractile element
 inline constexpr double kLowActivation = 0.02;     // below it the damper adds the CE damping that is lost
 
-// Integrator choices: the paper's explicit Euler and RK4, CVODE (BDF) as the accuracy reference, and the
-// linearly implicit ROS2 (rosenbrock.cc), fixed-step or with one level of step halving (offline only).
-enum class Integrator { kEuler = 0, kRk4 = 1, kCvode = 2, kRos2 = 3, kRos2Adaptive = 4 };
-
-// Error tolerances of the ROS2 step-halving mode (rosenbrock.cc): joint angles (rad) and CE lengths
-// (x lceopt) of the embedded error estimate.
-inline constexpr double kRos2AdaptiveTolQ = 1e-5;
-inline constexpr double kRos2AdaptiveTolLce = 1e-3;
-// ROS2 evaluates the muscle-path polynomials at one step in kRos2PathPeriod of a run of equal steps and
-// extrapolates them in between and at every second stage (rosenbrock.cc, PathHistory in data.h).
-inline constexpr int kRos2PathPeriod = 3;
-
 struct ElementConstants {
   double fmax;          // N, after strength scaling
   double lceopt;        // m
@@ -73,31 +62,31 @@ struct ElementConstants {
   double max_activation;  // [0, 1]
   double strength_scale;  // multiplies DAS3 fmax (1 = intact)
 };
+// The constants of one element (DAS3 parameters p) at a strength scale (x fmax) and maximum activation.
+ElementConstants element_constants(const ElementParams& p, double strength_scale, double max_activation);
 
 // The same constants as structure-of-arrays, for the vectorised muscle loop in forward().
 struct MuscleArrays {
   std::array<double, kMaxElements> fmax, inv_lceopt, lslack, thickness, min_lce, vmax, k_see, k_pee,
       pee_slack, compress_length, k_compress, ecc_c, damping_slope, c1, c2, max_activation;
-  // Reciprocals for the ROS2 overshoot limiter's loop (rosenbrock.cc), where divisions dominated:
+  // Reciprocals for the ROS2 overshoot limiter's loop (fibre_limiter.cc), where divisions dominated:
   std::array<double, kMaxElements> inv_k_see;        // 1/k_see, m^2/N
   std::array<double, kMaxElements> inv_taut_stretch; // 1/m, 1 / (a tenth of the tendon's stretch at fmax)
   std::array<double, kMaxElements> max_lce;          // m, the physical domain's upper CE length (check_state)
 };
 
+// The bound on joint speed (rad/s) beyond which a simulation counts as diverged, unless an arm sets its own.
+inline constexpr double kDefaultMaxJointSpeed = 100.0;
+
 struct Model {
   const ModelDef* def = nullptr;
   int num_dofs = 0;       // generalised coordinates (<= kMaxDofs)
   int num_elements = 0;   // muscle elements (<= kMaxElements)
+  // The intact model's element constants (strength 1, the model file's maximum activation): what
+  // Data::settings scales per arm (data_apply_settings).
   std::array<ElementConstants, kMaxElements> element{};
-  MuscleArrays muscles{};  // derived from element[] by model_update_derived()
-  std::array<double, 3> gravity_base{};  // m/s^2, may be changed (e.g. a lying posture)
+  std::array<double, 3> gravity_base{};     // m/s^2, the model file's gravity (an arm may set its own)
   double fibre_damping = kFibreDamping;     // N/(m/s)
-  double max_joint_speed = 100.0;           // rad/s; faster means the simulation diverged
-  // The stiffest CE mode at the rest posture with zero activation (model_update_derived): its eigenvalue
-  // dvel/dlce (1/s, negative) and element. An explicit step h with h |rate| beyond the method's stability
-  // interval cannot hold the resting arm (integrate.cc refuses it).
-  double rest_fibre_rate = 0;
-  int rest_fibre_element = 0;
   // For each DOF, the elements [begin, end) that span those crossing it (by their dof_mask): the moment arms
   // about it are zero outside, so R^T F sums each row over that range only (das3: SC is crossed within
   // elements 0-100, GH within 36-102, the elbow within 82-137; muscles.cc generalised_force).
@@ -118,9 +107,7 @@ struct Model {
 };
 
 // Builds a Model from generated tables. Never allocates; throws std::invalid_argument if the model's
-// sizes exceed the capacities above.
+// sizes exceed the capacities above. Most code wants the one shared Model of a ModelDef (shared_model).
 void model_init(Model& m, const ModelDef& def);
-// Recomputes per-element constants after strength_scale or max_activation changed.
-void model_update_derived(Model& m);
 
 }  // namespace armrt

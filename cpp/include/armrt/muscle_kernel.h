@@ -39,7 +39,7 @@ inline double damping_floor(double damping_slope, double afl) {
 
 // Inputs: constants of one element, the fixed damper b0 (N s/m), muscle-tendon length L (m), CE
 // length lce (m), activation a. Outputs: tendon force (N), CE velocity (m/s, lengthening positive) and
-// their derivatives (used by the linearly implicit integrator's Jacobian, rosenbrock.cc).
+// their derivatives (used by the linearly implicit integrator's Jacobian, step_jacobian.h).
 //
 // The velocity solves F0 g(v) + b v = F (muscle.cc), so its derivatives follow from implicit
 // differentiation of that relation, not of the root formula:
@@ -52,7 +52,7 @@ inline double damping_floor(double damping_slope, double afl) {
 //     g' match).
 //
 // muscle_kernel_derivatives_along is the same at a CE length lce >= min_lce whose projection on the tendon,
-// lce_along = sqrt(lce^2 - thickness^2), the caller has already (rosenbrock.cc's operating point is built
+// lce_along = sqrt(lce^2 - thickness^2), the caller has already (fibre_limiter.cc's operating point is built
 // from it: one square root fewer per element).
 inline void muscle_kernel_derivatives_along(double fmax, double inv_lceopt, double lslack, double thickness,
                                             double vmax, double k_see, double k_pee, double pee_slack,

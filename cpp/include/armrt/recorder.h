@@ -26,7 +26,7 @@ struct Recording {
 // row when held. Every record_every-th step is recorded, and the final state too when
 // n_steps % record_every == 0. Stops early on divergence (s.data.status) or when stop(ctx) returns
 // true (checked after every step; e.g. Ctrl-C in Python). Returns the number of steps done.
-long simulate_recorded(Simulator& s, const double* u, bool held, long n_steps, long record_every, Recording& r,
+long simulate_recorded(Arm& s, const double* u, bool held, long n_steps, long record_every, Recording& r,
                        bool (*stop)(void*) = nullptr, void* ctx = nullptr);
 
 }  // namespace armrt

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "armrt/model.h"
 #include "armrt/model_def.h"
 
 namespace armrt {
@@ -27,9 +28,13 @@ std::vector<const ModelDef*> registered_models();
 void register_model(const ModelDef& def);
 // Loads a model library (dlopen), checks that it was compiled against this engine's ModelDef layout
 // (kModelDefAbiVersion) and that its sizes fit the engine, registers its model and returns it. The
-// library is never unloaded, so the ModelDef outlives every Simulator using it. Throws
+// library is never unloaded, so the ModelDef outlives every Arm using it. Throws
 // std::runtime_error naming the file and the problem.
 const ModelDef& load_model_library(const std::string& path);
+// The one immutable Model of def (model_init'ed on first use, then shared by every arm of def in this process,
+// never freed). Throws std::invalid_argument if the engine cannot take def. Not for the real-time path (takes
+// a lock): an arm keeps the reference it got.
+const Model& shared_model(const ModelDef& def);
 // Whether a ModelDef's sizes and tables are usable by this engine; the reason in *why otherwise.
 bool model_fits_engine(const ModelDef& def, std::string* why);
 

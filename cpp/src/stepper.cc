@@ -1,4 +1,6 @@
-#include "armrt/simulator.h"
+// stepper.cc: (model, data, stepper, n) -> data advanced by n control steps, with TET; the integrators' names
+// and defaults; what a failed step's status means, as a message.
+#include "armrt/stepper.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +10,8 @@
 #include <stdexcept>
 
 #include "armrt/clock.h"
+#include "armrt/cvode.h"
+#include "armrt/engine.h"
 
 namespace armrt {
 
@@ -53,67 +57,69 @@ bool is_fixed_cost(Integrator integrator) {
   return integrator != Integrator::kCvode && integrator != Integrator::kRos2Adaptive;
 }
 
-Simulator::Simulator(const ModelDef& def, Integrator integ, double step, int n_sub) : integrator(integ), dt(step) {
-  if (!(dt > 0)) throw std::invalid_argument("dt must be positive, got " + std::to_string(dt));
-  model_init(model, def);
-  data_reset(model, data, nullptr);
-  set_integrator(integ, step, n_sub);
+double explicit_stability_limit(Integrator integrator) {
+  // Real stability intervals [-limit, 0] of the stability functions: Euler 1 + z; RK4 the degree-4
+  // Taylor polynomial of exp(z) (|R(-2.785)| = 1).
+  switch (integrator) {
+    case Integrator::kEuler: return 2.0;
+    case Integrator::kRk4: return 2.785;
+    default: return std::numeric_limits<double>::infinity();
+  }
 }
 
-void Simulator::set_integrator(Integrator integ, double step, int n_sub) {
-  if (!(step > 0)) throw std::invalid_argument("dt must be positive, got " + std::to_string(step));
-  if (n_sub < 1) throw std::invalid_argument("substeps must be >= 1, got " + std::to_string(n_sub));
-  integrator = integ;
-  dt = step;
-  substeps = n_sub;
-  if (integrator == Integrator::kCvode) cvode_ = std::make_unique<CvodeIntegrator>(model, data);
-  else cvode_.reset();
+Stepper::Stepper() = default;
+Stepper::~Stepper() = default;
+Stepper::Stepper(Stepper&&) noexcept = default;
+Stepper& Stepper::operator=(Stepper&&) noexcept = default;
+
+void stepper_init(const Model& m, Data& d, Stepper& s, Integrator integrator, double dt, int substeps) {
+  if (!(dt > 0) || !(dt <= kMaxControlStep))
+    throw std::invalid_argument("dt (the control step) must lie in (0, " + std::to_string(kMaxControlStep) +
+                                "] s, got " + std::to_string(dt));
+  if (substeps < 1 || substeps > kMaxSubsteps)
+    throw std::invalid_argument("substeps must lie in [1, " + std::to_string(kMaxSubsteps) + "], got " +
+                                std::to_string(substeps));
+  s.integrator = integrator;
+  s.dt = dt;
+  s.substeps = substeps;
+  s.ros2.path_history = PathHistory{};
+  if (integrator == Integrator::kCvode) s.cvode = std::make_unique<CvodeIntegrator>(m, d);
+  else s.cvode.reset();
 }
 
-void Simulator::reset(const double* q, const double* qd, const double* activation) {
-  const auto excitation = data.excitation;
-  const auto hand_force = data.hand_force;
-  const auto hand_moment = data.hand_moment;
-  data_reset(model, data, q);
-  data.excitation = excitation;
-  data.hand_force = hand_force;
-  data.hand_moment = hand_moment;
-  if (qd) for (int j = 0; j < model.num_dofs; ++j) data.x[qd_offset(model) + j] = qd[j];
-  if (activation) {
-    double L[kMaxElements];
-    model.def->muscle_lengths(&data.x[q_offset(model)], L);
-    const int ia = act_offset(model), il = lce_offset(model);
-    for (int i = 0; i < model.num_elements; ++i) {
-      data.x[ia + i] = activation[i];
-      data.x[il + i] = muscle_equilibrium_lce(model.element[i], model.fibre_damping, L[i], activation[i]);
+void stepper_restart(const Model&, Data&, Stepper& s) {
+  s.ros2.path_history = PathHistory{};
+  if (s.cvode) s.cvode->reinit();
+}
+
+bool step(const Model& m, Data& d, Stepper& s, long n, bool record) {
+  for (long c = 0; c < n; ++c) {
+    if (d.status != Status::kOk) return false;
+    // The one place TET is measured: the wall time of the whole control step, whatever the integrator
+    // and however many substeps (the real-time runner reads data.tet.last_ns).
+    const std::int64_t t0 = now_ns();
+    bool ok = true;
+    if (s.cvode) {
+      ok = s.cvode->advance(s.dt);
+    } else if (s.substeps == 1) {
+      ok = integrate(m, d, s, s.dt, record);
+    } else {
+      const double h = s.dt / s.substeps;
+      const double t_start = d.time;
+      for (int k = 0; k < s.substeps && ok; ++k) ok = integrate(m, d, s, h, record && k == 0);
+      if (ok) d.time = t_start + s.dt;  // no drift from adding dt / substeps repeatedly
     }
+    d.tet.add(static_cast<double>(now_ns() - t0));
+    if (!ok) return false;
   }
-  if (cvode_) cvode_->reinit();
+  return d.status == Status::kOk;
 }
 
-bool Simulator::step(bool record) {
-  if (data.status != Status::kOk) return false;
-  // The one place TET is measured: the wall time of the whole control step, whatever the integrator
-  // and however many substeps (the real-time runner reads data.tet.last_ns).
-  const std::int64_t t0 = now_ns();
-  bool ok = true;
-  if (cvode_) {
-    ok = cvode_->advance(dt);
-  } else if (substeps == 1) {
-    ok = armrt::step(model, data, integrator, dt, record);
-  } else {
-    const double h = dt / substeps;
-    const double t_start = data.time;
-    for (int k = 0; k < substeps && ok; ++k) ok = armrt::step(model, data, integrator, h, record && k == 0);
-    if (ok) data.time = t_start + dt;  // no drift from adding dt / substeps repeatedly
-  }
-  data.tet.add(static_cast<double>(now_ns() - t0));
-  return ok;
-}
+void evaluate_outputs(const Model& m, Data& d, Stepper& s) { forward(m, d, d.x.data(), s.scratch.data(), true); }
 
-void Simulator::evaluate_outputs() { forward(model, data, data.x.data(), data.k1.data(), true); }
+namespace {
 
-std::string Simulator::domain_error_message() const {
+std::string domain_error_message(const Model& model, const Data& data, const Stepper& s) {
   char name[96];
   char what[192];
   const int k = data.bad_index, n = model.num_elements, ia = act_offset(model), il = lce_offset(model);
@@ -129,9 +135,9 @@ std::string Simulator::domain_error_message() const {
       std::snprintf(what, sizeof what, "%s = %.4g rad is more than %.2g rad beyond its range [%.4g, %.4g] rad", name,
                     value, kJointRangeMargin, dof.range_min, dof.range_max);
     } else if (k >= il && k < il + n) {
-      const ElementConstants& e = model.element[k - il];
+      const double min_lce = data.muscles.min_lce[k - il], max_lce = data.muscles.max_lce[k - il];
       std::snprintf(what, sizeof what, "fibre length %s = %.4g m is outside its physical range [%.4g, %.4g] m", name,
-                    value, e.min_lce, e.max_lce);
+                    value, min_lce, max_lce);
     } else if (k >= ia) {
       std::snprintf(what, sizeof what, "%s = %.6g is outside [0, 1]", name, value);
     } else {
@@ -142,11 +148,13 @@ std::string Simulator::domain_error_message() const {
   std::snprintf(buf, sizeof buf,
                 "simulation left the physical domain: %s at t = %.6f s (a step too large for integrator '%s', "
                 "or inputs beyond the model)",
-                what, data.bad_time, integrator_name(integrator));
+                what, data.bad_time, integrator_name(s.integrator));
   return buf;
 }
 
-std::string Simulator::error_message() const {
+}  // namespace
+
+std::string step_error_message(const Model& model, const Data& data, const Stepper& s) {
   char name[96];
   char buf[512];  // the explicit-step refusal below runs to about 330 characters
   switch (data.status) {
@@ -159,34 +167,34 @@ std::string Simulator::error_message() const {
       std::snprintf(buf, sizeof buf,
                     "simulation diverged: %s = %.4g rad/s exceeds the bound %.4g rad/s at t = %.6f s",
                     state_name(model, data.bad_index, name, sizeof name), data.x[data.bad_index],
-                    model.max_joint_speed, data.bad_time);
+                    data.settings.max_joint_speed, data.bad_time);
       return buf;
     case Status::kCvodeFailed:
       std::snprintf(buf, sizeof buf, "CVODE failed to advance at t = %.6f s", data.bad_time);
       return buf;
     case Status::kOutOfDomain:
-      return domain_error_message();
+      return domain_error_message(model, data, s);
     case Status::kUnstableStep: {
-      const double rate = model.rest_fibre_rate, h = dt / substeps;
-      const double h_max = explicit_stability_limit(integrator) / std::fabs(rate);
+      const double rate = data.rest_fibre_rate, h = s.dt / s.substeps;
+      const double h_max = explicit_stability_limit(s.integrator) / std::fabs(rate);
       // The substeps that hold this fibre: the validated default where that is enough (das2), else the
       // count that brings the step under h_max, which other stiff modes may still not allow (das3's girdle).
-      const int needed = static_cast<int>(std::ceil(dt / h_max));
-      const int validated = default_substeps(integrator, dt);
+      const int needed = static_cast<int>(std::ceil(s.dt / h_max));
+      const int validated = default_substeps(s.integrator, s.dt);
       if (needed <= validated)
         std::snprintf(buf, sizeof buf,
                       "step too large for integrator '%s': a %.3g ms step is unstable even for the resting arm "
                       "(the fibre of %s has eigenvalue %.3g 1/s at rest, stable for steps <= %.3g ms); use "
                       "integrator 'ros2', or substeps=%d (the validated %.3g ms step)",
-                      integrator_name(integrator), 1e3 * h, model.def->elements[model.rest_fibre_element].name,
-                      rate, 1e3 * h_max, validated, 1e3 * default_max_step(integrator));
+                      integrator_name(s.integrator), 1e3 * h, model.def->elements[data.rest_fibre_element].name,
+                      rate, 1e3 * h_max, validated, 1e3 * default_max_step(s.integrator));
       else
         std::snprintf(buf, sizeof buf,
                       "step too large for integrator '%s': a %.3g ms step is unstable even for the resting arm "
                       "(the fibre of %s has eigenvalue %.3g 1/s at rest, stable for steps <= %.3g ms); use "
                       "integrator 'ros2' or 'cvode': this model needs at least substeps=%d for that fibre alone "
                       "and was not validated with explicit steps",
-                      integrator_name(integrator), 1e3 * h, model.def->elements[model.rest_fibre_element].name,
+                      integrator_name(s.integrator), 1e3 * h, model.def->elements[data.rest_fibre_element].name,
                       rate, 1e3 * h_max, needed);
       return buf;
     }

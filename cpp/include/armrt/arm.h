@@ -1,0 +1,41 @@
+// One simulated arm: the shared Model of its ModelDef, the arm's Data and its Stepper (Python's armrt.Arm
+// holds the same three, plus its input checks). What the bindings, the batch and the real-time runner drive.
+#pragma once
+
+#include <string>
+
+#include "armrt/data.h"
+#include "armrt/model.h"
+#include "armrt/registry.h"
+#include "armrt/stepper.h"
+
+namespace armrt {
+
+class Arm {
+ public:
+  // An arm of def at its rest posture, with def's own settings; throws std::invalid_argument for a bad dt or
+  // substeps (stepper_init).
+  Arm(const ModelDef& def, Integrator integrator, double dt, int substeps = 1);
+  Arm(Arm&&) noexcept = default;  // (a CVODE stepper is bound to this Data: move an Arm only before stepping it)
+
+  // Joint angles (num_dofs, rad; nullptr: rest posture), velocities (nullptr: zero) and activations
+  // (nullptr: zero); contractile elements start in static equilibrium at those activations. Settings and
+  // inputs are kept; the integrator's memory is forgotten.
+  void reset(const double* q, const double* qdot, const double* activation);
+  // One control step (step(model, data, stepper, 1, record), stepper.h).
+  bool step(bool record = true) { return armrt::step(model, data, stepper, 1, record); }
+  // Outputs (forces, GH stability, ...) at the current state, without advancing.
+  void evaluate_outputs() { armrt::evaluate_outputs(model, data, stepper); }
+  // After a change of data.settings' strength or maximum activation (data_apply_settings).
+  void apply_settings() { data_apply_settings(model, data); }
+  std::string error_message() const { return step_error_message(model, data, stepper); }
+  void set_integrator(Integrator integrator, double dt, int substeps = 1) {
+    stepper_init(model, data, stepper, integrator, dt, substeps);
+  }
+
+  const Model& model;  // shared_model(def): one per ModelDef, never changed
+  Data data;
+  Stepper stepper;
+};
+
+}  // namespace armrt
