@@ -17,6 +17,8 @@ from dataclasses import InitVar, dataclass, fields
 import numpy as np
 
 from . import _core
+from .integrators import DEFAULT_INTEGRATOR
+from .model import Model
 
 
 @dataclass(frozen=True, eq=False)
@@ -122,8 +124,6 @@ class Data:
     (Arm.data), with the workspace of its integrator."""
 
     def __init__(self, model="das2"):
-        from .arm import DEFAULT_INTEGRATOR
-        from .model import Model
         model = Model(model)
         self._attach(model, _core.Simulator(model._def, DEFAULT_INTEGRATOR, 1e-3,
                                             _core.default_substeps(DEFAULT_INTEGRATOR, 1e-3)))

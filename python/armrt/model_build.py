@@ -155,7 +155,7 @@ def _generator_hash(gen_root: Path, module: str) -> str:
 
 
 def cache_key(source_hash: str, cfg: dict, compiler: list[str], gen: tuple[str, Path]) -> str:
-    from . import __version__
+    from ._version import __version__
     parts = {"model": source_hash, "abi": cfg["abi_version"], "armrt": __version__, "cxx": compiler,
              "cxx_id": cfg.get("cxx_id", ""), "flags": cfg["flags"], "dynamics_flags": cfg["dynamics_flags"],
              "generator": _generator_hash(gen[1], gen[0])}
