@@ -32,6 +32,10 @@ HERE = Path(__file__).resolve().parent
 # Checkout layout (PYTHONPATH=python or pytest from the repository root): python/armrt/../../{cpp,codegen}.
 REPO = HERE.parents[1]
 LIBRARY_NAME = "libarmrt_model.so"
+# SHA-256 of the library, written beside it when it is built and checked before every dlopen: a
+# truncated or damaged .so (a full disk, an interrupted copy, bit rot) kills the process in dlopen
+# with SIGBUS or SIGSEGV, before any message could be printed.
+CHECKSUM_NAME = LIBRARY_NAME + ".sha256"
 
 
 class ModelBuildError(RuntimeError):
@@ -173,16 +177,54 @@ def cache_entry(source_hash: str, cfg: dict | None = None, gen: tuple[str, Path]
     return cache_dir() / "models" / cache_key(source_hash, cfg, configured, gen)[:24]
 
 
+def _file_sha256(path: Path) -> str:
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+def library_problem(library: Path) -> str | None:
+    """Why the cached library must not be dlopened (None: its SHA-256 matches the checksum written
+    when it was built)."""
+    checksum = library.parent / CHECKSUM_NAME
+    try:
+        expected = checksum.read_text().split()[0]
+    except (OSError, IndexError):
+        return f"{library} has no checksum ({checksum}: built by an older armrt, or its build was interrupted)"
+    try:
+        actual = _file_sha256(library)
+    except OSError as exc:
+        return f"{library} cannot be read: {exc}"
+    if actual != expected:
+        return f"{library} does not match its checksum (sha256 {actual[:12]}..., built as {expected[:12]}...): damaged"
+    return None
+
+
+def library_intact(library: Path) -> bool:
+    """True if the library's SHA-256 matches the checksum written when it was built."""
+    return library_problem(library) is None
+
+
 def cached_library(name: str, source_hash: str) -> Path | None:
     """The library already built for the model file of that name and SHA-256 with this configuration,
-    or None. Used to reopen a result's model without its file; builds nothing."""
+    or None. Used to reopen a result's model without its file; builds nothing. ModelBuildError if the
+    library is there but fails its checksum: without the model file it cannot be rebuilt here."""
     entry = cache_entry(source_hash)
     try:
         meta = json.loads((entry / "model.json").read_text())
     except (OSError, ValueError):
         return None
     ok = meta.get("name") == name and meta.get("source_hash") == source_hash
-    return entry / LIBRARY_NAME if ok and (entry / LIBRARY_NAME).is_file() else None
+    library = entry / LIBRARY_NAME
+    if not (ok and library.is_file()):
+        return None
+    problem = library_problem(library)
+    if problem:
+        raise ModelBuildError(f"the cached library of model {name!r} is not loaded: {problem}. Load its model file "
+                              f"with armrt.Model.load({meta.get('model_file', 'FILE.json')!r}), which rebuilds it")
+    return library
 
 
 # ------------------------------------------------------------------------------------ validation
@@ -267,8 +309,17 @@ def build(path, force: bool = False, jobs: int | None = None) -> BuildResult:
     entry = cache_entry(source_hash, cfg, gen)
     library, meta_path, log_path = entry / LIBRARY_NAME, entry / "model.json", entry / "build.log"
 
+    warned: list[str] = []
+
     def cached() -> BuildResult | None:
         if force or not library.is_file() or not meta_path.is_file():
+            return None
+        problem = library_problem(library)
+        if problem:
+            if not warned:  # once, though cached() is asked again under the lock
+                warned.append(problem)
+                import warnings
+                warnings.warn(f"{problem}; rebuilding it", RuntimeWarning, stacklevel=3)
             return None
         meta = json.loads(meta_path.read_text())
         return BuildResult(library, meta["name"], source_hash, path, time.perf_counter() - t0, True, log_path)
@@ -317,6 +368,9 @@ def build(path, force: bool = False, jobs: int | None = None) -> BuildResult:
             out = work / LIBRARY_NAME
             if _run([*compiler, *flags, "-shared", "-o", out, *[obj for obj, _, _ in results]], log) != 0:
                 raise ModelBuildError(f"linking model {model['name']!r} failed; build log: {log_path}", log_path)
+            # The checksum first: a crash before the library is in place leaves a mismatch (a rebuild),
+            # never a library without its checksum.
+            (entry / CHECKSUM_NAME).write_text(f"{_file_sha256(out)}  {LIBRARY_NAME}\n")
             os.replace(out, library)
             meta = {"name": model["name"], "model_file": str(path.resolve()), "source_hash": source_hash,
                     "built": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()), "compiler": compiler,
