@@ -8,14 +8,14 @@ from .arm import Arm
 from .batch import ArmBatch
 from .checks import deg, rad
 from .data import Data, State
-from .errors import SimulationError, StepSizeWarning
+from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
 from .model import Model, models
 from .model_build import CompilerNotFoundError, ModelBuildError, ModelFileError
 from .result import Result
 from .sweeps import sweep
 
-__all__ = ["Arm", "Result", "SimulationError", "StepSizeWarning", "deg", "rad", "ArmBatch", "sweep", "Model",
-           "Data", "State", "models", "ModelFileError", "ModelBuildError", "CompilerNotFoundError",
+__all__ = ["Arm", "Result", "SimulationError", "StepSizeWarning", "ConcurrentUseError", "deg", "rad", "ArmBatch",
+           "sweep", "Model", "Data", "State", "models", "ModelFileError", "ModelBuildError", "CompilerNotFoundError",
            "RealtimeSession", "UdpClient"]
 try:  # the packet layout comes from armrt._rt: without that extension the rest of armrt still works
     from .realtime import RealtimeSession, UdpClient

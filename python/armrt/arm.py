@@ -8,9 +8,7 @@ and result (Result).
 from __future__ import annotations
 
 import copy
-import threading
 import warnings
-from contextlib import contextmanager
 from typing import Mapping
 
 import numpy as np
@@ -86,8 +84,9 @@ class Arm:
         self.model = Model(model)  # a name, a model file (built on demand) or a Model
         self._sim = _core.Simulator(self.model._def, integrator, dt, substeps)
         self.data = Data._wrap(self.model, self._sim)
-        # One thread at a time: the engine's Data is a single workspace (see _exclusive).
-        self._lock = threading.RLock()
+        # One thread at a time: the engine's Data is a single workspace, so the Arm and its Data share
+        # one guard (Data._exclusive): arm.data.outputs() from a second thread is refused like arm.outputs().
+        self._lock = self.data._lock
         info = self.model.info
         self.model_name = info["name"]
         self.info = info
@@ -108,19 +107,10 @@ class Arm:
         # What Arm itself sets; anything else on an arm is the user's, carried by copies and pickles.
         self._base_attributes = frozenset(self.__dict__) | {"_base_attributes"}
 
-    @contextmanager
     def _exclusive(self):
-        """Held while a call steps or changes the simulation. A second thread arriving meanwhile gets
-        ConcurrentUseError instead of interleaving with the first (both would write the same
-        state and workspace: silently wrong results). Re-entrant for callbacks on the same thread."""
-        if not self._lock.acquire(blocking=False):
-            raise ConcurrentUseError(
-                "this Arm is being used by another thread; an Arm is not thread-safe: give each thread its "
-                "own Arm, or serialise the calls with a lock")
-        try:
-            yield
-        finally:
-            self._lock.release()
+        """Held while a call steps or changes the simulation: its Data's guard (Data._exclusive), so a
+        second thread gets ConcurrentUseError whether it comes through the Arm or through arm.data."""
+        return self.data._exclusive()
 
     # ------------------------------------------------------------------ names
     def indices(self, name: str) -> list[int]:
