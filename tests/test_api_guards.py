@@ -78,3 +78,73 @@ def test_data_on_the_stepping_thread_is_not_refused():
         return 0.1
     arm.simulate(excitation, 0.005)
     assert len(seen) == 5
+
+
+# ------------------------------------------------------------------------------------ B4: bounds
+def test_control_step_is_bounded():
+    """dt is the period the excitation is held for: above MAX_DT (1 s, 25 deactivation time constants)
+    nothing is being controlled, and Arm(dt=1e6) meant 999 999 000 substeps per step()."""
+    with pytest.raises(ValueError, match=r"dt must be .*at most 1 s.*got 1e\+06"):
+        armrt.Arm(dt=1e6)
+    with pytest.raises(ValueError, match=r"dt must be .*at most 1 s"):
+        armrt.ArmBatch(2, dt=2.0, threads=1)
+    for dt in (0.0, -1e-3, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="dt must be"):
+            armrt.Arm(dt=dt)
+    assert armrt.Arm(integrator="euler", dt=1.0).substeps == 10000  # the bound itself, default substeps
+
+
+def test_substep_count_is_bounded():
+    from armrt.integrators import MAX_SUBSTEPS
+    with pytest.raises(ValueError, match=rf"substeps must be at most {MAX_SUBSTEPS}.*got 1000000000"):
+        armrt.Arm(dt=1e-3, substeps=10**9)
+    assert armrt.Arm(integrator="rk4", dt=1e-3, substeps=MAX_SUBSTEPS).substeps == MAX_SUBSTEPS
+
+
+def test_set_state_checks_q_as_reset_does():
+    """A State whose q is far beyond the joint ranges is refused by set_state (Arm and Data alike) with
+    reset's message, degrees hint included; a State slightly beyond them (where a simulation can end:
+    the passive limits are springs) is restored without a warning."""
+    arm = armrt.Arm()
+    s = arm.get_state()
+    far = dataclasses.replace(s, q=s.q + 100.0)
+    with pytest.raises(ValueError, match="q beyond the joint limits: GHy = 100.4 rad"):
+        arm.set_state(far)
+    with pytest.raises(ValueError, match="q beyond the joint limits"):
+        arm.data.set_state(far)
+    with pytest.raises(ValueError, match="These look like degrees"):
+        arm.set_state(dataclasses.replace(s, q=np.degrees(s.q)))
+    assert arm.get_state() == s, "nothing was written"
+    hi = arm.dof_ranges[:, 1]
+    near = dataclasses.replace(s, q=np.where(np.arange(arm.n_dofs) == 3, hi + 0.05, s.q))
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        arm.set_state(near)
+    assert arm.q[3] == hi[3] + 0.05
+
+
+MASKED = np.ma.masked_array([0.1, 0.2, 0.3, 0.4, 0.5], mask=[0, 0, 1, 0, 0])
+
+
+@pytest.mark.parametrize("call", [
+    lambda arm: arm.reset(q=MASKED),
+    lambda arm: arm.reset(qdot=MASKED),
+    lambda arm: arm.set_hand_load(force=MASKED[:3]),
+    lambda arm: arm.set_excitation(np.ma.masked_array(np.full(102, 0.2), mask=np.arange(102) == 7)),
+    lambda arm: arm.set_excitation({"bicb": np.ma.masked}),
+    lambda arm: arm.reset(q=[np.ma.masked_array([0.1, 0.2], mask=[0, 1]), np.zeros(3)]),
+    lambda arm: arm.model.moment_arms(MASKED),
+    lambda arm: arm.simulate(0.0, np.ma.masked_array(0.01, mask=True)),
+], ids=["q", "qdot", "hand_force", "excitation", "dict_value", "nested", "model_q", "duration"])
+def test_masked_arrays_are_refused(call):
+    """np.asarray drops a mask and uses the values under it: refused in the one input check (real_array)."""
+    arm = armrt.Arm()
+    with pytest.raises(ValueError, match="masked array with 1 masked value.*filled"):
+        call(arm)
+
+
+def test_an_array_with_nothing_masked_is_accepted():
+    arm = armrt.Arm()
+    arm.reset(q=np.ma.masked_array(arm.rest_posture, mask=False))
+    assert np.array_equal(arm.q, arm.rest_posture)

@@ -14,11 +14,11 @@ from typing import Mapping
 import numpy as np
 
 from . import _core
-from .checks import MAX_COUNT, count, deg, known_model, rad, real_array, real_scalar
+from .checks import MAX_COUNT, RANGE_MARGIN, count, deg, joint_range, known_model, rad, real_array, real_scalar
 from .data import Data
 from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
 from .errors import simulation_error as _simulation_error
-from .integrators import DEFAULT_INTEGRATOR, DEFAULT_MAX_STEP, INTEGRATORS
+from .integrators import DEFAULT_INTEGRATOR, DEFAULT_MAX_STEP, INTEGRATORS, MAX_DT, MAX_SUBSTEPS, control_step
 from .model import Model
 from .profile import profile_values
 from .progress import bar as progress_bar
@@ -26,11 +26,9 @@ from .result import Result, _recorded_rows, _row_bytes
 from .result import _rim_of_recorded_angles  # noqa: F401 (armrt.arm._rim_of_recorded_angles, as before)
 
 __all__ = ["Arm", "Result", "SimulationError", "StepSizeWarning", "ConcurrentUseError", "INTEGRATORS",
-           "DEFAULT_INTEGRATOR", "DEFAULT_MAX_STEP", "MAX_COUNT", "RANGE_MARGIN", "RESULT_MEMORY_LIMIT",
+           "DEFAULT_INTEGRATOR", "DEFAULT_MAX_STEP", "MAX_DT", "MAX_SUBSTEPS", "MAX_COUNT", "RANGE_MARGIN", "RESULT_MEMORY_LIMIT",
            "real_array", "real_scalar", "count", "deg", "rad", "known_model"]
 
-# reset(q=...) refuses a joint further than this (rad, ~11 deg) beyond its range and warns inside it.
-RANGE_MARGIN = 0.2
 # simulate() refuses a Result above this (bytes) unless max_bytes says otherwise.
 RESULT_MEMORY_LIMIT = 2 * 1024**3
 # Steps per C++ call in simulate(): bounds the excitation block a callable fills.
@@ -60,27 +58,10 @@ class Arm:
         low activation. "ros2_adaptive" redoes a step as two halves when its error estimate is too
         large: for offline runs at dt = 2 ms, not for hard real time.
 
-        Raises ValueError for an unknown integrator, a non-positive or non-finite dt, or substeps
-        below 1; TypeError for a dt or substeps that is not a real number / an integer."""
-        if integrator not in INTEGRATORS:
-            raise ValueError(f"unknown integrator {integrator!r}; expected one of {INTEGRATORS}")
-        dt = real_scalar(dt, "dt")
-        if not (np.isfinite(dt) and dt > 0):
-            raise ValueError(f"dt must be a positive number of seconds, got {dt}")
-        if substeps is None:
-            substeps = _core.default_substeps(integrator, dt)
-        if isinstance(substeps, (float, np.floating)) and float(substeps).is_integer():
-            substeps = int(substeps)
-        substeps = count(substeps, "substeps", minimum=1)
-        if substeps > 2**31 - 1:
-            raise OverflowError(f"substeps = {substeps} is too large (at most 2**31 - 1)")
-        step = dt / substeps
-        if step > DEFAULT_MAX_STEP[integrator] * (1 + 1e-6):
-            # Not an error (a user may study it), but nothing in docs/engine.md vouches for it: a
-            # 2 ms ROS2 step was measured 5.6 deg off CVODE, one explicit step of 1 ms diverges.
-            warnings.warn(StepSizeWarning(f"integration step {step * 1e3:g} ms is above the {DEFAULT_MAX_STEP[integrator] * 1e3:g} ms "
-                          f"validated for {integrator!r} against CVODE (docs/engine.md); expect errors of degrees or "
-                          f"divergence; leave substeps=None for the validated step"), stacklevel=2)
+        Raises ValueError for an unknown integrator, a dt outside (0, 1] s (integrators.MAX_DT: the
+        excitation is held for a whole control step), or substeps outside [1, 100 000]
+        (integrators.MAX_SUBSTEPS); TypeError for a dt or substeps that is not a real number / an integer."""
+        dt, substeps = control_step(integrator, dt, substeps)
         self.model = Model(model)  # a name, a model file (built on demand) or a Model
         self._sim = _core.Simulator(self.model._def, integrator, dt, substeps)
         self.data = Data._wrap(self.model, self._sim)
@@ -335,24 +316,9 @@ class Arm:
         return q
 
     def _check_range(self, q: np.ndarray) -> np.ndarray:
-        """q itself; ValueError if a joint is more than RANGE_MARGIN rad beyond its range (with a hint
-        when the values look like degrees), RuntimeWarning if beyond it by less (the passive joint
-        limits are springs, so a simulated state can end slightly outside)."""
-        lo, hi = self.dof_ranges[:, 0], self.dof_ranges[:, 1]
-        outside = (q < lo) | (q > hi)
-        if not outside.any():
-            return q
-        desc = "; ".join(f"{self.dof_names[j]} = {q[j]:.4g} rad ({np.degrees(q[j]):.1f} deg) outside "
-                         f"[{np.degrees(lo[j]):.1f}, {np.degrees(hi[j]):.1f}] deg" for j in np.flatnonzero(outside))
-        far = (q < lo - RANGE_MARGIN) | (q > hi + RANGE_MARGIN)
-        if far.any():
-            r = np.radians(q)
-            hint = (" These look like degrees: q is in radians (np.radians(q) or armrt.rad(q); "
-                    "armrt simulate --q-deg on the command line)."
-                    if np.all((r >= lo - RANGE_MARGIN) & (r <= hi + RANGE_MARGIN)) else "")
-            raise ValueError(f"q beyond the joint limits: {desc}.{hint}")
-        warnings.warn(f"q slightly beyond the joint limits: {desc}", RuntimeWarning, stacklevel=3)
-        return q
+        """q itself; reset's range check (checks.joint_range: ValueError more than RANGE_MARGIN rad
+        beyond a joint's range, with a degrees hint; RuntimeWarning beyond it by less)."""
+        return joint_range(q, self.dof_names, self.dof_ranges)
 
     def _dof_vector(self, v, what: str) -> np.ndarray:
         if isinstance(v, Mapping):
@@ -378,8 +344,9 @@ class Arm:
             return self.data.get_state()
 
     def set_state(self, state) -> None:
-        """Restores an armrt.State from get_state() of an arm of the same model (ValueError otherwise, or
-        for path anchors farther from q than max_joint_speed allows). ROS2's memory is rebuilt from
+        """Restores an armrt.State from get_state() of an arm of the same model (ValueError otherwise, for
+        a q more than RANGE_MARGIN beyond the joint ranges, as reset(q=...) refuses it, or for path
+        anchors farther from q than max_joint_speed allows). ROS2's memory is rebuilt from
         path_anchors; a State without it makes the next step evaluate the paths afresh.
         The excitation is capped at this arm's max_activation; a divergence error is cleared. Strength,
         max_activation, gravity and the integrator are the arm's own, not part of the State."""

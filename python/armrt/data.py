@@ -19,6 +19,7 @@ from dataclasses import InitVar, dataclass, fields
 import numpy as np
 
 from . import _core
+from .checks import joint_range
 from .errors import ConcurrentUseError
 from .integrators import DEFAULT_INTEGRATOR
 from .model import Model
@@ -252,8 +253,8 @@ class Data:
                          path_anchor_steps=(spacing, since), previous_step=h)
 
     def set_state(self, state: State) -> None:
-        """Restores a State taken from an arm of the same model (ValueError otherwise, or for arrays of
-        the wrong shape or with NaN). Clears a divergence error; restarts CVODE's history."""
+        """Restores a State taken from an arm of the same model (ValueError otherwise, for arrays of
+        the wrong shape or with NaN, or a q more than checks.RANGE_MARGIN beyond the joint ranges). Clears a divergence error; restarts CVODE's history."""
         if not isinstance(state, State):
             raise TypeError(f"set_state takes an armrt.State (from get_state()), got {type(state).__name__}")
         if state.source_hash != self.model.source_hash:
@@ -268,6 +269,8 @@ class Data:
                 raise ValueError(f"State.{k} must have shape {shape}, got {a.shape}")
             if not np.all(np.isfinite(a)):
                 raise ValueError(f"State.{k} contains NaN or infinite values")
+        # As reset(q=...) checks q, without its warning for slightly beyond: a simulated state can end there.
+        joint_range(state.q, self.model.dof_names, self.model.dof_ranges, warn=False)
         if not np.isfinite(state.time):
             raise ValueError(f"State.time must be finite, got {state.time}")
         if not (np.isfinite(state.previous_step) and state.previous_step >= 0):
