@@ -54,22 +54,6 @@ def _register_elsewhere(library: Path) -> None:
             ext.load_model_library(str(library))
 
 
-def _refuse_name_clash(path: Path) -> None:
-    """ValueError before any build if a different model of the file's name is registered (names
-    identify models in results, the real-time runner and the viewer). A file that cannot be read or
-    parsed is left to build() to report."""
-    import hashlib
-    try:
-        data = path.read_bytes()
-        name = json.loads(data).get("name")
-    except (OSError, ValueError, AttributeError, RecursionError):
-        return
-    known = _core.find_model(name) if isinstance(name, str) else None
-    if known is not None and known.source_hash != hashlib.sha256(data).hexdigest():
-        raise ValueError(f"{path}: a different model named {name!r} is already registered (model file sha256 "
-                         f"{known.source_hash[:12]}...): give this model file another 'name'")
-
-
 class Model:
     """An arm model: names, sizes, ranges, parameters, groups and provenance (all read-only), and its
     geometry and dynamics at any pose. Immutable: weakness and paralysis are per arm (Arm.strength,
@@ -116,8 +100,7 @@ class Model:
 
         Raises FileNotFoundError, armrt.ModelFileError (the field and element that fail validation),
         armrt.CompilerNotFoundError, armrt.ModelBuildError (with the build log's path), ValueError if a
-        different model of the same name is already registered."""
-        _refuse_name_clash(Path(path))
+        different model of the same name is already registered (checked before anything is built)."""
         res: BuildResult = build(path, force=rebuild)
         d = _core.load_model_library(str(res.library))
         _register_elsewhere(res.library)
