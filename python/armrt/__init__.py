@@ -3,17 +3,21 @@
 The paper's model (fixed scapula, 5 DOF, 22 muscles in 102 Hill-type elements) from the DAS3 data,
 integrated in C++; see armrt.Arm.
 """
-from .arm import Arm, Result, SimulationError, StepSizeWarning, deg, rad
+from ._version import __version__
+from .arm import Arm
 from .batch import ArmBatch
+from .checks import deg, rad
 from .data import Data, State
+from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
 from .model import Model, models
 from .model_build import CompilerNotFoundError, ModelBuildError, ModelFileError
+from .result import Result
 from .sweeps import sweep
 
-__all__ = ["Arm", "Result", "SimulationError", "deg", "rad", "ArmBatch", "sweep", "Model", "Data", "State",
-           "models", "ModelFileError", "ModelBuildError", "CompilerNotFoundError", "RealtimeSession", "UdpClient"]
+__all__ = ["Arm", "Result", "SimulationError", "StepSizeWarning", "ConcurrentUseError", "deg", "rad", "ArmBatch",
+           "sweep", "Model", "Data", "State", "models", "ModelFileError", "ModelBuildError", "CompilerNotFoundError",
+           "RealtimeSession", "UdpClient"]
 try:  # the packet layout comes from armrt._rt: without that extension the rest of armrt still works
     from .realtime import RealtimeSession, UdpClient
 except ImportError:  # pragma: no cover (an incomplete build: PYTHONPATH=python with only _core copied)
     __all__ = __all__[:-2]
-__version__ = "0.1.0"

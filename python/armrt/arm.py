@@ -1,367 +1,38 @@
-"""The Python API: `Arm` drives one simulated arm; arrays in, arrays out, SI units and radians."""
+"""The Python API: `Arm` drives one simulated arm; arrays in, arrays out, SI units and radians.
+
+Arm's pieces live in modules of their own, re-exported here so `armrt.arm.<name>` keeps working:
+checks (real_array, real_scalar, count, deg, rad, known_model), integrators (INTEGRATORS,
+DEFAULT_INTEGRATOR, DEFAULT_MAX_STEP), errors (SimulationError, StepSizeWarning, ConcurrentUseError)
+and result (Result).
+"""
 from __future__ import annotations
 
 import copy
-import numbers
-import re
-import operator
-import threading
 import warnings
-from contextlib import contextmanager
-from dataclasses import dataclass, field
-from typing import Callable, Mapping
+from typing import Mapping
 
 import numpy as np
 
 from . import _core
+from .checks import MAX_COUNT, RANGE_MARGIN, count, deg, joint_range, known_model, rad, real_array, real_scalar
+from .data import Data
+from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
+from .errors import simulation_error as _simulation_error
+from .integrators import DEFAULT_INTEGRATOR, DEFAULT_MAX_STEP, INTEGRATORS, MAX_DT, MAX_SUBSTEPS, control_step
+from .model import Model
+from .profile import profile_values
 from .progress import bar as progress_bar
+from .result import Result, _recorded_rows, _row_bytes
+from .result import _rim_of_recorded_angles  # noqa: F401 (armrt.arm._rim_of_recorded_angles, as before)
 
-INTEGRATORS = ("ros2", "ros2_adaptive", "euler", "rk4", "cvode")
-DEFAULT_INTEGRATOR = "ros2"
-# Largest integration step used by default (s), from the engine (simulator.cc default_max_step):
-# ROS2 (linearly implicit, docs/engine.md) one step per 1 ms control step; ros2_adaptive up to 2 ms, a
-# step whose error estimate is too large redone as two halves (offline use: its cost is not fixed);
-# RK4 6 substeps per 1 ms and Euler 0.1 ms (the paper's explicit solvers); CVODE picks its own (inf).
-DEFAULT_MAX_STEP = {name: _core.default_max_step(name) for name in INTEGRATORS}
+__all__ = ["Arm", "Result", "SimulationError", "StepSizeWarning", "ConcurrentUseError", "INTEGRATORS",
+           "DEFAULT_INTEGRATOR", "DEFAULT_MAX_STEP", "MAX_DT", "MAX_SUBSTEPS", "MAX_COUNT", "RANGE_MARGIN", "RESULT_MEMORY_LIMIT",
+           "real_array", "real_scalar", "count", "deg", "rad", "known_model"]
 
-
-class StepSizeWarning(RuntimeWarning):
-    """An integration step above the largest one validated against CVODE (DEFAULT_MAX_STEP)."""
-
-
-class SimulationError(RuntimeError):
-    """The simulation diverged or left the model's physical domain: a non-finite state, a joint faster
-    than the physical bound, a fibre length, activation or joint angle out of range (docs/engine.md), or
-    an explicit step too large for the model."""
-
-
-def _simulation_error(exc: RuntimeError) -> SimulationError:
-    msg = str(exc)
-    # A step the integrator cannot take fails again after reset(): the message says what to change.
-    hint = "" if msg.startswith("step too large") else "; call reset() to continue"
-    return SimulationError(msg + hint)
-
-
-class ConcurrentUseError(RuntimeError):
-    """An Arm was used from a second thread while another thread was stepping or changing it."""
-
-
-# Largest step count or record interval the engine counts (C++ long on every supported platform).
-MAX_COUNT = 2**63 - 1
-
-
-def real_array(values, what: str) -> np.ndarray:
-    """`values` as a float array; TypeError for what is not real numbers (complex, strings, None,
-    other objects) instead of numpy's silent casts (complex -> real part, None -> NaN)."""
-    if isinstance(values, (str, bytes)):
-        raise TypeError(f"{what} must be numbers, got the string {values!r}")
-    try:
-        arr = np.asarray(values)
-    except ValueError as exc:  # ragged nesting
-        raise ValueError(f"{what} must be a regular array of numbers: {exc}") from None
-    if arr.dtype.kind == "O":
-        for v in arr.ravel():
-            if v is None:
-                raise TypeError(f"{what} contains None; give a number for every value")
-            if not isinstance(v, numbers.Real) or isinstance(v, (str, bytes)):
-                raise TypeError(f"{what} must be real numbers, got {type(v).__name__} {v!r}")
-        arr = arr.astype(float)
-    if arr.dtype.kind not in "biuf":
-        kind = {"c": "complex", "U": "string", "S": "bytes", "M": "datetime", "m": "timedelta", "V": "structured"}
-        raise TypeError(f"{what} must be real numbers, got {kind.get(arr.dtype.kind, str(arr.dtype))} values "
-                        f"(dtype {arr.dtype})")
-    return arr.astype(float, copy=False)
-
-
-def real_scalar(value, what: str) -> float:
-    """One real number (see real_array); TypeError for anything else, ValueError for arrays."""
-    arr = real_array(value, what)
-    if arr.ndim != 0:
-        raise ValueError(f"{what} must be a single number, got shape {arr.shape}")
-    return float(arr)
-
-
-def count(value, what: str, minimum: int = 0) -> int:
-    """An integer count in [minimum, MAX_COUNT]; TypeError for 1.7 or '3', OverflowError above."""
-    if isinstance(value, bool):
-        raise TypeError(f"{what} must be an integer, got {value!r}")
-    try:
-        n = operator.index(value)
-    except TypeError:
-        raise TypeError(f"{what} must be an integer, got {type(value).__name__} {value!r}") from None
-    if n < minimum:
-        raise ValueError(f"{what} must be >= {minimum}, got {n}")
-    if n > MAX_COUNT:
-        raise OverflowError(f"{what} = {n} is too large (at most 2**63 - 1)")
-    return n
-
-
-def deg(x):
-    """Radians to degrees (arrays welcome)."""
-    return np.degrees(x)
-
-
-def rad(x):
-    """Degrees to radians (arrays welcome)."""
-    return np.radians(x)
-
-
-def known_model(name) -> str:
-    """`name` if it is a registered model (built in, or loaded in this process); ValueError otherwise
-    (so a name read from a file can never become a path)."""
-    if not isinstance(name, str):
-        raise ValueError(f"model must be a model name, got {type(name).__name__}")
-    try:
-        _core.model_info(name)
-    except ValueError as exc:
-        raise ValueError(str(exc)) from None
-    return name
-
-
-def _row_bytes(n_elements: int, n_dofs: int = 5) -> int:
-    """Bytes of one recorded row of a Result: 5 per-element channels, q and qdot, 16 other values (time 1,
-    gh_force 3, gh_stab 1, gh_angles 2, gh_rim_margin 1, gh_rim_direction 1, hand_position 3, thorax_humerus 3,
-    tet_ns 1), float64."""
-    return 8 * (5 * n_elements + 2 * n_dofs + 16)
-
-
-def _recorded_rows(n_steps: int, record_every: int) -> int:
-    """Rows simulate() records: steps 0, k, 2k, ... and the final state when it falls on the grid."""
-    return -(-n_steps // record_every) + (1 if n_steps % record_every == 0 else 0)
-
-
-# reset(q=...) refuses a joint further than this (rad, ~11 deg) beyond its range and warns inside it.
-RANGE_MARGIN = 0.2
 # simulate() refuses a Result above this (bytes) unless max_bytes says otherwise.
 RESULT_MEMORY_LIMIT = 2 * 1024**3
 # Steps per C++ call in simulate(): bounds the excitation block a callable fills.
 SIMULATE_BLOCK_STEPS = 2000
-
-
-@dataclass(repr=False)
-class Result:
-    """Time series of a simulation; row k is the state at time[k] and the outputs at that state.
-
-    repr() is one line; to_dataframe() gives a pandas DataFrame (pandas optional), plot() a figure."""
-
-    time: np.ndarray            # (T,) s
-    q: np.ndarray               # (T, ndof) rad
-    qdot: np.ndarray            # (T, ndof) rad/s
-    lce: np.ndarray             # (T, n) m, contractile-element lengths
-    activation: np.ndarray      # (T, n)
-    excitation: np.ndarray      # (T, n)
-    muscle_force: np.ndarray    # (T, n) N
-    muscle_length: np.ndarray   # (T, n) m, muscle-tendon lengths
-    gh_force: np.ndarray        # (T, 3) N, humeral head on glenoid, scapula frame
-    gh_stab: np.ndarray         # (T,) 1, (theta/theta_a)^2 + (phi/phi_a)^2; > 1 beyond the rim
-    gh_angles: np.ndarray       # (T, 2) rad, theta (major axis, + superior), phi (minor axis, + anterior)
-    gh_rim_margin: np.ndarray   # (T,) rad, how far the GH force can still turn towards the rim; < 0 beyond it
-    gh_rim_direction: np.ndarray  # (T,) rad, psi = atan2(phi, theta): 0 superior, pi/2 anterior
-    hand_position: np.ndarray   # (T, 3) m, thorax frame
-    thorax_humerus: np.ndarray  # (T, 3) rad: plane of elevation, elevation, axial rotation
-    tet_ns: np.ndarray          # (T,) ns, task execution time of the step that started at that row
-    dof_names: list = field(default_factory=list)
-    element_names: list = field(default_factory=list)
-    integrator: str = ""
-    dt: float = 0.0             # control step (s)
-    substeps: int = 1           # integration steps per control step
-    model: str = ""
-    model_hash: str = ""        # SHA-256 of the model file (reopens a model built on demand from the cache)
-    # Models whose scapula moves (das3) only, else None: first-order signed distance of each girdle
-    # contact point (TS, AI) from the thorax surface (negative: inside), and the conoid ligament's tension.
-    contact_distance: np.ndarray | None = None  # (T, P) m
-    conoid_tension: np.ndarray | None = None    # (T,) N
-
-    ARRAYS = ("time", "q", "qdot", "lce", "activation", "excitation", "muscle_force", "muscle_length",
-              "gh_force", "gh_stab", "gh_angles", "gh_rim_margin", "gh_rim_direction", "hand_position",
-              "thorax_humerus", "tet_ns")
-    # Arrays added after the first file format: a file without them gets them from its own recorded
-    # gh_angles through the engine (gh_rim), so that older results load whole.
-    _DERIVED_FROM_GH_ANGLES = ("gh_rim_margin", "gh_rim_direction")
-    OPTIONAL_ARRAYS = ("contact_distance", "conoid_tension")
-
-    @property
-    def q_deg(self) -> np.ndarray:
-        return np.degrees(self.q)
-
-    # Per-DOF and per-element channels, and the column names of the others (to_dataframe).
-    _DOF_CHANNELS = ("q", "qdot")
-    _ELEMENT_CHANNELS = ("lce", "activation", "excitation", "muscle_force", "muscle_length")
-    _OTHER_COLUMNS = {"gh_force": ("x", "y", "z"), "gh_angles": ("theta", "phi"), "hand_position": ("x", "y", "z"),
-                      "thorax_humerus": ("plane_of_elevation", "elevation", "axial_rotation"),
-                      "gh_stab": None, "gh_rim_margin": None, "gh_rim_direction": None, "tet_ns": None, "contact_distance": ("TS", "AI"), "conoid_tension": None}
-
-    def channels(self) -> list[str]:
-        """The time-series names this Result has besides time: ARRAYS, and the girdle arrays when present."""
-        return [k for k in self.ARRAYS if k != "time"] + [k for k in self.OPTIONAL_ARRAYS if getattr(self, k) is not None]
-
-    def __repr__(self) -> str:
-        T = len(self.time)
-        if T == 0:
-            return f"Result({self.model or '?'}, empty)"
-        step = f"dt={self.dt * 1e3:g} ms" + (f" x{self.substeps} substeps" if self.substeps > 1 else "")
-        every = ""
-        if T > 1 and self.dt > 0:
-            k = int(round((self.time[1] - self.time[0]) / self.dt))
-            every = f", every {k} steps" if k > 1 else ""
-        q_end = np.array2string(np.degrees(self.q[-1]), precision=1, separator=", ", suppress_small=True)
-        stab = np.nanmax(self.gh_stab) if np.any(np.isfinite(self.gh_stab)) else float("nan")
-        mb = sum(getattr(self, k).nbytes for k in self.ARRAYS) / 1e6
-        return (f"Result({self.model or '?'}, {self.integrator or 'replay'} {step}: {T} rows{every}, "
-                f"t = {self.time[0]:g} to {self.time[-1]:g} s, {len(self.element_names)} elements; "
-                f"final q = {q_end} deg; GHstab max {stab:.3g}; {mb:.1f} MB)")
-
-    def to_dataframe(self, channels=None):
-        """A pandas DataFrame indexed by time (s), one column per value: 'q.GHy', 'activation.deltscap1',
-        'gh_force.x', 'gh_stab', ... in the Result's units (radians). channels: names from ARRAYS
-        (default all). Raises ImportError with the install command if pandas is absent, ValueError
-        for an unknown channel."""
-        try:
-            import pandas as pd
-        except ImportError:
-            raise ImportError("Result.to_dataframe needs pandas: pip install pandas "
-                              "(or pip install 'armrt[dataframe]')") from None
-        names = self.channels() if channels is None else list(channels)
-        unknown = [c for c in names if c not in self.channels()]
-        if unknown:
-            raise ValueError(f"unknown channels {unknown}; expected some of {self.channels()}")
-        cols = {}
-        for c in names:
-            a = np.asarray(getattr(self, c))
-            if c in self._DOF_CHANNELS:
-                labels = self.dof_names or [str(j) for j in range(a.shape[1])]
-            elif c in self._ELEMENT_CHANNELS:
-                labels = self.element_names or [str(i) for i in range(a.shape[1])]
-            else:
-                labels = self._OTHER_COLUMNS[c]
-            if labels is None:
-                cols[c] = a
-            else:
-                cols.update({f"{c}.{n}": a[:, j] for j, n in enumerate(labels)})
-        return pd.DataFrame(cols, index=pd.Index(np.asarray(self.time), name="time"))
-
-    def plot(self, channels=("q", "gh_stab"), names=None, fig=None):
-        """A matplotlib figure with one panel per channel against time: joint angles in degrees (the
-        label says so), GH stability with its limit of 1, other channels in their SI units. names:
-        the DOFs / elements to draw (default all DOFs, and for element channels the muscle means).
-        Returns the figure (call .savefig or plt.show())."""
-        import matplotlib.pyplot as plt
-        unknown = [c for c in channels if c not in self.channels()]
-        if unknown:
-            raise ValueError(f"unknown channels {unknown}; expected some of {self.channels()}")
-        fig = fig or plt.figure(figsize=(8, 2.2 * len(channels)))
-        axes = fig.subplots(len(channels), 1, sharex=True, squeeze=False)[:, 0]
-        for ax, c in zip(axes, channels):
-            a = np.asarray(getattr(self, c))
-            if c in self._DOF_CHANNELS:
-                scale, unit = (np.degrees(1.0), "deg" if c == "q" else "deg/s")
-                for j, n in enumerate(self.dof_names):
-                    if names is None or n in names:
-                        ax.plot(self.time, scale * a[:, j], label=n)
-                ax.set_ylabel(f"{c} ({unit})")
-            elif c in self._ELEMENT_CHANNELS:
-                pick = [i for i, n in enumerate(self.element_names) if names is None or n in names]
-                for i in pick[:12]:
-                    ax.plot(self.time, a[:, i], label=self.element_names[i], lw=0.8)
-                if len(pick) > 12:
-                    ax.plot(self.time, a[:, pick].mean(axis=1), "k", lw=1.5, label=f"mean of {len(pick)}")
-                ax.set_ylabel(c)
-            elif c == "contact_distance":
-                for j, n in enumerate(self._OTHER_COLUMNS[c][:a.shape[1]]):
-                    ax.plot(self.time, 1e3 * a[:, j], label=n)
-                ax.axhline(0.0, color="0.5", lw=0.8)
-                ax.set_ylabel("contact distance (mm)")
-            elif c == "gh_stab":
-                ax.plot(self.time, a, color="0.3")
-                ax.axhline(1.0, color="tab:red", ls="--", lw=0.8, label="rim (1)")
-                ax.set_ylabel("GHstab")
-            else:
-                ax.plot(self.time, a)
-                ax.set_ylabel(c)
-            if ax.get_legend_handles_labels()[0]:
-                ax.legend(fontsize=7, ncol=3, loc="best")
-        axes[-1].set_xlabel("time (s)")
-        fig.tight_layout()
-        return fig
-
-    def save(self, path) -> None:
-        """Saves to a compressed .npz (load with Result.load)."""
-        np.savez_compressed(path, **{k: getattr(self, k) for k in self.ARRAYS},
-                            **{k: getattr(self, k) for k in self.OPTIONAL_ARRAYS if getattr(self, k) is not None},
-                            dof_names=np.array(self.dof_names), element_names=np.array(self.element_names),
-                            integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model,
-                            model_hash=self.model_hash)
-
-    @classmethod
-    def load(cls, path) -> "Result":
-        """A Result saved with save(). ValueError (one line, naming the file) for a file that is not
-        a readable .npz, lacks the result arrays, has arrays of the wrong shape, or names a model that
-        is not registered (load its model file first: armrt.Model.load); FileNotFoundError if absent."""
-        import zipfile
-        path = str(path)
-        try:
-            z = np.load(path, allow_pickle=False)
-        except FileNotFoundError:
-            raise FileNotFoundError(f"{path}: no such file") from None
-        except (OSError, ValueError, zipfile.BadZipFile, EOFError) as exc:
-            raise ValueError(f"{path}: not an armrt result (.npz written by Result.save): {exc}") from None
-        if not hasattr(z, "files"):
-            raise ValueError(f"{path}: not an armrt result (a single .npy array, not an .npz)")
-        with z:
-            missing = [k for k in (*cls.ARRAYS, "dof_names", "element_names", "model")
-                       if k not in z.files and k not in cls._DERIVED_FROM_GH_ANGLES]
-            if missing:
-                raise ValueError(f"{path}: not an armrt result, missing arrays {missing}")
-            try:
-                fields = {k: np.asarray(z[k], dtype=float) for k in cls.ARRAYS if k in z.files}
-                fields.update({k: np.asarray(z[k], dtype=float) for k in cls.OPTIONAL_ARRAYS if k in z.files})
-                meta = dict(dof_names=[str(s) for s in z["dof_names"]],
-                            element_names=[str(s) for s in z["element_names"]],
-                            integrator=str(z["integrator"]) if "integrator" in z.files else "",
-                            dt=float(z["dt"]) if "dt" in z.files else 0.0,
-                            substeps=int(z["substeps"]) if "substeps" in z.files else 1, model=str(z["model"]),
-                            model_hash=str(z["model_hash"]) if "model_hash" in z.files else "")
-            except (OSError, ValueError, TypeError, zipfile.BadZipFile, EOFError) as exc:
-                raise ValueError(f"{path}: corrupt armrt result: {exc}") from None
-        try:
-            known_model(meta["model"])
-        except ValueError:
-            # A model built on demand in an earlier session: reopened from the cache (never rebuilt
-            # from a path: a result file names a model, it does not point at code to compile).
-            from .model import Model
-            reopened = (Model.from_cache(meta["model"], meta["model_hash"])
-                        if re.fullmatch(r"[0-9a-f]{64}", meta["model_hash"]) else None)
-        else:
-            reopened = True
-        if reopened is None:
-            raise ValueError(f"{path}: the result's model field {meta['model'][:80]!r} is not a known model "
-                             f"(registered: {_core.model_names()}; a model built on demand: armrt.Model.load(its file) "
-                             f"first)") from None
-        absent = [k for k in cls._DERIVED_FROM_GH_ANGLES if k not in fields]
-        if absent:
-            fields.update(_rim_of_recorded_angles(meta["model"], fields["gh_angles"], path, absent))
-        T = fields["time"].shape[0] if fields["time"].ndim == 1 else -1
-        bad = [k for k, v in fields.items() if v.ndim == 0 or v.shape[0] != T]
-        if T < 0 or bad:
-            raise ValueError(f"{path}: corrupt armrt result: arrays {bad or ['time']} do not have one row per time")
-        return cls(**fields, **meta)
-
-
-def _rim_of_recorded_angles(model: str, gh_angles: np.ndarray, path: str, keys) -> dict:
-    """`keys` (gh_rim_margin, gh_rim_direction) of a result's own recorded gh_angles (T, 2) (theta, phi,
-    rad) on the model's rim (the engine's gh_rim): the file's angles, not its gh_force through today's
-    glenoid basis, which may not be the one it was recorded with. NaN where the row is NaN (a replay)."""
-    from .model import Model
-    if gh_angles.ndim != 2 or gh_angles.shape[1] != 2:
-        raise ValueError(f"{path}: corrupt armrt result: gh_angles has shape {gh_angles.shape}, expected (T, 2)")
-    ok = np.all(np.isfinite(gh_angles), axis=1)
-    out = {k: np.full(len(gh_angles), np.nan) for k in keys}
-    if ok.any():
-        margin, direction = Model(model)._def.gh_rim_of_angles(np.ascontiguousarray(gh_angles[ok], dtype=float))
-        rim = {"gh_rim_margin": margin, "gh_rim_direction": direction}
-        for k in keys:
-            out[k][ok] = rim[k]
-    return out
 
 
 class Arm:
@@ -387,34 +58,16 @@ class Arm:
         low activation. "ros2_adaptive" redoes a step as two halves when its error estimate is too
         large: for offline runs at dt = 2 ms, not for hard real time.
 
-        Raises ValueError for an unknown integrator, a non-positive or non-finite dt, or substeps
-        below 1; TypeError for a dt or substeps that is not a real number / an integer."""
-        if integrator not in INTEGRATORS:
-            raise ValueError(f"unknown integrator {integrator!r}; expected one of {INTEGRATORS}")
-        dt = real_scalar(dt, "dt")
-        if not (np.isfinite(dt) and dt > 0):
-            raise ValueError(f"dt must be a positive number of seconds, got {dt}")
-        if substeps is None:
-            substeps = _core.default_substeps(integrator, dt)
-        if isinstance(substeps, (float, np.floating)) and float(substeps).is_integer():
-            substeps = int(substeps)
-        substeps = count(substeps, "substeps", minimum=1)
-        if substeps > 2**31 - 1:
-            raise OverflowError(f"substeps = {substeps} is too large (at most 2**31 - 1)")
-        step = dt / substeps
-        if step > DEFAULT_MAX_STEP[integrator] * (1 + 1e-6):
-            # Not an error (a user may study it), but nothing in docs/engine.md vouches for it: a
-            # 2 ms ROS2 step was measured 5.6 deg off CVODE, one explicit step of 1 ms diverges.
-            warnings.warn(StepSizeWarning(f"integration step {step * 1e3:g} ms is above the {DEFAULT_MAX_STEP[integrator] * 1e3:g} ms "
-                          f"validated for {integrator!r} against CVODE (docs/engine.md); expect errors of degrees or "
-                          f"divergence; leave substeps=None for the validated step"), stacklevel=2)
-        from .data import Data
-        from .model import Model
+        Raises ValueError for an unknown integrator, a dt outside (0, 1] s (integrators.MAX_DT: the
+        excitation is held for a whole control step), or substeps outside [1, 100 000]
+        (integrators.MAX_SUBSTEPS); TypeError for a dt or substeps that is not a real number / an integer."""
+        dt, substeps = control_step(integrator, dt, substeps)
         self.model = Model(model)  # a name, a model file (built on demand) or a Model
         self._sim = _core.Simulator(self.model._def, integrator, dt, substeps)
         self.data = Data._wrap(self.model, self._sim)
-        # One thread at a time: the engine's Data is a single workspace (see _exclusive).
-        self._lock = threading.RLock()
+        # One thread at a time: the engine's Data is a single workspace, so the Arm and its Data share
+        # one guard (Data._exclusive): arm.data.outputs() from a second thread is refused like arm.outputs().
+        self._lock = self.data._lock
         info = self.model.info
         self.model_name = info["name"]
         self.info = info
@@ -435,19 +88,10 @@ class Arm:
         # What Arm itself sets; anything else on an arm is the user's, carried by copies and pickles.
         self._base_attributes = frozenset(self.__dict__) | {"_base_attributes"}
 
-    @contextmanager
     def _exclusive(self):
-        """Held while a call steps or changes the simulation. A second thread arriving meanwhile gets
-        ConcurrentUseError instead of interleaving with the first (both would write the same
-        state and workspace: silently wrong results). Re-entrant for callbacks on the same thread."""
-        if not self._lock.acquire(blocking=False):
-            raise ConcurrentUseError(
-                "this Arm is being used by another thread; an Arm is not thread-safe: give each thread its "
-                "own Arm, or serialise the calls with a lock")
-        try:
-            yield
-        finally:
-            self._lock.release()
+        """Held while a call steps or changes the simulation: its Data's guard (Data._exclusive), so a
+        second thread gets ConcurrentUseError whether it comes through the Arm or through arm.data."""
+        return self.data._exclusive()
 
     # ------------------------------------------------------------------ names
     def indices(self, name: str) -> list[int]:
@@ -577,7 +221,6 @@ class Arm:
         Returns a ProfileReport (prints as a summary): elements set, profile names this arm lacks
         (`unmatched`), arm elements left unchanged (`untouched`). Raises FileNotFoundError for a
         missing file or unknown name, ValueError for an unreadable file or values out of range."""
-        from .profile import profile_values
         s, m, report = profile_values(self, path_or_name, reference)
         with self._exclusive():
             self._sim.set_strength_and_max_activation(s, m)
@@ -673,24 +316,9 @@ class Arm:
         return q
 
     def _check_range(self, q: np.ndarray) -> np.ndarray:
-        """q itself; ValueError if a joint is more than RANGE_MARGIN rad beyond its range (with a hint
-        when the values look like degrees), RuntimeWarning if beyond it by less (the passive joint
-        limits are springs, so a simulated state can end slightly outside)."""
-        lo, hi = self.dof_ranges[:, 0], self.dof_ranges[:, 1]
-        outside = (q < lo) | (q > hi)
-        if not outside.any():
-            return q
-        desc = "; ".join(f"{self.dof_names[j]} = {q[j]:.4g} rad ({np.degrees(q[j]):.1f} deg) outside "
-                         f"[{np.degrees(lo[j]):.1f}, {np.degrees(hi[j]):.1f}] deg" for j in np.flatnonzero(outside))
-        far = (q < lo - RANGE_MARGIN) | (q > hi + RANGE_MARGIN)
-        if far.any():
-            r = np.radians(q)
-            hint = (" These look like degrees: q is in radians (np.radians(q) or armrt.rad(q); "
-                    "armrt simulate --q-deg on the command line)."
-                    if np.all((r >= lo - RANGE_MARGIN) & (r <= hi + RANGE_MARGIN)) else "")
-            raise ValueError(f"q beyond the joint limits: {desc}.{hint}")
-        warnings.warn(f"q slightly beyond the joint limits: {desc}", RuntimeWarning, stacklevel=3)
-        return q
+        """q itself; reset's range check (checks.joint_range: ValueError more than RANGE_MARGIN rad
+        beyond a joint's range, with a degrees hint; RuntimeWarning beyond it by less)."""
+        return joint_range(q, self.dof_names, self.dof_ranges)
 
     def _dof_vector(self, v, what: str) -> np.ndarray:
         if isinstance(v, Mapping):
@@ -716,8 +344,9 @@ class Arm:
             return self.data.get_state()
 
     def set_state(self, state) -> None:
-        """Restores an armrt.State from get_state() of an arm of the same model (ValueError otherwise, or
-        for path anchors farther from q than max_joint_speed allows). ROS2's memory is rebuilt from
+        """Restores an armrt.State from get_state() of an arm of the same model (ValueError otherwise, for
+        a q more than RANGE_MARGIN beyond the joint ranges, as reset(q=...) refuses it, or for path
+        anchors farther from q than max_joint_speed allows). ROS2's memory is rebuilt from
         path_anchors; a State without it makes the next step evaluate the paths afresh.
         The excitation is capped at this arm's max_activation; a divergence error is cleared. Strength,
         max_activation, gravity and the integrator are the arm's own, not part of the State."""

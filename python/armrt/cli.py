@@ -8,49 +8,10 @@ from __future__ import annotations
 
 import argparse
 import sys
-from pathlib import Path
 
 import numpy as np
 
-# What a person can get wrong: reported in one line, never as a traceback (bugs still show one).
-USER_ERRORS = (ValueError, KeyError, TypeError, OSError, MemoryError, OverflowError, RuntimeError)
-
-
-class CliError(Exception):
-    """A mistake in the command line itself (reported like argparse's errors)."""
-
-
-def error_text(exc: BaseException) -> str:
-    """One line for an exception: KeyError's repr quotes removed, first line only."""
-    msg = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
-    if isinstance(exc, FileNotFoundError) and exc.filename and str(exc.filename) not in str(msg):
-        msg = f"{exc.filename}: {exc.strerror or msg}"
-    elif isinstance(exc, OSError) and exc.filename and exc.strerror:
-        msg = f"{exc.filename}: {exc.strerror}"
-    return " ".join(str(msg).split()) or type(exc).__name__
-
-
-def parse_assignments(items: list[str]) -> dict[str, float]:
-    """NAME=VALUE pairs; every malformed item reported at once."""
-    out, bad = {}, []
-    for item in items:
-        name, sep, value = item.partition("=")
-        if not sep or not name:
-            bad.append(f"{item!r} is not NAME=VALUE")
-            continue
-        try:
-            out[name] = float(value)
-        except ValueError:
-            bad.append(f"{item!r}: {value!r} is not a number")
-    if bad:
-        raise CliError("; ".join(bad))
-    return out
-
-
-def check_suffix(path: str | None, allowed: tuple[str, ...], what: str) -> None:
-    if path is not None and Path(path).suffix.lower() not in allowed:
-        raise CliError(f"{what} {path!r}: unsupported format {Path(path).suffix or '(no suffix)'!r}; "
-                       f"use {' or '.join(allowed)}")
+from .cli_common import USER_ERRORS, CliError, check_suffix, error_text, parse_assignments  # noqa: F401
 
 
 def cmd_info(args) -> int:
@@ -151,7 +112,7 @@ def cmd_experiments(args) -> int:
         return run_das3(out_dir=args.out, quick=args.quick)
     if args.model != "das2":
         # The participant experiment (armrt/participant.py): Fig. 1 at full stimulation, four variants.
-        from .arm import known_model
+        from .checks import known_model
         from .participant import run_all as run_participant
         return run_participant(model=known_model(args.model), out_dir=args.out, quick=args.quick)
     from .experiments import run_all
@@ -163,8 +124,8 @@ def _formatter(prog):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from . import __version__
-    from .arm import DEFAULT_INTEGRATOR, INTEGRATORS
+    from ._version import __version__
+    from .integrators import DEFAULT_INTEGRATOR, INTEGRATORS
     ap = argparse.ArgumentParser(
         prog="armrt", formatter_class=_formatter,
         description="Real-time musculoskeletal arm simulator. Angles in radians unless an option's "

@@ -14,8 +14,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .experiments import (deltoid_sequence, find_baseline, middle_anterior_deltoid, new_arm, plateau_elevation,
-                          run_sequence)
+from .experiments_protocol import (deltoid_sequence, find_baseline, middle_anterior_deltoid, new_arm,
+                                   plateau_elevation, run_sequence)
 from .sweeps import sweep
 
 

@@ -11,12 +11,18 @@ Arm (armrt/arm.py) steps a Data with an integrator; Arm.data is its Data.
 """
 from __future__ import annotations
 
+import threading
 import warnings
+from contextlib import contextmanager
 from dataclasses import InitVar, dataclass, fields
 
 import numpy as np
 
 from . import _core
+from .checks import joint_range
+from .errors import ConcurrentUseError
+from .integrators import DEFAULT_INTEGRATOR
+from .model import Model
 
 
 @dataclass(frozen=True, eq=False)
@@ -119,11 +125,14 @@ class Data:
     Outputs: outputs() evaluates them at the current state.
     Snapshots: get_state() -> State, set_state(State).
     Data(model) starts at the rest posture, time 0, no excitation; Arm(model) creates the Data it steps
-    (Arm.data), with the workspace of its integrator."""
+    (Arm.data), with the workspace of its integrator.
+
+    One thread at a time: every call that reads or writes the engine (the inputs, time, outputs(),
+    get_state, set_state, deepcopy) raises ConcurrentUseError while another thread is inside one, or
+    inside a call of the Arm that steps this Data. The state views are live: read from a second thread
+    during a step they show that step half done; take get_state() for a consistent copy."""
 
     def __init__(self, model="das2"):
-        from .arm import DEFAULT_INTEGRATOR
-        from .model import Model
         model = Model(model)
         self._attach(model, _core.Simulator(model._def, DEFAULT_INTEGRATOR, 1e-3,
                                             _core.default_substeps(DEFAULT_INTEGRATOR, 1e-3)))
@@ -137,6 +146,8 @@ class Data:
     def _attach(self, model, sim) -> None:
         self.model = model
         self._sim = sim
+        # The engine's Data is a single workspace: the Arm stepping it shares this lock (Arm._exclusive).
+        self._lock = threading.RLock()
         state = sim.state
         # Offsets from the engine (data.h defines the layout once; model_info exports it).
         self._views = {k: state[o:o + n] for k, (o, n) in model.state_layout.items()}
@@ -144,26 +155,42 @@ class Data:
         for v in self._views.values():
             v.flags.writeable = False
 
+    @contextmanager
+    def _exclusive(self):
+        """Held while a call reads or changes the engine's state or workspace. A second thread arriving
+        meanwhile gets ConcurrentUseError instead of interleaving with the first (both would use the
+        same state and workspace: silently wrong results). Re-entrant for callbacks on the same thread."""
+        if not self._lock.acquire(blocking=False):
+            raise ConcurrentUseError(
+                "this Arm is being used by another thread; an Arm is not thread-safe: give each thread its "
+                "own Arm, or serialise the calls with a lock")
+        try:
+            yield
+        finally:
+            self._lock.release()
+
     def __repr__(self) -> str:
-        return f"Data({self.model.name}, t = {self.time:g} s)"
+        return f"Data({self.model.name}, t = {self._sim.time:g} s)"  # a repr never raises ConcurrentUseError
 
     def __deepcopy__(self, memo):
         """An independent Data: the same Model, state, inputs, per-arm settings (strength, maximum
         activation, gravity) and integrator workspace configuration, in a new engine."""
-        s = self._sim
-        sim = _core.Simulator(self.model._def, s.integrator, s.dt, s.substeps)
-        sim.set_strength_and_max_activation(s.get_strength(), s.get_max_activation())
-        sim.gravity = np.asarray(s.gravity, dtype=float)
-        sim.max_joint_speed = s.max_joint_speed
-        new = Data._wrap(self.model, sim)
-        new._load(np.array(s.state), s.excitation, s.hand_force, s.hand_moment, s.time, s.ros2_history())
-        memo[id(self)] = new
-        return new
+        with self._exclusive():
+            s = self._sim
+            sim = _core.Simulator(self.model._def, s.integrator, s.dt, s.substeps)
+            sim.set_strength_and_max_activation(s.get_strength(), s.get_max_activation())
+            sim.gravity = np.asarray(s.gravity, dtype=float)
+            sim.max_joint_speed = s.max_joint_speed
+            new = Data._wrap(self.model, sim)
+            new._load(np.array(s.state), s.excitation, s.hand_force, s.hand_moment, s.time, s.ros2_history())
+            memo[id(self)] = new
+            return new
 
     # ------------------------------------------------------------------ state
     @property
     def time(self) -> float:
-        return self._sim.time
+        with self._exclusive():
+            return self._sim.time
 
     @property
     def q(self) -> np.ndarray:
@@ -189,40 +216,45 @@ class Data:
     # ------------------------------------------------------------------ inputs
     @property
     def excitation(self) -> np.ndarray:
-        return self._sim.excitation.copy()
+        with self._exclusive():
+            return self._sim.excitation.copy()
 
     @property
     def hand_force(self) -> np.ndarray:
-        return self._sim.hand_force.copy()
+        with self._exclusive():
+            return self._sim.hand_force.copy()
 
     @property
     def hand_moment(self) -> np.ndarray:
-        return self._sim.hand_moment.copy()
+        with self._exclusive():
+            return self._sim.hand_moment.copy()
 
     # ------------------------------------------------------------------ outputs
     def outputs(self) -> dict:
         """Outputs at the current state: qddot, muscle_force (N), muscle_length (m), moment_arm (n x ndof,
         m), fibre_velocity, muscle/passive/external torque, hand_position (thorax frame), gh_force
         (scapula frame), gh_theta, gh_phi, gh_stab."""
-        self._sim.evaluate_outputs()
-        return self._sim.outputs()
+        with self._exclusive():
+            self._sim.evaluate_outputs()
+            return self._sim.outputs()
 
     # ------------------------------------------------------------------ snapshots
     def get_state(self) -> State:
         """A State: time, q, qdot, lce, activation, excitation, hand force and moment, and ROS2's memory
         (path_anchors, path_anchor_steps, previous_step; None, (0, 0) and 0.0 when the state was not reached
         by a ROS2 step) (copies)."""
-        history = self._sim.ros2_history()
-        anchors, spacing, since, h = history if history is not None else (None, 0, 0, 0.0)
-        return State(model=self.model.name, source_hash=self.model.source_hash, time=self._sim.time,
-                     q=self.q, qdot=self.qdot, lce=self.lce, activation=self.activation,
-                     excitation=self._sim.excitation, hand_force=self._sim.hand_force,
-                     hand_moment=self._sim.hand_moment, path_anchors=anchors, path_anchor_steps=(spacing, since),
-                     previous_step=h)
+        with self._exclusive():
+            history = self._sim.ros2_history()
+            anchors, spacing, since, h = history if history is not None else (None, 0, 0, 0.0)
+            return State(model=self.model.name, source_hash=self.model.source_hash, time=self._sim.time,
+                         q=self.q, qdot=self.qdot, lce=self.lce, activation=self.activation,
+                         excitation=self._sim.excitation, hand_force=self._sim.hand_force,
+                         hand_moment=self._sim.hand_moment, path_anchors=anchors,
+                         path_anchor_steps=(spacing, since), previous_step=h)
 
     def set_state(self, state: State) -> None:
-        """Restores a State taken from an arm of the same model (ValueError otherwise, or for arrays of
-        the wrong shape or with NaN). Clears a divergence error; restarts CVODE's history."""
+        """Restores a State taken from an arm of the same model (ValueError otherwise, for arrays of
+        the wrong shape or with NaN, or a q more than checks.RANGE_MARGIN beyond the joint ranges). Clears a divergence error; restarts CVODE's history."""
         if not isinstance(state, State):
             raise TypeError(f"set_state takes an armrt.State (from get_state()), got {type(state).__name__}")
         if state.source_hash != self.model.source_hash:
@@ -237,6 +269,8 @@ class Data:
                 raise ValueError(f"State.{k} must have shape {shape}, got {a.shape}")
             if not np.all(np.isfinite(a)):
                 raise ValueError(f"State.{k} contains NaN or infinite values")
+        # As reset(q=...) checks q, without its warning for slightly beyond: a simulated state can end there.
+        joint_range(state.q, self.model.dof_names, self.model.dof_ranges, warn=False)
         if not np.isfinite(state.time):
             raise ValueError(f"State.time must be finite, got {state.time}")
         if not (np.isfinite(state.previous_step) and state.previous_step >= 0):
@@ -279,6 +313,10 @@ class Data:
     def _load(self, x, excitation, hand_force, hand_moment, time: float, ros2_history=None) -> None:
         """Writes a state as is (set_state validates first; Arm.__deepcopy__ copies a diverged state too);
         ros2_history: (anchors (k, ndof), anchor spacing, steps since the newest anchor, step size) or None."""
+        with self._exclusive():
+            self._write(x, excitation, hand_force, hand_moment, time, ros2_history)
+
+    def _write(self, x, excitation, hand_force, hand_moment, time: float, ros2_history) -> None:
         self._sim.state[:] = x
         self._sim.excitation[:] = excitation
         self._sim.hand_force[:] = hand_force

@@ -28,8 +28,10 @@ from pathlib import Path
 import numpy as np
 
 from .arm import Arm
-from .experiments import (CUFF, DT, INTEGRATOR, Progress, Sequence, deltoid_sequence, fig3_limit, paper_tasks,
-                          plateau_elevation, tune_cuff_boost)
+from .experiments_protocol import (CUFF, DT, INTEGRATOR, Phase, Sequence, deltoid_sequence, fig3_limit,
+                                   middle_anterior_deltoid, paper_tasks, plateau_elevation, tune_cuff_boost)
+from .experiments_protocol import new_arm as new_das2_arm
+from .progress import Progress, quiet
 
 MODEL = "das3"
 SETTLE_DURATION = 6.0      # s: the relaxed das3 moves for ~2 s; over 5.5-6 s its joints turn < 0.1 deg/s
@@ -250,7 +252,6 @@ def rhythm_sequence(deltoid: list[str], scapular: float, q0, deltoid_level: floa
                     on: float = RHYTHM_ON, full: float = RHYTHM_FULL) -> Sequence:
     """Humeral elevation: the middle+anterior deltoid elements, the four cuff muscles, serratus anterior
     and trapezius ramped together from zero at `on` to their levels at `full` (s), then held."""
-    from .experiments import Phase
     groups = {e: deltoid_level for e in deltoid}
     groups.update({m: cuff for m in CUFF})
     if scapular > 0:
@@ -426,7 +427,6 @@ def run_all(out_dir="results", quick: bool = False, progress: bool = True) -> in
     excitation ramps is most of the time (RHYTHM_REFERENCE_LEVEL)."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    from .progress import quiet
     # Stages: settling, das2's baseline and two tunings (paper_tasks), Fig. 1-3, rhythm, report.
     prog = Progress(total=10, enabled=progress)
     try:
@@ -626,7 +626,6 @@ def report(s: dict) -> str:
 def rhythm_references(levels=RHYTHM_SCAPULAR) -> dict:
     """ROS2 against CVODE on the full rhythm run at each serratus + trapezius level (run_all checks
     RHYTHM_REFERENCE_LEVEL only; CVODE takes minutes per level here). Returns level -> max_difference."""
-    from .experiments import middle_anterior_deltoid, new_arm as new_das2_arm
     deltoid = middle_anterior_deltoid(new_das2_arm())
     q0 = settle(SETTLE_DURATION, (INTEGRATOR,)).q[INTEGRATOR]
     out = {}

@@ -27,12 +27,12 @@ element's line of action at the GH joint.
 from __future__ import annotations
 
 import json
-import os
 from pathlib import Path
 
 import numpy as np
 
 from . import _core
+from .model_files import find_model_file  # noqa: F401 (armrt.geometry.find_model_file)
 
 BONES = ("humerus", "ulna", "radius", "hand")
 # Moving girdle polylines of a thorax-based model (ArmGeometry.girdle), in drawing order.
@@ -42,25 +42,6 @@ POINTS = ("gh", "elbow", "ulna_distal", "radius_proximal", "wrist", "hand")
 # Segments as (name, start point, end point).
 SEGMENTS = (("humerus", "gh", "elbow"), ("ulna", "elbow", "ulna_distal"),
             ("radius", "radius_proximal", "wrist"), ("hand", "wrist", "hand"))
-
-
-def find_model_file(model: str) -> Path | None:
-    """The model file models/<model>.json: the file a model was loaded from (armrt.Model.load), in
-    $ARMRT_MODEL_DIR, installed beside the package (armrt/models/), or in the source checkout
-    (python/armrt/../../models); None if absent."""
-    # A model name is a plain identifier: never a path (a result file's `model` field reaches here).
-    if not isinstance(model, str) or not model.replace("_", "").isalnum() or not model.isascii():
-        raise ValueError(f"model name must be letters, digits and '_', got {str(model)[:80]!r}")
-    from .model import _LOADED
-    if model in _LOADED:  # loaded from a file in this process (armrt.Model.load)
-        return _LOADED[model][0]
-    here = Path(__file__).resolve().parent
-    dirs = [Path(os.environ["ARMRT_MODEL_DIR"])] if os.environ.get("ARMRT_MODEL_DIR") else []
-    dirs += [here / "models", here.parents[1] / "models"]
-    for d in dirs:
-        if (d / f"{model}.json").exists():
-            return d / f"{model}.json"
-    return None
 
 
 def _kabsch(a: np.ndarray, b: np.ndarray):

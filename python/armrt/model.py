@@ -19,10 +19,10 @@ from types import MappingProxyType
 import numpy as np
 
 from . import _core
-from .model_build import BuildResult, build
-
-# Model files loaded in this process: name -> (model file, library). geometry.find_model_file reads it.
-_LOADED: dict[str, tuple[Path, Path]] = {}
+from .checks import real_array
+from .model_build import BuildResult, build, cached_library
+from .model_files import LOADED as _LOADED
+from .model_files import find_model_file
 # One Model object per ModelDef (address), so `Model("x") is Model("x")` and loads are shared.
 _MODELS: dict[int, "Model"] = {}
 
@@ -52,22 +52,6 @@ def _register_elsewhere(library: Path) -> None:
             continue
         if hasattr(ext, "load_model_library"):
             ext.load_model_library(str(library))
-
-
-def _refuse_name_clash(path: Path) -> None:
-    """ValueError before any build if a different model of the file's name is registered (names
-    identify models in results, the real-time runner and the viewer). A file that cannot be read or
-    parsed is left to build() to report."""
-    import hashlib
-    try:
-        data = path.read_bytes()
-        name = json.loads(data).get("name")
-    except (OSError, ValueError, AttributeError, RecursionError):
-        return
-    known = _core.find_model(name) if isinstance(name, str) else None
-    if known is not None and known.source_hash != hashlib.sha256(data).hexdigest():
-        raise ValueError(f"{path}: a different model named {name!r} is already registered (model file sha256 "
-                         f"{known.source_hash[:12]}...): give this model file another 'name'")
 
 
 class Model:
@@ -116,8 +100,7 @@ class Model:
 
         Raises FileNotFoundError, armrt.ModelFileError (the field and element that fail validation),
         armrt.CompilerNotFoundError, armrt.ModelBuildError (with the build log's path), ValueError if a
-        different model of the same name is already registered."""
-        _refuse_name_clash(Path(path))
+        different model of the same name is already registered (checked before anything is built)."""
         res: BuildResult = build(path, force=rebuild)
         d = _core.load_model_library(str(res.library))
         _register_elsewhere(res.library)
@@ -133,7 +116,6 @@ class Model:
         d = _core.find_model(name)
         if d is not None:
             return cls._of(d) if d.source_hash == source_hash else None
-        from .model_build import cached_library
         lib = cached_library(name, source_hash)
         if lib is None:
             return None
@@ -295,7 +277,6 @@ class Model:
         """The model file: the one loaded, or for a built-in model the shipped models/<name>.json if found."""
         if self._file is not None:
             return self._file
-        from .geometry import find_model_file
         return find_model_file(self.name)
 
     @property
@@ -334,7 +315,6 @@ class Model:
 
     # ------------------------------------------------------------------ functions of a pose
     def _q(self, q, what: str = "q") -> np.ndarray:
-        from .arm import real_array
         a = np.ascontiguousarray(real_array(q, what))
         nd = self.n_dofs
         if a.shape[-1:] != (nd,) or a.ndim not in (1, 2):
@@ -373,7 +353,6 @@ class Model:
         beyond it; theta_a for a force along the normal) and gh_rim_direction (rad, psi = atan2(phi, theta)
         in (-pi, pi]: 0 superior, pi/2 anterior, +-pi inferior, -pi/2 posterior). ValueError for another
         shape or a non-finite force, TypeError for a complex or non-numeric one."""
-        from .arm import real_array
         f = np.ascontiguousarray(real_array(force, "force"))
         if f.ndim not in (1, 2) or f.shape[-1:] != (3,):
             raise ValueError(f"force must have shape (3,) or (k, 3) (N, scapula frame), got {f.shape}")

@@ -32,6 +32,10 @@ HERE = Path(__file__).resolve().parent
 # Checkout layout (PYTHONPATH=python or pytest from the repository root): python/armrt/../../{cpp,codegen}.
 REPO = HERE.parents[1]
 LIBRARY_NAME = "libarmrt_model.so"
+# SHA-256 of the library, written beside it when it is built and checked before every dlopen: a
+# truncated or damaged .so (a full disk, an interrupted copy, bit rot) kills the process in dlopen
+# with SIGBUS or SIGSEGV, before any message could be printed.
+CHECKSUM_NAME = LIBRARY_NAME + ".sha256"
 
 
 class ModelBuildError(RuntimeError):
@@ -155,7 +159,7 @@ def _generator_hash(gen_root: Path, module: str) -> str:
 
 
 def cache_key(source_hash: str, cfg: dict, compiler: list[str], gen: tuple[str, Path]) -> str:
-    from . import __version__
+    from ._version import __version__
     parts = {"model": source_hash, "abi": cfg["abi_version"], "armrt": __version__, "cxx": compiler,
              "cxx_id": cfg.get("cxx_id", ""), "flags": cfg["flags"], "dynamics_flags": cfg["dynamics_flags"],
              "generator": _generator_hash(gen[1], gen[0])}
@@ -173,20 +177,176 @@ def cache_entry(source_hash: str, cfg: dict | None = None, gen: tuple[str, Path]
     return cache_dir() / "models" / cache_key(source_hash, cfg, configured, gen)[:24]
 
 
+def _file_sha256(path: Path) -> str:
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+def library_problem(library: Path) -> str | None:
+    """Why the cached library must not be dlopened (None: its SHA-256 matches the checksum written
+    when it was built)."""
+    checksum = library.parent / CHECKSUM_NAME
+    try:
+        expected = checksum.read_text().split()[0]
+    except (OSError, IndexError):
+        return f"{library} has no checksum ({checksum}: built by an older armrt, or its build was interrupted)"
+    try:
+        actual = _file_sha256(library)
+    except OSError as exc:
+        return f"{library} cannot be read: {exc}"
+    if actual != expected:
+        return f"{library} does not match its checksum (sha256 {actual[:12]}..., built as {expected[:12]}...): damaged"
+    return None
+
+
+def library_intact(library: Path) -> bool:
+    """True if the library's SHA-256 matches the checksum written when it was built."""
+    return library_problem(library) is None
+
+
 def cached_library(name: str, source_hash: str) -> Path | None:
     """The library already built for the model file of that name and SHA-256 with this configuration,
-    or None. Used to reopen a result's model without its file; builds nothing."""
+    or None. Used to reopen a result's model without its file; builds nothing. ModelBuildError if the
+    library is there but fails its checksum: without the model file it cannot be rebuilt here."""
     entry = cache_entry(source_hash)
     try:
         meta = json.loads((entry / "model.json").read_text())
     except (OSError, ValueError):
         return None
     ok = meta.get("name") == name and meta.get("source_hash") == source_hash
-    return entry / LIBRARY_NAME if ok and (entry / LIBRARY_NAME).is_file() else None
+    library = entry / LIBRARY_NAME
+    if not (ok and library.is_file()):
+        return None
+    problem = library_problem(library)
+    if problem:
+        raise ModelBuildError(f"the cached library of model {name!r} is not loaded: {problem}. Load its model file "
+                              f"with armrt.Model.load({meta.get('model_file', 'FILE.json')!r}), which rebuilds it")
+    return library
 
 
 # ------------------------------------------------------------------------------------ validation
 _LISTS = {"elements": "element", "dofs": "DOF", "muscles": "muscle", "bodies": "body"}
+
+# Names: at most 64 characters. The longest name in das2/das3/participant_A is 17 (OpenSim's and DAS3's
+# are of that order); a model name becomes a file name (with the generator's suffixes, under the 255
+# bytes of common file systems), a C symbol and a column of every table and message, so a 100 000
+# character name is a mistake, not a model. A model name is also a C identifier and a file name, and
+# find_model_file takes it as one: ASCII letters, digits and '_', not starting with a digit.
+MAX_NAME_LENGTH = 64
+MODEL_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+# Physical ranges (SI) of what the file gives, with the extremes of das2/das3/participant_A beside
+# them: the bounds are a factor of 10 or more beyond any human arm, so only non-physical values (a
+# mass of 1e-300 kg, a 10 km bone) fail. Body mass: 1 g to 100 kg (DAS3: clavicle 0.156 kg to humerus
+# 2.05 kg). Principal moments of inertia: 1e-9 kg m^2 (1 g at a 1 mm radius of gyration) to 10 kg m^2
+# (100 kg at 0.3 m) (DAS3: 1.3e-6 to 0.013). Lengths of the skeleton (centres of mass, joint
+# locations, the hand point): each coordinate within 1 m (DAS3: at most 0.29 m). Muscle elements:
+# fmax 0.01 N to 10 kN (DAS3 16-510 N, participant A's weakest 3.5 N; the largest human muscles give
+# a few kN), lceopt and lslack 1 mm to 1 m (DAS3 0.02-0.34 m and 0.004-0.23 m).
+BODY_MASS_RANGE = (1e-3, 1e2)                 # kg
+INERTIA_RANGE = (1e-9, 1e1)                   # kg m^2, principal moments
+SKELETON_COORDINATE_LIMIT = 1.0               # m
+ELEMENT_RANGES = {"fmax": ((1e-2, 1e4), "N"), "lceopt": ((1e-3, 1.0), "m"), "lslack": ((1e-3, 1.0), "m")}
+
+
+def _number(v) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def check_model_document(path, data: bytes) -> dict:
+    """The model file's JSON after the checks armrt makes before the generator sees it (the generator's
+    schema checks follow in validate_file): UTF-8, valid JSON, names of at most MAX_NAME_LENGTH
+    characters (the model's an identifier, MODEL_NAME), and masses, inertias, lengths and element
+    parameters within the physical ranges above. ModelFileError naming the file, the field and the
+    item; what is missing or of the wrong type is left to the generator to report."""
+    path = Path(path)
+
+    def fail(msg: str):
+        raise ModelFileError(f"{path}: {_name_the_item(path, msg, doc)}")
+    doc = None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise ModelFileError(f"{path}: not UTF-8 (byte {exc.start}: {exc.reason}); a model file must be UTF-8 "
+                             f"encoded JSON (docs/model_schema.md): re-save it as UTF-8") from None
+    try:
+        doc = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise ModelFileError(f"{path}: not valid JSON ({exc})") from None
+    except RecursionError:
+        raise ModelFileError(f"{path}: nested too deeply to be a model file") from None
+    if not isinstance(doc, dict):
+        raise ModelFileError(f"{path}: a model file is a JSON object, got {type(doc).__name__}")
+    name = doc.get("name")
+    if isinstance(name, str):
+        if len(name) > MAX_NAME_LENGTH:
+            fail(f"field 'name' is {len(name)} characters long, more than {MAX_NAME_LENGTH} ({name[:40]!r}...)")
+        if not (name.isascii() and MODEL_NAME.fullmatch(name)):
+            fail(f"field 'name' {name!r} must be ASCII letters, digits and '_', not starting with a digit (it "
+                 f"becomes a file name and a C symbol)")
+
+    def items(key):
+        v = doc.get(key)
+        return list(enumerate(v)) if isinstance(v, list) else []
+    for key in ("dofs", "bodies", "muscles", "elements"):
+        for i, item in items(key):
+            n = item.get("name") if isinstance(item, dict) else None
+            if isinstance(n, str) and len(n) > MAX_NAME_LENGTH:
+                fail(f"field '{key}[{i}].name' is {len(n)} characters long, more than {MAX_NAME_LENGTH} ({n[:40]!r}...)")
+    groups = doc.get("groups")
+    if isinstance(groups, dict):
+        for g in groups:
+            if len(g) > MAX_NAME_LENGTH:
+                fail(f"group name in 'groups' is {len(g)} characters long, more than {MAX_NAME_LENGTH} ({g[:40]!r}...)")
+
+    def in_range(field: str, v, lo: float, hi: float, unit: str):
+        if _number(v) and not (lo <= v <= hi):
+            fail(f"field '{field}' = {v:g} {unit} is outside [{lo:g}, {hi:g}] {unit}, the physical range armrt "
+                 f"accepts (armrt.model_build: a factor of 10 or more beyond any human arm)")
+
+    def coordinates(field: str, v):
+        if isinstance(v, list):
+            for c in v:
+                if _number(c) and abs(c) > SKELETON_COORDINATE_LIMIT:
+                    fail(f"field '{field}' has a coordinate of {c:g} m, beyond +-{SKELETON_COORDINATE_LIMIT:g} m "
+                         f"(an arm's segments are under 0.4 m)")
+    for i, b in items("bodies"):
+        if not isinstance(b, dict):
+            continue
+        in_range(f"bodies[{i}].mass", b.get("mass"), *BODY_MASS_RANGE, "kg")
+        inertia = b.get("inertia")
+        if (isinstance(inertia, list) and len(inertia) == 3 and all(isinstance(r, list) and len(r) == 3 and
+                                                                      all(_number(x) for x in r) for r in inertia)):
+            import numpy as np
+            moments = np.linalg.eigvalsh(0.5 * (np.array(inertia, dtype=float) + np.array(inertia, dtype=float).T))
+            lo, hi = INERTIA_RANGE
+            if not np.all(np.isfinite(moments)) or moments.min() < lo or moments.max() > hi:
+                fail(f"field 'bodies[{i}].inertia' has principal moments {', '.join(f'{m:.3g}' for m in moments)} "
+                     f"kg m^2, outside [{lo:g}, {hi:g}] kg m^2, the physical range armrt accepts")
+        coordinates(f"bodies[{i}].com", b.get("com"))
+        joint = b.get("joint")
+        if isinstance(joint, dict):
+            coordinates(f"bodies[{i}].joint.location_in_parent", joint.get("location_in_parent"))
+    hand = doc.get("hand_point")
+    if isinstance(hand, dict):
+        coordinates("hand_point.point", hand.get("point"))
+    for i, e in items("elements"):
+        if isinstance(e, dict):
+            for k, ((lo, hi), unit) in ELEMENT_RANGES.items():
+                in_range(f"elements[{i}].{k}", e.get(k), lo, hi, unit)
+    return doc
+
+
+def refuse_name_clash(path, name, source_hash: str) -> None:
+    """ValueError, before anything is built, if a different model (another file hash) of the file's
+    name is registered: names identify models in results, the real-time runner and the viewer."""
+    from . import _core
+    known = _core.find_model(name) if isinstance(name, str) else None
+    if known is not None and known.source_hash != source_hash:
+        raise ValueError(f"{path}: a different model named {name!r} is already registered (model file sha256 "
+                         f"{known.source_hash[:12]}...): give this model file another 'name'")
 
 
 def validate_file(path) -> tuple[dict, str]:
@@ -196,6 +356,7 @@ def validate_file(path) -> tuple[dict, str]:
     path = Path(path)
     if not path.is_file():
         raise FileNotFoundError(2, "no such model file", str(path))
+    check_model_document(path, path.read_bytes())
     module, root = generator()
     if str(root) not in sys.path:
         sys.path.insert(0, str(root))
@@ -211,13 +372,14 @@ def validate_file(path) -> tuple[dict, str]:
         raise ModelFileError(f"{path}: {_name_the_item(path, str(exc))}") from None
 
 
-def _name_the_item(path: Path, message: str) -> str:
-    """'... field 'elements[3].fmax' ...' -> '... (element 'deltscap4')' when the file says so."""
+def _name_the_item(path: Path, message: str, doc: dict | None = None) -> str:
+    """'... field 'elements[3].fmax' ...' -> '... (element 'deltscap4')' when the file (or `doc`, the file
+    already parsed) says so."""
     m = re.search(r"'(elements|dofs|muscles|bodies)\[(\d+)\]", message)
     if not m:
         return message
     try:
-        item = json.loads(path.read_bytes())[m.group(1)][int(m.group(2))]
+        item = (doc if doc is not None else json.loads(path.read_bytes()))[m.group(1)][int(m.group(2))]
         name = item.get("name") if isinstance(item, dict) else None
     except (OSError, ValueError, KeyError, IndexError, TypeError, RecursionError):
         name = None
@@ -262,13 +424,25 @@ def build(path, force: bool = False, jobs: int | None = None) -> BuildResult:
     except FileNotFoundError:
         raise FileNotFoundError(2, "no such model file", str(path)) from None
     source_hash = hashlib.sha256(data).hexdigest()
+    # Before the cache and the compiler: a file armrt refuses is refused in milliseconds, not after a build.
+    doc = check_model_document(path, data)
+    refuse_name_clash(path, doc.get("name"), source_hash)
     cfg = build_config()
     gen = generator()
     entry = cache_entry(source_hash, cfg, gen)
     library, meta_path, log_path = entry / LIBRARY_NAME, entry / "model.json", entry / "build.log"
 
+    warned: list[str] = []
+
     def cached() -> BuildResult | None:
         if force or not library.is_file() or not meta_path.is_file():
+            return None
+        problem = library_problem(library)
+        if problem:
+            if not warned:  # once, though cached() is asked again under the lock
+                warned.append(problem)
+                import warnings
+                warnings.warn(f"{problem}; rebuilding it", RuntimeWarning, stacklevel=3)
             return None
         meta = json.loads(meta_path.read_text())
         return BuildResult(library, meta["name"], source_hash, path, time.perf_counter() - t0, True, log_path)
@@ -317,6 +491,9 @@ def build(path, force: bool = False, jobs: int | None = None) -> BuildResult:
             out = work / LIBRARY_NAME
             if _run([*compiler, *flags, "-shared", "-o", out, *[obj for obj, _, _ in results]], log) != 0:
                 raise ModelBuildError(f"linking model {model['name']!r} failed; build log: {log_path}", log_path)
+            # The checksum first: a crash before the library is in place leaves a mismatch (a rebuild),
+            # never a library without its checksum.
+            (entry / CHECKSUM_NAME).write_text(f"{_file_sha256(out)}  {LIBRARY_NAME}\n")
             os.replace(out, library)
             meta = {"name": model["name"], "model_file": str(path.resolve()), "source_hash": source_hash,
                     "built": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()), "compiler": compiler,

@@ -22,6 +22,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .model_files import find_model_file
+
 
 @dataclass
 class ProfileElements:
@@ -97,7 +99,6 @@ def resolve(path_or_name) -> Path:
         if not p.exists():
             raise FileNotFoundError(f"profile file {p} does not exist")
         return p
-    from .geometry import find_model_file
     found = find_model_file(str(path_or_name))
     if found is None:
         raise FileNotFoundError(f"no profile named {str(path_or_name)!r}: not a file, and no model file "

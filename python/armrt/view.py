@@ -630,7 +630,7 @@ def _cmd_animate(args) -> int:
 
 def _cmd_export(args) -> int:
     from .arm import Result
-    from .cli import CliError, check_suffix
+    from .cli_common import CliError, check_suffix
     from .opensim_io import write_activation_sto, write_excitation_sto, write_mot
     if not (args.mot or args.sto or args.controls):
         raise CliError("give --mot FILE, --sto FILE and/or --controls FILE")
@@ -649,7 +649,7 @@ def _cmd_export(args) -> int:
 
 def add_cli(subparsers, formatter_class=None) -> None:
     """Registers `view`, `animate` and `export` on an argparse subparsers object (each sets func)."""
-    from .arm import DEFAULT_INTEGRATOR, INTEGRATORS
+    from .integrators import DEFAULT_INTEGRATOR, INTEGRATORS
     kw = {"formatter_class": formatter_class} if formatter_class else {}
     p = subparsers.add_parser("view", help="live 3D view in the browser (demo simulation, a saved result, or UDP)",
                               **kw)

@@ -1,0 +1,123 @@
+"""Input checks shared by the API (Arm, ArmBatch, Model, the real-time client): real numbers, counts,
+registered model names, and the unit helpers deg/rad. Each names the input it refuses."""
+from __future__ import annotations
+
+import numbers
+import operator
+
+import numpy as np
+
+from . import _core
+
+# Largest step count or record interval the engine counts (C++ long on every supported platform).
+MAX_COUNT = 2**63 - 1
+# reset(q=...) and set_state refuse a joint further than this (rad, ~11 deg) beyond its range.
+RANGE_MARGIN = 0.2
+
+
+def _masked_count(values) -> int:
+    """How many values are masked in a numpy masked array, or in a list/tuple holding some (np.asarray
+    would drop the masks and use the values under them)."""
+    if isinstance(values, np.ma.MaskedArray):
+        return int(np.ma.count_masked(values))
+    if isinstance(values, (list, tuple)):
+        return sum(_masked_count(v) for v in values)
+    return 0
+
+
+def real_array(values, what: str) -> np.ndarray:
+    """`values` as a float array; TypeError for what is not real numbers (complex, strings, None,
+    other objects) instead of numpy's silent casts (complex -> real part, None -> NaN); ValueError for
+    a numpy masked array with masked values (np.asarray would use the values hidden under the mask)."""
+    if isinstance(values, (str, bytes)):
+        raise TypeError(f"{what} must be numbers, got the string {values!r}")
+    masked = _masked_count(values)
+    if masked:
+        raise ValueError(f"{what} is a masked array with {masked} masked value{'s' if masked > 1 else ''}: armrt "
+                         f"would see the values under the mask; give every value (values.filled(x)) or drop the "
+                         f"masked ones")
+    try:
+        arr = np.asarray(values)
+    except ValueError as exc:  # ragged nesting
+        raise ValueError(f"{what} must be a regular array of numbers: {exc}") from None
+    if arr.dtype.kind == "O":
+        for v in arr.ravel():
+            if v is None:
+                raise TypeError(f"{what} contains None; give a number for every value")
+            if not isinstance(v, numbers.Real) or isinstance(v, (str, bytes)):
+                raise TypeError(f"{what} must be real numbers, got {type(v).__name__} {v!r}")
+        arr = arr.astype(float)
+    if arr.dtype.kind not in "biuf":
+        kind = {"c": "complex", "U": "string", "S": "bytes", "M": "datetime", "m": "timedelta", "V": "structured"}
+        raise TypeError(f"{what} must be real numbers, got {kind.get(arr.dtype.kind, str(arr.dtype))} values "
+                        f"(dtype {arr.dtype})")
+    return arr.astype(float, copy=False)
+
+
+def real_scalar(value, what: str) -> float:
+    """One real number (see real_array); TypeError for anything else, ValueError for arrays."""
+    arr = real_array(value, what)
+    if arr.ndim != 0:
+        raise ValueError(f"{what} must be a single number, got shape {arr.shape}")
+    return float(arr)
+
+
+def count(value, what: str, minimum: int = 0) -> int:
+    """An integer count in [minimum, MAX_COUNT]; TypeError for 1.7 or '3', OverflowError above."""
+    if isinstance(value, bool):
+        raise TypeError(f"{what} must be an integer, got {value!r}")
+    try:
+        n = operator.index(value)
+    except TypeError:
+        raise TypeError(f"{what} must be an integer, got {type(value).__name__} {value!r}") from None
+    if n < minimum:
+        raise ValueError(f"{what} must be >= {minimum}, got {n}")
+    if n > MAX_COUNT:
+        raise OverflowError(f"{what} = {n} is too large (at most 2**63 - 1)")
+    return n
+
+
+def deg(x):
+    """Radians to degrees (arrays welcome)."""
+    return np.degrees(x)
+
+
+def rad(x):
+    """Degrees to radians (arrays welcome)."""
+    return np.radians(x)
+
+
+def known_model(name) -> str:
+    """`name` if it is a registered model (built in, or loaded in this process); ValueError otherwise
+    (so a name read from a file can never become a path)."""
+    if not isinstance(name, str):
+        raise ValueError(f"model must be a model name, got {type(name).__name__}")
+    try:
+        _core.model_info(name)
+    except ValueError as exc:
+        raise ValueError(str(exc)) from None
+    return name
+
+
+def joint_range(q: np.ndarray, dof_names, dof_ranges: np.ndarray, warn: bool = True) -> np.ndarray:
+    """q (ndof,) rad itself; ValueError if a joint is more than RANGE_MARGIN rad beyond its range
+    (dof_ranges (ndof, 2) rad), with a hint when the values look like degrees. Beyond it by less:
+    a RuntimeWarning if `warn` (the passive joint limits are springs, so a simulated state can end
+    slightly outside; set_state restores such a state without one)."""
+    lo, hi = dof_ranges[:, 0], dof_ranges[:, 1]
+    outside = (q < lo) | (q > hi)
+    if not outside.any():
+        return q
+    desc = "; ".join(f"{dof_names[j]} = {q[j]:.4g} rad ({np.degrees(q[j]):.1f} deg) outside "
+                     f"[{np.degrees(lo[j]):.1f}, {np.degrees(hi[j]):.1f}] deg" for j in np.flatnonzero(outside))
+    far = (q < lo - RANGE_MARGIN) | (q > hi + RANGE_MARGIN)
+    if far.any():
+        r = np.radians(q)
+        hint = (" These look like degrees: q is in radians (np.radians(q) or armrt.rad(q); "
+                "armrt simulate --q-deg on the command line)."
+                if np.all((r >= lo - RANGE_MARGIN) & (r <= hi + RANGE_MARGIN)) else "")
+        raise ValueError(f"q beyond the joint limits: {desc}.{hint}")
+    if warn:
+        import warnings
+        warnings.warn(f"q slightly beyond the joint limits: {desc}", RuntimeWarning, stacklevel=4)
+    return q

@@ -1,0 +1,248 @@
+"""Result: the time series a simulation records (Arm.simulate, ArmBatch, the real-time runner's log
+replays), with its save/load (.npz), DataFrame and plot; and the row-size arithmetic simulate() uses
+to refuse a Result that would not fit in memory."""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import _core
+from .checks import known_model
+from .model import Model
+
+def _row_bytes(n_elements: int, n_dofs: int = 5) -> int:
+    """Bytes of one recorded row of a Result: 5 per-element channels, q and qdot, 16 other values (time 1,
+    gh_force 3, gh_stab 1, gh_angles 2, gh_rim_margin 1, gh_rim_direction 1, hand_position 3, thorax_humerus 3,
+    tet_ns 1), float64."""
+    return 8 * (5 * n_elements + 2 * n_dofs + 16)
+
+
+def _recorded_rows(n_steps: int, record_every: int) -> int:
+    """Rows simulate() records: steps 0, k, 2k, ... and the final state when it falls on the grid."""
+    return -(-n_steps // record_every) + (1 if n_steps % record_every == 0 else 0)
+
+
+@dataclass(repr=False)
+class Result:
+    """Time series of a simulation; row k is the state at time[k] and the outputs at that state.
+
+    repr() is one line; to_dataframe() gives a pandas DataFrame (pandas optional), plot() a figure."""
+
+    time: np.ndarray            # (T,) s
+    q: np.ndarray               # (T, ndof) rad
+    qdot: np.ndarray            # (T, ndof) rad/s
+    lce: np.ndarray             # (T, n) m, contractile-element lengths
+    activation: np.ndarray      # (T, n)
+    excitation: np.ndarray      # (T, n)
+    muscle_force: np.ndarray    # (T, n) N
+    muscle_length: np.ndarray   # (T, n) m, muscle-tendon lengths
+    gh_force: np.ndarray        # (T, 3) N, humeral head on glenoid, scapula frame
+    gh_stab: np.ndarray         # (T,) 1, (theta/theta_a)^2 + (phi/phi_a)^2; > 1 beyond the rim
+    gh_angles: np.ndarray       # (T, 2) rad, theta (major axis, + superior), phi (minor axis, + anterior)
+    gh_rim_margin: np.ndarray   # (T,) rad, how far the GH force can still turn towards the rim; < 0 beyond it
+    gh_rim_direction: np.ndarray  # (T,) rad, psi = atan2(phi, theta): 0 superior, pi/2 anterior
+    hand_position: np.ndarray   # (T, 3) m, thorax frame
+    thorax_humerus: np.ndarray  # (T, 3) rad: plane of elevation, elevation, axial rotation
+    tet_ns: np.ndarray          # (T,) ns, task execution time of the step that started at that row
+    dof_names: list = field(default_factory=list)
+    element_names: list = field(default_factory=list)
+    integrator: str = ""
+    dt: float = 0.0             # control step (s)
+    substeps: int = 1           # integration steps per control step
+    model: str = ""
+    model_hash: str = ""        # SHA-256 of the model file (reopens a model built on demand from the cache)
+    # Models whose scapula moves (das3) only, else None: first-order signed distance of each girdle
+    # contact point (TS, AI) from the thorax surface (negative: inside), and the conoid ligament's tension.
+    contact_distance: np.ndarray | None = None  # (T, P) m
+    conoid_tension: np.ndarray | None = None    # (T,) N
+
+    ARRAYS = ("time", "q", "qdot", "lce", "activation", "excitation", "muscle_force", "muscle_length",
+              "gh_force", "gh_stab", "gh_angles", "gh_rim_margin", "gh_rim_direction", "hand_position",
+              "thorax_humerus", "tet_ns")
+    # Arrays added after the first file format: a file without them gets them from its own recorded
+    # gh_angles through the engine (gh_rim), so that older results load whole.
+    _DERIVED_FROM_GH_ANGLES = ("gh_rim_margin", "gh_rim_direction")
+    OPTIONAL_ARRAYS = ("contact_distance", "conoid_tension")
+
+    @property
+    def q_deg(self) -> np.ndarray:
+        return np.degrees(self.q)
+
+    # Per-DOF and per-element channels, and the column names of the others (to_dataframe).
+    _DOF_CHANNELS = ("q", "qdot")
+    _ELEMENT_CHANNELS = ("lce", "activation", "excitation", "muscle_force", "muscle_length")
+    _OTHER_COLUMNS = {"gh_force": ("x", "y", "z"), "gh_angles": ("theta", "phi"), "hand_position": ("x", "y", "z"),
+                      "thorax_humerus": ("plane_of_elevation", "elevation", "axial_rotation"),
+                      "gh_stab": None, "gh_rim_margin": None, "gh_rim_direction": None, "tet_ns": None, "contact_distance": ("TS", "AI"), "conoid_tension": None}
+
+    def channels(self) -> list[str]:
+        """The time-series names this Result has besides time: ARRAYS, and the girdle arrays when present."""
+        return [k for k in self.ARRAYS if k != "time"] + [k for k in self.OPTIONAL_ARRAYS if getattr(self, k) is not None]
+
+    def __repr__(self) -> str:
+        T = len(self.time)
+        if T == 0:
+            return f"Result({self.model or '?'}, empty)"
+        step = f"dt={self.dt * 1e3:g} ms" + (f" x{self.substeps} substeps" if self.substeps > 1 else "")
+        every = ""
+        if T > 1 and self.dt > 0:
+            k = int(round((self.time[1] - self.time[0]) / self.dt))
+            every = f", every {k} steps" if k > 1 else ""
+        q_end = np.array2string(np.degrees(self.q[-1]), precision=1, separator=", ", suppress_small=True)
+        stab = np.nanmax(self.gh_stab) if np.any(np.isfinite(self.gh_stab)) else float("nan")
+        mb = sum(getattr(self, k).nbytes for k in self.ARRAYS) / 1e6
+        return (f"Result({self.model or '?'}, {self.integrator or 'replay'} {step}: {T} rows{every}, "
+                f"t = {self.time[0]:g} to {self.time[-1]:g} s, {len(self.element_names)} elements; "
+                f"final q = {q_end} deg; GHstab max {stab:.3g}; {mb:.1f} MB)")
+
+    def to_dataframe(self, channels=None):
+        """A pandas DataFrame indexed by time (s), one column per value: 'q.GHy', 'activation.deltscap1',
+        'gh_force.x', 'gh_stab', ... in the Result's units (radians). channels: names from ARRAYS
+        (default all). Raises ImportError with the install command if pandas is absent, ValueError
+        for an unknown channel."""
+        try:
+            import pandas as pd
+        except ImportError:
+            raise ImportError("Result.to_dataframe needs pandas: pip install pandas "
+                              "(or pip install 'armrt[dataframe]')") from None
+        names = self.channels() if channels is None else list(channels)
+        unknown = [c for c in names if c not in self.channels()]
+        if unknown:
+            raise ValueError(f"unknown channels {unknown}; expected some of {self.channels()}")
+        cols = {}
+        for c in names:
+            a = np.asarray(getattr(self, c))
+            if c in self._DOF_CHANNELS:
+                labels = self.dof_names or [str(j) for j in range(a.shape[1])]
+            elif c in self._ELEMENT_CHANNELS:
+                labels = self.element_names or [str(i) for i in range(a.shape[1])]
+            else:
+                labels = self._OTHER_COLUMNS[c]
+            if labels is None:
+                cols[c] = a
+            else:
+                cols.update({f"{c}.{n}": a[:, j] for j, n in enumerate(labels)})
+        return pd.DataFrame(cols, index=pd.Index(np.asarray(self.time), name="time"))
+
+    def plot(self, channels=("q", "gh_stab"), names=None, fig=None):
+        """A matplotlib figure with one panel per channel against time: joint angles in degrees (the
+        label says so), GH stability with its limit of 1, other channels in their SI units. names:
+        the DOFs / elements to draw (default all DOFs, and for element channels the muscle means).
+        Returns the figure (call .savefig or plt.show())."""
+        import matplotlib.pyplot as plt
+        unknown = [c for c in channels if c not in self.channels()]
+        if unknown:
+            raise ValueError(f"unknown channels {unknown}; expected some of {self.channels()}")
+        fig = fig or plt.figure(figsize=(8, 2.2 * len(channels)))
+        axes = fig.subplots(len(channels), 1, sharex=True, squeeze=False)[:, 0]
+        for ax, c in zip(axes, channels):
+            a = np.asarray(getattr(self, c))
+            if c in self._DOF_CHANNELS:
+                scale, unit = (np.degrees(1.0), "deg" if c == "q" else "deg/s")
+                for j, n in enumerate(self.dof_names):
+                    if names is None or n in names:
+                        ax.plot(self.time, scale * a[:, j], label=n)
+                ax.set_ylabel(f"{c} ({unit})")
+            elif c in self._ELEMENT_CHANNELS:
+                pick = [i for i, n in enumerate(self.element_names) if names is None or n in names]
+                for i in pick[:12]:
+                    ax.plot(self.time, a[:, i], label=self.element_names[i], lw=0.8)
+                if len(pick) > 12:
+                    ax.plot(self.time, a[:, pick].mean(axis=1), "k", lw=1.5, label=f"mean of {len(pick)}")
+                ax.set_ylabel(c)
+            elif c == "contact_distance":
+                for j, n in enumerate(self._OTHER_COLUMNS[c][:a.shape[1]]):
+                    ax.plot(self.time, 1e3 * a[:, j], label=n)
+                ax.axhline(0.0, color="0.5", lw=0.8)
+                ax.set_ylabel("contact distance (mm)")
+            elif c == "gh_stab":
+                ax.plot(self.time, a, color="0.3")
+                ax.axhline(1.0, color="tab:red", ls="--", lw=0.8, label="rim (1)")
+                ax.set_ylabel("GHstab")
+            else:
+                ax.plot(self.time, a)
+                ax.set_ylabel(c)
+            if ax.get_legend_handles_labels()[0]:
+                ax.legend(fontsize=7, ncol=3, loc="best")
+        axes[-1].set_xlabel("time (s)")
+        fig.tight_layout()
+        return fig
+
+    def save(self, path) -> None:
+        """Saves to a compressed .npz (load with Result.load)."""
+        np.savez_compressed(path, **{k: getattr(self, k) for k in self.ARRAYS},
+                            **{k: getattr(self, k) for k in self.OPTIONAL_ARRAYS if getattr(self, k) is not None},
+                            dof_names=np.array(self.dof_names), element_names=np.array(self.element_names),
+                            integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model,
+                            model_hash=self.model_hash)
+
+    @classmethod
+    def load(cls, path) -> "Result":
+        """A Result saved with save(). ValueError (one line, naming the file) for a file that is not
+        a readable .npz, lacks the result arrays, has arrays of the wrong shape, or names a model that
+        is not registered (load its model file first: armrt.Model.load); FileNotFoundError if absent."""
+        import zipfile
+        path = str(path)
+        try:
+            z = np.load(path, allow_pickle=False)
+        except FileNotFoundError:
+            raise FileNotFoundError(f"{path}: no such file") from None
+        except (OSError, ValueError, zipfile.BadZipFile, EOFError) as exc:
+            raise ValueError(f"{path}: not an armrt result (.npz written by Result.save): {exc}") from None
+        if not hasattr(z, "files"):
+            raise ValueError(f"{path}: not an armrt result (a single .npy array, not an .npz)")
+        with z:
+            missing = [k for k in (*cls.ARRAYS, "dof_names", "element_names", "model")
+                       if k not in z.files and k not in cls._DERIVED_FROM_GH_ANGLES]
+            if missing:
+                raise ValueError(f"{path}: not an armrt result, missing arrays {missing}")
+            try:
+                fields = {k: np.asarray(z[k], dtype=float) for k in cls.ARRAYS if k in z.files}
+                fields.update({k: np.asarray(z[k], dtype=float) for k in cls.OPTIONAL_ARRAYS if k in z.files})
+                meta = dict(dof_names=[str(s) for s in z["dof_names"]],
+                            element_names=[str(s) for s in z["element_names"]],
+                            integrator=str(z["integrator"]) if "integrator" in z.files else "",
+                            dt=float(z["dt"]) if "dt" in z.files else 0.0,
+                            substeps=int(z["substeps"]) if "substeps" in z.files else 1, model=str(z["model"]),
+                            model_hash=str(z["model_hash"]) if "model_hash" in z.files else "")
+            except (OSError, ValueError, TypeError, zipfile.BadZipFile, EOFError) as exc:
+                raise ValueError(f"{path}: corrupt armrt result: {exc}") from None
+        try:
+            known_model(meta["model"])
+        except ValueError:
+            # A model built on demand in an earlier session: reopened from the cache (never rebuilt
+            # from a path: a result file names a model, it does not point at code to compile).
+            reopened = (Model.from_cache(meta["model"], meta["model_hash"])
+                        if re.fullmatch(r"[0-9a-f]{64}", meta["model_hash"]) else None)
+        else:
+            reopened = True
+        if reopened is None:
+            raise ValueError(f"{path}: the result's model field {meta['model'][:80]!r} is not a known model "
+                             f"(registered: {_core.model_names()}; a model built on demand: armrt.Model.load(its file) "
+                             f"first)") from None
+        absent = [k for k in cls._DERIVED_FROM_GH_ANGLES if k not in fields]
+        if absent:
+            fields.update(_rim_of_recorded_angles(meta["model"], fields["gh_angles"], path, absent))
+        T = fields["time"].shape[0] if fields["time"].ndim == 1 else -1
+        bad = [k for k, v in fields.items() if v.ndim == 0 or v.shape[0] != T]
+        if T < 0 or bad:
+            raise ValueError(f"{path}: corrupt armrt result: arrays {bad or ['time']} do not have one row per time")
+        return cls(**fields, **meta)
+
+
+def _rim_of_recorded_angles(model: str, gh_angles: np.ndarray, path: str, keys) -> dict:
+    """`keys` (gh_rim_margin, gh_rim_direction) of a result's own recorded gh_angles (T, 2) (theta, phi,
+    rad) on the model's rim (the engine's gh_rim): the file's angles, not its gh_force through today's
+    glenoid basis, which may not be the one it was recorded with. NaN where the row is NaN (a replay)."""
+    if gh_angles.ndim != 2 or gh_angles.shape[1] != 2:
+        raise ValueError(f"{path}: corrupt armrt result: gh_angles has shape {gh_angles.shape}, expected (T, 2)")
+    ok = np.all(np.isfinite(gh_angles), axis=1)
+    out = {k: np.full(len(gh_angles), np.nan) for k in keys}
+    if ok.any():
+        margin, direction = Model(model)._def.gh_rim_of_angles(np.ascontiguousarray(gh_angles[ok], dtype=float))
+        rim = {"gh_rim_margin": margin, "gh_rim_direction": direction}
+        for k in keys:
+            out[k][ok] = rim[k]
+    return out

@@ -1,0 +1,150 @@
+"""Guards of the Python API that cannot be sidestepped (issue 25, B2 and B4): arm.data goes through the
+Arm's one-thread guard, armrt.ConcurrentUseError is exported, the control step and substep count are
+bounded, set_state checks q as reset does, and masked arrays are refused wherever arrays come in."""
+from __future__ import annotations
+
+import copy
+import dataclasses
+import threading
+
+import numpy as np
+import pytest
+
+armrt = pytest.importorskip("armrt", reason="armrt is not built/installed (./run.sh setup)")
+
+
+# ------------------------------------------------------------------------------------ B2: one thread
+def test_concurrent_use_error_is_exported():
+    """The README names armrt.ConcurrentUseError; it is the class the guard raises."""
+    assert armrt.ConcurrentUseError is armrt.arm.ConcurrentUseError
+    assert "ConcurrentUseError" in armrt.__all__ and issubclass(armrt.ConcurrentUseError, RuntimeError)
+
+
+def _while_simulating(arm, calls):
+    """Runs each call on this thread while another thread is inside arm.simulate(); returns what each
+    raised (None if it returned), and the run's Result."""
+    inside, release = threading.Event(), threading.Event()
+    out = {}
+
+    def excitation(t):
+        if t == 0.0:
+            inside.set()
+            release.wait(5.0)
+        return {"bicb": 0.3}
+
+    worker = threading.Thread(target=lambda: out.setdefault("res", arm.simulate(excitation, 0.02)))
+    worker.start()
+    assert inside.wait(5.0)
+    raised = []
+    try:
+        for call in calls:
+            try:
+                call()
+                raised.append(None)
+            except Exception as exc:  # noqa: BLE001 (what each raised is the result)
+                raised.append(exc)
+    finally:
+        release.set()
+        worker.join()
+    return raised, out["res"]
+
+
+def test_arm_data_goes_through_the_arms_guard():
+    """arm.data.outputs() evaluates into the workspace the stepping thread is using and set_state
+    writes its state: from a second thread they raise ConcurrentUseError, as the Arm's own methods do,
+    and the run finishes undisturbed."""
+    arm = armrt.Arm(integrator="rk4")
+    state = arm.get_state()
+    d = arm.data
+    calls = [d.outputs, d.get_state, lambda: d.set_state(state), lambda: copy.deepcopy(d), lambda: d.excitation,
+             lambda: d.hand_force, lambda: d.hand_moment, lambda: d.time]
+    raised, res = _while_simulating(arm, calls)
+    for call, exc in zip(["outputs", "get_state", "set_state", "deepcopy", "excitation", "hand_force",
+                          "hand_moment", "time"], raised):
+        assert isinstance(exc, armrt.ConcurrentUseError), f"arm.data.{call} from a second thread: {exc!r}"
+        assert "another thread" in str(exc)
+    ref = armrt.Arm(integrator="rk4").simulate({"bicb": 0.3}, 0.02)
+    assert np.array_equal(res.q, ref.q)
+
+
+def test_data_on_the_stepping_thread_is_not_refused():
+    """The guard is per thread: a callback of simulate() may read arm.data (re-entrant)."""
+    arm = armrt.Arm(integrator="rk4")
+    seen = []
+
+    def excitation(t):
+        seen.append(arm.data.get_state().time)
+        arm.data.outputs()
+        return 0.1
+    arm.simulate(excitation, 0.005)
+    assert len(seen) == 5
+
+
+# ------------------------------------------------------------------------------------ B4: bounds
+def test_control_step_is_bounded():
+    """dt is the period the excitation is held for: above MAX_DT (1 s, 25 deactivation time constants)
+    nothing is being controlled, and Arm(dt=1e6) meant 999 999 000 substeps per step()."""
+    with pytest.raises(ValueError, match=r"dt must be .*at most 1 s.*got 1e\+06"):
+        armrt.Arm(dt=1e6)
+    with pytest.raises(ValueError, match=r"dt must be .*at most 1 s"):
+        armrt.ArmBatch(2, dt=2.0, threads=1)
+    for dt in (0.0, -1e-3, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="dt must be"):
+            armrt.Arm(dt=dt)
+    assert armrt.Arm(integrator="euler", dt=1.0).substeps == 10000  # the bound itself, default substeps
+
+
+def test_substep_count_is_bounded():
+    from armrt.integrators import MAX_SUBSTEPS
+    with pytest.raises(ValueError, match=rf"substeps must be at most {MAX_SUBSTEPS}.*got 1000000000"):
+        armrt.Arm(dt=1e-3, substeps=10**9)
+    assert armrt.Arm(integrator="rk4", dt=1e-3, substeps=MAX_SUBSTEPS).substeps == MAX_SUBSTEPS
+
+
+def test_set_state_checks_q_as_reset_does():
+    """A State whose q is far beyond the joint ranges is refused by set_state (Arm and Data alike) with
+    reset's message, degrees hint included; a State slightly beyond them (where a simulation can end:
+    the passive limits are springs) is restored without a warning."""
+    arm = armrt.Arm()
+    s = arm.get_state()
+    far = dataclasses.replace(s, q=s.q + 100.0)
+    with pytest.raises(ValueError, match="q beyond the joint limits: GHy = 100.4 rad"):
+        arm.set_state(far)
+    with pytest.raises(ValueError, match="q beyond the joint limits"):
+        arm.data.set_state(far)
+    with pytest.raises(ValueError, match="These look like degrees"):
+        arm.set_state(dataclasses.replace(s, q=np.degrees(s.q)))
+    assert arm.get_state() == s, "nothing was written"
+    hi = arm.dof_ranges[:, 1]
+    near = dataclasses.replace(s, q=np.where(np.arange(arm.n_dofs) == 3, hi + 0.05, s.q))
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        arm.set_state(near)
+    assert arm.q[3] == hi[3] + 0.05
+
+
+MASKED = np.ma.masked_array([0.1, 0.2, 0.3, 0.4, 0.5], mask=[0, 0, 1, 0, 0])
+
+
+@pytest.mark.parametrize("call", [
+    lambda arm: arm.reset(q=MASKED),
+    lambda arm: arm.reset(qdot=MASKED),
+    lambda arm: arm.set_hand_load(force=MASKED[:3]),
+    lambda arm: arm.set_excitation(np.ma.masked_array(np.full(102, 0.2), mask=np.arange(102) == 7)),
+    lambda arm: arm.set_excitation({"bicb": np.ma.masked}),
+    lambda arm: arm.reset(q=[np.ma.masked_array([0.1, 0.2], mask=[0, 1]), np.zeros(3)]),
+    lambda arm: arm.model.moment_arms(MASKED),
+    lambda arm: arm.simulate(0.0, np.ma.masked_array(0.01, mask=True)),
+], ids=["q", "qdot", "hand_force", "excitation", "dict_value", "nested", "model_q", "duration"])
+def test_masked_arrays_are_refused(call):
+    """np.asarray drops a mask and uses the values under it: refused in the one input check (real_array)."""
+    arm = armrt.Arm()
+    with pytest.raises(ValueError, match="masked array with 1 masked value.*filled"):
+        call(arm)
+
+
+def test_an_array_with_nothing_masked_is_accepted():
+    arm = armrt.Arm()
+    arm.reset(q=np.ma.masked_array(arm.rest_posture, mask=False))
+    assert np.array_equal(arm.q, arm.rest_posture)
