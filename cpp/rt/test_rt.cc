@@ -24,6 +24,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -773,4 +774,57 @@ TEST_CASE("start / stop on a thread, with statistics") {
   CHECK(st.tet.median > 0);
   CHECK(st.tet.median < st.tet.max + 1);
   CHECK(loop.stats_json().find("\"overruns\"") != std::string::npos);
+}
+
+// The state packet's bytes for one fixed run, captured from the runner before its packet table
+// (ARMRT_PACKET_FIELDS) existed: the table must reproduce version 3 byte for byte. The session id
+// (random) is zeroed; lag and overruns must be 0 (a run that overran says so and compares nothing).
+// ARMRT_WRITE_GOLDEN=1 rewrites the file (only on purpose, with a version change).
+TEST_CASE("state packet bytes: identical to the version-3 capture") {
+  const std::string path = std::string(ARMRT_SOURCE_DIR) + "/tests/data/state_packet_v3_das2.hex";
+  RtConfig c = test_config();
+  c.rate_hz = 200;
+  c.state_rate_hz = 200;
+  c.send_forces = true;
+  c.send_excitation = true;
+  c.input_timeout = 0.5;
+  c.max_activation = {"infra=0.2"};
+  RtLoop loop(c);
+  const auto* def = loop.simulator().model.def;
+  Controller a(loop.bound_port());
+  a.join(loop);
+  REQUIRE(a.session != 0);
+  std::vector<double> mv(def->num_muscles);
+  for (int k = 0; k < def->num_muscles; ++k) mv[k] = 0.02 + 0.05 * (k % 7);
+  a.send(kExcitationMuscles, mv);
+  usleep(3000);
+  loop.run_cycles(5);
+  std::uint8_t b[kMaxPacket];
+  long n = -1;
+  for (long m; (m = ::recv(a.s, b, sizeof b, MSG_DONTWAIT)) > 0;) n = m;
+  Header h;
+  REQUIRE(decode_header(b, n, h) == DecodeError::kOk);
+  REQUIRE(h.type == kState);
+  const StateLayout st = state_layout(def->num_dofs);
+  if (get_f64(b + kHeaderSize + 8 * st.overruns) != 0.0 || (h.flags & kFlagOverrun)) {
+    MESSAGE("the run overran (a busy machine): nothing to compare");
+    return;
+  }
+  for (int k = 20; k < 24; ++k) b[k] = 0;  // session id
+  std::string hex;
+  char two[3];
+  for (long k = 0; k < n; ++k) { std::snprintf(two, sizeof two, "%02x", b[k]); hex += two; }
+  if (std::getenv("ARMRT_WRITE_GOLDEN")) {
+    FILE* f = std::fopen(path.c_str(), "w");
+    REQUIRE(f);
+    std::fprintf(f, "%s\n", hex.c_str());
+    std::fclose(f);
+  }
+  FILE* f = std::fopen(path.c_str(), "r");
+  REQUIRE_MESSAGE(f, "missing " << path);
+  std::string golden;
+  for (int ch; (ch = std::fgetc(f)) != EOF;) if (ch != '\n') golden += static_cast<char>(ch);
+  std::fclose(f);
+  CHECK(hex.size() == golden.size());
+  CHECK(hex == golden);
 }
