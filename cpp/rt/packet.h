@@ -149,6 +149,7 @@ inline int put_state_values(const StateValues& s, std::uint16_t flags, int num_d
 // One row of the table for a model (armrt._rt.state_packet_fields).
 struct StateFieldInfo {
   std::string name, unit, lsl_type, description;
+  std::string rule;  // the size rule: "one", "dofs", "three", "elements"
   int size = 0;
   std::uint16_t flag = 0;
   bool integer = false;
@@ -166,6 +167,7 @@ inline std::vector<StateFieldInfo> state_field_table(const std::vector<std::stri
     StateFieldInfo r;                                                                                         \
     r.name = #name_;                                                                                          \
     r.unit = unit_;                                                                                           \
+    r.rule = size_ == kOne ? "one" : size_ == kDofs ? "dofs" : size_ == kThree ? "three" : "elements";        \
     r.lsl_type = lsl_type_;                                                                                   \
     r.description = description_;                                                                             \
     r.size = field_size(size_, static_cast<int>(dof_names.size()), static_cast<int>(element_names.size()));  \
