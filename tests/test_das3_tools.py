@@ -346,11 +346,11 @@ def test_state_packets_of_another_model_are_refused_not_misread():
     plain3 = rt.decode_packet(rt.encode_packet(rt.STATE, 1, np.zeros(len(f3))))
     with_exc3 = rt.decode_packet(rt.encode_packet(rt.STATE, 1, np.zeros(len(f3) + n3), flags=rt.FLAG_EXCITATION))
     with_exc2 = rt.decode_packet(rt.encode_packet(rt.STATE, 1, np.zeros(len(f2) + n2), flags=rt.FLAG_EXCITATION))
-    assert rt.State.from_packet(plain3, f3, n3).q.shape == (11,)
-    assert rt.State.from_packet(with_exc3, f3, n3).excitation.shape == (n3,)
+    assert rt.StatePacket.from_packet(plain3, f3, n3).q.shape == (11,)
+    assert rt.StatePacket.from_packet(with_exc3, f3, n3).excitation.shape == (n3,)
     for packet, fields, n in ((plain3, f2, n2), (with_exc3, f2, n2), (with_exc2, f3, n3)):
         with pytest.raises(rt.PacketError, match="another model"):
-            rt.State.from_packet(packet, fields, n)
+            rt.StatePacket.from_packet(packet, fields, n)
     with rt.RealtimeSession(listen="127.0.0.1:0", model="das3", state_rate_hz=200) as s, \
             rt.UdpClient(s.port, mapping="elements", model="das2") as c:
         c.join()

@@ -184,7 +184,7 @@ def test_lsl_state_channels_and_samples_carry_the_gh_values():
     pylsl = pytest.importorskip("pylsl", reason="pylsl is not installed")
     del pylsl
     from armrt.lsl_bridge import LslBridge
-    from armrt.realtime import State
+    from armrt.realtime import StatePacket as State
     bridge = LslBridge(runner_port=0, mapping="groups", source_id=f"armrt-test-rim-{os.getpid()}",
                        excitation_source_id="none")
     pushed = []

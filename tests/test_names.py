@@ -47,3 +47,47 @@ def test_arm_and_mapping_use_it():
     assert m.index["bic_b"] == list(_core.find_elements("das2", "bic_b"))
     with pytest.raises(KeyError, match="channels: unknown element, muscle or group name 'tricep' \\(did you mean"):
         GroupMapping.from_model("channels", "das2", ["tricep"])
+
+
+# ---------------------------------------------------------------- one rule for overlapping names (issue 25)
+def _cuff_groups():
+    infra = list(_core.find_elements("das2", "infra"))
+    supra = list(_core.find_elements("das2", "supra"))
+    return infra, supra
+
+
+def test_the_rule_most_specific_wins_equal_specificity_takes_the_largest():
+    infra, supra = _cuff_groups()
+    for items in ([("rotator_cuff", 0.05), ("infra", 0.3)], [("infra", 0.3), ("rotator_cuff", 0.05)]):
+        u = _core.excitations_from_names("das2", items)
+        assert all(u[i] == 0.3 for i in infra) and all(u[i] == 0.05 for i in supra)
+    # element over muscle, in either order
+    one = _core.model_info("das2")["elements"][infra[0]]["name"]
+    for items in ([("infra", 0.3), (one, 0.1)], [(one, 0.1), ("infra", 0.3)]):
+        u = _core.excitations_from_names("das2", items)
+        assert u[infra[0]] == 0.1 and u[infra[1]] == 0.3
+    # two groups sharing elements: the larger value, in either order
+    groups = dict(_core.model_info("das2")["groups"])
+    a, b = next((g, h) for g in groups for h in groups if g < h and set(groups[g]) & set(groups[h]))
+    shared = sorted(set(groups[a]) & set(groups[b]))[0]
+    for items in ([(a, 0.2), (b, 0.7)], [(b, 0.7), (a, 0.2)]):
+        assert _core.excitations_from_names("das2", items)[shared] == 0.7
+    with pytest.raises(KeyError, match="'infrx'.*did you mean"):
+        _core.excitations_from_names("das2", [("infrx", 0.1), ("infra", 0.2)])
+
+
+def test_arm_and_armbatch_follow_the_rule_in_either_order():
+    import armrt
+    infra, supra = _cuff_groups()
+    arm = armrt.Arm()
+    batch = armrt.ArmBatch(2)
+    for u in ({"rotator_cuff": 0.05, "infra": 0.3}, {"infra": 0.3, "rotator_cuff": 0.05}):
+        arm.set_excitation(u)
+        assert all(arm.excitation[i] == 0.3 for i in infra) and all(arm.excitation[i] == 0.05 for i in supra)
+        batch.set_excitation(u)
+        assert (batch.excitation[:, infra] == 0.3).all() and (batch.excitation[:, supra] == 0.05).all()
+    # the order that used to give 0.05 for infra ("last wins") now gives 0.3 too; unknown names are named
+    with pytest.raises(KeyError, match="infrx"):
+        arm.set_excitation({"infrx": 0.1})
+    with pytest.raises(KeyError, match="infrx"):
+        batch.set_excitation({"infrx": 0.1})

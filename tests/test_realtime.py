@@ -11,6 +11,8 @@ import sys
 import threading
 import time
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -246,7 +248,7 @@ def test_runner_divergence_stops_cleanly():
     sub = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
     sub.bind(("127.0.0.1", 0))
     sub.settimeout(5.0)
-    p = subprocess.Popen([runner(), "--integrator", "rk4", "--rate", "100", "--dt", "0.01", "--state-rate", "100",
+    p = subprocess.Popen([runner(), "--integrator", "rk4", "--rate", "100", "--integration-step", "0.01", "--state-rate", "100",
                           "--state-to", f"127.0.0.1:{sub.getsockname()[1]}"], stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE, text=True)
     rc = p.wait(timeout=10)
@@ -254,7 +256,7 @@ def test_runner_divergence_stops_cleanly():
     sub.settimeout(0.2)
     try:
         while True:
-            final = rt.State.from_packet(rt.decode_packet(sub.recv(65536)))
+            final = rt.StatePacket.from_packet(rt.decode_packet(sub.recv(65536)))
     except socket.timeout:
         pass
     sub.close()
@@ -283,8 +285,10 @@ def test_runner_rejects_bad_arguments():
     assert r.returncode == 2 and "not a real-time integrator" in r.stderr
     r = subprocess.run([runner(), "--channels", "bicb,nonsense", "--duration", "0.1"], capture_output=True, text=True, timeout=20)
     assert r.returncode == 2 and "nonsense" in r.stderr
-    cases = [(["--timeout", "inf"], "--timeout"), (["--busy-wait", "nan"], "--busy-wait"), (["--dt", "nan"], "--dt"),
-             (["--duration", "0.0004"], "--duration"), (["--rate", "1e5"], "--rate"), (["--dt", "0.002"], "fit"),
+    cases = [(["--timeout", "inf"], "--timeout"), (["--busy-wait", "nan"], "--busy-wait"),
+             (["--integration-step", "nan"], "--integration-step"),
+             (["--duration", "0.0004"], "--duration"), (["--rate", "1e5"], "--rate"), (["--integration-step", "0.002"], "fit"),
+             (["--dt", "0.001", "--integration-step", "0.001"], "both given"),
              (["--state-rate", "300"], "333.333 and 250"), (["--priority", "80.5"], "--priority"),
              (["--timeout", "60"], "--timeout"), (["--q0", "0,0,nan,0,0"], "--q0"),
              (["--stat-rate", "100"], "did you mean --state-rate"), (["--listen", "1.2.3.4"], "HOST:PORT")]
@@ -489,7 +493,7 @@ def test_flood_from_another_process_does_not_starve_the_owner():
 
 def test_lag_and_overrun_reach_the_state_packets():
     """A period shorter than a step (0.1 ms, 500 substeps): every cycle overruns; skip and report."""
-    with rt.RealtimeSession(listen="127.0.0.1:0", rate_hz=10000, dt=2e-7, state_rate_hz=10000,
+    with rt.RealtimeSession(listen="127.0.0.1:0", rate_hz=10000, integration_step=2e-7, state_rate_hz=10000,
                             input_timeout=10, realtime=False) as s, rt.UdpClient(s.port, mapping="groups") as c:
         c.join()
         c.send({"rotator_cuff": 0.03})
@@ -552,7 +556,7 @@ def test_lsl_bridge_loopback():
             inlet = pylsl.StreamInlet(found[0])
             full = inlet.info(timeout=5)
             labels_out = channel_labels(full)
-            assert labels_out == state_channels("das2")[0] and labels_out[-2:] == ["lag", "overrun"]
+            assert labels_out == state_channels("das2")[0] and labels_out[-4:] == ["last_seq", "lag", "overruns", "overrun"]
             assert labels_out[1:6] == ["GHy", "GHz", "GHyy", "ELx", "PSy"]
             u = np.zeros(len(labels))
             u[labels.index("elbow_flexors")] = 0.15
@@ -741,3 +745,156 @@ def test_max_activation_bad_values_are_refused():
     r = subprocess.run([runner(), "--max-activation", "bicb=0.3,triceps=x", "--duration", "0.1"],
                        capture_output=True, text=True, timeout=20)
     assert r.returncode == 2 and "max activation of 'triceps' must be a number in [0, 1]" in r.stderr
+
+
+# ---------------------------------------------------------------------------------------- issue 25: one meaning per word
+def test_dt_is_deprecated_for_the_integration_step():
+    """dt is the control step (Arm.dt; 1/--rate here): the runner's integration step is --integration-step,
+    and --dt / dt= still work with a warning on stderr / a DeprecationWarning."""
+    r = subprocess.run([runner(), "--dt", "0.0005", "--duration", "0.05", "--no-rt", "--no-mlock"],
+                       capture_output=True, text=True, timeout=20)
+    assert r.returncode == 0, r.stderr
+    assert "--dt is deprecated, use --integration-step" in r.stderr
+    assert "integration step 0.0005 s" in r.stdout
+    r = subprocess.run([runner(), "--integration-step", "0.0005", "--duration", "0.05", "--no-rt", "--no-mlock"],
+                       capture_output=True, text=True, timeout=20)
+    assert r.returncode == 0 and "deprecated" not in r.stderr and "integration step 0.0005 s" in r.stdout
+    with pytest.warns(DeprecationWarning, match="integration_step"):
+        s = rt.RealtimeSession(dt=0.0005, rate_hz=1000)
+    assert s.stats()["integration_step"] == pytest.approx(0.0005) and s.stats()["control_step"] == pytest.approx(1e-3)
+    with pytest.raises(ValueError, match="both"):
+        rt.RealtimeSession(dt=0.0005, integration_step=0.0005)
+
+
+def test_state_packet_class_is_statepacket_and_state_is_a_deprecated_alias():
+    import armrt
+    with pytest.warns(DeprecationWarning, match="StatePacket"):
+        alias = rt.State
+    assert alias is rt.StatePacket and rt.StatePacket is not armrt.State
+
+
+GOLDEN_PACKET = Path(__file__).resolve().parent / "data" / "state_packet_v3_das2.hex"
+
+
+def test_decoder_reads_every_row_of_the_packet_table_from_the_v3_capture():
+    """The version-3 bytes captured before the table (cpp/rt/test_rt.cc checks the runner still writes
+    them): the table-driven decoder yields every row, with the values in the table's order."""
+    data = bytes.fromhex(GOLDEN_PACKET.read_text().strip())
+    p = rt.decode_packet(data)
+    table = rt.state_packet_fields("das2")
+    assert p.flags & rt.FLAG_FORCES and p.flags & rt.FLAG_EXCITATION
+    values = rt.StatePacket.decode_values(p, table)
+    assert [r["name"] for r in table] == list(values)          # every row, in order
+    st = rt.StatePacket.from_packet(p, "das2")
+    k = 0
+    for r in table:
+        got = np.atleast_1d(getattr(st, r["name"]))
+        assert got.size == r["size"] and len(r["labels"]) == r["size"], r["name"]
+        np.testing.assert_array_equal(got, p.values[k:k + r["size"]])
+        k += r["size"]
+    assert k == p.values.size
+    assert st.qdot.shape == (5,) and st.hand_position.shape == (3,) and isinstance(st.overruns, int)
+    # max activation infra=0.2 in the capture: its streamed excitation is capped.
+    from armrt import _core
+    infra = list(_core.find_elements("das2", "infra"))
+    assert st.excitation[infra].max() <= 0.2 + 1e-15 and st.excitation.max() > 0.2
+    assert rt.state_fields("das2") == [lab for r in table if r["flag"] == 0 for lab in r["labels"]]
+
+
+def test_every_table_row_is_an_lsl_channel():
+    from armrt.lsl_bridge import state_channels
+    labels, units, types = state_channels("das2", forces=True, excitations=True)
+    for r in rt.state_packet_fields("das2"):
+        for lab in r["labels"]:
+            k = labels.index(lab)
+            assert units[k] == r["unit"] and types[k] == r["lsl_type"], lab
+    assert len(labels) == len(set(labels)) == sum(r["size"] for r in rt.state_packet_fields("das2")) + 1  # + overrun flag
+
+
+# ---------------------------------------------------------------------------------------- issue 25: overlapping names
+def _cuff(model="das2"):
+    from armrt import _core
+    return list(_core.find_elements(model, "infra")), list(_core.find_elements(model, "supra"))
+
+
+def test_udp_overlapping_channels_most_specific_wins_in_either_order():
+    infra, supra = _cuff()
+    for channels in (["rotator_cuff", "infra"], ["infra", "rotator_cuff"]):
+        with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=100, send_excitation=True, channels=channels,
+                                input_timeout=1.0) as s, \
+                rt.UdpClient(s.port, mapping="channels", channels=channels) as c:
+            u = {"rotator_cuff": 0.3, "infra": 0.05}
+            assert np.allclose(c.mapping.to_elements(u)[infra], 0.05)
+            st = None
+            t_end = time.monotonic() + 3
+            while time.monotonic() < t_end:
+                c.send(u)
+                st = c.latest_state(timeout=0.1) or st
+                if st is not None and st.last_applied_seq >= 0 and st.excitation[supra[0]] > 0:
+                    break
+            assert st is not None and st.excitation is not None
+            np.testing.assert_allclose(st.excitation[infra], 0.05)   # the old maximum gave 0.3
+            np.testing.assert_allclose(st.excitation[supra], 0.3)
+
+
+def test_udp_elements_mapping_dict_uses_the_same_rule():
+    infra, supra = _cuff()
+    m = rt.GroupMapping.from_model("elements")
+    a = m.values({"rotator_cuff": 0.05, "infra": 0.3})
+    b = m.values({"infra": 0.3, "rotator_cuff": 0.05})
+    np.testing.assert_array_equal(a, b)
+    assert a[infra[0]] == 0.3 and a[supra[0]] == 0.05
+
+
+def test_lsl_overlapping_channels_most_specific_wins_in_either_order():
+    """An LSL controller whose channels are a group and one of its muscles: the runner applies the one
+    rule (the muscle's value for its elements), whichever order the channels come in."""
+    pylsl = _pylsl()
+    from armrt.lsl_bridge import LslBridge, state_channels
+    infra, supra = _cuff()
+    for order, channels in enumerate((["rotator_cuff", "infra"], ["infra", "rotator_cuff"])):
+        source = f"armrt-test-ovl{order}-{os.getpid()}"
+        bridge = LslBridge(runner_port=0, mapping="channels", channels=channels, source_id=source,
+                           excitation_source_id=f"{source}-ctl", state_rate_hz=100, excitations=True)
+        with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=100, send_excitation=True, channels=channels,
+                                state_to=f"127.0.0.1:{bridge.state_port}", input_timeout=1.0) as s:
+            bridge.runner_address = ("127.0.0.1", s.port)
+            stop, th, errors = _run_bridge(bridge)
+            try:
+                labels = ["rotator_cuff", "infra"]
+                outlet = _exc_outlet(pylsl, f"exc-{source}", f"{source}-ctl", labels)
+                found = pylsl.resolve_byprop("source_id", f"{source}-state", timeout=10)
+                assert found
+                inlet = pylsl.StreamInlet(found[0])
+                names = state_channels("das2", excitations=True)[0]
+                ki, ks = names.index(f"excitation_{_elname(infra[0])}"), names.index(f"excitation_{_elname(supra[0])}")
+                got = None
+                t_end = time.monotonic() + 5
+                while time.monotonic() < t_end and not errors:
+                    outlet.push_sample([0.3, 0.05])
+                    samples, _ = inlet.pull_chunk(timeout=0.05)
+                    if samples and samples[-1][ks] > 0:
+                        got = samples[-1]
+                        break
+                    time.sleep(0.01)
+                assert not errors, errors
+                assert got is not None, "no excited state over LSL"
+                assert got[ki] == pytest.approx(0.05) and got[ks] == pytest.approx(0.3), channels
+            finally:
+                stop.set()
+                th.join(timeout=5)
+                bridge.close()
+
+
+def _elname(i, model="das2"):
+    from armrt import _core
+    return _core.model_info(model)["elements"][i]["name"]
+
+
+def test_docs_list_every_row_of_the_packet_table():
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "realtime.md").read_text()
+    table = doc.split("| row | values | unit | sent | label | meaning |", 1)[1].split("\n\n", 1)[0]
+    for r in rt.state_packet_fields("das2"):
+        row = next((line for line in table.splitlines() if line.startswith(f"| `{r['name']}` |")), None)
+        assert row is not None, f"docs/realtime.md lacks the row {r['name']}"
+        assert f"| {r['unit']} |" in row, (r["name"], r["unit"], row)

@@ -76,8 +76,12 @@ int main(int argc, char** argv) {
   app.add_option("--rate", cfg.rate_hz, "loop rate, Hz, 1..10000")->capture_default_str();
   app.add_option("--integrator", cfg.integrator, "ros2 (linearly implicit, one step per 1 ms), rk4 or euler "
                                                  "(armrt::parse_integrator; not cvode)")->capture_default_str();
-  app.add_option("--dt", cfg.dt, "largest integration step, s (<= 1/rate); each cycle takes ceil(1/rate / dt) substeps "
-                                  "(default: ros2 0.001, rk4 0.00017, euler 0.0001)");
+  // dt is the control step everywhere in armrt (Arm.dt; here 1/--rate); the integrator's own step has its own name.
+  app.add_option("--integration-step", cfg.integration_step,
+                 "largest integration step, s (<= 1/rate, the control step); each cycle takes "
+                 "ceil(1/rate / integration step) substeps (default: ros2 0.001, rk4 0.00017, euler 0.0001)");
+  double deprecated_dt = 0;
+  app.add_option("--dt", deprecated_dt, "deprecated: --integration-step");
   std::vector<std::string> model_libraries;
   app.add_option("--model", cfg.model, "registered model: das2, das3, participant_A (built in) or one loaded with --model-library")
       ->capture_default_str();
@@ -117,6 +121,13 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
     if (!app.remaining().empty()) throw std::invalid_argument(unknown_option_message(app, app.remaining().front()));
+    if (app.count("--dt")) {
+      if (app.count("--integration-step"))
+        throw std::invalid_argument("--dt (deprecated) and --integration-step both given; use --integration-step");
+      std::fprintf(stderr, "armrt-rt: warning: --dt is deprecated, use --integration-step (the integrator's step; "
+                           "dt in armrt is the control step, here 1/--rate)\n");
+      cfg.integration_step = deprecated_dt;
+    }
     cfg.realtime = !no_rt;
     cfg.lock_memory = !no_mlock;
     if (cfg.require_rt && !cfg.realtime) throw std::invalid_argument("--require-rt and --no-rt contradict each other");
@@ -157,8 +168,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "armrt-rt: running with %s%s: %s\n", st0.scheduler.c_str(),
                  st0.memory_locked ? "" : ", memory not locked", st0.rt_note.c_str());
   if (!quiet) {
-    std::printf("armrt-rt: %s %s at %g Hz (dt %g s), %s priority %d, memory %s, cpu %d\n", cfg.model.c_str(),
-                cfg.integrator.c_str(), cfg.rate_hz, loop->config().dt, st0.scheduler.c_str(), st0.priority,
+    std::printf("armrt-rt: %s %s at %g Hz (control step %g s, integration step %g s), %s priority %d, memory %s, "
+                "cpu %d\n", cfg.model.c_str(), cfg.integrator.c_str(), cfg.rate_hz, 1.0 / cfg.rate_hz,
+                loop->config().integration_step, st0.scheduler.c_str(), st0.priority,
                 st0.memory_locked ? "locked" : "not locked", st0.cpu);
     if (!cfg.listen.empty()) std::printf("armrt-rt: listening on udp port %d\n", loop->bound_port());
     std::fflush(stdout);

@@ -1,6 +1,7 @@
-// The armrt real-time UDP packet format, version 3 (specification: docs/realtime.md). This header is
-// the only definition of the layout: armrt._rt exports it to Python (armrt.realtime reads offsets,
-// sizes, types, flags and the state value names from there). All fields are little-endian; values
+// packet layout, state-packet table -> the bytes on the wire: the armrt real-time UDP packet format,
+// version 3 (specification: docs/realtime.md). This header is the only definition of the layout:
+// armrt._rt exports it to Python (armrt.realtime reads offsets, sizes, types, flags and the state
+// packet's table from there). All fields are little-endian; values
 // are IEEE-754 float64.
 //
 //   offset size  field
@@ -44,7 +45,7 @@ enum PacketType : std::uint16_t {
   kExcitationChannels = 4,  // count = number of configured channels (--channels), each a name
   kRelease = 5,             // controller -> runner, count 0: the owner ends its session
   kHello = 6,               // controller -> runner, count 0: asks for a session id (answered by kOffer)
-  kState = 16,              // runner -> controller / subscribers: see the state layout below
+  kStatePacket = 16,        // runner -> controller / subscribers: see ARMRT_STATE_PACKET_FIELDS below
   kOffer = 17,              // runner -> controller, count 0: the session id to put in excitation packets
 };
 
@@ -58,47 +59,138 @@ enum PacketFlags : std::uint16_t {
   kFlagExcitation = 64, // state: the applied element excitations follow (after the forces, if any)
 };
 
-// State payload (values): the fixed part below, then muscle_force[n_elements] if kFlagForces, then
-// excitation[n_elements] if kFlagExcitation. The fixed part depends on the model's number of DOFs n:
-//   time                 s, simulated
-//   q0 .. q{n-1}         rad, in the model's DOF order (das2: GHy GHz GHyy ELx PSy)
-//   qd0 .. qd{n-1}       rad/s
-//   hand_x hand_y hand_z m, thorax frame
-//   gh_stab              1, (theta/theta_a)^2 + (phi/phi_a)^2
-//   gh_theta gh_phi      rad, GH force from the glenoid normal along the major (+ superior) / minor (+ anterior) axis
-//   gh_rim_margin        rad, how far the GH force can still turn towards the rim (< 0: beyond it)
-//   gh_rim_direction     rad, atan2(gh_phi, gh_theta): 0 superior, pi/2 anterior (armrt/engine.h GHStability)
-//   last_seq             last applied excitation seq (-1: none in this session)
-//   lag                  s, simulated time behind the wall-clock schedule
-//   overruns             overrun cycles since the start
-struct StateLayout {
-  int time = 0, q = 1, qd = 0, hand = 0, gh_stab = 0, gh_theta = 0, gh_phi = 0, gh_rim_margin = 0, gh_rim_direction = 0;
-  int last_seq = 0, lag = 0, overruns = 0;
-  int fixed_values = 0;  // values before the optional force / excitation blocks
-};
-inline StateLayout state_layout(int num_dofs) {
-  StateLayout s;
-  s.qd = s.q + num_dofs;
-  s.hand = s.qd + num_dofs;
-  s.gh_stab = s.hand + 3;
-  s.gh_theta = s.gh_stab + 1;
-  s.gh_phi = s.gh_theta + 1;
-  s.gh_rim_margin = s.gh_phi + 1;
-  s.gh_rim_direction = s.gh_rim_margin + 1;
-  s.last_seq = s.gh_rim_direction + 1;
-  s.lag = s.last_seq + 1;
-  s.overruns = s.lag + 1;
-  s.fixed_values = s.overruns + 1;
-  return s;
+// The state packet's payload: ONE table, in packet order (MuJoCo's mjxmacro.h style). The runner's
+// encoder (put_state_values), the offsets (StateOffsets), armrt._rt.state_packet_fields (the Python
+// decoder armrt.realtime.StatePacket, the LSL bridge's channels) and docs/realtime.md come from it.
+// Version 3's bytes: tests/data/state_packet_v3_das2.hex. A change here is a new version.
+//
+//   X(name, size, unit, flag, integer, label, lsl_type, description)
+//   size: kOne, kDofs (the model's DOFs, in its order), kThree (x, y, z), kElements (the model's elements)
+//   flag: 0, always sent; else the row is sent only with that PacketFlags bit (in that order, at the end)
+//   integer: 1 if the value is an integer carried as a float64 (counts, sequence numbers)
+//   label: the value's name (state_fields, LSL channel labels); "{}" is the DOF / axis / element name
+#define ARMRT_STATE_PACKET_FIELDS(X)                                                                                   \
+  X(time, kOne, "s", 0, 0, "time", "time", "simulated time")                                                           \
+  X(q, kDofs, "rad", 0, 0, "{}", "angle", "joint angles, in the model's DOF order (das2: GHy GHz GHyy ELx PSy)")      \
+  X(qdot, kDofs, "rad/s", 0, 0, "{}_dot", "angular_velocity", "joint angular velocities")                            \
+  X(hand_position, kThree, "m", 0, 0, "hand_{}", "position", "hand position, thorax frame")                           \
+  X(gh_stab, kOne, "1", 0, 0, "gh_stab", "stability", "(theta/theta_a)^2 + (phi/phi_a)^2; > 1 beyond the rim")       \
+  X(gh_theta, kOne, "rad", 0, 0, "gh_theta", "angle",                                                                  \
+    "GH force from the glenoid normal along the major axis (+ superior)")                                              \
+  X(gh_phi, kOne, "rad", 0, 0, "gh_phi", "angle", "GH force from the glenoid normal along the minor axis (+ anterior)") \
+  X(gh_rim_margin, kOne, "rad", 0, 0, "gh_rim_margin", "margin",                                                       \
+    "how far the GH force can still turn towards the rim (< 0: beyond it)")                                           \
+  X(gh_rim_direction, kOne, "rad", 0, 0, "gh_rim_direction", "direction",                                              \
+    "atan2(gh_phi, gh_theta): 0 superior, pi/2 anterior (armrt/engine.h GHStability)")                                \
+  X(last_applied_seq, kOne, "1", 0, 1, "last_seq", "sequence", "last applied excitation seq (-1: none in this session)") \
+  X(lag, kOne, "s", 0, 0, "lag", "lag", "simulated time behind the wall-clock schedule")                              \
+  X(overruns, kOne, "1", 0, 1, "overruns", "count", "overrun cycles since the start")                                 \
+  X(muscle_force, kElements, "N", kFlagForces, 0, "force_{}", "force", "muscle force of each element")                \
+  X(excitation, kElements, "1", kFlagExcitation, 0, "excitation_{}", "excitation",                                     \
+    "applied element excitations (capped at max activation)")
+
+enum FieldSize { kOne, kDofs, kThree, kElements };
+inline int field_size(FieldSize size, int num_dofs, int num_elements) {
+  switch (size) {
+    case kOne: return 1;
+    case kDofs: return num_dofs;
+    case kThree: return 3;
+    case kElements: return num_elements;
+  }
+  return 0;
 }
-// The names of the fixed values, in order (exported to Python as armrt._rt.state_fields(model)).
-inline std::vector<std::string> state_field_names(int num_dofs) {
-  std::vector<std::string> f{"time"};
-  for (int j = 0; j < num_dofs; ++j) f.push_back("q" + std::to_string(j));
-  for (int j = 0; j < num_dofs; ++j) f.push_back("qd" + std::to_string(j));
-  for (const char* n : {"hand_x", "hand_y", "hand_z", "gh_stab", "gh_theta", "gh_phi", "gh_rim_margin", "gh_rim_direction",
-                        "last_seq", "lag", "overruns"}) f.push_back(n);
-  return f;
+
+// One pointer per row, to field_size() values: what fills the packet (the runner points them at the
+// simulator's data and its own counters).
+struct StateValues {
+#define ARMRT_X(name, ...) const double* name = nullptr;
+  ARMRT_STATE_PACKET_FIELDS(ARMRT_X)
+#undef ARMRT_X
+};
+
+// Value offsets of each row in a packet carrying `flags` (-1: a row not sent with those flags), and
+// the total count.
+struct StateOffsets {
+#define ARMRT_X(name, ...) int name = -1;
+  ARMRT_STATE_PACKET_FIELDS(ARMRT_X)
+#undef ARMRT_X
+  int fixed_values = 0;  // values of the rows always sent
+  int count = 0;         // values in a packet with these flags
+};
+inline StateOffsets state_offsets(int num_dofs, int num_elements, std::uint16_t flags) {
+  StateOffsets o;
+  int c = 0;
+#define ARMRT_X(name, size, unit, flag, ...)                        \
+  if ((flag) == 0 || (flags & (flag))) {                            \
+    o.name = c;                                                     \
+    c += field_size(size, num_dofs, num_elements);                  \
+  }                                                                 \
+  if ((flag) == 0) o.fixed_values = c;
+  ARMRT_STATE_PACKET_FIELDS(ARMRT_X)
+#undef ARMRT_X
+  o.count = c;
+  return o;
+}
+
+// The encoder, generated from the table: the rows sent with `flags`, in order, into v; returns the
+// number of values. No allocation (the runner's hot loop).
+inline int put_state_values(const StateValues& s, std::uint16_t flags, int num_dofs, int num_elements, double* v) {
+  int c = 0;
+#define ARMRT_X(name, size, unit, flag, ...)                        \
+  if ((flag) == 0 || (flags & (flag))) {                            \
+    const int n = field_size(size, num_dofs, num_elements);         \
+    for (int k = 0; k < n; ++k) v[c++] = s.name[k];                 \
+  }
+  ARMRT_STATE_PACKET_FIELDS(ARMRT_X)
+#undef ARMRT_X
+  return c;
+}
+
+// One row of the table for a model (armrt._rt.state_packet_fields).
+struct StateFieldInfo {
+  std::string name, unit, lsl_type, description;
+  std::string rule;  // the size rule: "one", "dofs", "three", "elements"
+  int size = 0;
+  std::uint16_t flag = 0;
+  bool integer = false;
+  std::vector<std::string> labels;  // one per value
+};
+inline std::vector<StateFieldInfo> state_field_table(const std::vector<std::string>& dof_names,
+                                                     const std::vector<std::string>& element_names) {
+  std::vector<StateFieldInfo> rows;
+  static const std::vector<std::string> xyz{"x", "y", "z"};
+  auto items = [&](FieldSize size) -> const std::vector<std::string>& {
+    return size == kDofs ? dof_names : size == kThree ? xyz : element_names;
+  };
+#define ARMRT_X(name_, size_, unit_, flag_, integer_, label_, lsl_type_, description_)                        \
+  {                                                                                                           \
+    StateFieldInfo r;                                                                                         \
+    r.name = #name_;                                                                                          \
+    r.unit = unit_;                                                                                           \
+    r.rule = size_ == kOne ? "one" : size_ == kDofs ? "dofs" : size_ == kThree ? "three" : "elements";        \
+    r.lsl_type = lsl_type_;                                                                                   \
+    r.description = description_;                                                                             \
+    r.size = field_size(size_, static_cast<int>(dof_names.size()), static_cast<int>(element_names.size()));  \
+    r.flag = flag_;                                                                                           \
+    r.integer = integer_;                                                                                     \
+    const std::string label = label_;                                                                         \
+    const auto brace = label.find("{}");                                                                     \
+    if (size_ == kOne) r.labels = {label};                                                                    \
+    else                                                                                                      \
+      for (const std::string& item : items(size_))                                                            \
+        r.labels.push_back(label.substr(0, brace) + item + label.substr(brace + 2));                          \
+    rows.push_back(std::move(r));                                                                             \
+  }
+  ARMRT_STATE_PACKET_FIELDS(ARMRT_X)
+#undef ARMRT_X
+  return rows;
+}
+// The labels of the values always sent, in order (armrt._rt.state_fields(model)).
+inline std::vector<std::string> state_field_names(const std::vector<std::string>& dof_names) {
+  std::vector<std::string> out;
+  for (const StateFieldInfo& r : state_field_table(dof_names, {}))
+    if (r.flag == 0) out.insert(out.end(), r.labels.begin(), r.labels.end());
+  return out;
 }
 
 inline void put_u16(std::uint8_t* p, std::uint16_t v) { p[0] = v & 0xff; p[1] = v >> 8; }

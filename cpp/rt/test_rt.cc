@@ -24,6 +24,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -31,6 +32,7 @@
 #include <thread>
 #include <vector>
 
+#include "armrt/names.h"
 #include "histogram.h"
 #include "hmac.h"
 #include "packet.h"
@@ -116,7 +118,7 @@ std::uint32_t poll_session(int s, std::uint32_t current = 0) {
     const long n = ::recv(s, b, sizeof b, MSG_DONTWAIT);
     if (n < 0) return current;
     Header h;
-    if (decode_header(b, n, h) == DecodeError::kOk && (h.type == kOffer || h.type == kState)) current = h.session;
+    if (decode_header(b, n, h) == DecodeError::kOk && (h.type == kOffer || h.type == kStatePacket)) current = h.session;
   }
 }
 
@@ -495,7 +497,7 @@ TEST_CASE("sessions: --allow and --state-to subscribers") {
   const long n = ::recv(sub, buf, sizeof buf, MSG_DONTWAIT);  // the subscriber gets state regardless
   Header h;
   REQUIRE(decode_header(buf, n, h) == DecodeError::kOk);
-  CHECK(h.type == kState);
+  CHECK(h.type == kStatePacket);
   CHECK((h.flags & kFlagTimedOut) != 0);
   ::close(sub);
   c.allow = {"127.0.0.1:1"};
@@ -545,7 +547,7 @@ TEST_CASE("HMAC-SHA256: RFC 4231 test case 1, and keyed sessions refuse unsigned
   const long n = ::recv(good.s, buf, sizeof buf, MSG_DONTWAIT);
   Header h;
   REQUIRE(decode_header(buf, n, h) == DecodeError::kOk);
-  CHECK(h.type == kState);
+  CHECK(h.type == kStatePacket);
   REQUIRE((h.flags & kFlagAuth) != 0);
   CHECK(key.verify(buf, n - kTagSize, buf + n - kTagSize));
 
@@ -623,19 +625,23 @@ TEST_CASE("state packets reach the controller and describe the arm") {
   for (long m; (m = ::recv(a.s, b, sizeof b, MSG_DONTWAIT)) > 0;) n = m;  // the newest
   Header h;
   REQUIRE(decode_header(b, n, h) == DecodeError::kOk);
-  CHECK(h.type == kState);
+  CHECK(h.type == kStatePacket);
   CHECK(h.session == a.session);
-  const StateLayout st = state_layout(loop.simulator().model.num_dofs);
+  const StateOffsets st = state_offsets(loop.simulator().model.num_dofs, n_el, h.flags);
   CHECK(st.fixed_values == 22);  // das2: 5 DOFs
-  CHECK(state_field_names(5).size() == 22u);
-  CHECK(state_field_names(5)[st.gh_rim_margin] == "gh_rim_margin");
-  CHECK(state_field_names(5)[st.gh_rim_direction] == "gh_rim_direction");
+  const std::vector<std::string> dofs{"GHy", "GHz", "GHyy", "ELx", "PSy"};
+  CHECK(state_field_names(dofs).size() == 22u);
+  CHECK(state_field_names(dofs)[st.gh_rim_margin] == "gh_rim_margin");
+  CHECK(state_field_names(dofs)[st.gh_rim_direction] == "gh_rim_direction");
+  CHECK(state_field_names(dofs)[st.qdot] == "GHy_dot");
+  CHECK(st.count == h.count);
+  CHECK(st.excitation == st.fixed_values + n_el);
   CHECK(h.count == st.fixed_values + 2 * n_el);
   CHECK((h.flags & kFlagForces) != 0);
   CHECK((h.flags & kFlagExcitation) != 0);
   CHECK((h.flags & kFlagTimedOut) == 0);
   CHECK(get_f64(b + kHeaderSize) > 0);
-  CHECK(get_f64(b + kHeaderSize + 8 * st.last_seq) == static_cast<double>(a.seq));
+  CHECK(get_f64(b + kHeaderSize + 8 * st.last_applied_seq) == static_cast<double>(a.seq));
   CHECK(get_f64(b + kHeaderSize + 8 * st.lag) >= 0.0);
   CHECK(get_f64(b + kHeaderSize + 8 * (st.fixed_values + n_el)) == doctest::Approx(0.125));  // excitation
   // The GH values are one evaluation's: stab, margin and direction those of the sent theta and phi.
@@ -655,7 +661,7 @@ TEST_CASE("lag and overrun flag: skip and report, --max-lag stops") {
   std::uint8_t b[kMaxPacket];
   RtConfig fast = test_config();
   fast.rate_hz = 10000;          // 0.1 ms period, 500 substeps of 0.2 us
-  fast.dt = 2e-7;
+  fast.integration_step = 2e-7;
   fast.input_timeout = 10;
   fast.state_rate_hz = 10000;
   fast.max_lag = 0;
@@ -672,9 +678,9 @@ TEST_CASE("lag and overrun flag: skip and report, --max-lag stops") {
   double lag = -1;
   for (long n; (n = ::recv(o.s, b, sizeof b, MSG_DONTWAIT)) > 0;) {
     Header h;
-    if (decode_header(b, n, h) != DecodeError::kOk || h.type != kState) continue;
+    if (decode_header(b, n, h) != DecodeError::kOk || h.type != kStatePacket) continue;
     flagged = flagged || (h.flags & kFlagOverrun);
-    lag = get_f64(b + kHeaderSize + 8 * state_layout(over.simulator().model.num_dofs).lag);
+    lag = get_f64(b + kHeaderSize + 8 * state_offsets(over.simulator().model.num_dofs, 102, h.flags).lag);
   }
   CHECK(flagged);
   CHECK(lag > 0);
@@ -705,8 +711,8 @@ TEST_CASE("arguments that cannot break the loop") {
   refuses([&](RtConfig& c) { c.input_timeout = inf; }, "--timeout");
   refuses([&](RtConfig& c) { c.input_timeout = 0.0005; }, "--timeout");
   refuses([&](RtConfig& c) { c.busy_wait_us = nan; }, "--busy-wait");
-  refuses([&](RtConfig& c) { c.dt = nan; }, "--dt");
-  refuses([&](RtConfig& c) { c.dt = 0.002; }, "--dt");
+  refuses([&](RtConfig& c) { c.integration_step = nan; }, "--integration-step");
+  refuses([&](RtConfig& c) { c.integration_step = 0.002; }, "--integration-step");
   refuses([&](RtConfig& c) { c.duration = 0.0004; }, "--duration");
   refuses([&](RtConfig& c) { c.duration = nan; }, "--duration");
   refuses([&](RtConfig& c) { c.rate_hz = 1e5; }, "--rate");
@@ -773,4 +779,116 @@ TEST_CASE("start / stop on a thread, with statistics") {
   CHECK(st.tet.median > 0);
   CHECK(st.tet.median < st.tet.max + 1);
   CHECK(loop.stats_json().find("\"overruns\"") != std::string::npos);
+}
+
+// The state packet's bytes for one fixed run, captured from the runner before its packet table
+// (ARMRT_PACKET_FIELDS) existed: the table must reproduce version 3 byte for byte. The session id
+// (random) is zeroed; lag and overruns must be 0 (a run that overran says so and compares nothing).
+// ARMRT_WRITE_GOLDEN=1 rewrites the file (only on purpose, with a version change).
+TEST_CASE("state packet bytes: identical to the version-3 capture") {
+  const std::string path = std::string(ARMRT_SOURCE_DIR) + "/tests/data/state_packet_v3_das2.hex";
+  RtConfig c = test_config();
+  c.rate_hz = 200;
+  c.state_rate_hz = 200;
+  c.send_forces = true;
+  c.send_excitation = true;
+  c.input_timeout = 0.5;
+  c.max_activation = {"infra=0.2"};
+  RtLoop loop(c);
+  const auto* def = loop.simulator().model.def;
+  Controller a(loop.bound_port());
+  a.join(loop);
+  REQUIRE(a.session != 0);
+  std::vector<double> mv(def->num_muscles);
+  for (int k = 0; k < def->num_muscles; ++k) mv[k] = 0.02 + 0.05 * (k % 7);
+  a.send(kExcitationMuscles, mv);
+  usleep(3000);
+  loop.run_cycles(5);
+  std::uint8_t b[kMaxPacket];
+  long n = -1;
+  for (long m; (m = ::recv(a.s, b, sizeof b, MSG_DONTWAIT)) > 0;) n = m;
+  Header h;
+  REQUIRE(decode_header(b, n, h) == DecodeError::kOk);
+  REQUIRE(h.type == kStatePacket);
+  const StateOffsets st = state_offsets(def->num_dofs, def->num_elements, h.flags);
+  if (get_f64(b + kHeaderSize + 8 * st.overruns) != 0.0 || (h.flags & kFlagOverrun)) {
+    MESSAGE("the run overran (a busy machine): nothing to compare");
+    return;
+  }
+  for (int k = 20; k < 24; ++k) b[k] = 0;  // session id
+  std::string hex;
+  char two[3];
+  for (long k = 0; k < n; ++k) { std::snprintf(two, sizeof two, "%02x", b[k]); hex += two; }
+  if (std::getenv("ARMRT_WRITE_GOLDEN")) {
+    FILE* f = std::fopen(path.c_str(), "w");
+    REQUIRE(f);
+    std::fprintf(f, "%s\n", hex.c_str());
+    std::fclose(f);
+  }
+  FILE* f = std::fopen(path.c_str(), "r");
+  REQUIRE_MESSAGE(f, "missing " << path);
+  std::string golden;
+  for (int ch; (ch = std::fgetc(f)) != EOF;) if (ch != '\n') golden += static_cast<char>(ch);
+  std::fclose(f);
+  CHECK(hex.size() == golden.size());
+  CHECK(hex == golden);
+}
+
+// One rule for overlapping names (armrt/names.h): the most specific name wins whatever the order
+// (element over muscle over group); equal specificity takes the largest value.
+TEST_CASE("channel mapping: the most specific name wins, in either order") {
+  for (const std::vector<std::string>& channels :
+       {std::vector<std::string>{"rotator_cuff", "infra"}, std::vector<std::string>{"infra", "rotator_cuff"}}) {
+    RtConfig c = test_config();
+    c.state_rate_hz = 0;
+    c.input_timeout = 0.5;
+    c.channels = channels;
+    RtLoop loop(c);
+    const armrt::ModelDef& def = *loop.simulator().model.def;
+    std::vector<int> cuff, infra, supra;
+    REQUIRE(armrt::find_elements(def, "rotator_cuff", cuff));
+    REQUIRE(armrt::find_elements(def, "infra", infra));
+    REQUIRE(armrt::find_elements(def, "supra", supra));
+    Controller a(loop.bound_port());
+    a.join(loop);
+    // rotator_cuff 0.3, infra 0.05: the old maximum gave infra 0.3.
+    a.send(kExcitationChannels, channels[0] == "infra" ? std::vector<double>{0.05, 0.3} : std::vector<double>{0.3, 0.05});
+    usleep(3000);
+    loop.run_cycles(2);
+    const auto& u = loop.simulator().data.excitation;
+    CHECK(u[infra[0]] == doctest::Approx(0.05));
+    CHECK(u[supra[0]] == doctest::Approx(0.3));
+  }
+  // Two groups (equal specificity) sharing elements: the larger value; an unknown channel is refused by name.
+  RtConfig c = test_config();
+  c.channels = {"rotator_cuff", "infrx"};
+  try {
+    RtLoop bad(c);
+    FAIL("accepted an unknown channel");
+  } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()).find("--channels") != std::string::npos);
+    CHECK(std::string(e.what()).find("'infrx'") != std::string::npos);
+  }
+}
+
+TEST_CASE("state packet table: offsets, labels and sizes agree") {
+  const std::vector<std::string> dofs{"a", "b"}, els{"e1", "e2", "e3"};
+  const auto rows = state_field_table(dofs, els);
+  const StateOffsets all = state_offsets(2, 3, kFlagForces | kFlagExcitation);
+  const StateOffsets fixed = state_offsets(2, 3, 0);
+  int c = 0;
+  for (const auto& r : rows) {
+    CHECK(static_cast<int>(r.labels.size()) == r.size);
+    c += r.size;
+  }
+  CHECK(c == all.count);
+  CHECK(fixed.count == fixed.fixed_values);
+  CHECK(fixed.muscle_force == -1);
+  CHECK(all.muscle_force == fixed.fixed_values);
+  CHECK(all.excitation == fixed.fixed_values + 3);
+  CHECK(state_offsets(2, 3, kFlagExcitation).excitation == fixed.fixed_values);
+  CHECK(rows[1].labels == std::vector<std::string>{"a", "b"});
+  CHECK(rows[2].labels == std::vector<std::string>{"a_dot", "b_dot"});
+  CHECK(rows[3].labels == std::vector<std::string>{"hand_x", "hand_y", "hand_z"});
+  CHECK(rows.back().labels[2] == "excitation_e3");
 }

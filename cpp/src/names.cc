@@ -2,6 +2,8 @@
 #include "armrt/names.h"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 #include <cstring>
 #include <tuple>
 
@@ -88,25 +90,92 @@ double similarity(const std::string& a, const std::string& b) {
 }
 
 bool find_elements(const ModelDef& def, const std::string& name, std::vector<int>& out) {
+  NameLevel level;
+  return find_elements(def, name, out, level);
+}
+
+bool find_elements(const ModelDef& def, const std::string& name, std::vector<int>& out, NameLevel& level) {
   for (int i = 0; i < def.num_elements; ++i)
     if (name == def.elements[i].name) {
       out.assign(1, i);
+      level = NameLevel::kElement;
       return true;
     }
-  for (const auto& [groups, count] : {std::pair{def.muscles, def.num_muscles}, std::pair{def.groups, def.num_groups}})
+  for (const auto& [groups, count, lvl] : {std::tuple{def.muscles, def.num_muscles, NameLevel::kMuscle},
+                                           std::tuple{def.groups, def.num_groups, NameLevel::kGroup}})
     for (int k = 0; k < count; ++k)
       if (name == groups[k].name) {
         out.assign(groups[k].elements, groups[k].elements + groups[k].num_elements);
+        level = lvl;
         return true;
       }
   std::vector<int> found;
+  bool force_name = false;
   for (int i = 0; i < def.num_elements; ++i) {
     const char* osim = def.elements[i].osim_name;
-    if (osim && *osim && (name == osim || name == osim_stem(osim))) found.push_back(i);
+    if (!osim || !*osim) continue;
+    if (name == osim) force_name = true;
+    if (name == osim || name == osim_stem(osim)) found.push_back(i);
   }
   if (found.empty()) return false;
+  level = force_name && found.size() == 1 ? NameLevel::kElement : NameLevel::kMuscle;
   out = std::move(found);
   return true;
+}
+
+NamedElements resolve_names(const ModelDef& def, const std::vector<std::string>& names) {
+  NamedElements m;
+  std::vector<std::string> unknown;
+  std::vector<int> ix;
+  for (const std::string& name : names) {
+    NameLevel level;
+    if (!find_elements(def, name, ix, level)) {
+      unknown.push_back(name);
+      continue;
+    }
+    m.names.push_back(name);
+    m.elements.insert(m.elements.end(), ix.begin(), ix.end());
+    m.offsets.push_back(static_cast<int>(m.elements.size()));
+    m.levels.push_back(level);
+  }
+  if (!unknown.empty()) throw std::invalid_argument(unknown_names_message(def, unknown));
+  return m;
+}
+
+void combine_named_values(const NamedElements& m, const double* values, int num_elements, double* out,
+                          NameLevel* level) {
+  for (int i = 0; i < num_elements; ++i) {
+    out[i] = 0.0;
+    level[i] = NameLevel::kUnnamed;
+  }
+  for (int k = 0; k < m.size(); ++k) {
+    const double v = values[k];
+    const NameLevel lk = m.levels[k];
+    for (int j = m.offsets[k]; j < m.offsets[k + 1]; ++j) {
+      const int i = m.elements[j];
+      if (lk < level[i]) {
+        out[i] = v;
+        level[i] = lk;
+      } else if (lk == level[i] && (v > out[i] || std::isnan(v))) {
+        if (!std::isnan(out[i])) out[i] = v;
+      }
+    }
+  }
+}
+
+std::vector<double> excitations_from_names(const ModelDef& def,
+                                           const std::vector<std::pair<std::string, double>>& items) {
+  std::vector<std::string> names;
+  std::vector<double> values;
+  for (const auto& [name, v] : items) {
+    names.push_back(name);
+    values.push_back(v);
+  }
+  const NamedElements m = resolve_names(def, names);
+  std::vector<double> out(def.num_elements);
+  std::vector<NameLevel> level(def.num_elements);
+  combine_named_values(m, values.data(), def.num_elements, out.data(), level.data());
+  return out;
 }
 
 int find_dof(const ModelDef& def, const std::string& name) {

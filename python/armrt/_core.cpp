@@ -182,6 +182,16 @@ PYBIND11_MODULE(_core, mod) {
   mod.def("unknown_names_message", [](const std::string& model, const std::vector<std::string>& names) {
         return unknown_names_message(require_model(model), names);
       }, py::arg("model"), py::arg("names"));
+  // The one rule for overlapping names in an excitation dict (names.h): every excitation path uses it.
+  mod.def("excitations_from_names", [](const std::string& model, const std::vector<std::pair<std::string, double>>& items) {
+        try {
+          return excitations_from_names(require_model(model), items);
+        } catch (const std::invalid_argument& e) {
+          throw py::key_error(e.what());
+        }
+      }, py::arg("model"), py::arg("items"),
+      "[(name, value)] -> one value per element: the most specific name wins (element over muscle over group, in "
+      "any order), equal specificity takes the largest; 0 where no name applies; KeyError naming unknown names");
   mod.def("find_dof", [](const std::string& model, const std::string& name) {
         const ModelDef& def = require_model(model);
         const int j = find_dof(def, name);

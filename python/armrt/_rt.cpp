@@ -36,7 +36,8 @@ py::dict stats_dict(const RtLoop& loop) {
   const RtStats s = loop.stats();
   py::dict d;
   d["rate_hz"] = s.rate_hz;
-  d["dt"] = s.dt;
+  d["control_step"] = s.control_step;
+  d["integration_step"] = s.integration_step;
   d["integrator"] = s.integrator;
   d["cycles"] = s.cycles;
   d["recorded"] = s.recorded;
@@ -45,7 +46,7 @@ py::dict stats_dict(const RtLoop& loop) {
   d["lag_s"] = s.lag_s;
   d["resync"] = "skip";
   d["warnings"] = s.warnings;
-  d["authenticated"] = loop.authenticated();
+  d["authenticated"] = s.authenticated;
   d["elapsed_s"] = s.elapsed_s;
   d["sim_time"] = s.sim_time;
   d["scheduler"] = s.scheduler;
@@ -111,7 +112,7 @@ PYBIND11_MODULE(_rt, m) {
   types["channels"] = static_cast<int>(kExcitationChannels);
   types["release"] = static_cast<int>(kRelease);
   types["hello"] = static_cast<int>(kHello);
-  types["state"] = static_cast<int>(kState);
+  types["state"] = static_cast<int>(kStatePacket);
   types["offer"] = static_cast<int>(kOffer);
   m.attr("TYPES") = types;
   py::dict flags;
@@ -123,13 +124,43 @@ PYBIND11_MODULE(_rt, m) {
   flags["overrun"] = static_cast<int>(kFlagOverrun);
   flags["excitation"] = static_cast<int>(kFlagExcitation);
   m.attr("FLAGS") = flags;
-  // The fixed values of a state packet depend on the model's DOFs (packet.h state_layout).
-  m.def("state_fields", [](const std::string& model) {
-        const armrt::ModelDef* def = armrt::find_model(model);
-        if (!def) throw py::value_error("unknown model '" + model + "' (compiled-in models: " + armrt::model_names() + ")");
-        return state_field_names(def->num_dofs);
+  // The state packet's table (packet.h ARMRT_STATE_PACKET_FIELDS) for a model: its sizes and labels
+  // depend on the model's DOFs and elements.
+  auto require = [](const std::string& model) -> const armrt::ModelDef& {
+    const armrt::ModelDef* def = armrt::find_model(model);
+    if (!def) throw py::value_error("unknown model '" + model + "' (compiled-in models: " + armrt::model_names() + ")");
+    return *def;
+  };
+  auto names_of = [](const armrt::ModelDef& def) {
+    std::vector<std::string> dofs, els;
+    for (int j = 0; j < def.num_dofs; ++j) dofs.emplace_back(def.dofs[j].name);
+    for (int i = 0; i < def.num_elements; ++i) els.emplace_back(def.elements[i].name);
+    return std::pair{dofs, els};
+  };
+  m.def("state_packet_fields", [require, names_of](const std::string& model) {
+        const auto [dofs, els] = names_of(require(model));
+        py::list rows;
+        for (const StateFieldInfo& r : state_field_table(dofs, els)) {
+          py::dict d;
+          d["name"] = r.name;
+          d["size"] = r.size;
+          d["rule"] = r.rule;
+          d["unit"] = r.unit;
+          d["flag"] = static_cast<int>(r.flag);
+          d["integer"] = r.integer;
+          d["labels"] = r.labels;
+          d["lsl_type"] = r.lsl_type;
+          d["description"] = r.description;
+          rows.append(d);
+        }
+        return rows;
       }, py::arg("model") = "das2",
-      "Names of the fixed values of a state packet of this model, in order (time, q0.., qd0.., hand_x, ...)");
+      "The state packet's rows in packet order: dicts of name, size (values), rule (one, dofs, three, elements), unit, flag (0: always sent, else "
+      "the PacketFlags bit that adds it), integer, labels (one per value), lsl_type, description");
+  m.def("state_fields", [require, names_of](const std::string& model) {
+        return state_field_names(names_of(require(model)).first);
+      }, py::arg("model") = "das2",
+      "Labels of the values a state packet of this model always carries, in order (time, GHy.., GHy_dot.., hand_x, ...)");
   m.def("parse_endpoint", [](const std::string& s, bool require_port) {
         const sockaddr_in a = parse_endpoint(s, require_port);
         char b[INET_ADDRSTRLEN] = {};
@@ -140,7 +171,7 @@ PYBIND11_MODULE(_rt, m) {
       "ValueError naming the problem");
 
   py::class_<RtLoop>(m, "RtLoop")
-      .def(py::init([](const std::string& model, const std::string& integrator, double rate_hz, double dt,
+      .def(py::init([](const std::string& model, const std::string& integrator, double rate_hz, double integration_step,
                        std::vector<double> q0, double duration, bool realtime, int priority, bool lock_memory,
                        bool require_rt, int cpu, double busy_wait_us, double max_lag, const std::string& listen,
                        std::vector<std::string> state_to, std::vector<std::string> allow, py::bytes key,
@@ -151,7 +182,7 @@ PYBIND11_MODULE(_rt, m) {
              c.model = model;
              c.integrator = integrator;
              c.rate_hz = rate_hz;
-             c.dt = dt;
+             c.integration_step = integration_step;
              c.q0 = std::move(q0);
              c.duration = duration;
              c.realtime = realtime;
@@ -175,7 +206,7 @@ PYBIND11_MODULE(_rt, m) {
              return std::make_unique<RtLoop>(c);
            }),
            py::arg("model") = "das2", py::arg("integrator") = RtConfig{}.integrator, py::arg("rate_hz") = 1000.0,
-           py::arg("dt") = 0.0, py::arg("q0") = std::vector<double>{}, py::arg("duration") = 0.0,
+           py::arg("integration_step") = 0.0, py::arg("q0") = std::vector<double>{}, py::arg("duration") = 0.0,
            py::arg("realtime") = true, py::arg("priority") = 80, py::arg("lock_memory") = false,
            py::arg("require_rt") = false, py::arg("cpu") = -1, py::arg("busy_wait_us") = 0.0,
            py::arg("max_lag") = 0.0, py::arg("listen") = "", py::arg("state_to") = std::vector<std::string>{},
@@ -215,7 +246,7 @@ PYBIND11_MODULE(_rt, m) {
       .def_property_readonly("running", &RtLoop::running)
       .def_property_readonly("finished", &RtLoop::finished)
       .def_property_readonly("port", &RtLoop::bound_port)
-      .def_property_readonly("dt", [](const RtLoop& l) { return l.config().dt; })
+      .def_property_readonly("integration_step", [](const RtLoop& l) { return l.config().integration_step; })
       .def_property_readonly("n_elements", [](RtLoop& l) { return l.simulator().model.num_elements; })
       .def("stats", &stats_dict)
       .def("stats_json", &RtLoop::stats_json);

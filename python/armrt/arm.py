@@ -123,8 +123,13 @@ class Arm:
             unknown = [name for name in values if not self._is_name(name)]
             if unknown:
                 raise KeyError(self._unknown_names_message(unknown))
-            for name, v in values.items():
-                out[self.indices(name)] = self._scalar(v, f"{what}[{name!r}]")
+            items = [(name, self._scalar(v, f"{what}[{name!r}]")) for name, v in values.items()]
+            if what == "excitation":
+                # Overlapping names: the engine's one rule (the most specific name wins, in any order).
+                out = np.asarray(_core.excitations_from_names(self.model_name, items))
+            else:
+                for name, v in items:
+                    out[self.indices(name)] = v
         else:
             arr = real_array(values, what)
             if arr.ndim == 0:

@@ -157,7 +157,17 @@ class ArmBatch:
         """(n, elements) from an (n, elements) array, or anything Arm accepts for one arm (an array
         of elements, a scalar, a {name: value} dict) applied to every arm."""
         ne = self.n_elements
-        if isinstance(values, Mapping):
+        if isinstance(values, Mapping) and what == "excitation":
+            # Overlapping names: the engine's one rule (the most specific name wins, in any order), as Arm.
+            items = []
+            for name, v in values.items():
+                try:
+                    items.append((name if isinstance(name, str) else repr(name), float(v)))
+                except (TypeError, ValueError):
+                    raise ValueError(f"{what}[{name!r}] must be a number, got {v!r}") from None
+            from . import _core
+            out = np.tile(np.asarray(_core.excitations_from_names(self.model_name, items)), (self.n, 1))
+        elif isinstance(values, Mapping):
             out = np.zeros((self.n, ne)) if current is None else current.copy()
             for name, v in values.items():
                 try:

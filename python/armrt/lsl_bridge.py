@@ -28,22 +28,30 @@ import time
 
 import numpy as np
 
-from .realtime import GH_RIM_FIELDS, GroupMapping, PacketError, State, UdpClient, decode_packet, parse_endpoint
+from .realtime import GroupMapping, PacketError, StatePacket, UdpClient, decode_packet, parse_endpoint, state_packet_fields
 
 
+def _stream_rows(model: str, forces: bool, excitations: bool) -> list[dict]:
+    """The rows of the state packet table (cpp/rt/packet.h) the stream carries: the ones always sent,
+    then the runner's overrun flag (a channel of its own), then forces / excitations if asked for."""
+    rows = state_packet_fields(model)
+    fixed = [r for r in rows if r["flag"] == 0]
+    flag = {"name": "overrun", "labels": ["overrun"], "unit": "1", "lsl_type": "flag", "size": 1, "flag": 0}
+    optional = [r for r in rows if (r["name"] == "muscle_force" and forces) or (r["name"] == "excitation" and excitations)]
+    return fixed + [flag] + optional
 
-def state_channels(model: str = "das2") -> tuple[list[str], list[str], list[str]]:
-    """Labels, units and types of the state stream's channels for `model` (its DOF names from the
-    engine): time, one angle and one angular velocity per DOF, hand position, GHstab, the GH force's
-    angles, rim margin and rim direction (State's GH_RIM_FIELDS), lag, overrun."""
-    from . import _core
-    dofs = [d["name"] for d in _core.model_info(model)["dofs"]]
-    n = len(dofs)
-    labels = (["time"] + dofs + [f"{d}_dot" for d in dofs] + ["hand_x", "hand_y", "hand_z", "gh_stab",
-              *GH_RIM_FIELDS, "lag", "overrun"])
-    units = ["s"] + ["rad"] * n + ["rad/s"] * n + ["m"] * 3 + ["1"] + ["rad"] * len(GH_RIM_FIELDS) + ["s", "1"]
-    types = (["time"] + ["angle"] * n + ["angular_velocity"] * n + ["position"] * 3 + ["stability"]
-             + ["angle", "angle", "margin", "direction"] + ["lag", "flag"])
+
+def state_channels(model: str = "das2", forces: bool = False,
+                   excitations: bool = False) -> tuple[list[str], list[str], list[str]]:
+    """Labels, units and types of the state stream's channels for `model`, read from the state packet
+    table (armrt.realtime.state_packet_fields): time, one angle and one angular velocity per DOF
+    (labelled by the DOF names), hand position, GHstab, the GH force's angles, rim margin and rim
+    direction, last applied sequence number, lag, overruns, the overrun flag, then the muscle forces
+    and excitations when the runner sends them."""
+    rows = _stream_rows(model, forces, excitations)
+    labels = [lab for r in rows for lab in r["labels"]]
+    units = [r["unit"] for r in rows for _ in r["labels"]]
+    types = [r["lsl_type"] for r in rows for _ in r["labels"]]
     return labels, units, types
 
 
@@ -69,13 +77,9 @@ def check_state_rate(state_rate_hz: float, runner_rate_hz: float = 1000.0) -> in
     return k
 
 
-def state_stream_info(pylsl, name: str, source_id: str, rate_hz: float, forces: list[str] | None = None,
-                      model: str = "das2"):
-    labels, units, types = state_channels(model)
-    for f in forces or []:
-        labels.append(f"force_{f}")
-        units.append("N")
-        types.append("force")
+def state_stream_info(pylsl, name: str, source_id: str, rate_hz: float, forces: bool = False,
+                      model: str = "das2", excitations: bool = False):
+    labels, units, types = state_channels(model, forces, excitations)
     info = pylsl.StreamInfo(name, "ArmState", len(labels), rate_hz, pylsl.cf_double64, source_id)
     desc = info.desc()
     desc.append_child_value("model", model)
@@ -134,7 +138,8 @@ class LslBridge:
                  mapping: str = "groups", model: str = "das2", channels=None, source_id: str | None = None,
                  state_name: str = "armrt_state", excitation_name: str = "armrt_excitation",
                  state_rate_hz: float = 100.0, forces: bool = False, excitation_source_id: str | None = None,
-                 excitation_host: str | None = None, runner_rate_hz: float = 1000.0, key: bytes | None = None):
+                 excitation_host: str | None = None, runner_rate_hz: float = 1000.0, key: bytes | None = None,
+                 excitations: bool = False):
         self.pylsl = _pylsl()
         self.state_every = check_state_rate(state_rate_hz, runner_rate_hz)
         self.state_period = self.state_every / runner_rate_hz
@@ -146,9 +151,11 @@ class LslBridge:
         self.excitation_source_id = excitation_source_id
         self.excitation_host = excitation_host or socket.gethostname()
         self.forces = forces
-        force_names = self.mapping.element_names if forces else None
+        self.excitations = excitations
+        self.stream_rows = _stream_rows(model, forces, excitations)
         self.outlet = self.pylsl.StreamOutlet(
-            state_stream_info(self.pylsl, state_name, f"{self.source_id}-state", state_rate_hz, force_names, model))
+            state_stream_info(self.pylsl, state_name, f"{self.source_id}-state", state_rate_hz, forces, model,
+                              excitations))
         self.inlet = None
         self.channel_index: np.ndarray | None = None
         self.last_values: np.ndarray | None = None   # the last forwarded excitation, in the mapping's order
@@ -240,10 +247,13 @@ class LslBridge:
         for st in self.client.take_states():
             self._publish(st)
 
-    def _publish(self, st: State) -> None:
+    def _publish(self, st: StatePacket) -> None:
         if self.forces and st.muscle_force is None:
             raise RuntimeError("the state stream declares muscle forces but the runner sends none: start "
                                "armrt-rt with --forces, or the bridge without --forces")
+        if self.excitations and st.excitation is None:
+            raise RuntimeError("the state stream declares excitations but the runner sends none: start "
+                               "armrt-rt with --excitations, or the bridge without --excitations")
         if self._last_time is not None and not st.stopped:
             dt = st.time - self._last_time
             if dt > 0 and abs(dt - self.state_period) > 1e-6:
@@ -253,10 +263,10 @@ class LslBridge:
         self._last_time = st.time
         if st.overrun:
             self.warn("overrun", f"the runner overran (lag {st.lag:.3f} s): see the lag and overrun channels")
-        sample = [st.time, *st.q, *st.qdot, *st.hand_position, st.gh_stab,
-                  *(getattr(st, k) for k in GH_RIM_FIELDS), st.lag, float(st.overrun)]
-        if self.forces:
-            sample += list(st.muscle_force)
+        sample = []
+        for r in self.stream_rows:  # the table's rows, in the stream's order
+            v = float(st.overrun) if r["name"] == "overrun" else getattr(st, r["name"])
+            sample += list(np.atleast_1d(np.asarray(v, dtype=float)))
         self.outlet.push_sample(sample, self.pylsl.local_clock())
         self.published += 1
 
@@ -286,6 +296,7 @@ def main(argv=None) -> int:
     ap.add_argument("--rate", type=float, default=100.0, help="state rate: the runner's --state-rate")
     ap.add_argument("--runner-rate", type=float, default=1000.0, help="the runner's --rate")
     ap.add_argument("--forces", action="store_true", help="the runner sends forces (--forces)")
+    ap.add_argument("--excitations", action="store_true", help="the runner sends excitations (--excitations)")
     ap.add_argument("--key-file", default=None, help="the runner's --key-file")
     ap.add_argument("--duration", type=float, default=None)
     a = ap.parse_args(argv)
@@ -296,7 +307,8 @@ def main(argv=None) -> int:
                            source_id=a.source_id, state_name=a.state_name, excitation_name=a.excitation_name,
                            state_rate_hz=a.rate, forces=a.forces, excitation_source_id=a.excitation_source_id,
                            excitation_host=a.excitation_host, runner_rate_hz=a.runner_rate,
-                           key=read_key_file(a.key_file) if a.key_file else None, model=a.model)
+                           key=read_key_file(a.key_file) if a.key_file else None, model=a.model,
+                           excitations=a.excitations)
     except (ValueError, RuntimeError, OSError) as e:
         print(f"lsl_bridge: {e}", file=sys.stderr)
         return 2

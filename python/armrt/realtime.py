@@ -21,6 +21,7 @@ import socket
 import struct
 import sys
 import time
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Mapping, Sequence
@@ -33,7 +34,7 @@ from . import _rt
 # The layout is defined once, in cpp/rt/packet.h; armrt._rt exports it and the codec is built from it.
 MAGIC: bytes = _rt.MAGIC
 VERSION: int = _rt.VERSION
-# The GH values a state packet carries beside gh_stab (cpp/rt/packet.h), and State's fields of those names.
+# The GH values a state packet carries beside gh_stab (cpp/rt/packet.h), and StatePacket's fields of those names.
 GH_RIM_FIELDS = ("gh_theta", "gh_phi", "gh_rim_margin", "gh_rim_direction")
 HEADER_SIZE: int = _rt.HEADER_SIZE
 MAX_VALUES: int = _rt.MAX_VALUES
@@ -64,8 +65,15 @@ FLAG_FORCES, FLAG_STOPPED, FLAG_ERROR, FLAG_TIMED_OUT = (FLAGS[k] for k in ("for
 FLAG_AUTH, FLAG_OVERRUN, FLAG_EXCITATION = (FLAGS[k] for k in ("auth", "overrun", "excitation"))
 
 
+def state_packet_fields(model: str = "das2") -> list[dict]:
+    """The state packet's table for `model` (cpp/rt/packet.h ARMRT_STATE_PACKET_FIELDS), in packet
+    order: dicts of name, size, rule (one, dofs, three, elements), unit, flag (0: always sent, else the FLAGS bit that adds the row),
+    integer, labels (one per value), lsl_type, description. The decoder and the LSL bridge read it."""
+    return [dict(r) for r in _rt.state_packet_fields(model)]
+
+
 def state_fields(model: str = "das2") -> list:
-    """Names of the fixed values of a state packet of `model`, in order (they depend on its DOFs)."""
+    """Labels of the values a state packet of `model` always carries, in order (they depend on its DOFs)."""
     return list(_rt.state_fields(model))
 
 
@@ -156,9 +164,32 @@ def decode_packet(data: bytes, key: bytes | None = None) -> Packet:
     return Packet(h["type"], h["seq"], flags, values, h["session"])
 
 
+_TABLES: dict = {}
+
+
+def _table(table, n_elements: int | None = None) -> list[dict]:
+    """A state packet table from a model name (cached), a table, or None (das2). A list of
+    state_fields() labels (the older argument) gives the table of that many DOFs and n_elements."""
+    if table is None or isinstance(table, str):
+        name = table or "das2"
+        if name not in _TABLES:
+            _TABLES[name] = state_packet_fields(name)
+        return _TABLES[name]
+    rows = list(table)
+    if rows and isinstance(rows[0], str):
+        template = _table("das2")
+        n_fixed_one = sum(r["size"] for r in template if r["flag"] == 0 and r["rule"] != "dofs")
+        n_dofs = (len(rows) - n_fixed_one) // 2
+        n_el = n_elements if n_elements is not None else next(r["size"] for r in template if r["rule"] == "elements")
+        size = {"one": 1, "three": 3, "dofs": n_dofs, "elements": n_el}
+        return [dict(r, size=size[r["rule"]]) for r in template]
+    return rows
+
+
 @dataclass
-class State:
-    """One state packet from the runner."""
+class StatePacket:
+    """One state packet from the runner: one attribute per row of the packet table
+    (state_packet_fields(); the optional rows are None when the packet does not carry them)."""
 
     seq: int
     time: float                 # s, simulated
@@ -198,37 +229,51 @@ class State:
         """At least one cycle overran since the previous state packet."""
         return bool(self.flags & FLAG_OVERRUN)
 
-    @classmethod
-    def from_packet(cls, p: Packet, fields: Sequence[str] | None = None, n_elements: int | None = None) -> "State":
-        """fields: the model's state_fields() (default: das2's); n_elements: the model's element count,
-        checked against the forces/excitations blocks when given. PacketError if the packet's size does
-        not fit them: a runner of another model (das2's 22 fixed values, das3's 34) is refused, not
-        decoded into wrong angles."""
+    @staticmethod
+    def decode_values(p: Packet, table=None) -> dict:
+        """{row name: value} of every row the packet carries (state_packet_fields(); a float or int
+        for one-value rows, an array otherwise). PacketError if the packet's size does not fit the
+        table: a runner of another model (das2's 22 fixed values, das3's 34) is refused, not decoded
+        into wrong angles."""
         if p.type != STATE:
             raise PacketError(f"not a state packet (type {p.type})")
-        fields = STATE_FIELDS if fields is None else list(fields)
-        st = {name: k for k, name in enumerate(fields)}
-        n_fixed = len(fields)
-        n_dofs = st["qd0"] - st["q0"]
+        rows = _table(table)
+        present = [r for r in rows if r["flag"] == 0 or p.flags & r["flag"]]
+        expect = sum(r["size"] for r in present)
         v = p.values
-        if v.size < n_fixed:
-            raise PacketError(f"state packet with {v.size} values, expected at least {n_fixed}")
-        rest = v[n_fixed:]
-        n_blocks = bool(p.flags & FLAG_FORCES) + bool(p.flags & FLAG_EXCITATION)
-        if n_blocks and rest.size % n_blocks:
-            raise PacketError(f"state packet with {rest.size} trailing values for {n_blocks} blocks")
-        n = rest.size // n_blocks if n_blocks else 0
-        if (not n_blocks and rest.size) or (n_blocks and n_elements is not None and n != n_elements):
-            expect = n_fixed + n_blocks * (n_elements or 0)
+        if v.size != expect:
             raise PacketError(f"state packet with {v.size} values where this model's has {expect}: is the runner "
                               f"running another model (armrt-rt --model)?")
-        forces = rest[:n].copy() if p.flags & FLAG_FORCES else None
-        exc = rest[n_blocks * n - n:].copy() if p.flags & FLAG_EXCITATION else None
-        q0, qd0 = st["q0"], st["qd0"]
-        return cls(p.seq, float(v[st["time"]]), v[q0:q0 + n_dofs].copy(), v[qd0:qd0 + n_dofs].copy(),
-                   v[st["hand_x"]:st["hand_z"] + 1].copy(), float(v[st["gh_stab"]]), int(v[st["last_seq"]]),
-                   p.flags, float(v[st["lag"]]), int(v[st["overruns"]]), forces, exc, p.session,
-                   **{k: float(v[st[k]]) for k in GH_RIM_FIELDS})
+        out, k = {}, 0
+        for r in present:
+            n = r["size"]
+            if r["rule"] == "one":
+                out[r["name"]] = int(v[k]) if r["integer"] else float(v[k])
+            else:
+                out[r["name"]] = v[k:k + n].copy()
+            k += n
+        return out
+
+    @classmethod
+    def from_packet(cls, p: Packet, table=None, n_elements: int | None = None) -> "StatePacket":
+        """table: the model's state_packet_fields() or its name (default das2). n_elements, if given,
+        must agree with the table (kept for callers that pass it)."""
+        rows = _table(table, n_elements)
+        if n_elements is not None:
+            sizes = {r["name"]: r["size"] for r in rows}
+            if sizes.get("muscle_force", n_elements) != n_elements:
+                raise PacketError(f"the table has {sizes['muscle_force']} elements, n_elements is {n_elements}")
+        values = cls.decode_values(p, rows)
+        return cls(seq=p.seq, flags=p.flags, session=p.session, **values)
+
+
+def __getattr__(name):
+    # The packet class was State, which is also the engine's snapshot (armrt.State).
+    if name == "State":
+        warnings.warn("armrt.realtime.State is deprecated: use armrt.realtime.StatePacket (armrt.State is the "
+                      "engine's snapshot)", DeprecationWarning, stacklevel=2)
+        return StatePacket
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 # ---------------------------------------------------------------------------------------- mappings
@@ -240,13 +285,16 @@ class GroupMapping:
     "muscles" / "groups": one value per muscle / group of the model, in the model's order;
     "channels": one value per configured name (element, muscle or group) - the runner must be started
     with the same names (armrt-rt --channels / RealtimeSession(channels=...)).
-    An element in several groups or channels takes the largest of their values.
+    Overlapping names (a group, a muscle of it, one of its elements) follow the engine's one rule
+    (armrt._core.excitations_from_names, cpp/src/names.cc): the most specific name wins, in any
+    order; names of equal specificity take the largest of their values.
     """
 
     kind: str
     names: list = field(default_factory=list)
     element_names: list = field(default_factory=list)
     index: dict = field(default_factory=dict)
+    model: str = "das2"
 
     @classmethod
     def from_model(cls, kind: str = "elements", model: str = "das2", channels: Sequence[str] | None = None):
@@ -273,7 +321,7 @@ class GroupMapping:
             index.update({c: list(_core.find_elements(model, c)) for c in names if c not in index})
         else:
             raise ValueError(f"unknown mapping {kind!r}; expected one of {list(MAPPING_TYPES)}")
-        return cls(kind, names, elements, index)
+        return cls(kind, names, elements, index, model)
 
     @property
     def packet_type(self) -> int:
@@ -288,10 +336,12 @@ class GroupMapping:
             for name, v in excitation.items():
                 if name in pos:
                     out[pos[name]] = v
-                elif self.kind == "elements" and name in self.index:
-                    out[self.index[name]] = v
-                else:
+                elif self.kind != "elements":
                     raise KeyError(f"{name!r} is not a value of mapping {self.kind!r} (names: {self.names[:8]}...)")
+            if self.kind == "elements":
+                from . import _core
+                return np.asarray(_core.excitations_from_names(self.model, [(str(k), float(v))
+                                                                            for k, v in excitation.items()]))
             return out
         arr = np.asarray(excitation, dtype=float).ravel()
         if arr.size != n:
@@ -303,11 +353,8 @@ class GroupMapping:
         v = self.values(values)
         if self.kind == "elements":
             return np.clip(v, 0, 1)
-        u = np.zeros(len(self.element_names))
-        for name, x in zip(self.names, v):
-            ix = self.index[name]
-            u[ix] = np.maximum(u[ix], np.clip(x, 0, 1))
-        return u
+        from . import _core  # the rule the runner applies (names.h)
+        return np.asarray(_core.excitations_from_names(self.model, list(zip(self.names, np.clip(v, 0, 1).tolist()))))
 
 
 # ---------------------------------------------------------------------------------------- UDP client
@@ -328,6 +375,7 @@ class UdpClient:
                  key: bytes | str | None = None):
         self.address = parse_endpoint(f"{host}:{int(port)}")
         self.state_fields = state_fields(model)
+        self.state_table = state_packet_fields(model)
         self.mapping = mapping if isinstance(mapping, GroupMapping) else GroupMapping.from_model(mapping, model, channels)
         self.key = _key_bytes(key)
         self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
@@ -337,7 +385,7 @@ class UdpClient:
         self.session = 0
         self.bad_packets = 0       # malformed, unsigned or wrongly signed datagrams
         self.foreign_packets = 0   # datagrams from anyone but the runner
-        self.last_state: State | None = None
+        self.last_state: StatePacket | None = None
         self.last_error = ""       # why the last bad datagram was refused
         self._states: collections.deque = collections.deque(maxlen=4096)
 
@@ -364,7 +412,7 @@ class UdpClient:
             if p.type == OFFER:
                 self.session = p.session
             elif p.type == STATE:
-                st = State.from_packet(p, self.state_fields, len(self.mapping.element_names))
+                st = StatePacket.from_packet(p, self.state_table)
                 st.received_at = time.monotonic()
                 if not st.timed_out:
                     self.session = st.session
@@ -381,7 +429,7 @@ class UdpClient:
         queued for recv_state / take_states); True if one was read."""
         return self._pump(timeout)
 
-    def take_states(self) -> list[State]:
+    def take_states(self) -> list[StatePacket]:
         """The state packets read so far and not yet returned, oldest first."""
         out = list(self._states)
         self._states.clear()
@@ -429,7 +477,7 @@ class UdpClient:
             self.sock.sendto(encode_packet(RELEASE, self._next_seq(), session=self.session, key=self.key), self.address)
             self.session = 0
 
-    def recv_state(self, timeout: float | None = 0.1) -> State | None:
+    def recv_state(self, timeout: float | None = 0.1) -> StatePacket | None:
         """The next state packet from the runner (None after timeout s)."""
         deadline = None if timeout is None else time.monotonic() + timeout
         while not self._states:
@@ -444,7 +492,7 @@ class UdpClient:
         self.last_state = st
         return st
 
-    def latest_state(self, timeout: float = 0.1) -> State | None:
+    def latest_state(self, timeout: float = 0.1) -> StatePacket | None:
         """Waits for a state packet, then drains the queue and returns the newest one."""
         st = self.recv_state(timeout)
         if st is None:
@@ -494,7 +542,9 @@ class RealtimeSession:
     `priority` when permitted, else normal scheduling with a note in stats()["rt_note"]; with
     require_rt=True start() raises instead). The loop never takes the GIL.
 
-    Parameters are those of armrt-rt (docs/realtime.md): model, integrator, rate_hz, dt, q0, duration,
+    Parameters are those of armrt-rt (docs/realtime.md): model, integrator, rate_hz, integration_step
+    (the integrator's largest step, s; `dt`, its old name, is deprecated: dt is the control step, here
+    1/rate_hz), q0, duration,
     realtime, priority, lock_memory (mlockall of the whole Python process; off by default), require_rt,
     cpu, busy_wait_us, max_lag, listen ("127.0.0.1:0" for an ephemeral port), state_to (one "host:port"
     or a list), allow (list of "host[:port]"), key (bytes >= 16), state_rate_hz, send_forces,
@@ -506,6 +556,12 @@ class RealtimeSession:
 
     def __init__(self, **config):
         from . import _rt
+        if "dt" in config:
+            if "integration_step" in config:
+                raise ValueError("dt (deprecated) and integration_step both given; use integration_step")
+            warnings.warn("RealtimeSession(dt=...) is deprecated: use integration_step (dt is the control step, "
+                          "here 1/rate_hz)", DeprecationWarning, stacklevel=2)
+            config["integration_step"] = config.pop("dt")
         if "model" in config and not isinstance(config["model"], str) or str(config.get("model", "")).endswith(".json"):
             from .model import Model
             config["model"] = Model(config["model"]).name  # a Model or a model file: loaded and registered

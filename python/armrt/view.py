@@ -246,7 +246,7 @@ class UdpSource:
         self.model = model
         from . import _core
         self.element_names = [e["name"] for e in _core.model_info(model)["elements"]]
-        self._state_fields = realtime.state_fields(model)
+        self._state_fields = realtime.state_packet_fields(model)
         self._sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         self._sock.bind((host, int(port)))
         self.port = self._sock.getsockname()[1]
@@ -266,7 +266,7 @@ class UdpSource:
             except OSError:
                 continue
             try:
-                s = rt.State.from_packet(rt.decode_packet(data, self._key), self._state_fields,
+                s = rt.StatePacket.from_packet(rt.decode_packet(data, self._key), self._state_fields,
                                          len(self.element_names))
                 self._frame = Frame(time=s.time, q=np.asarray(s.q, dtype=float), activation=s.excitation,
                                     gh_stab=s.gh_stab, gh_rim_margin=s.gh_rim_margin,

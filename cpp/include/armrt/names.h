@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "armrt/model_def.h"
@@ -15,6 +16,35 @@ namespace armrt {
 // "elbow_flexors"), or an OpenSim force name ("bic_b_1") or OpenSim muscle ("bic_b": the force names
 // without their element number). armrt names win over aliases. False (out untouched) if unknown.
 bool find_elements(const ModelDef& def, const std::string& name, std::vector<int>& out);
+
+// Overlapping names in one excitation command (a group, a muscle of it and an element of that
+// muscle) resolve by specificity, whatever their order: an element's own name wins over its muscle's,
+// a muscle's over a group's. Names of equal specificity that share elements (two groups; a name and
+// its OpenSim alias) give those elements the largest of their values: a group's value is a demand,
+// and 0 on one group must not silence the muscles another group drives. NaN propagates (callers refuse it).
+enum class NameLevel : signed char { kElement = 0, kMuscle = 1, kGroup = 2, kUnnamed = 3 };
+// find_elements plus the level of the name (an OpenSim force name is an element, an OpenSim muscle a muscle).
+bool find_elements(const ModelDef& def, const std::string& name, std::vector<int>& out, NameLevel& level);
+
+// Names resolved once (element lists in CSR form, with their levels), so that many commands can be
+// combined without allocating (the real-time runner's packets).
+struct NamedElements {
+  std::vector<std::string> names;
+  std::vector<int> offsets{0}, elements;
+  std::vector<NameLevel> levels;
+  int size() const { return static_cast<int>(levels.size()); }
+};
+// std::invalid_argument with unknown_names_message() naming every unknown name.
+NamedElements resolve_names(const ModelDef& def, const std::vector<std::string>& names);
+// values[k] for names.names[k] -> out[num_elements] by the rule above; elements no name covers get 0.
+// level[num_elements] is scratch. No allocation.
+void combine_named_values(const NamedElements& names, const double* values, int num_elements, double* out,
+                          NameLevel* level);
+// The rule in one call: {name: value} pairs -> one value per element (0 where no name covers it);
+// std::invalid_argument naming every unknown name.
+std::vector<double> excitations_from_names(const ModelDef& def,
+                                           const std::vector<std::pair<std::string, double>>& items);
+
 // Index of a DOF by armrt ("GHy") or OpenSim ("GH_y") name; -1 if unknown.
 int find_dof(const ModelDef& def, const std::string& name);
 

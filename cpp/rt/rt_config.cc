@@ -1,0 +1,99 @@
+// RtConfig as given -> checked and completed, with its Schedule (rt_config.h).
+#include "rt_config.h"
+
+#include <sched.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "armrt/simulator.h"
+
+namespace armrt::rt {
+
+std::string fmt(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
+namespace {
+
+// A finite number in [lo, hi], else an error naming the option.
+void check_range(const char* option, double v, double lo, double hi, const char* unit) {
+  if (!std::isfinite(v) || v < lo || v > hi)
+    throw std::invalid_argument(std::string(option) + " must be a finite number in [" + fmt(lo) + ", " + fmt(hi) +
+                                "] " + unit + ", got " + fmt(v));
+}
+
+}  // namespace
+
+Schedule check_config(RtConfig& cfg) {
+  Schedule s;
+  const Integrator integ = parse_integrator(cfg.integrator);
+  if (!is_fixed_cost(integ))
+    throw std::invalid_argument(std::string(integrator_name(integ)) +
+                                " is not a real-time integrator (its step time is not bounded); use ros2, rk4 or euler");
+  check_range("--rate", cfg.rate_hz, 1.0, 10000.0, "Hz");
+  s.period_s = 1.0 / cfg.rate_hz;
+  // Each cycle advances the simulation by one period (real time); the integrator takes as many
+  // substeps of at most integration_step as that needs. Default: default_max_step() (ROS2: one 1 ms step per cycle).
+  if (cfg.integration_step != 0) {
+    check_range("--integration-step", cfg.integration_step, 1e-7, 1.0, "s");
+    if (cfg.integration_step > s.period_s * (1 + 1e-12))
+      throw std::invalid_argument("--integration-step " + fmt(cfg.integration_step) +
+                                  " s does not fit in one period (1/--rate = " + fmt(s.period_s) + " s)");
+  }
+  if (cfg.integration_step <= 0) cfg.integration_step = default_max_step(integ);
+  s.substeps = std::max(1, static_cast<int>(std::ceil(s.period_s / cfg.integration_step - 1e-9)));
+  if (s.substeps > 10000)
+    throw std::invalid_argument("--integration-step gives " + std::to_string(s.substeps) +
+                                " substeps per period (at most 10000)");
+  cfg.integration_step = s.period_s / s.substeps;
+  if (cfg.priority < 1 || cfg.priority > 99) throw std::invalid_argument("--priority must be an integer in 1..99");
+  if (cfg.cpu < -1 || cfg.cpu >= CPU_SETSIZE) throw std::invalid_argument("--cpu must be a CPU number >= 0");
+  // The safety timeout is bounded: at least two periods (one late packet is not a silence), at most 10 s.
+  check_range("--timeout", cfg.input_timeout, 2 * s.period_s, 10.0, "s");
+  check_range("--busy-wait", cfg.busy_wait_us, 0.0, 0.5e6 * s.period_s, "us (at most half the period)");
+  if (cfg.duration != 0)
+    check_range("--duration", cfg.duration, s.period_s, 1e7, "s (0: until stopped; else at least one period)");
+  check_range("--max-lag", cfg.max_lag, 0.0, 1e6, "s");
+  if (cfg.rx_budget_us == 0) cfg.rx_budget_us = std::min(150.0, 0.25e6 * s.period_s);
+  check_range("--rx-budget", cfg.rx_budget_us, 1.0, 0.5e6 * s.period_s, "us (at most half the period)");
+  check_range("--state-rate", cfg.state_rate_hz, 0.0, cfg.rate_hz, "Hz (at most --rate)");
+  s.max_cycles = cfg.duration > 0 ? static_cast<std::int64_t>(std::llround(cfg.duration * cfg.rate_hz)) : 0;
+  if (cfg.state_rate_hz > 0) {
+    // Only rates the loop delivers exactly: one state packet every whole number of cycles.
+    const double ratio = cfg.rate_hz / cfg.state_rate_hz;
+    const long k = std::lround(ratio);
+    if (k < 1 || std::fabs(ratio - static_cast<double>(k)) > 1e-9 * ratio) {
+      const long lo = std::max(1L, static_cast<long>(std::floor(ratio))), hi = lo + 1;
+      throw std::invalid_argument("--state-rate " + fmt(cfg.state_rate_hz) + " Hz is not --rate / an integer (" +
+                                  fmt(cfg.rate_hz) + " Hz / " + fmt(ratio) + "); the nearest are " +
+                                  fmt(cfg.rate_hz / lo) + " and " + fmt(cfg.rate_hz / hi) + " Hz");
+    }
+    s.state_every = static_cast<int>(k);
+  }
+  if (static_cast<int>(cfg.channels.size()) > 512) throw std::invalid_argument("too many --channels");
+  return s;
+}
+
+std::vector<std::pair<std::string, double>> parse_max_activation(const std::vector<std::string>& items) {
+  std::vector<std::pair<std::string, double>> out;
+  for (const std::string& item : items) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) throw std::invalid_argument("max activation '" + item + "' is not NAME=VALUE");
+    const std::string name = item.substr(0, eq);
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str() + eq + 1, &end);
+    if (end == item.c_str() + eq + 1 || *end != '\0' || !(v >= 0.0 && v <= 1.0))
+      throw std::invalid_argument("max activation of '" + name + "' must be a number in [0, 1], got '" +
+                                  item.substr(eq + 1) + "'");
+    out.emplace_back(name, v);
+  }
+  return out;
+}
+
+}  // namespace armrt::rt

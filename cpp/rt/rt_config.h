@@ -1,0 +1,64 @@
+// RtConfig (the runner's options as given) -> the same options checked and completed, and the
+// Schedule they imply; std::invalid_argument naming the option for anything the loop could not run.
+// Model-dependent checks (--q0, names) are the loop's, which has the model (rt_loop.cc).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace armrt::rt {
+
+struct RtConfig {
+  // Model and integrator.
+  std::string model = "das2";
+  std::string integrator = "ros2";
+  double rate_hz = 1000.0;     // loop rate; the control step is 1/rate_hz s (one cycle)
+  // Largest integration step (s): each control step takes ceil(period / integration_step) substeps;
+  // 0: default_max_step() (ros2 1 ms, rk4 0.17 ms, euler 0.1 ms). armrt-rt --integration-step (--dt before).
+  double integration_step = 0;
+  std::vector<double> q0;      // initial joint angles (one per DOF of the model, rad); empty: rest posture
+  double duration = 0;         // s; 0: until stop() / a signal
+  // Real-time set-up.
+  bool realtime = true;        // try SCHED_FIFO; false: normal scheduling on purpose
+  int priority = 80;           // SCHED_FIFO priority (1..99)
+  bool lock_memory = true;     // mlockall(MCL_CURRENT | MCL_FUTURE)
+  bool require_rt = false;     // fail (instead of falling back) without SCHED_FIFO / mlockall
+  int cpu = -1;                // pin the loop thread to this CPU; -1: no affinity
+  double busy_wait_us = 0;     // sleep until deadline - busy_wait_us, then spin on the clock
+  double max_lag = 0;          // s; stop (fail safe) once simulated time lags the schedule by more; 0: never
+  // UDP I/O. Empty listen: no excitation input.
+  std::string listen;          // "host:port" (port 0: ephemeral, see RtLoop::bound_port())
+  std::vector<std::string> state_to;  // "host:port" subscribers that always get state; the owner gets it too
+  std::vector<std::string> allow;     // "host[:port]": only these may own a session; empty: anyone
+  std::string key;             // shared key (>= 16 bytes): HMAC-SHA256 on every packet; empty: none
+  double state_rate_hz = 100;  // state packets per second (0: none); must divide rate_hz
+  bool send_forces = false;    // append the muscle forces to state packets
+  bool send_excitation = false;  // append the applied element excitations to state packets
+  double input_timeout = 0.1;  // s of silence from the owner after which its session ends (excitation 0)
+  std::vector<std::string> channels;  // names (element, muscle or group) of the kExcitationChannels mapping
+  // Paralysis / weakness: "NAME=VALUE" (element, muscle or group; VALUE in [0, 1]) caps the
+  // activation every excitation source can produce; later entries override earlier ones.
+  std::vector<std::string> max_activation;
+  double rx_budget_us = 0;     // receive work per cycle: drain the socket until empty or this long; 0: min(150 us, period / 4)
+};
+
+// The timing the options imply.
+struct Schedule {
+  double period_s = 0;          // control step, 1/rate
+  int substeps = 1;             // integration steps per period (integration_step = period_s / substeps)
+  std::int64_t max_cycles = 0;  // from duration; 0: unbounded
+  int state_every = 0;          // cycles between state packets; 0: none
+};
+
+// Checks every model-independent option (so the executable and RealtimeSession refuse the same
+// things) and completes cfg: integration_step becomes period / substeps, rx_budget_us its default.
+Schedule check_config(RtConfig& cfg);
+
+// "NAME=VALUE" items of --max-activation -> (name, value) pairs, VALUE a number in [0, 1].
+std::vector<std::pair<std::string, double>> parse_max_activation(const std::vector<std::string>& items);
+
+std::string fmt(double v);  // "%g"
+
+}  // namespace armrt::rt

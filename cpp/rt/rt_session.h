@@ -1,0 +1,111 @@
+// Datagrams in -> the owner's per-element excitation command (checked, clipped to [0, 1], zero when
+// the session ends); state values -> signed state packets out to the owner and the subscribers.
+// UDP sockets, session ownership, HMAC, sequence numbers and the excitation mappings live here.
+//
+// Sessions: excitations are taken from one controller at a time, the session's owner. A controller
+// asks for the session id (kHello -> kOffer); the first excitation carrying it claims the session
+// when none is active; packets from any other source are then dropped unread beyond the address.
+// The session ends on kRelease from the owner or after input_timeout s without a valid packet from
+// it: the excitation falls to zero, state stops going to the owner, and a new session id is drawn,
+// so no packet of the old session is ever applied again.
+//
+// Everything that allocates happens in the constructor; receive() and send_state() do not.
+#pragma once
+
+#include <netinet/in.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "armrt/model_def.h"
+#include "armrt/names.h"
+#include "endpoint.h"
+#include "hmac.h"
+#include "packet.h"
+#include "rt_config.h"
+#include "rt_stats.h"
+
+namespace armrt::rt {
+
+class Session {
+ public:
+  // Opens the sockets (listen, state_to), resolves the channel names of cfg against def; throws
+  // std::invalid_argument (bad names, endpoints, key) or std::runtime_error (socket, bind).
+  Session(const RtConfig& cfg, const ModelDef& def, std::vector<std::string>& warnings);
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  // Reads what arrived this cycle (the owner's queue first, within the receive budget) and ends a
+  // session silent for longer than the input timeout. now_s: loop time.
+  void receive(double now_s);
+  // True once after the command changed (a packet applied, a session ended); command(): one
+  // excitation per element in [0, 1], before the model's max activation.
+  bool take_changed() {
+    const bool c = changed_;
+    changed_ = false;
+    return c;
+  }
+  const double* command() const { return command_.data(); }
+
+  bool wants_state() const { return sock_ >= 0 && (!subscribers_.empty() || have_owner_ || notify_previous_); }
+  // Sends one state packet (rows per cfg's --forces / --excitations; last_applied_seq is the
+  // session's own) with the loop's status flags (stopped, error, overrun).
+  void send_state(const StateValues& values, std::uint16_t loop_flags);
+
+  int bound_port() const { return bound_port_; }
+  bool authenticated() const { return key_.enabled(); }
+  const PacketCounters& counters() const { return pk_; }
+
+ private:
+  void handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in& from, double now_s);
+  bool drain(int fd, double now_s, std::int64_t budget_end);
+  void isolate_owner(const sockaddr_in* owner);
+  void end_session(bool released);
+  void send_offer(const sockaddr_in& to);
+  void send_to(const std::uint8_t* b, int len, const sockaddr_in& to);
+
+  bool listening_ = false;
+  double input_timeout_ = 0, rx_budget_us_ = 0;
+  std::uint16_t block_flags_ = 0;       // kFlagForces / kFlagExcitation as configured
+  int n_dofs_ = 0, n_el_ = 0;
+
+  // Excitation mappings (names.h: the most specific name wins, ties take the largest value).
+  NamedElements muscles_, groups_, channels_;
+  std::vector<NameLevel> level_scratch_;
+  std::vector<double> command_;
+  bool changed_ = false;
+
+  // UDP.
+  static constexpr int kBatch = 32;     // datagrams per recvmmsg
+  int sock_ = -1;
+  // The owner's own queue: a second socket on the same port (SO_REUSEPORT), connect()ed to the owner
+  // while a session lasts, so the kernel delivers the owner's datagrams there and a flood from others
+  // fills only sock_'s queue. Between sessions it is connected to sock_'s own address (silent).
+  int owner_sock_ = -1;
+  sockaddr_in bound_addr_{};
+  int bound_port_ = 0;
+  std::vector<sockaddr_in> subscribers_;
+  std::vector<SourceFilter> allow_;
+  HmacKey key_;
+  std::vector<std::uint8_t> rx_buf_, tx_buf_;
+  std::vector<sockaddr_in> rx_from_;
+  std::vector<char> rx_hdr_storage_;    // mmsghdr[kBatch] + iovec[kBatch], preallocated
+  std::vector<double> values_;          // decoded packet values / state staging (kMaxValues)
+  std::uint32_t tx_seq_ = 0;
+
+  // Session.
+  std::uint64_t session_rng_ = 0;       // splitmix64 state: session ids are unique, not secret
+  std::uint32_t session_id_ = 0;        // current (offered or owned) session id, never 0
+  bool have_owner_ = false;
+  sockaddr_in owner_{}, previous_owner_{};
+  bool had_owner_ = false, notify_previous_ = false;
+  bool have_seq_ = false;
+  std::uint32_t last_seq_ = 0;
+  double last_valid_s_ = -1;            // loop time of the owner's last applied excitation
+  bool offered_this_cycle_ = false;
+  PacketCounters pk_;
+};
+
+}  // namespace armrt::rt

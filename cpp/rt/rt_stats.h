@@ -1,0 +1,102 @@
+// Per-cycle times (TET, cycle work, wake-up latency, ns) and deadline misses -> fixed-memory
+// records -> RtStats (percentiles, overruns, lag, worst case) and its JSON. Recording allocates
+// nothing (a day at 1 kHz needs no more memory than a second); reading the statistics does.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "histogram.h"
+
+namespace armrt::rt {
+
+// Order statistics of one per-cycle quantity, in nanoseconds.
+struct Percentiles {
+  double min = 0, median = 0, p99 = 0, p999 = 0, max = 0, mean = 0;
+  std::int64_t count = 0;
+};
+Percentiles percentiles(const LogHistogram& h);
+
+struct PacketCounters {
+  std::uint64_t received = 0;      // datagrams read
+  std::uint64_t applied = 0;       // valid excitation packets applied
+  std::uint64_t foreign = 0;       // from a source other than the session's owner (not decoded)
+  std::uint64_t not_allowed = 0;   // from a source outside --allow (not decoded)
+  std::uint64_t bad_magic = 0, bad_version = 0, bad_size = 0, bad_type = 0, bad_count = 0;
+  std::uint64_t bad_auth = 0;      // missing or wrong HMAC tag (with a key)
+  std::uint64_t bad_session = 0;   // excitation without the current session id
+  std::uint64_t non_finite = 0;    // NaN / inf values
+  std::uint64_t stale = 0;         // duplicate sequence number in the session
+  std::uint64_t out_of_order = 0;  // sequence number older than the session's last applied one
+  std::uint64_t clipped = 0;       // packets with values outside [0, 1] (applied, clipped)
+  std::uint64_t hellos = 0;        // session requests read
+  std::uint64_t offers = 0;        // session offers sent (at most one per cycle)
+  std::uint64_t sessions = 0;      // sessions started (first excitation with the offered id)
+  std::uint64_t owner_changes = 0; // sessions started by a source other than the previous owner
+  std::uint64_t releases = 0;      // sessions ended by the owner
+  std::uint64_t timeouts = 0;      // sessions ended by input_timeout of silence (excitation set to zero)
+  std::uint64_t rx_budget_hits = 0;  // cycles that left datagrams in the socket (receive budget spent)
+  std::uint64_t state_sent = 0;
+  std::uint64_t send_errors = 0;
+  std::uint64_t dropped() const {
+    return foreign + not_allowed + bad_magic + bad_version + bad_size + bad_type + bad_count + bad_auth +
+           bad_session + non_finite + stale + out_of_order;
+  }
+};
+
+struct RtStats {
+  std::int64_t cycles = 0;        // cycles run
+  std::int64_t recorded = 0;      // cycles in the percentiles (all of them: fixed-memory histograms)
+  std::int64_t overruns = 0;      // cycles whose work ended after the next deadline
+  std::int64_t missed_deadlines = 0;  // whole periods skipped after an overrun
+  double lag_s = 0;               // simulated time behind the wall-clock schedule (missed periods)
+  double elapsed_s = 0;           // wall time of the loop
+  double sim_time = 0;            // simulated time at the end
+  Percentiles tet;                // model step (Simulator::step) execution time
+  Percentiles cycle;              // whole cycle work: receive + step + send
+  Percentiles latency;            // wake-up latency: actual wake-up - deadline
+  PacketCounters packets;
+  std::string scheduler;          // "SCHED_FIFO" or "SCHED_OTHER"
+  int priority = 0;
+  bool memory_locked = false;
+  int cpu = -1;
+  std::string rt_note;            // why SCHED_FIFO / mlockall are not in effect ("" when they are)
+  std::string stop_reason;        // "duration", "stop", "signal", "diverged", "lag", "error"
+  std::string error;              // divergence message, or set-up error
+  std::vector<std::string> warnings;  // set-up warnings (e.g. a non-loopback bind without a key)
+  double rate_hz = 0;
+  double control_step = 0;        // s, 1/rate: one cycle
+  double integration_step = 0;    // s, the integrator's step inside a cycle
+  std::string integrator;
+  bool authenticated = false;
+};
+
+// The cycle records: three histograms and the overrun / missed-period counts.
+class CycleRecorder {
+ public:
+  explicit CycleRecorder(double period_ns) : period_ns_(period_ns) {}
+  void record(std::int64_t tet_ns, std::int64_t cycle_ns, std::int64_t latency_ns) {
+    tet_.record(tet_ns);
+    cycle_.record(cycle_ns);
+    latency_.record(latency_ns);
+  }
+  void overrun(std::int64_t missed_periods) {
+    ++overruns_;
+    missed_ += missed_periods;
+  }
+  std::int64_t overruns() const { return overruns_; }
+  std::int64_t missed() const { return missed_; }
+  double lag_s() const { return static_cast<double>(missed_) * period_ns_ * 1e-9; }
+  // Fills the timing part of st (cycles, recorded, overruns, lag, percentiles).
+  void fill(RtStats& st) const;
+
+ private:
+  double period_ns_;
+  LogHistogram tet_, cycle_, latency_;
+  std::int64_t overruns_ = 0, missed_ = 0;
+};
+
+std::string stats_json(const RtStats& s);
+
+}  // namespace armrt::rt
