@@ -28,9 +28,10 @@ inline constexpr double kRos2AdaptiveTolLce = 1e-3;
 // The longest control step (s) a Stepper takes: inputs are held for a control step, and nothing the arm
 // does is slower than a second (activation time constants are 10-40 ms).
 inline constexpr double kMaxControlStep = 1.0;
-// The most substeps of one control step: 1e4 (0.1 us steps in a 1 ms control step) is far below any
-// integrator's accurate step and keeps a control step's cost bounded.
-inline constexpr int kMaxSubsteps = 10000;
+// The most substeps of one control step: 1e5 (10 us steps in the longest control step, 10 ns in a 1 ms one)
+// is far below any integrator's accurate step and keeps a control step's cost bounded (armrt.integrators
+// MAX_SUBSTEPS refuses the same).
+inline constexpr int kMaxSubsteps = 100000;
 
 Integrator parse_integrator(const std::string& name);  // "ros2", "ros2_adaptive", "euler", "rk4", "cvode"; throws std::invalid_argument
 const char* integrator_name(Integrator integrator);
