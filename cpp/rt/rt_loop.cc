@@ -70,8 +70,8 @@ StateValues RtLoop::state_values(double& lag, double& overruns) {
   v.qdot = &d.x[qd_offset(m)];
   v.hand_position = &d.hand_position[0];
   v.gh_stab = &d.gh_stab;
-  v.gh_theta = &d.gh_theta;
-  v.gh_phi = &d.gh_phi;
+  v.gh_theta = &d.gh_angles[0];
+  v.gh_phi = &d.gh_angles[1];
   v.gh_rim_margin = &d.gh_rim_margin;
   v.gh_rim_direction = &d.gh_rim_direction;
   v.lag = &lag;

@@ -7,6 +7,8 @@
 //   girdle          q -> tau_girdle: scapulothoracic contact, conoid        girdle.cc (das3 only)
 //   skeleton        q, qd, tau -> M(q), qdd from M qdd = tau + b(q, qd, g)  skeleton.cc
 //   GH reaction     q, qd, qdd, F, hand load -> GH force, GHstab           gh_reaction.cc (record only)
+//   kinematics      q -> thorax-humerus angles                             kinematics.cc (record only)
+// With record, each stage's outputs go to Data's ARMRT_OUTPUTS fields (layouts.h).
 #include <algorithm>
 
 #include "armrt/engine.h"
@@ -47,7 +49,8 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
 
   // Girdle.
   double tau_girdle[kMaxDofs];
-  if (def.girdle) girdle_forces(m, q, tau_girdle, jac ? jac->dtau_girdle_dq.data() : nullptr, record ? &d.girdle : nullptr);
+  GirdleState girdle;
+  if (def.girdle) girdle_forces(m, q, tau_girdle, jac ? jac->dtau_girdle_dq.data() : nullptr, record ? &girdle : nullptr);
   else std::fill(tau_girdle, tau_girdle + nq, 0.0);
 
   // Skeleton.
@@ -72,17 +75,27 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
     d.passive_torque[j] = tau_passive[j];
     d.external_torque[j] = tau_ext[j];
     d.girdle_torque[j] = tau_girdle[j];
-    d.qdd[j] = qdd[j];
+    d.qddot[j] = qdd[j];
   }
   hand_position_in_thorax(m, q, d.hand_position.data());
+  if (def.girdle) {
+    d.contact_distance = girdle.contact_distance;
+    d.contact_force = girdle.contact_force;
+    d.conoid_length = girdle.conoid_length;
+    d.conoid_tension = girdle.conoid_tension;
+  }
   // GH reaction.
   GHStability gh;
   gh_reaction(m, d.settings.gravity.data(), q, qd, qdd, force, f_ext, d.gh_force.data(), &gh);
-  d.gh_theta = gh.theta;
-  d.gh_phi = gh.phi;
+  d.gh_angles = {gh.theta, gh.phi};
   d.gh_stab = gh.stab;
   d.gh_rim_direction = gh.rim_direction;
   d.gh_rim_margin = gh.rim_margin;
+  // Kinematics.
+  thorax_humerus_angles(m, q, d.thorax_humerus.data());
+#ifdef ARMRT_EXTRA_OUTPUT_STAGES
+  ARMRT_EXTRA_OUTPUT_STAGES(m, d, q);
+#endif
 }
 
 }  // namespace armrt

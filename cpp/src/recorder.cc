@@ -2,6 +2,7 @@
 #include "armrt/recorder.h"
 
 #include <algorithm>
+#include <array>
 
 #include "armrt/engine.h"
 
@@ -9,35 +10,34 @@ namespace armrt {
 
 namespace {
 
-// One row: the state x at `time` and the outputs forward() left in s.data for that state.
+const double* values(const double& v) { return &v; }
+template <std::size_t N>
+const double* values(const std::array<double, N>& a) { return a.data(); }
+
+// One row: the state x at `time` and the outputs forward() left in s.data for that state, channel by channel
+// in layouts.h's order.
 void add_row(Recording& r, const Arm& s, const double* x, double time, double tet_ns) {
   const Model& m = s.model;
   const Data& d = s.data;
-  const int n = m.num_elements, nq = m.num_dofs;
-  auto put = [](std::vector<double>& v, const double* p, int k) { v.insert(v.end(), p, p + k); };
-  r.time.push_back(time);
-  put(r.q, x + q_offset(m), nq);
-  put(r.qdot, x + qd_offset(m), nq);
-  put(r.lce, x + lce_offset(m), n);
-  put(r.activation, x + act_offset(m), n);
-  put(r.excitation, d.excitation.data(), n);
-  put(r.muscle_force, d.muscle_force.data(), n);
-  put(r.muscle_length, d.muscle_length.data(), n);
-  put(r.gh_force, d.gh_force.data(), 3);
-  r.gh_stab.push_back(d.gh_stab);
-  r.gh_angles.push_back(d.gh_theta);
-  r.gh_angles.push_back(d.gh_phi);
-  r.gh_rim_margin.push_back(d.gh_rim_margin);
-  r.gh_rim_direction.push_back(d.gh_rim_direction);
-  put(r.hand_position, d.hand_position.data(), 3);
-  double angles[3];
-  thorax_humerus_angles(m, x + q_offset(m), angles);
-  put(r.thorax_humerus, angles, 3);
-  r.tet_ns.push_back(tet_ns);
-  if (r.num_contact_points > 0) {
-    put(r.contact_distance, d.girdle.contact_distance.data(), r.num_contact_points);
-    r.conoid_tension.push_back(d.girdle.conoid_tension);
-  }
+  int c = 0;
+  auto put = [&](const double* p) {
+    std::vector<double>& v = r.channel[c];
+    v.insert(v.end(), p, p + r.width[c]);
+    ++c;
+  };
+  put(&time);
+  int offset = 0;
+#define ARMRT_X(name, size, ...)  \
+  put(x + offset);                \
+  offset += layout_size(SizeRule::size, *m.def);
+  ARMRT_STATE_BLOCKS(ARMRT_X)
+#undef ARMRT_X
+  put(d.excitation.data());
+#define ARMRT_X(name, size, unit, stage, girdle_only, recorded, description) \
+  if (recorded) put(values(d.name));
+  ARMRT_OUTPUTS(ARMRT_X)
+#undef ARMRT_X
+  put(&tet_ns);
 }
 
 }  // namespace
@@ -45,17 +45,16 @@ void add_row(Recording& r, const Arm& s, const double* x, double time, double te
 long simulate_recorded(Arm& s, const double* u, bool held, long n_steps, long record_every, Recording& r,
                        bool (*stop)(void*), void* ctx) {
   const int n = s.model.num_elements, nq = s.model.num_dofs;
+  const ModelDef& def = *s.model.def;
   r.num_dofs = nq;
   r.num_elements = n;
-  r.num_contact_points = s.model.def->girdle ? s.model.def->girdle->num_contact_points : 0;
+  r.num_contact_points = def.girdle ? def.girdle->num_contact_points : 0;
   const long n_rec = n_steps / record_every + 1;
-  for (auto* v : {&r.time, &r.gh_stab, &r.gh_rim_margin, &r.gh_rim_direction, &r.tet_ns}) v->reserve(n_rec);
-  for (auto* v : {&r.q, &r.qdot}) v->reserve(n_rec * nq);
-  for (auto* v : {&r.lce, &r.activation, &r.excitation, &r.muscle_force, &r.muscle_length}) v->reserve(n_rec * n);
-  for (auto* v : {&r.gh_force, &r.hand_position, &r.thorax_humerus}) v->reserve(n_rec * 3);
-  r.gh_angles.reserve(n_rec * 2);
-  r.contact_distance.reserve(n_rec * r.num_contact_points);
-  r.conoid_tension.reserve(r.num_contact_points > 0 ? n_rec : 0);
+  const LayoutRow* rows = recorded_channels();
+  for (int c = 0; c < kNumChannels; ++c) {
+    r.width[c] = rows[c].girdle_only && !def.girdle ? 0 : layout_size(rows[c].size, def);
+    r.channel[c].reserve(n_rec * r.width[c]);
+  }
   // Only a recorded step keeps a copy of its start state (its outputs describe that state).
   std::vector<double> x0(state_size(s.model));
   long done = 0;

@@ -115,8 +115,8 @@ TEST_CASE("forward() records the GH force and its stability consistently") {
   sim.evaluate_outputs();
   const GHStability s = eval(*sim.model.def, sim.data.gh_force.data());
   CHECK(sim.data.gh_stab == doctest::Approx(s.stab).epsilon(1e-14));
-  CHECK(sim.data.gh_theta == doctest::Approx(s.theta).epsilon(1e-14));
-  CHECK(sim.data.gh_phi == doctest::Approx(s.phi).epsilon(1e-14));
+  CHECK(sim.data.gh_angles[0] == doctest::Approx(s.theta).epsilon(1e-14));
+  CHECK(sim.data.gh_angles[1] == doctest::Approx(s.phi).epsilon(1e-14));
   CHECK(sim.data.gh_rim_direction == doctest::Approx(s.rim_direction).epsilon(1e-14));
   CHECK(sim.data.gh_rim_margin == doctest::Approx(s.rim_margin).epsilon(1e-14));
   CHECK(std::isfinite(sim.data.gh_stab));

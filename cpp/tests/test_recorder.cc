@@ -19,22 +19,22 @@ TEST_CASE("rows are consistent time points; the final state is added when the la
   const long done = simulate_recorded(s, u.data(), true, 10, 5, r);
   CHECK(done == 10);
   REQUIRE(r.rows() == 3);  // steps 0 and 5, and the final state
-  CHECK(r.time[0] == 0.0);
-  CHECK(r.time[1] == doctest::Approx(5e-3));
-  CHECK(r.time[2] == doctest::Approx(10e-3));
+  CHECK(r[Channel::time][0] == 0.0);
+  CHECK(r[Channel::time][1] == doctest::Approx(5e-3));
+  CHECK(r[Channel::time][2] == doctest::Approx(10e-3));
   for (int j = 0; j < nq; ++j) {
-    CHECK(r.q[j] == x_start[j]);
-    CHECK(r.q[2 * nq + j] == s.data.x[q_offset(s.model) + j]);
+    CHECK(r[Channel::q][j] == x_start[j]);
+    CHECK(r[Channel::q][2 * nq + j] == s.data.x[q_offset(s.model) + j]);
   }
-  CHECK(r.q.size() == 3u * nq);
-  CHECK(r.activation.size() == 3u * n);
-  CHECK(r.excitation[n] == 0.3);
-  CHECK(r.tet_ns[0] > 0);
-  CHECK(r.tet_ns[2] == 0.0);  // the final state was not stepped from
+  CHECK(r[Channel::q].size() == 3u * nq);
+  CHECK(r[Channel::activation].size() == 3u * n);
+  CHECK(r[Channel::excitation][n] == 0.3);
+  CHECK(r[Channel::tet_ns][0] > 0);
+  CHECK(r[Channel::tet_ns][2] == 0.0);  // the final state was not stepped from
   // Forces of a row are those of its state (outputs evaluated at the start of the step).
   Arm t(generated::pendulum2::model_def(), Integrator::kRos2, 1e-3);
   t.evaluate_outputs();
-  CHECK(r.muscle_force[0] == t.data.muscle_force[0]);
+  CHECK(r[Channel::muscle_force][0] == t.data.muscle_force[0]);
 
   Recording r2;
   Arm s2(generated::pendulum2::model_def(), Integrator::kRos2, 1e-3);

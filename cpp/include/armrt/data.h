@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 
+#include "armrt/layouts.h"
 #include "armrt/model.h"
 
 namespace armrt {
@@ -82,31 +83,12 @@ struct Data {
   std::array<double, 3> hand_force{};   // N, applied at the hand point, thorax frame
   std::array<double, 3> hand_moment{};  // N m, applied to the hand, thorax frame
 
-  // The joint angles the outputs describe (rad): the moment arms there are muscle_paths(output_q) (not copied
-  // at every recorded step: 1.5 k doubles for das3, 3 % of its step).
-  std::array<double, kMaxDofs> output_q{};
-  // Paths (generated polynomials).
-  std::array<double, kMaxElements> muscle_length{};          // m, muscle-tendon length
-  // Muscles (muscles.cc).
-  std::array<double, kMaxElements> muscle_force{};   // N, tendon (SEE) force
-  std::array<double, kMaxElements> fibre_velocity{}; // m/s, d lce/dt (lengthening positive)
-  std::array<double, kMaxDofs> muscle_torque{};      // N m, generalised muscle forces R^T F
-  // Passive joints (passive_joints.cc).
-  std::array<double, kMaxDofs> passive_torque{};     // N m
-  // External loads (external_loads.cc).
-  std::array<double, kMaxDofs> external_torque{};    // N m, from the hand force and moment
-  std::array<double, 3> hand_position{};             // m, thorax frame
-  // Girdle forces (girdle.cc; zero for a fixed girdle).
-  std::array<double, kMaxDofs> girdle_torque{};      // N m
-  GirdleState girdle{};
-  // Skeleton (skeleton.cc).
-  std::array<double, kMaxDofs> qdd{};                // rad/s^2
-  // GH reaction (gh_reaction.cc).
-  std::array<double, 3> gh_force{};       // N, humeral head on glenoid, scapula frame
-  double gh_theta = 0, gh_phi = 0;        // rad, from the glenoid normal along the major / minor axis
-  double gh_stab = 0;                     // (theta/theta_a)^2 + (phi/phi_a)^2; > 1: dislocating
-  double gh_rim_direction = 0;            // rad, psi = atan2(phi, theta): 0 superior, pi/2 anterior (GHStability)
-  double gh_rim_margin = 0;               // rad, how far the force can still turn along psi to the rim; < 0 beyond
+  // Outputs of forward() with record = true: one field per ARMRT_OUTPUTS row (layouts.h gives each its size,
+  // unit and the stage that fills it), all describing the state at output_q. The moment arms there are
+  // muscle_paths(output_q): not copied at every recorded step (1.5 k doubles for das3, 3 % of its step).
+#define ARMRT_X(name, size, ...) ARMRT_STORAGE(size) name{};
+  ARMRT_OUTPUTS(ARMRT_X)
+#undef ARMRT_X
 
   // Errors: set by step(), never thrown in the hot path.
   Status status = Status::kOk;

@@ -3,6 +3,7 @@
 // it). Offline only: the rows live in std::vector, reserved once before the loop.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "armrt/simulator.h"
@@ -12,14 +13,12 @@ namespace armrt {
 struct Recording {
   int num_dofs = 0, num_elements = 0;
   int num_contact_points = 0;  // girdle contact points (das3: TS, AI); 0 for a fixed girdle
-  // Per row: time (s); q, qdot (num_dofs); lce, activation, excitation, muscle_force, muscle_length
-  // (num_elements); gh_force (3, N), gh_stab, gh_angles (theta, phi, rad), gh_rim_margin (rad),
-  // gh_rim_direction (rad; both engine.h GHStability), hand_position (3, m, thorax),
-  // thorax_humerus (3, rad), tet_ns (the step's TET; 0 for the final state); with girdle forces also
-  // contact_distance (num_contact_points, m, negative: inside the thorax) and conoid_tension (N).
-  std::vector<double> time, q, qdot, lce, activation, excitation, muscle_force, muscle_length, gh_force, gh_stab,
-      gh_angles, gh_rim_margin, gh_rim_direction, hand_position, thorax_humerus, tet_ns, contact_distance, conoid_tension;
-  long rows() const { return static_cast<long>(time.size()); }
+  // One array per recorded channel (layouts.h Channel: time, the state blocks, excitation, the recorded outputs,
+  // tet_ns), width[c] values per row, row after row. A girdle_only channel has width 0 without girdle forces.
+  std::array<std::vector<double>, kNumChannels> channel;
+  std::array<int, kNumChannels> width{};
+  const std::vector<double>& operator[](Channel c) const { return channel[static_cast<int>(c)]; }
+  long rows() const { return static_cast<long>((*this)[Channel::time].size()); }
 };
 
 // Steps s n_steps control steps. The excitation is row k of u (n_steps x num_elements), or its only
