@@ -284,7 +284,7 @@ def test_fit_element_handles_girdle_dof_counts():
 
 
 def test_compiled_das3_paths_equal_the_paths_file(fitted):
-    """The generated das3 muscle_paths (4-lane vectors per group of three DOFs; codegen/generate.py
+    """The generated das3 muscle_paths (4-lane vectors per group of three DOFs; codegen/paths_emitter.py
     _grouped_paths) against the polynomials of models/das3_paths.json evaluated in numpy, at random poses."""
     armrt = pytest.importorskip("armrt", reason="armrt is not built")
     m = armrt.Model("das3")

@@ -190,7 +190,7 @@ _LISTS = {"elements": "element", "dofs": "DOF", "muscles": "muscle", "bodies": "
 
 
 def validate_file(path) -> tuple[dict, str]:
-    """(model, SHA-256 of the file) after the generator's checks (codegen.generate.load_model:
+    """(model, SHA-256 of the file) after the generator's checks (codegen.schema.load_model:
     schema and sense checks). ModelFileError naming the file, the field, and the element (DOF, muscle,
     body) by name when the field is inside one; FileNotFoundError for a missing file."""
     path = Path(path)
