@@ -20,7 +20,7 @@ import numpy as np
 
 from .das3_source import ALL_DOFS, ModelInputError, axis_rotation
 from .das_struct import DasStruct, read_das_struct
-from .polynomial import substitute
+from ..polynomial import substitute
 
 # DAS segment names of the arm chain and the body names of the armrt schema.
 THORAX, SCAPULA = "thorax", "scapular"
