@@ -185,8 +185,8 @@ def test_committed_model_file():
 
 # ----------------------------------------------------------------------------- the glenoid (issue 24)
 
-from codegen.importers.import_das3 import (GH_CENTRE_TOLERANCE_M, INCLINATION_RANGE_DEG, VERSION_RANGE_DEG,  # noqa: E402
-                                 glenoid_geometry, glenoid_version_inclination, landmarks_in_scapula)
+from codegen.importers.glenoid import (GH_CENTRE_TOLERANCE_M, INCLINATION_RANGE_DEG, VERSION_RANGE_DEG,  # noqa: E402
+                                      glenoid_geometry, glenoid_version_inclination, landmarks_in_scapula)
 
 MODEL_FILES = ["das2", "das3", "participant_A", "participant_A_FES", "participant_A_injured", "participant_A_paralysed"]
 # The basis every model carried before issue 24: the DSEM landmarks Kabsch-fitted onto DAS3's

@@ -17,8 +17,8 @@ import numpy as np
 from . import das3_source as src
 from .das3_chain import BASE, OSIM_DOF, das3_bodies, girdle_points
 from .das3_source import ModelInputError
-from .import_das3 import (GRAVITY_THORAX, GROUPS, PASSIVE_JOINT, SCHEMA_VERSION, check_against_readme,
-                          glenoid_geometry, sha256)
+from .glenoid import glenoid_geometry
+from .model_defaults import GRAVITY_THORAX, GROUPS, PASSIVE_JOINT, SCHEMA_VERSION, check_against_readme, sha256
 
 DAS3_PATHS = Path(__file__).resolve().parents[2] / "models" / "das3_paths.json"
 COMMAND = "python -m codegen.import_das3 --free " + ",".join(src.ALL_DOFS) + " -o models/das3.json"
