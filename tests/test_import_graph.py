@@ -31,6 +31,15 @@ def modules_of(package_dir: Path, package: str) -> dict[str, Path]:
     return out
 
 
+def _extension_module(init: Path | None, name: str) -> bool:
+    """name is a submodule of the package whose __init__.py is init but not Python source (armrt._core:
+    _core.cpp in a checkout, _core.*.so installed), so `from package import name` does not import the
+    package's own names."""
+    if init is None or init.name != "__init__.py":
+        return False
+    return any(p.suffix != ".py" for p in init.parent.glob(f"{name}.*"))
+
+
 def import_graph(package_dir: Path, package: str) -> dict[str, set[str]]:
     """Module -> the modules of the same package it imports anywhere in its body. `from X import name`
     counts as importing X.name when that is a module, else X."""
@@ -54,12 +63,14 @@ def import_graph(package_dir: Path, package: str) -> dict[str, set[str]]:
                     source = node.module or ""
                 for a in node.names:
                     sub = f"{source}.{a.name}"
-                    targets.append(sub if sub in mods else source)
+                    if sub in mods:
+                        targets.append(sub)
+                    elif not _extension_module(mods.get(source), a.name):
+                        targets.append(source)
             for t in targets:
                 # `import codegen.importers.x` names x; an import of an outside module is not an edge.
                 while t and t not in mods:
                     t = t.rpartition(".")[0] if t.startswith(package + ".") else ""
-                # A package's `from . import _core` (an extension module, no .py) lands on the package itself.
                 if t and t != mod:
                     graph[mod].add(t)
     return graph
@@ -118,9 +129,10 @@ def test_the_checker_finds_a_lazy_circle_and_passes_a_tree(tmp_path):
     (pkg / "a.py").write_text("import os\nfrom . import b\n")
     (pkg / "b.py").write_text("def f():\n    from .sub.c import g\n")
     (pkg / "sub" / "c.py").write_text("def g():\n    from ..a import x\n")
-    (pkg / "sub" / "d.py").write_text("import pkg.b\nfrom pkg import a\n")
+    (pkg / "sub" / "d.py").write_text("import pkg.b\nfrom pkg import a, _ext, name_in_init\n")
+    (pkg / "_ext.cpp").write_text("")
     graph = import_graph(pkg, "pkg")
-    assert graph["pkg.sub.d"] == {"pkg.a", "pkg.b"}
+    assert graph["pkg.sub.d"] == {"pkg.a", "pkg.b", "pkg"}
     assert cycles(graph) == [["pkg.a", "pkg.b", "pkg.sub.c"]]
     (pkg / "sub" / "c.py").write_text("def g():\n    import json\n")
     assert cycles(import_graph(pkg, "pkg")) == []
