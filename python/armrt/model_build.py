@@ -28,6 +28,8 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
+from .codegen_locator import CodegenNotFoundError, codegen_module_name, import_codegen
+
 HERE = Path(__file__).resolve().parent
 # Checkout layout (PYTHONPATH=python or pytest from the repository root): python/armrt/../../{cpp,codegen}.
 REPO = HERE.parents[1]
@@ -85,14 +87,12 @@ def include_dir() -> Path:
 
 
 def generator() -> tuple[str, Path]:
-    """(module to run with python -m, the sys.path entry it needs): the generator installed with the
-    package (armrt.codegen, matching this engine) or, in a source checkout, codegen/."""
-    if (HERE / "codegen" / "generate.py").is_file():
-        return "armrt.codegen.generate", HERE.parent
-    if (REPO / "codegen" / "generate.py").is_file():
-        return "codegen.generate", REPO
-    raise ModelBuildError(f"the code generator is neither installed ({HERE / 'codegen'}) nor in a checkout "
-                          f"({REPO / 'codegen'}): reinstall armrt (pip install .)")
+    """(module to run with python -m, the sys.path entry it needs): the checkout's codegen/ when running
+    from a checkout, else the generator installed with the package (armrt.codegen; codegen_locator.py)."""
+    try:
+        return codegen_module_name("generate")
+    except CodegenNotFoundError as exc:
+        raise ModelBuildError(str(exc)) from None
 
 
 def build_config() -> dict:
@@ -196,12 +196,10 @@ def validate_file(path) -> tuple[dict, str]:
     path = Path(path)
     if not path.is_file():
         raise FileNotFoundError(2, "no such model file", str(path))
-    module, root = generator()
-    if str(root) not in sys.path:
-        sys.path.insert(0, str(root))
-    import importlib
     try:
-        gen = importlib.import_module(module)
+        gen = import_codegen("generate")
+    except CodegenNotFoundError as exc:
+        raise ModelBuildError(str(exc)) from None
     except ModuleNotFoundError as exc:
         raise ModelBuildError(f"building a model needs the code generator's dependency {exc.name!r}: "
                               f"pip install {exc.name}") from None
