@@ -232,7 +232,11 @@ def import_any(mat: Path, free: list[str], out: Path, name: str | None = None, p
             raise ModelInputError("--paths opensim: OpenSim-fitted paths exist for das2 only (the DAS3 release with "
                                   "GHy,GHz,GHyy,ELx,PSy free); other imports use the file's own polynomials")
         if equilibrium is None:
-            for cand in (mat.parent / "equilibrium.mat", DEFAULT_DAS3 / "equilibrium.mat"):
+            # Beside MAT, then the DAS3 release's in the reference layout (<reference>/participant_A/ beside
+            # <reference>/das3/), found from MAT so that an installed importer, far from the checkout's
+            # ../shared, picks the same file as the checkout's; then the checkout's default.
+            for cand in (mat.parent / "equilibrium.mat", mat.parent.parent / "das3" / "equilibrium.mat",
+                         DEFAULT_DAS3 / "equilibrium.mat"):
                 if cand.exists():
                     equilibrium = cand
                     break
@@ -256,7 +260,8 @@ def main(argv=None, prog="python -m codegen.import_das3"):
     ap.add_argument("--posture-deg", action="append", default=[], metavar="NAME=DEG[,...]",
                     help="the same in degrees")
     ap.add_argument("--equilibrium", type=Path, default=None,
-                    help="equilibrium.mat for the default posture (default: beside MAT, else the DAS3 release's)")
+                    help="equilibrium.mat for the default posture (default: beside MAT, else ../das3/ beside MAT's "
+                         "folder, else the DAS3 release beside the checkout)")
     ap.add_argument("--name", default=None, help="model name (a C identifier; default das2 for das2, else from MAT)")
     ap.add_argument("-o", "--out", type=Path, default=None,
                     help="model file to write (default: models/das3.json for all 11 DOFs, else models/das2.json)")
