@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from codegen.import_das3 import DSEM_CM, RIM_HALF_ANGLE_MAJOR_DEG, RIM_HALF_ANGLE_MINOR_DEG
+from codegen.importers.glenoid import DSEM_CM, RIM_HALF_ANGLE_MAJOR_DEG, RIM_HALF_ANGLE_MINOR_DEG
 
 TA = np.radians(RIM_HALF_ANGLE_MAJOR_DEG)   # rad, the paper's rim half-angles
 PA = np.radians(RIM_HALF_ANGLE_MINOR_DEG)
@@ -64,7 +64,7 @@ CASES = [
 def glenoid_axis_error_deg() -> float:
     """Angle (deg) between DAS3's glenoid axis (glenoid_scap: arcsines of the cm vector from the GH
     centre to the glenoid centre in the landmark frame) and the direction of that vector, which the
-    model file records (glenoid.normal: the scapula frame is the landmark frame, codegen/import_das3.py)."""
+    model file records (glenoid.normal: the scapula frame is the landmark frame, codegen/importers/glenoid.py)."""
     import json
 
     import armrt

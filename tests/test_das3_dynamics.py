@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from conftest import DAS3, ROOT
-from codegen.das3_chain import BASE, DAS3_DOFS, OSIM_DOF, das3_bodies, girdle_points
+from codegen.importers.das3_chain import BASE, DAS3_DOFS, OSIM_DOF, das3_bodies, girdle_points
 from codegen.eom_chain import NumericChain, generate_source
 
 RTOL = 1e-9

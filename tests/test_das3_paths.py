@@ -1,20 +1,20 @@
-"""das3 muscle paths: the girdle-and-arm region (codegen/das3_rom.py), the 11-DOF OpenSim sampler and
-scoring (codegen/das3_paths.py)."""
+"""das3 muscle paths: the girdle-and-arm region (codegen/importers/das3_rom.py), the 11-DOF OpenSim sampler and
+scoring (codegen/importers/das3_paths.py)."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
 from conftest import DAS3, ROOT
-from codegen import das3_paths as dp
-from codegen.das3_chain import DAS3_DOFS
+from codegen.importers import das3_paths as dp
+from codegen.importers.das3_chain import DAS3_DOFS
 
 
 @pytest.fixture(scope="module")
 def rom():
     if not (DAS3 / "model_struct.mat").exists():
         pytest.skip(f"DAS3 reference data not found at {DAS3}")
-    from codegen.das3_rom import Das3Rom
+    from codegen.importers.das3_rom import Das3Rom
     return Das3Rom(DAS3, n_grid=16)
 
 
@@ -64,7 +64,7 @@ def test_score_applies_the_paper_criterion():
 
 
 def test_rhythm_path_keeps_contact_and_rotates_the_scapula_upward(rom):
-    from codegen.das3_rom import RHYTHM
+    from codegen.importers.das3_rom import RHYTHM
     geo = rom.geo
     rest_f = geo.contact_f(rom.rest[:6])
     for g in rom.path:
@@ -85,7 +85,7 @@ def test_rhythm_path_keeps_contact_and_rotates_the_scapula_upward(rom):
 
 
 def test_samples_stay_in_the_region(rom):
-    from codegen.das3_rom import ARM_DOFS, ARM_ROM, GIRDLE_DOFS
+    from codegen.importers.das3_rom import ARM_DOFS, ARM_ROM, GIRDLE_DOFS
     P = rom.sample(32, 3)
     np.testing.assert_array_equal(P, rom.sample(32, 3))             # reproducible by seed
     for j, d in enumerate(GIRDLE_DOFS):
@@ -104,7 +104,7 @@ def test_sampler_against_opensim_length_derivative(rom):
     pytest.importorskip("opensim", reason="opensim (pip install opensim) is not installed")
     els = [{"name": "trapclav1", "osim_name": "trap_clav_1"}, {"name": "serrant1", "osim_name": "serr_ant_1"},
            {"name": "bicl", "osim_name": "bic_l"}]
-    from codegen.das3_source import read_model_struct
+    from codegen.importers.das3_source import read_model_struct
     osim_names = {e.name: e.osim_name for e in read_model_struct(DAS3 / "model_struct.mat").elements}
     for e in els:
         e["osim_name"] = osim_names[e["name"]]
@@ -119,7 +119,7 @@ def test_sampler_against_opensim_length_derivative(rom):
 
 PATHS = ROOT / "models" / "das3_paths.json"
 # Bounds for the committed paths on a fresh 32-pose sample of the kinematic fit region (seed 987). Achieved
-# after the term re-selection over das3's simulated motions (codegen/das3_refit_simulated.py --reselect):
+# after the term re-selection over das3's simulated motions (codegen/importers/das3_refit_simulated.py --reselect):
 # 126 of 138 elements meet the criterion at every scored pose, 1.02% of element-poses over it (stop 11's
 # coefficient-only refit: 111, 1.52%). About 1.5x the achieved fraction, 7 elements of slack.
 MIN_FRESH_PASSING = 119
@@ -159,7 +159,7 @@ def test_fitted_paths_file_is_consistent(fitted):
 def score_against_opensim(fitted, poses, label):
     """(elements meeting the criterion at every pose, fraction of element-poses over it) of the committed
     paths against OpenSim's geometry at poses (n, 11); checks each element's DOFs on the way."""
-    from codegen import opensim_geometry as og
+    from codegen.importers import opensim_geometry as og
     els = [{"name": e["name"], "osim_name": e["osim_name"]} for e in fitted["elements"]]
     s = dp.sample_poses(DAS3 / "das3.osim", els, poses, processes=2)
     for k, e in enumerate(fitted["elements"]):
@@ -189,7 +189,7 @@ def test_fitted_paths_on_a_das3_simulation_they_never_saw(fitted):
     outside the kinematic fit region: the refit over simulated motions holds there."""
     pytest.importorskip("opensim", reason="opensim (pip install opensim) is not installed")
     import armrt
-    from codegen.das3_simulated_poses import PROTOCOLS, ramp
+    from codegen.importers.das3_simulated_poses import PROTOCOLS, ramp
     arm = armrt.Arm(model="das3")
     arm.settle()
     q = arm.simulate(ramp(arm.model, PROTOCOLS[0][1], 0.6), 2.0, record_every=50).q
@@ -210,7 +210,7 @@ def test_gh_directions_in_the_paths_file(fitted):
         rms.append(e["fit"]["direction"]["rms_deg"])
     # achieved 2.20 deg overall on the kinematic test poses (docs/das3_path_accuracy.md); das2: 2.04
     assert np.sqrt(np.mean(np.square(rms))) < 2.8
-    # fitted over das3's simulated motions too (codegen.das3_directions --with-simulated): 1.51 deg there
+    # fitted over das3's simulated motions too (codegen.importers.das3_directions --with-simulated): 1.51 deg there
     sim = [e["fit"]["direction"]["simulated"]["rms_deg"] for e in gh]
     assert np.sqrt(np.mean(np.square(sim))) < 2.3
 
@@ -221,9 +221,9 @@ def test_gh_directions_on_a_das3_simulation_they_never_saw(fitted, tmp_path):
     ramp of test_fitted_paths_on_a_das3_simulation_they_never_saw), in the moving scapula frame."""
     pytest.importorskip("opensim", reason="opensim (pip install opensim) is not installed")
     import armrt
-    from codegen import fit_paths as fp
-    from codegen.das3_directions import direction_stats, sample_directions
-    from codegen.das3_simulated_poses import PROTOCOLS, ramp
+    from codegen.importers import fit_paths as fp
+    from codegen.importers.das3_directions import direction_stats, sample_directions
+    from codegen.importers.das3_simulated_poses import PROTOCOLS, ramp
     arm = armrt.Arm(model="das3")
     arm.settle()
     q = arm.simulate(ramp(arm.model, PROTOCOLS[0][1], 0.6), 2.0, record_every=50).q
@@ -239,8 +239,8 @@ def test_gh_directions_on_a_das3_simulation_they_never_saw(fitted, tmp_path):
 def test_direction_sampler_matches_the_das2_sampler_with_the_girdle_at_rest(rom):
     """At the resting girdle the moving-scapula directions equal das2's fixed-scapula ones."""
     pytest.importorskip("opensim", reason="opensim (pip install opensim) is not installed")
-    from codegen import opensim_geometry as og
-    from codegen.das3_directions import DirectionSampler
+    from codegen.importers import opensim_geometry as og
+    from codegen.importers.das3_directions import DirectionSampler
     names = ["delt_scap_5", "lat_dorsi_1"]
     girdle = dict(zip(["SC_y", "SC_z", "SC_x", "AC_y", "AC_z", "AC_x"], rom.rest[:6]))
     old = og._Sampler(str(DAS3 / "das3.osim"), girdle, names, np.ones((2, 5), bool), np.ones(2, bool))
@@ -254,7 +254,7 @@ def test_direction_sampler_matches_the_das2_sampler_with_the_girdle_at_rest(rom)
 def test_fit_element_handles_girdle_dof_counts():
     """A 9-DOF element (SC, AC, GH, as latissimus dorsi) from a known smooth length: the fit meets the
     criterion on validation poses, with the budgets das3_fit adds for more than 5 DOFs."""
-    from codegen import das3_fit
+    from codegen.importers import das3_fit
     rng = np.random.default_rng(2)
     cols = np.zeros(11, bool)
     cols[:9] = True
@@ -284,7 +284,7 @@ def test_fit_element_handles_girdle_dof_counts():
 
 
 def test_compiled_das3_paths_equal_the_paths_file(fitted):
-    """The generated das3 muscle_paths (4-lane vectors per group of three DOFs; codegen/generate.py
+    """The generated das3 muscle_paths (4-lane vectors per group of three DOFs; codegen/paths_emitter.py
     _grouped_paths) against the polynomials of models/das3_paths.json evaluated in numpy, at random poses."""
     armrt = pytest.importorskip("armrt", reason="armrt is not built")
     m = armrt.Model("das3")

@@ -193,7 +193,7 @@ def test_das3_parameters_and_resting_posture(lib):
         pytest.skip(f"DAS3 reference data not found at {DAS3}")
     import scipy.io as sio
 
-    from codegen.das3_chain import BASE, DAS3_DOFS, das3_bodies
+    from codegen.importers.das3_chain import BASE, DAS3_DOFS, das3_bodies
     from codegen.eom_chain import NumericChain
     m = sio.loadmat(DAS3 / "model_struct.mat", squeeze_me=True, struct_as_record=False)["model"]
     np.testing.assert_array_equal(np.ravel(m.thorax_center), CENTRE)

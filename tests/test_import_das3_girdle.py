@@ -1,4 +1,4 @@
-"""The 11-DOF shoulder-girdle model file models/das3.json (codegen/import_das3_girdle.py): one importer
+"""The 11-DOF shoulder-girdle model file models/das3.json (codegen/importers/import_das3_girdle.py): one importer
 command reproduces it byte for byte, its chain is das3.osim's, its paths are models/das3_paths.json's and
 its girdle forces model_struct.mat's; bad inputs are refused by name."""
 import argparse
@@ -10,11 +10,11 @@ import numpy as np
 import pytest
 import scipy.io as sio
 
-from codegen import das3_source as src
-from codegen.das3_chain import das3_bodies
-from codegen.das3_source import ModelInputError
-from codegen.import_das3 import import_any, is_das2_call, is_das3_call, main
-from codegen.import_das3_girdle import DAS3_PATHS, build_das3_model, read_paths
+from codegen.importers import das3_source as src
+from codegen.importers.das3_chain import das3_bodies
+from codegen.importers.das3_source import ModelInputError
+from codegen.importers.import_das3 import import_any, is_das2_call, is_das3_call, main
+from codegen.importers.import_das3_girdle import DAS3_PATHS, build_das3_model, read_paths
 from conftest import ROOT
 
 SHIPPED = ROOT / "models" / "das3.json"

@@ -1,4 +1,4 @@
-"""The generalised importer (codegen/import_reduced.py): any DAS-format .mat with chosen free DOFs,
+"""The generalised importer (codegen/importers/import_reduced.py): any DAS-format .mat with chosen free DOFs,
 the participant models, the default posture, and refusal of bad requests and bad model files."""
 import json
 import math
@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 import scipy.io as sio
 
-from codegen.das3_source import ModelInputError
-from codegen.das_struct import read_das_struct
-from codegen.import_reduced import build_reduced_model, joint_pose
+from codegen.importers.das3_source import ModelInputError
+from codegen.importers.das_struct import read_das_struct
+from codegen.importers.import_reduced import build_reduced_model, joint_pose
 from codegen.polynomial import evaluate
 from conftest import REFERENCE, ROOT
 
@@ -142,7 +142,7 @@ def test_bad_free_sets_are_refused(participant_dir, equilibrium, free, message):
 
 
 def test_committed_participant_files_match_a_fresh_import(participant_dir, tmp_path):
-    from codegen.import_das3 import main
+    from codegen.importers.import_das3 import main
     for v in VARIANTS:
         out = tmp_path / f"participant_A{v}.json"
         assert main([str(participant_dir / f"model_struct_A{v}.mat"), "--free", "ELx,PSy", "--name",
@@ -152,7 +152,7 @@ def test_committed_participant_files_match_a_fresh_import(participant_dir, tmp_p
 
 
 def test_importer_cli_reports_bad_requests(participant_dir, tmp_path, capsys):
-    from codegen.import_das3 import main
+    from codegen.importers.import_das3 import main
     assert main([str(participant_dir / "model_struct_A.mat"), "--free", "GHz,ELx", "-o", str(tmp_path / "m.json")]) == 2
     assert "free all of them or none" in capsys.readouterr().err
     assert main([str(participant_dir / "model_struct_A.mat"), "--free", "ELx", "--posture", "ELx=abc",
@@ -162,7 +162,7 @@ def test_importer_cli_reports_bad_requests(participant_dir, tmp_path, capsys):
 
 
 def test_bad_participant_struct_names_field_and_element(participant_dir):
-    from codegen.das_struct import parse_das_struct
+    from codegen.importers.das_struct import parse_das_struct
     model = sio.loadmat(participant_dir / "model_struct_A.mat", squeeze_me=True, struct_as_record=False)["model"]
     model.muscles[5].maxact = 1.5
     with pytest.raises(ModelInputError, match=r"muscles\[5\] \('triclong3'\): field 'maxact' must lie in \[0, 1\]"):

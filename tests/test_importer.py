@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 import scipy.io as sio
 
-from codegen import das3_source as src
-from codegen.das3_source import ModelInputError
-from codegen.import_das3 import build_model, reduce_length_poly
+from codegen.importers import das3_source as src
+from codegen.importers.das3_source import ModelInputError
+from codegen.importers.import_das3 import build_model, reduce_length_poly
 from codegen.polynomial import evaluate, substitute
 from conftest import ROOT
 
@@ -161,7 +161,7 @@ def test_missing_input_file_is_named(tmp_path):
 
 
 def test_cli_reports_bad_input(tmp_path, capsys):
-    from codegen.import_das3 import main
+    from codegen.importers.import_das3 import main
     assert main(["--das3", str(tmp_path), "--out", str(tmp_path / "m.json"), "--paths", "das3"]) == 2
     assert "missing input file" in capsys.readouterr().err
     assert not (tmp_path / "m.json").exists()
@@ -185,8 +185,8 @@ def test_committed_model_file():
 
 # ----------------------------------------------------------------------------- the glenoid (issue 24)
 
-from codegen.import_das3 import (GH_CENTRE_TOLERANCE_M, INCLINATION_RANGE_DEG, VERSION_RANGE_DEG,  # noqa: E402
-                                 glenoid_geometry, glenoid_version_inclination, landmarks_in_scapula)
+from codegen.importers.glenoid import (GH_CENTRE_TOLERANCE_M, INCLINATION_RANGE_DEG, VERSION_RANGE_DEG,  # noqa: E402
+                                      glenoid_geometry, glenoid_version_inclination, landmarks_in_scapula)
 
 MODEL_FILES = ["das2", "das3", "participant_A", "participant_A_FES", "participant_A_injured", "participant_A_paralysed"]
 # The basis every model carried before issue 24: the DSEM landmarks Kabsch-fitted onto DAS3's

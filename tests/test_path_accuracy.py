@@ -6,7 +6,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from codegen import fit_paths as fp
+from codegen.importers import fit_paths as fp
 
 ROOT = Path(__file__).resolve().parents[1]
 REFERENCE = ROOT / ".." / "shared" / "reference"
@@ -94,7 +94,7 @@ def _skip_reason():
 @pytest.mark.opensim
 @pytest.mark.skipif(_skip_reason() is not None, reason=str(_skip_reason()))
 def test_model_paths_match_fresh_opensim_sample():
-    from codegen import report_paths
+    from codegen.importers import report_paths
     model = report_paths.load_model(MODEL)
     stats, _, _ = report_paths.evaluate_model(model, str(REFERENCE / "das3" / "das3.osim"),
                                               N_POSES, seed=987)

@@ -28,6 +28,8 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
+from .codegen_locator import CodegenNotFoundError, codegen_module_name, import_codegen
+
 HERE = Path(__file__).resolve().parent
 # Checkout layout (PYTHONPATH=python or pytest from the repository root): python/armrt/../../{cpp,codegen}.
 REPO = HERE.parents[1]
@@ -89,14 +91,12 @@ def include_dir() -> Path:
 
 
 def generator() -> tuple[str, Path]:
-    """(module to run with python -m, the sys.path entry it needs): the generator installed with the
-    package (armrt.codegen, matching this engine) or, in a source checkout, codegen/."""
-    if (HERE / "codegen" / "generate.py").is_file():
-        return "armrt.codegen.generate", HERE.parent
-    if (REPO / "codegen" / "generate.py").is_file():
-        return "codegen.generate", REPO
-    raise ModelBuildError(f"the code generator is neither installed ({HERE / 'codegen'}) nor in a checkout "
-                          f"({REPO / 'codegen'}): reinstall armrt (pip install .)")
+    """(module to run with python -m, the sys.path entry it needs): the checkout's codegen/ when running
+    from a checkout, else the generator installed with the package (armrt.codegen; codegen_locator.py)."""
+    try:
+        return codegen_module_name("generate")
+    except CodegenNotFoundError as exc:
+        raise ModelBuildError(str(exc)) from None
 
 
 def build_config() -> dict:
@@ -350,19 +350,17 @@ def refuse_name_clash(path, name, source_hash: str) -> None:
 
 
 def validate_file(path) -> tuple[dict, str]:
-    """(model, SHA-256 of the file) after the generator's checks (codegen.generate.load_model:
+    """(model, SHA-256 of the file) after the generator's checks (codegen.schema.load_model:
     schema and sense checks). ModelFileError naming the file, the field, and the element (DOF, muscle,
     body) by name when the field is inside one; FileNotFoundError for a missing file."""
     path = Path(path)
     if not path.is_file():
         raise FileNotFoundError(2, "no such model file", str(path))
     check_model_document(path, path.read_bytes())
-    module, root = generator()
-    if str(root) not in sys.path:
-        sys.path.insert(0, str(root))
-    import importlib
     try:
-        gen = importlib.import_module(module)
+        gen = import_codegen("generate")
+    except CodegenNotFoundError as exc:
+        raise ModelBuildError(str(exc)) from None
     except ModuleNotFoundError as exc:
         raise ModelBuildError(f"building a model needs the code generator's dependency {exc.name!r}: "
                               f"pip install {exc.name}") from None

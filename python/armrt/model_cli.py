@@ -1,33 +1,31 @@
-"""`armrt model import`: a DAS-format model_struct*.mat -> an armrt model file (codegen.import_das3).
+"""`armrt model import`: a DAS-format model_struct*.mat -> an armrt model file (codegen.importers.import_das3).
 
-The importer and the code generator live in the source checkout (`codegen/`, not in the wheel): the
-command finds them on the path, in $ARMRT_SOURCE_DIR, in the current directory or beside the package.
+The importers go with the generator: the checkout's codegen/ when armrt runs from a source checkout, else
+armrt.codegen installed with the package (codegen_locator.py), so the command works in any folder.
 """
 from __future__ import annotations
 
-import os
-import sys
 from pathlib import Path
+
+try:
+    from .codegen_locator import import_codegen
+except ImportError:
+    # Loaded as a lone file (tests/test_import_das3_girdle.py runs this file's command), not as armrt.model_cli:
+    # the locator beside it, which then finds the checkout this file is in.
+    import importlib.util as _util
+    _spec = _util.spec_from_file_location("armrt_codegen_locator", Path(__file__).with_name("codegen_locator.py"))
+    _locator = _util.module_from_spec(_spec)
+    _spec.loader.exec_module(_locator)
+    import_codegen = _locator.import_codegen
 
 
 def codegen_module(name: str):
-    """Import codegen.<name>, adding the source checkout to sys.path if needed."""
-    import importlib
-    try:
-        return importlib.import_module(f"codegen.{name}")
-    except ImportError:
-        pass
-    candidates = [os.environ.get("ARMRT_SOURCE_DIR"), os.getcwd(), str(Path(__file__).resolve().parents[2])]
-    for c in candidates:
-        if c and (Path(c) / "codegen" / "import_das3.py").exists():
-            sys.path.insert(0, c)
-            return importlib.import_module(f"codegen.{name}")
-    raise FileNotFoundError("the model importer (codegen/) is part of the armrt source checkout, not of the "
-                            "installed package: run this from the repository or set ARMRT_SOURCE_DIR to it")
+    """codegen.<name> (e.g. 'importers.import_das3') of the generator this armrt goes with."""
+    return import_codegen(name)
 
 
 def cmd_model_import(args) -> int:
-    imp = codegen_module("import_das3")
+    imp = codegen_module("importers.import_das3")
     argv = [str(args.mat), "--free", args.free, "-o", str(args.out)]
     for p in args.posture:
         argv += ["--posture", p]

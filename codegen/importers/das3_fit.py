@@ -2,14 +2,14 @@
 
 Same method as the das2 fits (`codegen/fit_paths.fit_length`: joint least squares of length and moment
 arms, forward selection of monomials, stopping when the paper's criterion holds with margin on a
-held-out validation sample), on samples of das3.osim with all 11 DOFs free over `codegen/das3_rom.py`,
+held-out validation sample), on samples of das3.osim with all 11 DOFs free over `codegen/importers/das3_rom.py`,
 in the DOFs each element crosses in das3.osim (`codegen/das3_paths.element_dofs`). Girdle-crossing
 elements cross 3 (trapezius clavicular part: SC), 6 (thorax-scapula muscles, clavicular deltoid:
 SC+AC or AC+GH) or 9 DOFs (latissimus, pectoralis major: SC+AC+GH); their degree and term budgets are
-added below (the das2 table stops at 5 DOFs). Scored on the separate sample of `codegen/das3_paths.py`
+added below (the das2 table stops at 5 DOFs). Scored on the separate sample of `codegen/importers/das3_paths.py`
 against the DAS3 release polynomials (the baseline).
 
-`python -m codegen.das3_fit [--elements NAMES] [--train N --valid N] --out build/das3_fits.json`
+`python -m codegen.importers.das3_fit [--elements NAMES] [--train N --valid N] --out build/das3_fits.json`
 """
 from __future__ import annotations
 
@@ -84,12 +84,12 @@ def write_outputs(out, report, paths_out, source):
     fitted, release = [], []
     terms = None
     if any("n_terms" not in e["release"] for e in out["elements"]):   # results written before n_terms was kept
-        root = Path(__file__).resolve().parents[1]
+        root = Path(__file__).resolve().parents[2]
         terms = {e.name: len(e.lcoefs) for e in dp.das3_release_elements(root / ".." / "shared" / "reference" / "das3")}
     for e in out["elements"]:
         fitted.append({**e["fit"], "n_terms": len(e["length_poly"]["coefs"])})
         release.append({**e["release"], "n_terms": e["release"].get("n_terms", terms and terms[e["name"]])})
-    cmd = (f"python -m codegen.das3_fit --train {smp['train']} --valid {smp['valid']} --test {smp['test']} "
+    cmd = (f"python -m codegen.importers.das3_fit --train {smp['train']} --valid {smp['valid']} --test {smp['test']} "
            f"--seed {smp['seed']} --test-seed {smp['test_seed']}")
     info = (f"{smp['train']} training and {smp['valid']} validation poses (seeds {smp['seed']}, {smp['seed'] + 7919}); "
             f"sampling {smp['seconds_sampling'] / 60:.0f} min, fitting {smp['seconds_fitting'] / 60:.0f} min of worker "
@@ -104,7 +104,7 @@ def write_outputs(out, report, paths_out, source):
 def report_from_paths(paths_file, report, das3_dir, cache, processes):
     """Rewrites the head of the accuracy report (everything before its "## GH line of action" section) for the
     polynomials now in `paths_file`: their scores on the fit's test sample (each element's `fit` entry, which
-    codegen.das3_refit_simulated keeps current) beside the DAS3 release polynomials scored on the same poses."""
+    codegen.importers.das3_refit_simulated keeps current) beside the DAS3 release polynomials scored on the same poses."""
     from .das3_rom import Das3Rom
     paths = json.loads(Path(paths_file).read_text())
     smp = paths["sampling"]
@@ -123,7 +123,7 @@ def report_from_paths(paths_file, report, das3_dir, cache, processes):
     info = (f"{smp['train']} training and {smp['valid']} validation poses (seeds {smp['seed']}, {smp['seed'] + 7919}); "
             "then refitted over this region plus das3's own simulated motions (the last two sections), "
             f"{n_reselected} elements with their terms selected afresh")
-    cmd = f"python -m codegen.das3_fit --from-paths {paths_file} --report {report}"
+    cmd = f"python -m codegen.importers.das3_fit --from-paths {paths_file} --report {report}"
     old = Path(report).read_text() if Path(report).exists() else ""
     dp.write_report(st_rel, paths["rom"], smp["test"], smp["test_seed"], report, cmd, fitted=fitted, fit_info=info)
     cut = old.find("## GH line of action")
@@ -144,8 +144,8 @@ def write_paths(out, path, command):
 
 def main(argv=None):
     import argparse
-    root = Path(__file__).resolve().parents[1]
-    ap = argparse.ArgumentParser(prog="python -m codegen.das3_fit", description=__doc__.split("\n\n")[0])
+    root = Path(__file__).resolve().parents[2]
+    ap = argparse.ArgumentParser(prog="python -m codegen.importers.das3_fit", description=__doc__.split("\n\n")[0])
     ap.add_argument("--das3", default=str(root / ".." / "shared" / "reference" / "das3"))
     ap.add_argument("--elements", nargs="*", help="element names (default: all 138)")
     ap.add_argument("--train", type=int, default=1024)
@@ -160,7 +160,7 @@ def main(argv=None):
     ap.add_argument("--paths-out", help="also write the fitted length polynomials (JSON, see write_paths) here")
     ap.add_argument("--from-json", help="skip sampling and fitting: write --report/--paths-out from this --out file")
     ap.add_argument("--from-paths", help="skip sampling and fitting: write --report's summary and per-element "
-                    "table for the polynomials of this paths file as they now are (after codegen.das3_refit_simulated), "
+                    "table for the polynomials of this paths file as they now are (after codegen.importers.das3_refit_simulated), "
                     "keeping the report's later sections")
     a = ap.parse_args(argv)
     if a.from_json:

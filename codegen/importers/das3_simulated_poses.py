@@ -1,9 +1,9 @@
 """das3's path polynomials scored on the poses das3 itself visits when it moves (issue 15 item 2).
 
-    python -m codegen.das3_simulated_poses [--poses 512] [--report docs/das3_path_accuracy.md]
+    python -m codegen.importers.das3_simulated_poses [--poses 512] [--report docs/das3_path_accuracy.md]
 
-The paths of models/das3.json were fitted (codegen/das3_fit.py) over a kinematic stand-in for the
-girdle's motion (codegen/das3_rom.py: a scapulohumeral-rhythm path through equilibrium.mat plus
+The paths of models/das3.json were fitted (codegen/importers/das3_fit.py) over a kinematic stand-in for the
+girdle's motion (codegen/importers/das3_rom.py: a scapulohumeral-rhythm path through equilibrium.mat plus
 scatter), because the engine could not simulate das3 then. Now it can, so this checks the fit where it
 matters: poses taken from das3's own simulations (ROS2 at 1 ms, from the settled arm): ramps of the
 shoulder muscles that elevate the arm and move the girdle, the elbow and forearm muscles, the girdle
@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 # (label, {group or muscle: excitation at the end of a 1.5 s ramp}), then held for 0.5 s.
 PROTOCOLS = [
@@ -102,7 +102,7 @@ def main(argv=None) -> int:
 
     from . import das3_paths as dp
     from . import opensim_geometry as og
-    ap = argparse.ArgumentParser(prog="python -m codegen.das3_simulated_poses", description=__doc__.split("\n\n")[0])
+    ap = argparse.ArgumentParser(prog="python -m codegen.importers.das3_simulated_poses", description=__doc__.split("\n\n")[0])
     ap.add_argument("--das3", default=str(ROOT / ".." / "shared" / "reference" / "das3"))
     ap.add_argument("--model", default=str(ROOT / "models" / "das3.json"))
     ap.add_argument("--poses", type=int, default=512, help="poses drawn from the simulated trajectories")
@@ -135,7 +135,7 @@ def main(argv=None) -> int:
     scored = sum(st["n_scored"] for st in stats)
     span = {d["name"]: [float(np.degrees(poses[:, j].min())), float(np.degrees(poses[:, j].max()))]
             for j, d in enumerate(model["dofs"])}
-    out = {"command": "python -m codegen.das3_simulated_poses" + (f" --poses {a.poses}" if a.poses != 512 else ""),
+    out = {"command": "python -m codegen.importers.das3_simulated_poses" + (f" --poses {a.poses}" if a.poses != 512 else ""),
            "trajectory_poses": int(len(traj)), "inside_model_ranges": int(inside.sum()),
            "outside_fraction_by_dof": outside_by_dof, "scored_poses": int(len(poses)),
            "seconds": {"simulation": t_sim, "total": time.time() - t0}, "span_deg": span,

@@ -1,13 +1,13 @@
 """Refit das3's path-polynomial coefficients over the fit region plus das3's own simulated motions.
 
-    python -m codegen.das3_refit_simulated [--paths models/das3_paths.json] [--report docs/das3_path_accuracy.md]
+    python -m codegen.importers.das3_refit_simulated [--paths models/das3_paths.json] [--report docs/das3_path_accuracy.md]
 
-codegen/das3_fit.py chose each element's terms and coefficients over a kinematic stand-in for the girdle's
-motion (codegen/das3_rom.py), because the engine could not simulate das3 then. Simulated, das3's girdle
+codegen/importers/das3_fit.py chose each element's terms and coefficients over a kinematic stand-in for the girdle's
+motion (codegen/importers/das3_rom.py), because the engine could not simulate das3 then. Simulated, das3's girdle
 sits a few degrees outside that region (ACz and ACx below it, SCy and SCz at its edges;
-codegen/das3_simulated_poses.py), where the polynomials extrapolate badly. This keeps every element's
+codegen/importers/das3_simulated_poses.py), where the polynomials extrapolate badly. This keeps every element's
 terms (exponents) and refits their coefficients by the same weighted least squares on lengths and moment
-arms (codegen/fit_paths.py, MA_WEIGHT) over the union of the fit's training poses and poses from das3's
+arms (codegen/importers/fit_paths.py, MA_WEIGHT) over the union of the fit's training poses and poses from das3's
 simulations (training runs); it scores both on held-out poses of both kinds (the fit's test sample and
 other simulated runs) and keeps, per element, whichever coefficients have the smaller worst error in
 criteria over the two. Writes the chosen coefficients into the paths file, with the scores. Needs OpenSim.
@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 # (protocol level, random-run seeds) of each set of simulated runs; the three sets share no run
@@ -77,7 +77,7 @@ def main(argv=None) -> int:
     from .das3_chain import DAS3_DOFS
     from .das3_rom import Das3Rom
     from .das3_simulated_poses import replace_section
-    ap = argparse.ArgumentParser(prog="python -m codegen.das3_refit_simulated", description=__doc__.split("\n\n")[0])
+    ap = argparse.ArgumentParser(prog="python -m codegen.importers.das3_refit_simulated", description=__doc__.split("\n\n")[0])
     ap.add_argument("--das3", default=str(ROOT / ".." / "shared" / "reference" / "das3"))
     ap.add_argument("--paths", default=str(ROOT / "models" / "das3_paths.json"))
     ap.add_argument("--report", help="append (or replace) the section in this markdown file")
@@ -85,7 +85,7 @@ def main(argv=None) -> int:
     ap.add_argument("--processes", type=int, default=2)
     ap.add_argument("--reselect", action="store_true",
                     help="for elements still missing the criterion after the coefficient refit, also select "
-                         "their terms afresh (codegen/das3_fit.py's forward selection) over the fit's region "
+                         "their terms afresh (codegen/importers/das3_fit.py's forward selection) over the fit's region "
                          "plus das3's simulated motions, and keep them where the worst error falls")
     ap.add_argument("--reselect-elements", nargs="*", metavar="NAME",
                     help="with --reselect: only these elements (default: every one still missing the criterion)")
@@ -178,7 +178,7 @@ def main(argv=None) -> int:
                 e["fit"]["simulated"] = {"refit": True, "reselected": True, **sel_st}
                 rows[k] = (name, o, sel_st, True)
                 reselected += 1
-    paths["refit_simulated_command"] = "python -m codegen.das3_refit_simulated" + (" --reselect" if a.reselect else "")
+    paths["refit_simulated_command"] = "python -m codegen.importers.das3_refit_simulated" + (" --reselect" if a.reselect else "")
     Path(a.paths).write_text(json.dumps(paths, indent=1) + "\n")
 
     def count(which, key):
@@ -190,7 +190,7 @@ def main(argv=None) -> int:
              if not ((n if u else o)["fit_test"]["pass"] and (n if u else o)["sim_test"]["pass"])]
     fails.sort(key=lambda x: -max(s["max_err_m"] / s["criterion_m"] for s in x[1].values()))
     lines = ["## Refit over das3's own simulated motions", "",
-             f"`python -m codegen.das3_refit_simulated{' --reselect' if a.reselect else ''}` ({time.time() - t0:.0f} s, "
+             f"`python -m codegen.importers.das3_refit_simulated{' --reselect' if a.reselect else ''}` ({time.time() - t0:.0f} s, "
              f"{t_sample:.0f} s of it sampling "
              "OpenSim): every element keeps its terms; the coefficients are refitted over the fit's "
              f"{len(sets['fit_train']['q'])} training poses plus {len(sets['sim_train']['q'])} poses of das3's "
@@ -202,7 +202,7 @@ def main(argv=None) -> int:
              f"{len(sets['fit_test']['q'])} test poses and {len(sets['sim_test']['q'])} poses of other simulated "
              f"runs (the protocols at 70 %, six other random runs). Refitted: {changed} of {len(rows)} elements."
              + (f" Then the {n_tried} elements still missing the criterion had their terms selected afresh "
-                f"(codegen/das3_fit.py's forward selection, {t_select / 60:.0f} min) over the fit's training poses "
+                f"(codegen/importers/das3_fit.py's forward selection, {t_select / 60:.0f} min) over the fit's training poses "
                 f"plus every {SIM_STRIDE}rd simulated training pose, stopping on the fit's "
                 f"{len(sets['fit_valid']['q'])} validation poses plus every {SIM_STRIDE}rd of "
                 f"{len(sets['sim_valid']['q'])} poses of a third set of simulated runs (the protocols at 85 %, "

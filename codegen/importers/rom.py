@@ -10,7 +10,7 @@ GHy 0.434, GHz 0.498, GHyy 0.273, ELx 0.657, PSy 1.421 rad) and covering the pap
 scapular plane up to the GHz limit; elbow flexion 5-140 deg; pronation 5-160 deg). The reasons
 come from OpenSim sweeps of every GH-crossing element through the resting posture at GHz = 0.3,
 0.5, 1.0 and 1.4 (second differences of ``computeMomentArm`` for kinks, and the wrap-jump test of
-``codegen.opensim_geometry`` for poses where it disagrees with the length derivative):
+``codegen.importers.opensim_geometry`` for poses where it disagrees with the length derivative):
 
 * ``GHz`` (humeral elevation in the plane set by ``GHy``) 0.25 .. 1.466 rad. The upper limit is the
   DAS3 limit: with the scapula fixed this is a thoracohumeral elevation of about 70 deg, the most

@@ -4,7 +4,7 @@ Not a box over all 11 DOFs: the scapula does not move independently of the humer
 11-D box is postures no shoulder takes (scapula lifted off or sunk into the thorax, the girdle at one end
 of its range with the arm at the other). The region sampled is
 
-* arm DOFs GHy, GHz, GHyy, ELx, PSy: the das2 range of motion (`codegen/rom.py`, chosen around the DAS3
+* arm DOFs GHy, GHz, GHyy, ELx, PSy: the das2 range of motion (`codegen/importers/rom.py`, chosen around the DAS3
   resting posture inside the DAS3 ranges);
 * girdle DOFs SCy .. ACx: a scapulohumeral rhythm path through the resting posture (equilibrium.mat
   x[0:6]) as a function of the gleno-humeral elevation GHz, plus scatter around it.
@@ -28,7 +28,7 @@ from __future__ import annotations
 import numpy as np
 
 from .das3_chain import BASE, DAS3_DOFS, das3_bodies
-from .eom_chain import NumericChain
+from ..eom_chain import NumericChain
 from .rom import ROM as ARM_ROM
 
 ARM_DOFS = ["GHy", "GHz", "GHyy", "ELx", "PSy"]

@@ -6,7 +6,7 @@
 the DAS3 release with all 11 DOFs free here. Nothing is fitted: bodies and joints come from das3.osim
 (`das3_chain.das3_bodies`), Hill parameters and the girdle-force parameters from model_struct.mat, the
 resting posture from equilibrium.mat, and every element's `length_poly`, `gh_direction` and `fit` from
-`models/das3_paths.json` (fitted against OpenSim by `codegen.das3_fit` / `codegen.das3_directions`).
+`models/das3_paths.json` (fitted against OpenSim by `codegen.importers.das3_fit` / `codegen.importers.das3_directions`).
 """
 from __future__ import annotations
 
@@ -17,10 +17,10 @@ import numpy as np
 from . import das3_source as src
 from .das3_chain import BASE, OSIM_DOF, das3_bodies, girdle_points
 from .das3_source import ModelInputError
-from .import_das3 import (GRAVITY_THORAX, GROUPS, PASSIVE_JOINT, SCHEMA_VERSION, check_against_readme,
-                          glenoid_geometry, sha256)
+from .glenoid import glenoid_geometry
+from .model_defaults import GRAVITY_THORAX, GROUPS, PASSIVE_JOINT, SCHEMA_VERSION, check_against_readme, sha256
 
-DAS3_PATHS = Path(__file__).resolve().parents[1] / "models" / "das3_paths.json"
+DAS3_PATHS = Path(__file__).resolve().parents[2] / "models" / "das3_paths.json"
 COMMAND = "python -m codegen.import_das3 --free " + ",".join(src.ALL_DOFS) + " -o models/das3.json"
 JOINT_TYPES = {"sc": "gimbal_yzx", "ac": "gimbal_yzx", "gh": "gimbal_yzy", "hu": "pin", "ur": "pin", "rc": "weld"}
 # The engine's joint labels of muscles[].crosses, by the DOFs each joint carries.
@@ -214,6 +214,8 @@ def build_das3_model(das3_dir: Path, paths_file: Path = DAS3_PATHS) -> dict:
         "schema": "armrt-model",
         "schema_version": SCHEMA_VERSION,
         "name": "das3",
+        # As models/das3.json records it (its bytes are hashed into cpp/generated): the fitters named below
+        # have moved to codegen/importers/ since.
         "description": (
             "The DAS3 shoulder-girdle model: thorax fixed, 11 DOF (SC 3, AC 3, GH 3, elbow flexion, forearm "
             "pronation), 28 muscles in 138 Hill-type elements, with the scapulothoracic contact of TS and AI on "

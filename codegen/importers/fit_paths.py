@@ -31,8 +31,8 @@ import time
 
 import numpy as np
 
-from codegen import opensim_geometry as og
-from codegen.rom import ROM
+from . import opensim_geometry as og
+from .rom import ROM
 
 MA_WEIGHT = 10.0
 SHORTLIST = 4
@@ -329,7 +329,7 @@ def main():
     import json
     from pathlib import Path
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    root = Path(__file__).resolve().parents[1]
+    root = Path(__file__).resolve().parents[2]
     ap.add_argument("--reference", default=str(root / ".." / "shared" / "reference" / "das3"))
     ap.add_argument("--out", default=str(root / "build" / "path_fits.json"))
     ap.add_argument("--seed", type=int, default=0)

@@ -9,9 +9,9 @@ DOFs the element crosses (`codegen/fit_paths.fit_direction`, das2's settings) an
 their value, so errors are angles after normalisation. Poses excluded as wrap jumps for the element's
 length are excluded here too.
 
-`python -m codegen.das3_directions` adds `gh_direction` to every GH-crossing element of
+`python -m codegen.importers.das3_directions` adds `gh_direction` to every GH-crossing element of
 models/das3_paths.json and a line-of-action section to docs/das3_path_accuracy.md. With `--with-simulated`
-the region is that of the length polynomials after codegen/das3_refit_simulated.py: the kinematic samples plus
+the region is that of the length polynomials after codegen/importers/das3_refit_simulated.py: the kinematic samples plus
 das3's own simulated motions (every SIM_STRIDE-th pose of the training runs in the fit, of the validation runs
 in its stopping test), and the fits are scored on the held-out simulated runs as well.
 """
@@ -115,8 +115,8 @@ def direction_stats(gd, q, target):
 
 def main(argv=None):
     import argparse
-    root = Path(__file__).resolve().parents[1]
-    ap = argparse.ArgumentParser(prog="python -m codegen.das3_directions", description=__doc__.split("\n\n")[0])
+    root = Path(__file__).resolve().parents[2]
+    ap = argparse.ArgumentParser(prog="python -m codegen.importers.das3_directions", description=__doc__.split("\n\n")[0])
     ap.add_argument("--das3", default=str(root / ".." / "shared" / "reference" / "das3"))
     ap.add_argument("--paths", default=str(root / "models" / "das3_paths.json"))
     ap.add_argument("--report", default=str(root / "docs" / "das3_path_accuracy.md"))
@@ -124,7 +124,7 @@ def main(argv=None):
     ap.add_argument("--processes", type=int, default=2)
     ap.add_argument("--with-simulated", action="store_true",
                     help="fit over the kinematic samples plus das3's simulated motions and score on both "
-                         "(as codegen.das3_refit_simulated does for the lengths)")
+                         "(as codegen.importers.das3_refit_simulated does for the lengths)")
     a = ap.parse_args(argv)
     from .das3_rom import Das3Rom
     t0 = time.time()
@@ -135,7 +135,7 @@ def main(argv=None):
     all_els = [{"name": e["name"], "osim_name": e["osim_name"]} for e in paths["elements"]]
     osim_path = f"{a.das3}/das3.osim"
     sets = {}
-    # the poses and cache tags of codegen/das3_fit.py, whose (cached) length samples give the wrap-jump exclusions
+    # the poses and cache tags of codegen/importers/das3_fit.py, whose (cached) length samples give the wrap-jump exclusions
     for tag, cache_tag, n, seed in (("train", f"train{smp['seed']}", smp["train"], smp["seed"]),
                                     ("valid", f"valid{smp['seed']}", smp["valid"], smp["seed"] + 7919),
                                     ("eval", f"eval{smp['test_seed']}", smp["test"], smp["test_seed"])):
@@ -176,7 +176,7 @@ def main(argv=None):
             st["simulated_before"] = before
         e["fit"]["direction"] = st
         stats.append(st)
-    paths["gh_direction_command"] = "python -m codegen.das3_directions" + (" --with-simulated" if a.with_simulated else "")
+    paths["gh_direction_command"] = "python -m codegen.importers.das3_directions" + (" --with-simulated" if a.with_simulated else "")
     Path(a.paths).write_text(json.dumps(paths, indent=1) + "\n")
     dt = time.time() - t0
     all_rms = float(np.sqrt(np.mean([s["rms_deg"] ** 2 for s in stats])))

@@ -20,7 +20,9 @@ import numpy as np
 
 from .das3_source import ALL_DOFS, ModelInputError, axis_rotation
 from .das_struct import DasStruct, read_das_struct
-from .polynomial import substitute
+from .glenoid import glenoid_geometry
+from .model_defaults import GRAVITY_THORAX, GROUPS, PASSIVE_JOINT, SCHEMA_VERSION, sha256
+from ..polynomial import substitute
 
 # DAS segment names of the arm chain and the body names of the armrt schema.
 THORAX, SCAPULA = "thorax", "scapular"
@@ -111,7 +113,6 @@ def build_reduced_model(mat_path, free: list[str], name: str, posture: dict[str,
 
     posture: angles (rad) by DOF name overriding the default posture (equilibrium.mat where it fits
     the model, else the arm hanging at the side). Raises ModelInputError naming the problem."""
-    from .import_das3 import GROUPS, PASSIVE_JOINT, GRAVITY_THORAX, SCHEMA_VERSION, glenoid_geometry, sha256
 
     mat_path = Path(mat_path)
     struct = read_das_struct(mat_path)
