@@ -67,6 +67,11 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
 
   if (!record) return;
   std::copy(q, q + nq, d.output_q.begin());
+  std::copy(x, x + state_size(m), d.output_state.begin());
+  d.output_loads = {d.hand_force[0], d.hand_force[1], d.hand_force[2], d.hand_moment[0], d.hand_moment[1],
+                    d.hand_moment[2], d.settings.gravity[0], d.settings.gravity[1], d.settings.gravity[2]};
+  d.output_settings_version = d.settings_version;
+  d.outputs_computed = true;
   std::copy(L, L + n, d.muscle_length.begin());
   std::copy(force, force + n, d.muscle_force.begin());
   std::copy(xdot + il, xdot + il + n, d.fibre_velocity.begin());

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -95,6 +96,17 @@ void data_apply_settings(const Model& m, Data& d) {
   }
   find_rest_fibre_rate(m, d);
   d.settings_applied = true;
+  ++d.settings_version;
+}
+
+bool outputs_current(const Model& m, const Data& d) {
+  if (!d.outputs_computed || d.output_settings_version != d.settings_version) return false;
+  const std::array<double, 9> loads = {d.hand_force[0], d.hand_force[1], d.hand_force[2], d.hand_moment[0],
+                                       d.hand_moment[1], d.hand_moment[2], d.settings.gravity[0],
+                                       d.settings.gravity[1], d.settings.gravity[2]};
+  // Bitwise: a state that differs in any bit (or a NaN) is another state.
+  return std::memcmp(loads.data(), d.output_loads.data(), sizeof loads) == 0 &&
+         std::memcmp(d.x.data(), d.output_state.data(), sizeof(double) * state_size(m)) == 0;
 }
 
 void model_init(Model& m, const ModelDef& def) {
@@ -165,6 +177,7 @@ void data_reset(const Model& m, Data& d, const double* q) {
   // Everything but the settings (and what they derive) and the inputs starts afresh.
   Data fresh;
   fresh.settings_applied = true;
+  fresh.settings_version = d.settings_version;
   fresh.settings = d.settings;
   fresh.muscles = d.muscles;
   fresh.rest_fibre_rate = d.rest_fibre_rate;

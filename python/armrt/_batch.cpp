@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "armrt/batch.h"
+#include "armrt/layouts.h"
 
 namespace py = pybind11;
 using namespace armrt;
@@ -26,6 +27,10 @@ py::array arm_view(Batch& b, const double* field_of_arm0, py::ssize_t width, py:
   if (width == 0) return py::array_t<double>({n}, {row}, ptr, owner);
   return py::array_t<double>({n, width}, {row, static_cast<py::ssize_t>(sizeof(double))}, ptr, owner);
 }
+
+const double* values(const double& v) { return &v; }
+template <std::size_t N>
+const double* values(const std::array<double, N>& a) { return a.data(); }
 
 // Number of girdle contact points of the batch's model; AttributeError for a model with a fixed girdle.
 py::ssize_t contact_points(Batch& b) {
@@ -88,37 +93,21 @@ PYBIND11_MODULE(_batch, mod) {
       })
       .def_property_readonly("hand_force", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.hand_force.data(), 3, self); })
       .def_property_readonly("hand_moment", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.hand_moment.data(), 3, self); })
-      .def_property_readonly("hand_position", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.hand_position.data(), 3, self); })
-      .def_property_readonly("gh_force", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.gh_force.data(), 3, self); })
-      .def_property_readonly("gh_stab", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_stab, 0, self); })
-      .def_property_readonly("gh_theta", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_theta, 0, self); })
-      .def_property_readonly("gh_phi", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_phi, 0, self); })
-      .def_property_readonly("gh_rim_margin", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_rim_margin, 0, self); })
-      .def_property_readonly("gh_rim_direction", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, &b.arm(0).data.gh_rim_direction, 0, self); })
-      .def_property_readonly("qddot", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.qdd.data(), b.arm(0).model.num_dofs, self); })
-      .def_property_readonly("muscle_force", [](py::object self) {
+      // A zero-copy (n,) or (n, width) view of one ARMRT_OUTPUTS row (layouts.h) of every arm; AttributeError for
+      // a girdle row of a model without girdle forces, KeyError for a name that is not a row.
+      .def("output_view", [](py::object self, const std::string& name) -> py::array {
         auto& b = self.cast<Batch&>();
-        return arm_view(b, b.arm(0).data.muscle_force.data(), b.arm(0).model.num_elements, self);
-      })
-      .def_property_readonly("muscle_length", [](py::object self) {
-        auto& b = self.cast<Batch&>();
-        return arm_view(b, b.arm(0).data.muscle_length.data(), b.arm(0).model.num_elements, self);
-      })
-      // The girdle stage's outputs (models whose scapula moves; data.h GirdleState).
-      .def_property_readonly("girdle_torque", [](py::object self) {
-        auto& b = self.cast<Batch&>();
-        return arm_view(b, b.arm(0).data.girdle_torque.data(), b.arm(0).model.num_dofs, self);
-      })
-      .def_property_readonly("contact_distance", [](py::object self) {
-        auto& b = self.cast<Batch&>();
-        return arm_view(b, b.arm(0).data.girdle.contact_distance.data(), contact_points(b), self);
-      })
-      .def_property_readonly("contact_force", [](py::object self) {
-        auto& b = self.cast<Batch&>();
-        return arm_view(b, b.arm(0).data.girdle.contact_force.data(), contact_points(b), self);
-      })
-      .def_property_readonly("conoid_length", [](py::object self) { auto& b = self.cast<Batch&>(); contact_points(b); return arm_view(b, &b.arm(0).data.girdle.conoid_length, 0, self); })
-      .def_property_readonly("conoid_tension", [](py::object self) { auto& b = self.cast<Batch&>(); contact_points(b); return arm_view(b, &b.arm(0).data.girdle.conoid_tension, 0, self); })
+        const Data& d = b.arm(0).data;
+        const ModelDef& def = *b.arm(0).model.def;
+#define ARMRT_X(row, size, unit, stage, girdle_only, recorded, description)                              \
+        if (name == #row) {                                                                               \
+          if ((girdle_only) && !def.girdle) contact_points(b);                                            \
+          return arm_view(b, values(d.row), SizeRule::size == SizeRule::kOne ? 0 : layout_size(SizeRule::size, def), self); \
+        }
+        ARMRT_OUTPUTS(ARMRT_X)
+#undef ARMRT_X
+        throw py::key_error("no output '" + name + "' (layouts.h ARMRT_OUTPUTS)");
+      }, py::arg("name"))
       // Errors.
       .def("status", [](Batch& b) {
         py::array_t<int> s({static_cast<py::ssize_t>(b.size())});

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "armrt/engine.h"
+#include "armrt/layouts.h"
 #include "armrt/names.h"
 #include "armrt/recorder.h"
 #include "armrt/arm.h"
@@ -37,6 +38,29 @@ const double* checked(const Array& a, py::ssize_t n, const char* what) {
   if (a.size() != n) throw py::value_error(std::string(what) + ": expected " + std::to_string(n) +
                                            " values, got " + std::to_string(a.size()));
   return a.data();
+}
+
+const double* values(const double& v) { return &v; }
+template <std::size_t N>
+const double* values(const std::array<double, N>& a) { return a.data(); }
+
+// One output row's values as Python sees them: a float for a kOne row, else a copy of the model's values.
+py::object output_value(const double* p, SizeRule size, const ModelDef& def) {
+  if (size == SizeRule::kOne) return py::float_(*p);
+  Array a({static_cast<py::ssize_t>(layout_size(size, def))});
+  std::copy(p, p + a.size(), a.mutable_data());
+  return a;
+}
+
+// A table's rows as (name, size rule, unit, stage, girdle_only, description) tuples; the size rule as
+// "one", "two", "three", "dofs", "elements" or "contact_points".
+py::list table_rows(const LayoutRow* rows, int n) {
+  static const char* rule[] = {"one", "two", "three", "dofs", "elements", "contact_points"};
+  py::list out;
+  for (int k = 0; k < n; ++k)
+    out.append(py::make_tuple(rows[k].name, rule[static_cast<int>(rows[k].size)], rows[k].unit, rows[k].stage,
+                              rows[k].girdle_only, rows[k].description));
+  return out;
 }
 
 void raise_if_failed(const Arm& s) {
@@ -165,6 +189,14 @@ PYBIND11_MODULE(_core, mod) {
   mod.def("default_substeps", [](const std::string& integrator, double dt) { return default_substeps(parse_integrator(integrator), dt); },
           "Integration steps per control step dt (s) by default.");
   mod.def("model_names", []() { return model_names(); });
+  // The layout tables (layouts.h), read by armrt.Result, ArmBatch and the docs.
+  mod.def("recorded_channels", []() { return table_rows(recorded_channels(), kNumChannels); },
+          "Recorded channels in order: (name, size rule, unit, stage, girdle_only, description)");
+  mod.def("output_rows", []() {
+    int n = 0;
+    const LayoutRow* rows = output_rows(&n);
+    return table_rows(rows, n);
+  }, "forward()'s outputs in stage order: (name, size rule, unit, stage, girdle_only, description)");
   // Why these counts are not a ROS2 history a run leaves ("" if they are): checked before a State is written.
   mod.def("ros2_history_error", &path_history_error, py::arg("num_anchors"), py::arg("anchor_spacing"),
           py::arg("steps_since_anchor"));
@@ -245,9 +277,10 @@ PYBIND11_MODULE(_core, mod) {
         {
           py::gil_scoped_release release;
           InterruptCheck check;
-          // Outputs only for the last step (they describe its start state, as with record in simulate).
+          // No outputs while stepping: they are computed when read, at the state they are read at
+          // (evaluate_outputs, once per state).
           for (long k = 0; k < n; ++k) {
-            if (!s.step(k + 1 == n)) break;
+            if (!s.step(false)) break;
             if (check.interrupted()) { interrupted = true; break; }
           }
         }
@@ -283,43 +316,38 @@ PYBIND11_MODULE(_core, mod) {
         path_history_restore(s.model, s.stepper.ros2.path_history, x + q_offset(s.model), x + qd_offset(s.model),
                              anchors.data(), k, anchor_spacing, steps_since_anchor, h);
       }, py::arg("anchors"), py::arg("anchor_spacing"), py::arg("steps_since_anchor"), py::arg("h"))
-      .def("evaluate_outputs", &Arm::evaluate_outputs)
+      .def("evaluate_outputs", &Arm::evaluate_outputs, "outputs at the current state (computed only if stale)")
+      .def("outputs_current", [](const Arm& s) { return outputs_current(s.model, s.data); })
+      // One ARMRT_OUTPUTS row at the current state (a float or a copy); KeyError for an unknown name.
+      .def("output", [](Arm& s, const std::string& name) -> py::object {
+        s.evaluate_outputs();
+        const Data& d = s.data;
+        const ModelDef& def = *s.model.def;
+#define ARMRT_X(row, size, unit, stage, girdle_only, recorded, description) \
+        if (name == #row && (!(girdle_only) || def.girdle)) return output_value(values(d.row), SizeRule::size, def);
+        ARMRT_OUTPUTS(ARMRT_X)
+#undef ARMRT_X
+        throw py::key_error("no output '" + name + "' for model " + def.name);
+      }, py::arg("name"))
+      // Every ARMRT_OUTPUTS row (layouts.h) that the model has, as copies; "moment_arm" (element, DOF) at the
+      // outputs' q, and gh_theta / gh_phi (gh_angles' two values) for the API's older names.
       .def("outputs", [](Arm& s) {
-        const int n = s.model.num_elements, nq = s.model.num_dofs;
+        const Data& d = s.data;
+        const ModelDef& def = *s.model.def;
         py::dict o;
-        auto copy = [](const double* p, std::vector<py::ssize_t> shape) {
-          Array a(shape);
-          std::copy(p, p + a.size(), a.mutable_data());
-          return a;
-        };
-        o["qddot"] = copy(s.data.qdd.data(), {nq});
-        o["muscle_length"] = copy(s.data.muscle_length.data(), {n});
-        {  // at the outputs' q (data.h)
+#define ARMRT_X(name, size, unit, stage, girdle_only, recorded, description) \
+        if (!(girdle_only) || def.girdle) o[#name] = output_value(values(d.name), SizeRule::size, def);
+        ARMRT_OUTPUTS(ARMRT_X)
+#undef ARMRT_X
+        {
+          const int n = s.model.num_elements, nq = s.model.num_dofs;
           double L[kMaxElements];
           Array r({n, nq});
-          muscle_paths_by_element(*s.model.def, s.data.output_q.data(), L, r.mutable_data());
+          muscle_paths_by_element(def, d.output_q.data(), L, r.mutable_data());
           o["moment_arm"] = r;
         }
-        o["muscle_force"] = copy(s.data.muscle_force.data(), {n});
-        o["fibre_velocity"] = copy(s.data.fibre_velocity.data(), {n});
-        o["muscle_torque"] = copy(s.data.muscle_torque.data(), {nq});
-        o["passive_torque"] = copy(s.data.passive_torque.data(), {nq});
-        o["external_torque"] = copy(s.data.external_torque.data(), {nq});
-        o["hand_position"] = copy(s.data.hand_position.data(), {3});
-        o["gh_force"] = copy(s.data.gh_force.data(), {3});
-        o["gh_theta"] = s.data.gh_theta;
-        o["gh_phi"] = s.data.gh_phi;
-        o["gh_stab"] = s.data.gh_stab;
-        o["gh_rim_margin"] = s.data.gh_rim_margin;
-        o["gh_rim_direction"] = s.data.gh_rim_direction;
-        if (const GirdleDef* g = s.model.def->girdle) {
-          const int P = g->num_contact_points;
-          o["girdle_torque"] = copy(s.data.girdle_torque.data(), {nq});
-          o["contact_distance"] = copy(s.data.girdle.contact_distance.data(), {P});
-          o["contact_force"] = copy(s.data.girdle.contact_force.data(), {P});
-          o["conoid_length"] = s.data.girdle.conoid_length;
-          o["conoid_tension"] = s.data.girdle.conoid_tension;
-        }
+        o["gh_theta"] = d.gh_angles[0];
+        o["gh_phi"] = d.gh_angles[1];
         return o;
       })
       .def("tet_stats", [](const Arm& s) {
@@ -385,25 +413,10 @@ PYBIND11_MODULE(_core, mod) {
           return a;
         };
         py::dict out;
-        out["time"] = arr(r.time, 0);
-        out["q"] = arr(r.q, nq);
-        out["qdot"] = arr(r.qdot, nq);
-        out["lce"] = arr(r.lce, n);
-        out["activation"] = arr(r.activation, n);
-        out["excitation"] = arr(r.excitation, n);
-        out["muscle_force"] = arr(r.muscle_force, n);
-        out["muscle_length"] = arr(r.muscle_length, n);
-        out["gh_force"] = arr(r.gh_force, 3);
-        out["gh_stab"] = arr(r.gh_stab, 0);
-        out["gh_angles"] = arr(r.gh_angles, 2);
-        out["gh_rim_margin"] = arr(r.gh_rim_margin, 0);
-        out["gh_rim_direction"] = arr(r.gh_rim_direction, 0);
-        out["hand_position"] = arr(r.hand_position, 3);
-        out["thorax_humerus"] = arr(r.thorax_humerus, 3);
-        out["tet_ns"] = arr(r.tet_ns, 0);
-        if (r.num_contact_points > 0) {
-          out["contact_distance"] = arr(r.contact_distance, r.num_contact_points);
-          out["conoid_tension"] = arr(r.conoid_tension, 0);
+        const LayoutRow* rows = recorded_channels();
+        for (int c = 0; c < kNumChannels; ++c) {
+          if (r.width[c] == 0) continue;  // a girdle channel of a model without girdle forces
+          out[rows[c].name] = arr(r.channel[c], rows[c].size == SizeRule::kOne ? 0 : r.width[c]);
         }
         out["steps"] = steps_done;
         return out;

@@ -447,7 +447,11 @@ class Arm:
         """Memory (bytes) of the Result simulate(duration, record_every=...) returns."""
         n_steps = self._n_steps(real_scalar(duration, "duration"))
         rows = _recorded_rows(n_steps, count(record_every, "record_every", minimum=1))
-        return rows * _row_bytes(self.n_elements, self.n_dofs)
+        return rows * _row_bytes(self.n_elements, self.n_dofs, self._contact_points())
+
+    def _contact_points(self) -> int:
+        girdle = self.model.info["girdle"]
+        return len(girdle["contact_points"]) if girdle else 0
 
     def _n_steps(self, duration: float) -> int:
         if not (np.isfinite(duration) and duration >= 0):
@@ -477,7 +481,7 @@ class Arm:
         record_every = count(record_every, "record_every", minimum=1)
         rows = _recorded_rows(n_steps, record_every)
         limit = RESULT_MEMORY_LIMIT if max_bytes is None else real_scalar(max_bytes, "max_bytes")
-        need = rows * _row_bytes(self.n_elements, self.n_dofs)
+        need = rows * _row_bytes(self.n_elements, self.n_dofs, self._contact_points())
         if need > limit:
             fit = int(np.ceil(need / limit)) * record_every
             raise MemoryError(
@@ -556,38 +560,43 @@ class Arm:
         and contact_force (contact points: TS, AI) m and N, conoid_length m, conoid_tension N (only for a
         model whose scapula moves, such as das3)."""
         with self._exclusive():
-            self._sim.evaluate_outputs()
+            self._sim.evaluate_outputs()  # once per state: computed only if they no longer describe it
             return self._sim.outputs()
+
+    def _output(self, name: str):
+        """One output at the current state (computed once per state, then read)."""
+        with self._exclusive():
+            return self._sim.output(name)
 
     @property
     def gh_stab(self) -> float:
         """1, (theta/theta_a)^2 + (phi/phi_a)^2 of the GH force now (the paper's eq. (5)); > 1 beyond the rim."""
-        return self.outputs()["gh_stab"]
+        return self._output("gh_stab")
 
     @property
     def gh_theta(self) -> float:
         """rad, angle of the GH force from the glenoid normal along the major axis (+ superior)."""
-        return self.outputs()["gh_theta"]
+        return float(self._output("gh_angles")[0])
 
     @property
     def gh_phi(self) -> float:
         """rad, angle of the GH force from the glenoid normal along the minor axis (+ anterior)."""
-        return self.outputs()["gh_phi"]
+        return float(self._output("gh_angles")[1])
 
     @property
     def gh_rim_margin(self) -> float:
         """rad, how far the GH force can still turn towards gh_rim_direction before it reaches the rim
         (< 0: beyond it); see gh_rim."""
-        return self.outputs()["gh_rim_margin"]
+        return self._output("gh_rim_margin")
 
     @property
     def gh_rim_direction(self) -> float:
         """rad, psi = atan2(phi, theta), where in the glenoid the GH force leans: 0 superior, pi/2 anterior."""
-        return self.outputs()["gh_rim_direction"]
+        return self._output("gh_rim_direction")
 
     @property
     def hand_position(self) -> np.ndarray:
-        return self.outputs()["hand_position"]
+        return self._output("hand_position")
 
     @property
     def tet(self) -> dict:

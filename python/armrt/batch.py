@@ -17,7 +17,7 @@ import numpy as np
 # takes the core the next call or the main thread needs. libgomp reads this when _batch loads it.
 os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
-from . import _batch  # noqa: E402
+from . import _batch, _core  # noqa: E402
 from .arm import Arm, SimulationError  # noqa: E402
 
 # Outputs of the girdle stage, for models whose scapula moves (das3): as Arm.outputs() names them.
@@ -92,9 +92,11 @@ class ArmBatch:
         # The state layout is the engine's (data.h), read from it: {block: (offset, size)}.
         views = {k: state[:, o:o + size] for k, (o, size) in self.info["state_layout"].items()}
         views["time"] = self._raw.time
-        for name in ("hand_position", "gh_force", "gh_stab", "gh_theta", "gh_phi", "gh_rim_margin",
-                     "gh_rim_direction", "muscle_force", "muscle_length", "qddot") + (GIRDLE_OUTPUTS if self.info["girdle"] else ()):
-            views[name] = getattr(self._raw, name)
+        # Every output of forward() is a view, from the engine's table (layouts.h ARMRT_OUTPUTS).
+        for name, _size, _unit, _stage, girdle_only, _doc in _core.output_rows():
+            if not girdle_only or self.info["girdle"]:
+                views[name] = self._raw.output_view(name)
+        views["gh_theta"], views["gh_phi"] = views["gh_angles"][:, 0], views["gh_angles"][:, 1]
         for v in views.values():
             v.flags.writeable = False
         self._views = views

@@ -192,12 +192,14 @@ class Motion:
         T, n = len(self.time), arm.n_elements
         nan = lambda *shape: np.full((T, *shape), np.nan)  # noqa: E731
         qdot = np.gradient(self.q, self.time, axis=0) if T > 1 else np.zeros_like(self.q)
-        return Result(time=self.time.copy(), q=self.q.copy(), qdot=qdot, lce=nan(n), activation=nan(n),
-                      excitation=nan(n), muscle_force=nan(n), muscle_length=nan(n), gh_force=nan(3),
-                      gh_stab=np.full(T, np.nan), gh_angles=nan(2), gh_rim_margin=np.full(T, np.nan),
-                      gh_rim_direction=np.full(T, np.nan), hand_position=nan(3),
-                      thorax_humerus=np.array([arm.thorax_humerus_angles(q) for q in self.q]),
-                      tet_ns=np.zeros(T), dof_names=list(arm.dof_names), element_names=list(arm.element_names),
+        from .result import CHANNELS
+        width = {"one": (), "two": (2,), "three": (3,), "dofs": (arm.n_dofs,), "elements": (n,)}
+        # Every recorded channel the file does not give is unknown (NaN), whatever the engine's table holds.
+        known = {"time": self.time.copy(), "q": self.q.copy(), "qdot": qdot, "tet_ns": np.zeros(T),
+                 "thorax_humerus": np.array([arm.thorax_humerus_angles(q) for q in self.q])}
+        arrays = {name: known[name] if name in known else nan(*width[rule])
+                  for name, rule, _unit, _stage, girdle_only, _doc in CHANNELS if not girdle_only}
+        return Result(**arrays, dof_names=list(arm.dof_names), element_names=list(arm.element_names),
                       integrator="", dt=float(np.median(np.diff(self.time))) if T > 1 else 0.0, model=self.model)
 
 

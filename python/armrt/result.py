@@ -4,7 +4,7 @@ to refuse a Result that would not fit in memory."""
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import field, make_dataclass
 
 import numpy as np
 
@@ -12,11 +12,19 @@ from . import _core
 from .checks import known_model
 from .model import Model
 
-def _row_bytes(n_elements: int, n_dofs: int = 5) -> int:
-    """Bytes of one recorded row of a Result: 5 per-element channels, q and qdot, 16 other values (time 1,
-    gh_force 3, gh_stab 1, gh_angles 2, gh_rim_margin 1, gh_rim_direction 1, hand_position 3, thorax_humerus 3,
-    tet_ns 1), float64."""
-    return 8 * (5 * n_elements + 2 * n_dofs + 16)
+# The recorded channels, from the engine's table (armrt/layouts.h): (name, size rule, unit, stage,
+# girdle_only, description), in recording order. Result's arrays are exactly these.
+CHANNELS = tuple(_core.recorded_channels())
+_WIDTH = {"one": lambda nd, ne, nc: 1, "two": lambda nd, ne, nc: 2, "three": lambda nd, ne, nc: 3,
+          "dofs": lambda nd, ne, nc: nd, "elements": lambda nd, ne, nc: ne, "contact_points": lambda nd, ne, nc: nc}
+
+
+def _row_bytes(n_elements: int, n_dofs: int = 5, n_contact_points: int = 0) -> int:
+    """Bytes of one recorded row of a Result (float64): the sum of the recorded channels' widths for a model
+    of n_dofs DOFs, n_elements elements and n_contact_points girdle contact points (0: no girdle channels)."""
+    return 8 * sum(_WIDTH[rule](n_dofs, n_elements, n_contact_points)
+                   for _name, rule, _unit, _stage, girdle_only, _doc in CHANNELS
+                   if not girdle_only or n_contact_points > 0)
 
 
 def _recorded_rows(n_steps: int, record_every: int) -> int:
@@ -24,58 +32,40 @@ def _recorded_rows(n_steps: int, record_every: int) -> int:
     return -(-n_steps // record_every) + (1 if n_steps % record_every == 0 else 0)
 
 
-@dataclass(repr=False)
-class Result:
+_SHAPES = {"one": "(T,)", "two": "(T, 2)", "three": "(T, 3)", "dofs": "(T, ndof)", "elements": "(T, n)",
+           "contact_points": "(T, P)"}
+
+
+class _ResultMethods:
     """Time series of a simulation; row k is the state at time[k] and the outputs at that state.
 
-    repr() is one line; to_dataframe() gives a pandas DataFrame (pandas optional), plot() a figure."""
+    repr() is one line; to_dataframe() gives a pandas DataFrame (pandas optional), plot() a figure.
+    Arrays (the engine's recorded channels, armrt/layouts.h; ndof DOFs, n elements, P girdle contact points):
+    {arrays}
+    The girdle arrays ({optional}) exist for models whose scapula moves (das3), else they are None.
+    Metadata: dof_names, element_names, integrator, dt (control step, s), substeps, model, model_hash (SHA-256
+    of the model file: reopens a model built on demand from the cache)."""
 
-    time: np.ndarray            # (T,) s
-    q: np.ndarray               # (T, ndof) rad
-    qdot: np.ndarray            # (T, ndof) rad/s
-    lce: np.ndarray             # (T, n) m, contractile-element lengths
-    activation: np.ndarray      # (T, n)
-    excitation: np.ndarray      # (T, n)
-    muscle_force: np.ndarray    # (T, n) N
-    muscle_length: np.ndarray   # (T, n) m, muscle-tendon lengths
-    gh_force: np.ndarray        # (T, 3) N, humeral head on glenoid, scapula frame
-    gh_stab: np.ndarray         # (T,) 1, (theta/theta_a)^2 + (phi/phi_a)^2; > 1 beyond the rim
-    gh_angles: np.ndarray       # (T, 2) rad, theta (major axis, + superior), phi (minor axis, + anterior)
-    gh_rim_margin: np.ndarray   # (T,) rad, how far the GH force can still turn towards the rim; < 0 beyond it
-    gh_rim_direction: np.ndarray  # (T,) rad, psi = atan2(phi, theta): 0 superior, pi/2 anterior
-    hand_position: np.ndarray   # (T, 3) m, thorax frame
-    thorax_humerus: np.ndarray  # (T, 3) rad: plane of elevation, elevation, axial rotation
-    tet_ns: np.ndarray          # (T,) ns, task execution time of the step that started at that row
-    dof_names: list = field(default_factory=list)
-    element_names: list = field(default_factory=list)
-    integrator: str = ""
-    dt: float = 0.0             # control step (s)
-    substeps: int = 1           # integration steps per control step
-    model: str = ""
-    model_hash: str = ""        # SHA-256 of the model file (reopens a model built on demand from the cache)
-    # Models whose scapula moves (das3) only, else None: first-order signed distance of each girdle
-    # contact point (TS, AI) from the thorax surface (negative: inside), and the conoid ligament's tension.
-    contact_distance: np.ndarray | None = None  # (T, P) m
-    conoid_tension: np.ndarray | None = None    # (T,) N
-
-    ARRAYS = ("time", "q", "qdot", "lce", "activation", "excitation", "muscle_force", "muscle_length",
-              "gh_force", "gh_stab", "gh_angles", "gh_rim_margin", "gh_rim_direction", "hand_position",
-              "thorax_humerus", "tet_ns")
+    ARRAYS = tuple(c[0] for c in CHANNELS if not c[4])
+    OPTIONAL_ARRAYS = tuple(c[0] for c in CHANNELS if c[4])
     # Arrays added after the first file format: a file without them gets them from its own recorded
     # gh_angles through the engine (gh_rim), so that older results load whole.
     _DERIVED_FROM_GH_ANGLES = ("gh_rim_margin", "gh_rim_direction")
-    OPTIONAL_ARRAYS = ("contact_distance", "conoid_tension")
 
     @property
     def q_deg(self) -> np.ndarray:
         return np.degrees(self.q)
 
-    # Per-DOF and per-element channels, and the column names of the others (to_dataframe).
-    _DOF_CHANNELS = ("q", "qdot")
-    _ELEMENT_CHANNELS = ("lce", "activation", "excitation", "muscle_force", "muscle_length")
-    _OTHER_COLUMNS = {"gh_force": ("x", "y", "z"), "gh_angles": ("theta", "phi"), "hand_position": ("x", "y", "z"),
+    # Per-DOF and per-element channels (by the table's size rule), and the column names of the others
+    # (to_dataframe): x, y, z for three values unless named here.
+    _DOF_CHANNELS = tuple(c[0] for c in CHANNELS if c[1] == "dofs")
+    _ELEMENT_CHANNELS = tuple(c[0] for c in CHANNELS if c[1] == "elements")
+    _NAMED_COLUMNS = {"gh_angles": ("theta", "phi"),
                       "thorax_humerus": ("plane_of_elevation", "elevation", "axial_rotation"),
-                      "gh_stab": None, "gh_rim_margin": None, "gh_rim_direction": None, "tet_ns": None, "contact_distance": ("TS", "AI"), "conoid_tension": None}
+                      "contact_distance": ("TS", "AI")}
+    _OTHER_COLUMNS = {c[0]: _NAMED_COLUMNS.get(c[0], {"one": None, "two": ("0", "1"), "three": ("x", "y", "z"),
+                                                      "contact_points": ("TS", "AI")}.get(c[1]))
+                      for c in CHANNELS if c[1] not in ("dofs", "elements")}
 
     def channels(self) -> list[str]:
         """The time-series names this Result has besides time: ARRAYS, and the girdle arrays when present."""
@@ -246,3 +236,18 @@ def _rim_of_recorded_angles(model: str, gh_angles: np.ndarray, path: str, keys) 
         for k in keys:
             out[k][ok] = rim[k]
     return out
+
+
+# Result: the methods above, and one field per recorded channel (a new channel in the engine's table is a new
+# array here without a change to this file), then the metadata.
+Result = make_dataclass(
+    "Result",
+    [(c[0], np.ndarray) for c in CHANNELS if not c[4]]
+    + [("dof_names", list, field(default_factory=list)), ("element_names", list, field(default_factory=list)),
+       ("integrator", str, field(default="")), ("dt", float, field(default=0.0)), ("substeps", int, field(default=1)),
+       ("model", str, field(default="")), ("model_hash", str, field(default=""))]
+    + [(c[0], "np.ndarray | None", field(default=None)) for c in CHANNELS if c[4]],
+    bases=(_ResultMethods,), repr=False, namespace={"__module__": __name__})
+Result.__doc__ = _ResultMethods.__doc__.format(
+    arrays="\n    ".join(f"{c[0]} {_SHAPES[c[1]]} {c[2]}: {c[5]}" for c in CHANNELS),
+    optional=", ".join(_ResultMethods.OPTIONAL_ARRAYS))

@@ -24,8 +24,11 @@ class Arm {
   void reset(const double* q, const double* qdot, const double* activation);
   // One control step (step(model, data, stepper, 1, record), stepper.h).
   bool step(bool record = true) { return armrt::step(model, data, stepper, 1, record); }
-  // Outputs (forces, GH stability, ...) at the current state, without advancing.
-  void evaluate_outputs() { armrt::evaluate_outputs(model, data, stepper); }
+  // Outputs (forces, GH stability, ...) at the current state, without advancing: computed only if they do not
+  // already describe it (outputs_current), so reading them twice costs one forward() at most.
+  void evaluate_outputs() {
+    if (!outputs_current(model, data)) armrt::evaluate_outputs(model, data, stepper);
+  }
   // After a change of data.settings' strength or maximum activation (data_apply_settings).
   void apply_settings() { data_apply_settings(model, data); }
   std::string error_message() const { return step_error_message(model, data, stepper); }

@@ -73,6 +73,7 @@ struct Data {
   double rest_fibre_rate = 0;
   int rest_fibre_element = 0;
   bool settings_applied = false;  // set by data_apply_settings: a Data without it has no muscles (all zero)
+  std::uint64_t settings_version = 0;  // counts data_apply_settings calls (outputs_current)
 
   // State.
   double time = 0;   // s
@@ -89,6 +90,13 @@ struct Data {
 #define ARMRT_X(name, size, ...) ARMRT_STORAGE(size) name{};
   ARMRT_OUTPUTS(ARMRT_X)
 #undef ARMRT_X
+  // What the outputs were computed from (forward() with record): the whole state, the hand load, gravity and
+  // the settings' version. outputs_current() compares them with now, so that outputs are read, not recomputed,
+  // while they still describe the arm (and recomputed once when anything they depend on changed).
+  StateVec output_state{};
+  std::array<double, 9> output_loads{};  // hand force (N), hand moment (N m), gravity (m/s^2)
+  std::uint64_t output_settings_version = 0;
+  bool outputs_computed = false;
 
   // Errors: set by step(), never thrown in the hot path.
   Status status = Status::kOk;
@@ -109,6 +117,9 @@ void data_init(const Model& m, Data& d);
 // Derives d.muscles and the rest fibre rate from d.settings (after a change of strength or maximum activation;
 // gravity and the speed bound need nothing). Throws std::invalid_argument for a setting out of range.
 void data_apply_settings(const Model& m, Data& d);
+// Whether d's outputs describe its current state, hand load, gravity and settings (computed by forward() with
+// record at exactly these).
+bool outputs_current(const Model& m, const Data& d);
 // One element's constants under d.settings (what d.muscles holds, as a struct): for scalar uses.
 ElementConstants data_element(const Model& m, const Data& d, int i);
 // Back to time 0 at q (num_dofs or nullptr: rest posture), at rest, zero activation, CE lengths in static
