@@ -538,3 +538,25 @@ def test_two_processes_building_one_model_build_it_once(cache):
     said = sorted("found in the cache" in out for out, _ in outs)
     assert said == [False, True], outs  # one built it, the other waited for the lock and found it
     assert len(list(cache.glob("models/*/libarmrt_model.so"))) == 1
+
+
+def test_one_registry_for_every_extension(tmp_path):
+    """libarmrt is the one engine of the process (issue 25): a model loaded through armrt._core is known to the
+    batch and real-time extensions without registering it there, and they share the one shared library."""
+    import armrt
+    from armrt import _batch, _core, _rt
+    src = Path(__file__).resolve().parent / "data" / "pendulum2.json"
+    model = armrt.Model.load(src)
+    assert model.name in armrt.models()
+    batch = _batch.Batch(model.name, 2, "ros2", 1e-3, 1)  # by name, no second registration
+    assert batch.state.shape[0] == 2
+    assert "load_model_library" not in dir(_batch) and "load_model_library" not in dir(_rt)
+    linked = [_linked_libraries(ext.__file__) for ext in (_core, _batch, _rt)]
+    assert all(len(libs) == 1 for libs in linked), linked
+    assert len({Path(libs[0]).resolve() for libs in linked}) == 1, linked  # the same file
+
+
+def _linked_libraries(path):
+    import subprocess
+    out = subprocess.run(["ldd", path], capture_output=True, text=True, check=True).stdout
+    return [line.split("=>")[1].split()[0] for line in out.splitlines() if "=>" in line and "libarmrt" in line]

@@ -68,7 +68,6 @@ PYBIND11_MODULE(_batch, mod) {
   mod.def("default_threads", &batch_default_threads);
   // This module links its own copy of the engine, so its own model registry: armrt.model registers a
   // model library built on demand here too (the same dlopen handle, the same ModelDef).
-  mod.def("load_model_library", [](const std::string& path) { load_model_library(path); }, py::arg("path"));
 
   py::class_<Batch>(mod, "Batch")
       .def(py::init([](const std::string& model, int n, const std::string& integrator, double dt, int substeps) {

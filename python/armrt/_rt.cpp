@@ -95,7 +95,6 @@ py::dict stats_dict(const RtLoop& loop) {
 PYBIND11_MODULE(_rt, m) {
   m.doc() = "armrt real-time loop (C++ thread, SCHED_FIFO when permitted) with UDP I/O";
   // Its own copy of the engine's model registry (see _batch.cpp): armrt.model registers on-demand models here too.
-  m.def("load_model_library", [](const std::string& path) { armrt::load_model_library(path); }, py::arg("path"));
   // The packet layout, defined once in cpp/rt/packet.h; armrt.realtime builds its codec from it.
   m.attr("MAGIC") = py::bytes(reinterpret_cast<const char*>(kMagic), 4);
   m.attr("VERSION") = static_cast<int>(kVersion);
@@ -128,7 +127,7 @@ PYBIND11_MODULE(_rt, m) {
   // depend on the model's DOFs and elements.
   auto require = [](const std::string& model) -> const armrt::ModelDef& {
     const armrt::ModelDef* def = armrt::find_model(model);
-    if (!def) throw py::value_error("unknown model '" + model + "' (compiled-in models: " + armrt::model_names() + ")");
+    if (!def) throw py::value_error("unknown model '" + model + "' (registered models: " + armrt::model_names() + ")");
     return *def;
   };
   auto names_of = [](const armrt::ModelDef& def) {

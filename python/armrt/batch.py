@@ -76,7 +76,7 @@ class ArmBatch:
         # A single Arm resolves the defaults and validates exactly as Arm does, and gives the names.
         self._arm = Arm(model=model, **kw)
         a = self._arm
-        # By name: Arm has registered a model file or Model in the batch extension's registry too.
+        # By name: the engine (libarmrt) has one registry, where Arm's model is already registered.
         self._raw = _batch.Batch(a.model_name, int(n), a.integrator, a.dt, a.substeps)
         self.n = int(n)
         self.model = a.model  # armrt.Model

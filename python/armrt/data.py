@@ -155,6 +155,19 @@ class Data:
         for v in self._views.values():
             v.flags.writeable = False
 
+    def _step(self, integrator: str, dt: float, substeps: int, n: int) -> None:
+        """n control steps with this integrator (armrt.step): the engine's stepper is set up anew only when the
+        integrator, dt or substeps differ from the last ones. SimulationError on divergence."""
+        from .errors import simulation_error
+        with self._exclusive():
+            s = self._sim
+            if (s.integrator, s.dt, s.substeps) != (integrator, dt, substeps):
+                s.set_integrator(integrator, dt, substeps)
+            try:
+                s.step(n)
+            except RuntimeError as exc:
+                raise simulation_error(exc) from None
+
     @contextmanager
     def _exclusive(self):
         """Held while a call reads or changes the engine's state or workspace. A second thread arriving

@@ -41,19 +41,6 @@ def _readonly(a) -> np.ndarray:
     return a
 
 
-def _register_elsewhere(library: Path) -> None:
-    """The batch and real-time extensions link their own copy of the engine, hence their own registry:
-    register the library there too, so ArmBatch(model=name) and RealtimeSession(model=name) find it."""
-    import importlib
-    for mod in ("_batch", "_rt"):
-        try:
-            ext = importlib.import_module(f"armrt.{mod}")
-        except ImportError:
-            continue
-        if hasattr(ext, "load_model_library"):
-            ext.load_model_library(str(library))
-
-
 class Model:
     """An arm model: names, sizes, ranges, parameters, groups and provenance (all read-only), and its
     geometry and dynamics at any pose. Immutable: weakness and paralysis are per arm (Arm.strength,
@@ -103,7 +90,6 @@ class Model:
         different model of the same name is already registered (checked before anything is built)."""
         res: BuildResult = build(path, force=rebuild)
         d = _core.load_model_library(str(res.library))
-        _register_elsewhere(res.library)
         _LOADED.setdefault(res.name, (Path(path).resolve(), res.library))
         m = cls._of(d, Path(path).resolve(), res.library)
         return m
@@ -120,7 +106,6 @@ class Model:
         if lib is None:
             return None
         d = _core.load_model_library(str(lib))
-        _register_elsewhere(lib)
         meta = json.loads((lib.parent / "model.json").read_text())
         return cls._of(d, Path(meta["model_file"]) if Path(meta["model_file"]).is_file() else None, lib)
 
