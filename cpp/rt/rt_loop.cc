@@ -55,7 +55,7 @@ void RtLoop::make_simulator(const ModelDef& def, const Schedule& sched) {
 void RtLoop::apply_command(const double* u) {
   // Held (and streamed with --excitations) as the dynamics use it: capped at max_activation.
   for (int i = 0; i < sim_->model.num_elements; ++i)
-    sim_->data.excitation[i] = std::min(u[i], sim_->data.muscles.max_activation[i]);
+    sim_->data.excitation[i] = capped_excitation(u[i], sim_->data.muscles.max_activation[i]);
 }
 
 StateValues RtLoop::state_values(double& lag, double& overruns) {

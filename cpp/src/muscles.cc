@@ -57,8 +57,7 @@ void muscle_dynamics(const Model& m, const MuscleArrays& mc, const double* excit
   if (!jac) {
 #pragma omp simd
     for (int i = 0; i < n; ++i) {
-      double u = excitation[i];
-      u = u < 0.0 ? 0.0 : (u > mc.max_activation[i] ? mc.max_activation[i] : u);
+      const double u = capped_excitation(excitation[i], mc.max_activation[i]);
       act_dot[i] = (mc.c1[i] * u + mc.c2[i]) * (u - act[i]);
       muscle_kernel(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
                     mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.compress_length[i], mc.k_compress[i], mc.ecc_c[i], mc.damping_slope[i], b,
@@ -68,8 +67,7 @@ void muscle_dynamics(const Model& m, const MuscleArrays& mc, const double* excit
     // The same loop with the kernel's derivatives (one pass: the Jacobian costs no second sweep).
 #pragma omp simd
     for (int i = 0; i < n; ++i) {
-      double u = excitation[i];
-      u = u < 0.0 ? 0.0 : (u > mc.max_activation[i] ? mc.max_activation[i] : u);
+      const double u = capped_excitation(excitation[i], mc.max_activation[i]);
       const double rate = mc.c1[i] * u + mc.c2[i];
       act_dot[i] = rate * (u - act[i]);
       jac->act_rate[i] = rate;

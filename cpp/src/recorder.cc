@@ -10,10 +10,6 @@ namespace armrt {
 
 namespace {
 
-const double* values(const double& v) { return &v; }
-template <std::size_t N>
-const double* values(const std::array<double, N>& a) { return a.data(); }
-
 // One row: the state x at `time` and the outputs forward() left in s.data for that state, channel by channel
 // in layouts.h's order.
 void add_row(Recording& r, const Arm& s, const double* x, double time, double tet_ns) {
@@ -34,7 +30,7 @@ void add_row(Recording& r, const Arm& s, const double* x, double time, double te
 #undef ARMRT_X
   put(d.excitation.data());
 #define ARMRT_X(name, size, unit, stage, girdle_only, recorded, description) \
-  if (recorded) put(values(d.name));
+  if (recorded) put(row_values(d.name));
   ARMRT_OUTPUTS(ARMRT_X)
 #undef ARMRT_X
   put(&tet_ns);

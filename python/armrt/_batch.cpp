@@ -28,10 +28,6 @@ py::array arm_view(Batch& b, const double* field_of_arm0, py::ssize_t width, py:
   return py::array_t<double>({n, width}, {row, static_cast<py::ssize_t>(sizeof(double))}, ptr, owner);
 }
 
-const double* values(const double& v) { return &v; }
-template <std::size_t N>
-const double* values(const std::array<double, N>& a) { return a.data(); }
-
 // Number of girdle contact points of the batch's model; AttributeError for a model with a fixed girdle.
 py::ssize_t contact_points(Batch& b) {
   const ModelDef& def = *b.arm(0).model.def;
@@ -101,7 +97,7 @@ PYBIND11_MODULE(_batch, mod) {
 #define ARMRT_X(row, size, unit, stage, girdle_only, recorded, description)                              \
         if (name == #row) {                                                                               \
           if ((girdle_only) && !def.girdle) contact_points(b);                                            \
-          return arm_view(b, values(d.row), SizeRule::size == SizeRule::kOne ? 0 : layout_size(SizeRule::size, def), self); \
+          return arm_view(b, row_values(d.row), SizeRule::size == SizeRule::kOne ? 0 : layout_size(SizeRule::size, def), self); \
         }
         ARMRT_OUTPUTS(ARMRT_X)
 #undef ARMRT_X

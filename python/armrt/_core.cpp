@@ -40,10 +40,6 @@ const double* checked(const Array& a, py::ssize_t n, const char* what) {
   return a.data();
 }
 
-const double* values(const double& v) { return &v; }
-template <std::size_t N>
-const double* values(const std::array<double, N>& a) { return a.data(); }
-
 // One output row's values as Python sees them: a float for a kOne row, else a copy of the model's values.
 py::object output_value(const double* p, SizeRule size, const ModelDef& def) {
   if (size == SizeRule::kOne) return py::float_(*p);
@@ -287,6 +283,18 @@ PYBIND11_MODULE(_core, mod) {
         if (interrupted) throw py::error_already_set();
         raise_if_failed(s);
       }, py::arg("n") = 1)
+      // What the dynamics use for excitations u (n,) or (T, n): capped_excitation with this arm's maximum
+      // activation (data.h), the engine's one cap rule.
+      .def("cap_excitation", [](const Arm& s, const Array& u) {
+        const int n = s.model.num_elements;
+        if (u.ndim() < 1 || u.shape(u.ndim() - 1) != n)
+          throw py::value_error("excitation: expected a last axis of " + std::to_string(n) + " values");
+        Array out(std::vector<py::ssize_t>(u.shape(), u.shape() + u.ndim()));
+        const double* in = u.data();
+        double* o = out.mutable_data();
+        for (py::ssize_t k = 0; k < u.size(); ++k) o[k] = capped_excitation(in[k], s.data.muscles.max_activation[k % n]);
+        return out;
+      }, py::arg("u"))
       .def("clear_error", [](Arm& s) { s.data.status = Status::kOk; s.data.bad_index = -1; s.data.bad_contact = -1; })
       // ROS2's memory (data.h PathHistory): (anchors (k, ndof) rad, anchor spacing, steps since the newest
       // anchor, h) if the state is where the last step ended, else None; and its restoration for a state
@@ -324,7 +332,7 @@ PYBIND11_MODULE(_core, mod) {
         const Data& d = s.data;
         const ModelDef& def = *s.model.def;
 #define ARMRT_X(row, size, unit, stage, girdle_only, recorded, description) \
-        if (name == #row && (!(girdle_only) || def.girdle)) return output_value(values(d.row), SizeRule::size, def);
+        if (name == #row && (!(girdle_only) || def.girdle)) return output_value(row_values(d.row), SizeRule::size, def);
         ARMRT_OUTPUTS(ARMRT_X)
 #undef ARMRT_X
         throw py::key_error("no output '" + name + "' for model " + def.name);
@@ -336,7 +344,7 @@ PYBIND11_MODULE(_core, mod) {
         const ModelDef& def = *s.model.def;
         py::dict o;
 #define ARMRT_X(name, size, unit, stage, girdle_only, recorded, description) \
-        if (!(girdle_only) || def.girdle) o[#name] = output_value(values(d.name), SizeRule::size, def);
+        if (!(girdle_only) || def.girdle) o[#name] = output_value(row_values(d.name), SizeRule::size, def);
         ARMRT_OUTPUTS(ARMRT_X)
 #undef ARMRT_X
         {

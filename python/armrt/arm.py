@@ -166,7 +166,7 @@ class Arm:
         what the dynamics use); NaN or infinite values raise ValueError, non-numbers TypeError."""
         u = self._per_element(u, "excitation", 0.0, 1.0, clip=True)
         with self._exclusive():
-            self._sim.excitation[:] = np.minimum(u, self._sim.get_max_activation())
+            self._sim.excitation[:] = self._sim.cap_excitation(u)
 
     @property
     def excitation(self) -> np.ndarray:
@@ -277,13 +277,13 @@ class Arm:
         qdot = None if qdot is None else self._dof_vector(qdot, "qdot")
         if activation is not None:
             activation = self._per_element(activation, "activation", 0.0, 1.0, clip=False)
-            cap = self.max_activation
-            over = activation > cap
+            capped = self._sim.cap_excitation(activation)  # the engine's cap rule, for activations too
+            over = activation > capped
             if over.any():
                 names = [self.element_names[i] for i in np.flatnonzero(over)[:5]]
                 warnings.warn(f"activation above max_activation capped for elements {names}", RuntimeWarning,
                               stacklevel=2)
-                activation = np.minimum(activation, cap)
+                activation = capped
         time = real_scalar(time, "time")
         if not np.isfinite(time):
             raise ValueError(f"time must be a finite number of seconds, got {time}")
@@ -357,7 +357,7 @@ class Arm:
         max_activation, gravity and the integrator are the arm's own, not part of the State."""
         with self._exclusive():
             self.data.set_state(state)
-            self._sim.excitation[:] = np.minimum(self._sim.excitation, self._sim.get_max_activation())
+            self._sim.excitation[:] = self._sim.cap_excitation(self._sim.excitation)
 
     def _snapshot(self) -> tuple[dict, tuple]:
         """(settings, raw state): what a copy or an unpickled arm is rebuilt from (call under _exclusive)."""
@@ -489,7 +489,6 @@ class Arm:
                 f"{limit / 1e9:.1f} GB: pass record_every={fit} (every {fit * self.dt:g} s) or more, a shorter "
                 f"duration, or max_bytes={need:.3g} if the memory is there")
         n = self.n_elements
-        cap = self.max_activation
         array_in = isinstance(excitation, np.ndarray) and excitation.ndim == 2
         if callable(excitation) and not isinstance(excitation, Mapping):
             def block(k0: int, k1: int) -> np.ndarray:
@@ -508,12 +507,12 @@ class Arm:
                                  f"element {self.element_names[col]})")
             if (u_all < 0).any() or (u_all > 1).any():
                 warnings.warn("excitation outside [0, 1] clipped", RuntimeWarning, stacklevel=2)
-            u_all = np.minimum(np.clip(u_all, 0.0, 1.0), cap)
+            u_all = self._sim.cap_excitation(np.clip(u_all, 0.0, 1.0))
 
             def block(k0: int, k1: int) -> np.ndarray:
                 return u_all[k0:k1]
         else:
-            held = np.minimum(self._per_element(excitation, "excitation", 0.0, 1.0, clip=True), cap)[None, :]
+            held = self._sim.cap_excitation(self._per_element(excitation, "excitation", 0.0, 1.0, clip=True))[None, :]
 
             def block(k0: int, k1: int) -> np.ndarray:
                 return held
@@ -525,15 +524,15 @@ class Arm:
         with self._exclusive():
             t0 = self.time
             if n_steps == 0:
-                self._sim.excitation[:] = np.minimum(self._sim.excitation, cap)
+                self._sim.excitation[:] = self._sim.cap_excitation(self._sim.excitation)
             row = 0
             with progress_bar(n_steps * self.dt, "simulate", unit="s", enabled=progress,
                               delay=0.0 if progress else 1.0) as pbar:
                 for k0 in range(0, max(n_steps, 1), chunk):
                     k1 = min(n_steps, k0 + chunk)
-                    u = np.ascontiguousarray(block(k0, k1), dtype=float) if n_steps else np.minimum(
-                        self._sim.excitation, cap)[None, :].copy()
-                    u = np.minimum(u, cap)
+                    u = np.ascontiguousarray(block(k0, k1), dtype=float) if n_steps else \
+                        self._sim.excitation[None, :].copy()
+                    u = self._sim.cap_excitation(u)  # what the dynamics use (the engine's one cap rule)
                     try:
                         raw = self._sim.simulate(u, k1 - k0, record_every)
                     except RuntimeError as exc:

@@ -111,6 +111,13 @@ struct Data {
   std::int64_t limited_fibre_steps = 0;  // ROS2: element-steps whose CE mode was stiffened (fibre_limiter.cc)
 };
 
+// The excitation the dynamics use for a command u: clipped to [0, max_activation] (the arm's cap, paralysis or
+// weakness, Data::settings). The one rule: the muscle stage applies it, and every path that stores or records an
+// excitation (the bindings, the real-time runner) stores what it gives.
+inline double capped_excitation(double u, double max_activation) {
+  return u < 0.0 ? 0.0 : (u > max_activation ? max_activation : u);
+}
+
 // A Data for m at its rest posture, with the model's own settings (intact strength, the model file's
 // maximum activation and gravity).
 void data_init(const Model& m, Data& d);

@@ -104,6 +104,11 @@ enum class Channel {
 };
 inline constexpr int kNumChannels = static_cast<int>(Channel::kCount);
 
+// A row's values in Data, whatever its storage (for code generated from the tables).
+inline const double* row_values(const double& v) { return &v; }
+template <std::size_t N>
+const double* row_values(const std::array<double, N>& a) { return a.data(); }
+
 // A row of a table, for code that walks it (bindings, the recorder's reservations).
 struct LayoutRow {
   const char* name;
