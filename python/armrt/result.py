@@ -32,6 +32,15 @@ def _recorded_rows(n_steps: int, record_every: int) -> int:
     return -(-n_steps // record_every) + (1 if n_steps % record_every == 0 else 0)
 
 
+def _other_columns() -> dict:
+    """Column names (to_dataframe) of the channels that are neither per DOF nor per element: x, y, z for three
+    values unless named here, None for one value."""
+    named = {"gh_angles": ("theta", "phi"), "thorax_humerus": ("plane_of_elevation", "elevation", "axial_rotation"),
+             "contact_distance": ("TS", "AI")}
+    default = {"one": None, "two": ("0", "1"), "three": ("x", "y", "z"), "contact_points": ("TS", "AI")}
+    return {name: named.get(name, default.get(rule)) for name, rule, *_ in CHANNELS if rule not in ("dofs", "elements")}
+
+
 _SHAPES = {"one": "(T,)", "two": "(T, 2)", "three": "(T, 3)", "dofs": "(T, ndof)", "elements": "(T, n)",
            "contact_points": "(T, P)"}
 
@@ -60,12 +69,7 @@ class _ResultMethods:
     # (to_dataframe): x, y, z for three values unless named here.
     _DOF_CHANNELS = tuple(c[0] for c in CHANNELS if c[1] == "dofs")
     _ELEMENT_CHANNELS = tuple(c[0] for c in CHANNELS if c[1] == "elements")
-    _NAMED_COLUMNS = {"gh_angles": ("theta", "phi"),
-                      "thorax_humerus": ("plane_of_elevation", "elevation", "axial_rotation"),
-                      "contact_distance": ("TS", "AI")}
-    _OTHER_COLUMNS = {c[0]: _NAMED_COLUMNS.get(c[0], {"one": None, "two": ("0", "1"), "three": ("x", "y", "z"),
-                                                      "contact_points": ("TS", "AI")}.get(c[1]))
-                      for c in CHANNELS if c[1] not in ("dofs", "elements")}
+    _OTHER_COLUMNS = _other_columns()
 
     def channels(self) -> list[str]:
         """The time-series names this Result has besides time: ARRAYS, and the girdle arrays when present."""
