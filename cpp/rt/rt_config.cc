@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 
 namespace armrt::rt {
 

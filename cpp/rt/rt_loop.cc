@@ -33,7 +33,7 @@ inline timespec to_timespec(std::int64_t ns) {
 // packets carry: the only lines of the runner that read or write the engine's Model / Data.
 
 void RtLoop::make_simulator(const ModelDef& def, const Schedule& sched) {
-  sim_ = std::make_unique<Simulator>(def, parse_integrator(cfg_.integrator), sched.period_s, sched.substeps);
+  sim_ = std::make_unique<Arm>(def, parse_integrator(cfg_.integrator), sched.period_s, sched.substeps);
   if (!cfg_.q0.empty()) {
     if (static_cast<int>(cfg_.q0.size()) != def.num_dofs)
       throw std::invalid_argument("--q0 needs " + std::to_string(def.num_dofs) + " values (model '" + cfg_.model +
@@ -185,7 +185,7 @@ void RtLoop::run_cycles(std::int64_t n) {
       session_->receive(static_cast<double>(woke - t_start) * 1e-9);
       if (session_->take_changed()) apply_command(session_->command());
     }
-    const bool ok = sim_->step();  // measures its TET (Simulator::step: the one place)
+    const bool ok = sim_->step();  // measures its TET (step(), stepper.cc: the one place)
     if (!ok) {
       diverged_ = true;
       reason = "diverged";

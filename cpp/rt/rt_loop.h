@@ -1,4 +1,4 @@
-// RtConfig -> one armrt::Simulator stepped at a fixed rate on a SCHED_FIFO thread, with
+// RtConfig -> one armrt::Arm stepped at a fixed rate on a SCHED_FIFO thread, with
 // absolute-deadline sleeping; the options are checked in rt_config, the UDP session (excitations in,
 // state out) is rt_session's, the per-cycle records rt_stats' (packet format: packet.h, docs/realtime.md).
 //
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 #include "packet.h"
 #include "rt_config.h"
 #include "rt_session.h"
@@ -49,7 +49,7 @@ class RtLoop {
   std::string stats_json() const;
   int bound_port() const { return session_->bound_port(); }
   const RtConfig& config() const { return cfg_; }
-  Simulator& simulator() { return *sim_; }
+  Arm& arm() { return *sim_; }
   static Percentiles percentiles(const LogHistogram& h) { return rt::percentiles(h); }
   bool authenticated() const { return session_->authenticated(); }
 
@@ -64,7 +64,7 @@ class RtLoop {
 
   RtConfig cfg_;
   Schedule sched_;
-  std::unique_ptr<Simulator> sim_;
+  std::unique_ptr<Arm> sim_;
   std::unique_ptr<Session> session_;
   double period_ns_ = 0;
   CycleRecorder rec_{0};

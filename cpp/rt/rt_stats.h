@@ -53,7 +53,7 @@ struct RtStats {
   double lag_s = 0;               // simulated time behind the wall-clock schedule (missed periods)
   double elapsed_s = 0;           // wall time of the loop
   double sim_time = 0;            // simulated time at the end
-  Percentiles tet;                // model step (Simulator::step) execution time
+  Percentiles tet;                // model step (step(), stepper.cc) execution time
   Percentiles cycle;              // whole cycle work: receive + step + send
   Percentiles latency;            // wake-up latency: actual wake-up - deadline
   PacketCounters packets;

@@ -284,7 +284,7 @@ TEST_CASE("hot loop: no heap allocation and no mutex, under a packet flood") {
   CHECK(st.packets.stale > 0);
   CHECK(st.packets.bad_count > 100);
   CHECK(st.packets.state_sent > 500);
-  CHECK(loop.simulator().data.excitation[0] == doctest::Approx(0.02));
+  CHECK(loop.arm().data.excitation[0] == doctest::Approx(0.02));
 }
 
 TEST_CASE("the counting hooks are in effect") {
@@ -346,9 +346,9 @@ TEST_CASE("packets: mappings, sequence numbers, hold and timeout to zero") {
   const int port = loop.bound_port();
   Controller ctl(port);
   const int s = ctl.s;
-  auto& u = loop.simulator().data.excitation;
-  const int n_el = loop.simulator().model.num_elements;
-  const auto* def = loop.simulator().model.def;
+  auto& u = loop.arm().data.excitation;
+  const int n_el = loop.arm().model.num_elements;
+  const auto* def = loop.arm().model.def;
   auto settle = [&] { usleep(3000); loop.run_cycles(2); };
 
   send_exc(s, port, kExcitationElements, 10, std::vector<double>(n_el, 0.3));  // no session id: refused
@@ -419,8 +419,8 @@ TEST_CASE("sessions: a second controller cannot take over, gets no state; releas
   c.send_forces = false;
   RtLoop loop(c);
   const int port = loop.bound_port();
-  auto& u = loop.simulator().data.excitation;
-  const int n_el = loop.simulator().model.num_elements;
+  auto& u = loop.arm().data.excitation;
+  const int n_el = loop.arm().model.num_elements;
   Controller a(port), b(port);
   a.join(loop);
   a.send(kExcitationElements, std::vector<double>(n_el, 0.1));
@@ -529,7 +529,7 @@ TEST_CASE("HMAC-SHA256: RFC 4231 test case 1, and keyed sessions refuse unsigned
   c.key = "0123456789abcdef-lab-key";
   RtLoop loop(c);
   const HmacKey key(c.key), wrong("another key of enough length");
-  auto& u = loop.simulator().data.excitation;
+  auto& u = loop.arm().data.excitation;
   Controller plain(loop.bound_port()), forger(loop.bound_port(), &wrong), good(loop.bound_port(), &key);
   plain.join(loop);
   forger.join(loop);
@@ -606,7 +606,7 @@ TEST_CASE("a flood from another source does not starve the owner") {
   CHECK(st.packets.foreign > 1000);
   CHECK(share >= 0.95);
   CHECK(st.packets.timeouts == 0);
-  CHECK(loop.simulator().data.excitation[0] < 0.1);
+  CHECK(loop.arm().data.excitation[0] < 0.1);
 }
 
 TEST_CASE("state packets reach the controller and describe the arm") {
@@ -614,7 +614,7 @@ TEST_CASE("state packets reach the controller and describe the arm") {
   c.state_rate_hz = 1000;
   c.send_excitation = true;
   RtLoop loop(c);
-  const int n_el = loop.simulator().model.num_elements;
+  const int n_el = loop.arm().model.num_elements;
   Controller a(loop.bound_port());
   a.join(loop);
   a.send(kExcitationElements, std::vector<double>(n_el, 0.125));
@@ -627,7 +627,7 @@ TEST_CASE("state packets reach the controller and describe the arm") {
   REQUIRE(decode_header(b, n, h) == DecodeError::kOk);
   CHECK(h.type == kStatePacket);
   CHECK(h.session == a.session);
-  const StateOffsets st = state_offsets(loop.simulator().model.num_dofs, n_el, h.flags);
+  const StateOffsets st = state_offsets(loop.arm().model.num_dofs, n_el, h.flags);
   CHECK(st.fixed_values == 22);  // das2: 5 DOFs
   const std::vector<std::string> dofs{"GHy", "GHz", "GHyy", "ELx", "PSy"};
   CHECK(state_field_names(dofs).size() == 22u);
@@ -646,7 +646,7 @@ TEST_CASE("state packets reach the controller and describe the arm") {
   CHECK(get_f64(b + kHeaderSize + 8 * (st.fixed_values + n_el)) == doctest::Approx(0.125));  // excitation
   // The GH values are one evaluation's: stab, margin and direction those of the sent theta and phi.
   auto value = [&](int k) { return get_f64(b + kHeaderSize + 8 * k); };
-  const armrt::ModelDef& def = *loop.simulator().model.def;
+  const armrt::ModelDef& def = *loop.arm().model.def;
   const double th = value(st.gh_theta), ph = value(st.gh_phi);
   const double rt = th / def.rim_half_angle_major, rp = ph / def.rim_half_angle_minor;
   CHECK(th != 0.0);
@@ -680,7 +680,7 @@ TEST_CASE("lag and overrun flag: skip and report, --max-lag stops") {
     Header h;
     if (decode_header(b, n, h) != DecodeError::kOk || h.type != kStatePacket) continue;
     flagged = flagged || (h.flags & kFlagOverrun);
-    lag = get_f64(b + kHeaderSize + 8 * state_offsets(over.simulator().model.num_dofs, 102, h.flags).lag);
+    lag = get_f64(b + kHeaderSize + 8 * state_offsets(over.arm().model.num_dofs, 102, h.flags).lag);
   }
   CHECK(flagged);
   CHECK(lag > 0);
@@ -757,8 +757,8 @@ TEST_CASE("divergence stops the loop cleanly with the message") {
   RtConfig c = test_config();
   c.listen.clear();
   RtLoop loop(c);
-  loop.simulator().data.settings.max_joint_speed = 1e-9;  // any motion counts as divergence
-  loop.simulator().data.excitation.fill(1.0);
+  loop.arm().data.settings.max_joint_speed = 1e-9;  // any motion counts as divergence
+  loop.arm().data.excitation.fill(1.0);
   loop.run_cycles(1000);
   const RtStats st = loop.stats();
   CHECK(st.stop_reason == "diverged");
@@ -795,7 +795,7 @@ TEST_CASE("state packet bytes: identical to the version-3 capture") {
   c.input_timeout = 0.5;
   c.max_activation = {"infra=0.2"};
   RtLoop loop(c);
-  const auto* def = loop.simulator().model.def;
+  const auto* def = loop.arm().model.def;
   Controller a(loop.bound_port());
   a.join(loop);
   REQUIRE(a.session != 0);
@@ -844,7 +844,7 @@ TEST_CASE("channel mapping: the most specific name wins, in either order") {
     c.input_timeout = 0.5;
     c.channels = channels;
     RtLoop loop(c);
-    const armrt::ModelDef& def = *loop.simulator().model.def;
+    const armrt::ModelDef& def = *loop.arm().model.def;
     std::vector<int> cuff, infra, supra;
     REQUIRE(armrt::find_elements(def, "rotator_cuff", cuff));
     REQUIRE(armrt::find_elements(def, "infra", infra));
@@ -855,7 +855,7 @@ TEST_CASE("channel mapping: the most specific name wins, in either order") {
     a.send(kExcitationChannels, channels[0] == "infra" ? std::vector<double>{0.05, 0.3} : std::vector<double>{0.3, 0.05});
     usleep(3000);
     loop.run_cycles(2);
-    const auto& u = loop.simulator().data.excitation;
+    const auto& u = loop.arm().data.excitation;
     CHECK(u[infra[0]] == doctest::Approx(0.05));
     CHECK(u[supra[0]] == doctest::Approx(0.3));
   }

@@ -230,7 +230,7 @@ PYBIND11_MODULE(_core, mod) {
         return close_matches(require_model(model), name, dofs ? NameKind::kDofs : NameKind::kElementsMusclesGroups);
       }, py::arg("model"), py::arg("name"), py::arg("dofs") = false);
 
-  py::class_<Arm>(mod, "Simulator")
+  py::class_<Arm>(mod, "Arm")
       .def(py::init([](const std::string& model, const std::string& integrator, double dt, int substeps) {
              return std::make_unique<Arm>(require_model(model), parse_integrator(integrator), dt, substeps);
            }),

@@ -246,7 +246,7 @@ PYBIND11_MODULE(_rt, m) {
       .def_property_readonly("finished", &RtLoop::finished)
       .def_property_readonly("port", &RtLoop::bound_port)
       .def_property_readonly("integration_step", [](const RtLoop& l) { return l.config().integration_step; })
-      .def_property_readonly("n_elements", [](RtLoop& l) { return l.simulator().model.num_elements; })
+      .def_property_readonly("n_elements", [](RtLoop& l) { return l.arm().model.num_elements; })
       .def("stats", &stats_dict)
       .def("stats_json", &RtLoop::stats_json);
 }

@@ -63,7 +63,7 @@ class Arm:
         (integrators.MAX_SUBSTEPS); TypeError for a dt or substeps that is not a real number / an integer."""
         dt, substeps = control_step(integrator, dt, substeps)
         self.model = Model(model)  # a name, a model file (built on demand) or a Model
-        self._sim = _core.Simulator(self.model._def, integrator, dt, substeps)
+        self._sim = _core.Arm(self.model._def, integrator, dt, substeps)
         self.data = Data._wrap(self.model, self._sim)
         # One thread at a time: the engine's Data is a single workspace, so the Arm and its Data share
         # one guard (Data._exclusive): arm.data.outputs() from a second thread is refused like arm.outputs().

@@ -1,6 +1,6 @@
 """`ArmBatch`: n independent arms of one model stepped together in C++ across threads.
 
-For sweeps, optimisation and vectorised environments. Each arm is a whole engine Simulator (the
+For sweeps, optimisation and vectorised environments. Each arm is an engine Arm, its own Data and Stepper on the shared Model (the
 same code `Arm` drives), so every integrator `Arm` accepts works here, and each arm's trajectory is
 bit-identical to stepping the same arm alone with `Arm`, whatever the number of threads.
 """

@@ -134,7 +134,7 @@ class Data:
 
     def __init__(self, model="das2"):
         model = Model(model)
-        self._attach(model, _core.Simulator(model._def, DEFAULT_INTEGRATOR, 1e-3,
+        self._attach(model, _core.Arm(model._def, DEFAULT_INTEGRATOR, 1e-3,
                                             _core.default_substeps(DEFAULT_INTEGRATOR, 1e-3)))
 
     @classmethod
@@ -190,7 +190,7 @@ class Data:
         activation, gravity) and integrator workspace configuration, in a new engine."""
         with self._exclusive():
             s = self._sim
-            sim = _core.Simulator(self.model._def, s.integrator, s.dt, s.substeps)
+            sim = _core.Arm(self.model._def, s.integrator, s.dt, s.substeps)
             sim.set_strength_and_max_activation(s.get_strength(), s.get_max_activation())
             sim.gravity = np.asarray(s.gravity, dtype=float)
             sim.max_joint_speed = s.max_joint_speed

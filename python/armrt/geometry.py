@@ -2,7 +2,7 @@
 
 Everything comes from the compiled model (no guessed dimensions):
 
-* bones: the body origins from the engine's forward kinematics (`Simulator.body_poses`), i.e. the
+* bones: the body origins from the engine's forward kinematics (`armrt._core.Arm.body_poses`), i.e. the
   joint centres GH (humerus origin), elbow (ulna origin, the HU joint), proximal radius (radius
   origin, the UR joint) and wrist (hand origin, the RC weld); the hand segment runs from the wrist to
   the hand point (the hand's centre of mass, where the engine reports hand position);
@@ -59,7 +59,7 @@ class ArmGeometry:
     def __init__(self, model: str = "das2", model_file: str | Path | None = None):
         self.model = model
         self.info = _core.model_info(model)
-        self._sim = _core.Simulator(model, "euler", 1e-3)
+        self._sim = _core.Arm(model, "euler", 1e-3)
         # The engine's base frame (das2: the fixed scapula; das3: the thorax) in the thorax frame.
         self.R_base = np.array(self.info["base_rotation_in_thorax"], dtype=float).reshape(3, 3)
         self.o_base = np.array(self.info["base_origin_in_thorax"], dtype=float)

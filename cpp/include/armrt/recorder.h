@@ -6,7 +6,7 @@
 #include <array>
 #include <vector>
 
-#include "armrt/simulator.h"
+#include "armrt/arm.h"
 
 namespace armrt {
 
