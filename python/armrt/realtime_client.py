@@ -1,0 +1,270 @@
+"""The runner's address + excitations (array or {name: value} via a mapping) -> excitation packets out, StatePackets in.
+
+GroupMapping turns a controller's values (elements, muscles, groups or channels of the model) into the
+packet the runner reads; UdpClient is a controller's end of the link (session join / release, the key,
+the incoming state queue). The bytes themselves are armrt.realtime_packets'.
+"""
+from __future__ import annotations
+
+import collections
+import socket
+import time
+from dataclasses import dataclass, field
+from typing import Mapping, Sequence
+
+import numpy as np
+
+from . import _rt
+from .realtime_packets import (EXC_CHANNELS, EXC_ELEMENTS, EXC_GROUPS, EXC_MUSCLES, HELLO, OFFER, RELEASE, STATE,
+                               PacketError, StatePacket, _key_bytes, decode_packet, encode_packet, state_fields,
+                               state_packet_fields)
+
+MAPPING_TYPES = {"elements": EXC_ELEMENTS, "muscles": EXC_MUSCLES, "groups": EXC_GROUPS, "channels": EXC_CHANNELS}
+
+
+def parse_endpoint(endpoint: str, require_port: bool = False) -> tuple[str, int]:
+    """'host:port' -> (numeric IPv4 host, port), exactly as armrt-rt reads it (an empty host or
+    'localhost' is 127.0.0.1, never "any"). Raises ValueError naming the problem."""
+    return tuple(_rt.parse_endpoint(str(endpoint), require_port))
+
+
+# ---------------------------------------------------------------------------------------- mappings
+@dataclass
+class GroupMapping:
+    """How a controller's values become the model's element excitations (das2: 102).
+
+    kind "elements": one value per element (dicts may name elements, muscles or groups);
+    "muscles" / "groups": one value per muscle / group of the model, in the model's order;
+    "channels": one value per configured name (element, muscle or group) - the runner must be started
+    with the same names (armrt-rt --channels / RealtimeSession(channels=...)).
+    Overlapping names (a group, a muscle of it, one of its elements) follow the engine's one rule
+    (armrt._core.excitations_from_names, cpp/src/names.cc): the most specific name wins, in any
+    order; names of equal specificity take the largest of their values.
+    """
+
+    kind: str
+    names: list = field(default_factory=list)
+    element_names: list = field(default_factory=list)
+    index: dict = field(default_factory=dict)
+    model: str = "das2"
+
+    @classmethod
+    def from_model(cls, kind: str = "elements", model: str = "das2", channels: Sequence[str] | None = None):
+        from . import _core
+        info = _core.model_info(model)
+        elements = [e["name"] for e in info["elements"]]
+        index = {n: [i] for i, n in enumerate(elements)}
+        index.update({m: list(ix) for m, ix in info["muscles"]})
+        index.update({g: list(ix) for g, ix in info["groups"]})
+        if kind == "elements":
+            names = elements
+        elif kind == "muscles":
+            names = [m for m, _ in info["muscles"]]
+        elif kind == "groups":
+            names = [g for g, _ in info["groups"]]
+        elif kind == "channels":
+            if not channels:
+                raise ValueError("mapping 'channels' needs the channel names")
+            unknown = [c for c in channels if not _core.is_name(model, c)]
+            if unknown:
+                raise KeyError("channels: " + _core.unknown_names_message(model, list(unknown)))
+            names = list(channels)
+            # Aliases (OpenSim names) resolve through the engine's name service, as the runner does.
+            index.update({c: list(_core.find_elements(model, c)) for c in names if c not in index})
+        else:
+            raise ValueError(f"unknown mapping {kind!r}; expected one of {list(MAPPING_TYPES)}")
+        return cls(kind, names, elements, index, model)
+
+    @property
+    def packet_type(self) -> int:
+        return MAPPING_TYPES[self.kind]
+
+    def values(self, excitation) -> np.ndarray:
+        """An array (one value per name) from an array or a {name: value} dict."""
+        n = len(self.names)
+        if isinstance(excitation, Mapping):
+            out = np.zeros(n)
+            pos = {name: k for k, name in enumerate(self.names)}
+            for name, v in excitation.items():
+                if name in pos:
+                    out[pos[name]] = v
+                elif self.kind != "elements":
+                    raise KeyError(f"{name!r} is not a value of mapping {self.kind!r} (names: {self.names[:8]}...)")
+            if self.kind == "elements":
+                from . import _core
+                return np.asarray(_core.excitations_from_names(self.model, [(str(k), float(v))
+                                                                            for k, v in excitation.items()]))
+            return out
+        arr = np.asarray(excitation, dtype=float).ravel()
+        if arr.size != n:
+            raise ValueError(f"mapping {self.kind!r} needs {n} values, got {arr.size}")
+        return arr
+
+    def to_elements(self, values) -> np.ndarray:
+        """The element excitations the runner applies for these values (for checks and plots)."""
+        v = self.values(values)
+        if self.kind == "elements":
+            return np.clip(v, 0, 1)
+        from . import _core  # the rule the runner applies (names.h)
+        return np.asarray(_core.excitations_from_names(self.model, list(zip(self.names, np.clip(v, 0, 1).tolist()))))
+
+
+# ---------------------------------------------------------------------------------------- UDP client
+class UdpClient:
+    """A controller's end of the link: owns a session of the runner, sends excitations, receives state.
+
+    port, host: the runner's --listen address. key: the runner's shared key (bytes, >= 16; see
+    read_key_file), or None. The first send() asks for the session (hello -> offer, join()); packets
+    carry the session id and, with a key, an HMAC-SHA256 tag. Incoming datagrams are accepted only
+    from the runner's address and, with a key, only with a valid tag: anything else is dropped and
+    counted (.foreign_packets, .bad_packets), never raised. When a session ends (silence longer than
+    the runner's --timeout) the runner offers a new id on the next packet, and the client adopts it
+    as soon as it reads the offer (recv_state / latest_state / join()).
+    """
+
+    def __init__(self, port: int, host: str = "127.0.0.1", mapping: str | GroupMapping = "elements",
+                 model: str = "das2", channels: Sequence[str] | None = None, bind_port: int = 0,
+                 key: bytes | str | None = None):
+        self.address = parse_endpoint(f"{host}:{int(port)}")
+        self.state_fields = state_fields(model)
+        self.state_table = state_packet_fields(model)
+        self.mapping = mapping if isinstance(mapping, GroupMapping) else GroupMapping.from_model(mapping, model, channels)
+        self.key = _key_bytes(key)
+        self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        self.sock.bind(("127.0.0.1" if self.address[0].startswith("127.") else "", bind_port))
+        self.sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 1 << 20)
+        self.seq = 0
+        self.session = 0
+        self.bad_packets = 0       # malformed, unsigned or wrongly signed datagrams
+        self.foreign_packets = 0   # datagrams from anyone but the runner
+        self.last_state: StatePacket | None = None
+        self.last_error = ""       # why the last bad datagram was refused
+        self._states: collections.deque = collections.deque(maxlen=4096)
+
+    @property
+    def local_port(self) -> int:
+        return self.sock.getsockname()[1]
+
+    def _next_seq(self) -> int:
+        self.seq = (self.seq + 1) & 0xFFFFFFFF
+        return self.seq
+
+    def _pump(self, timeout: float | None) -> bool:
+        """Reads one datagram (waiting up to timeout s; None: forever); True if one was read."""
+        self.sock.settimeout(timeout)
+        try:
+            data, src = self.sock.recvfrom(65536)
+        except (socket.timeout, BlockingIOError):
+            return False
+        if (src[0], src[1]) != self.address:
+            self.foreign_packets += 1
+            return True
+        try:
+            p = decode_packet(data, self.key)
+            if p.type == OFFER:
+                self.session = p.session
+            elif p.type == STATE:
+                st = StatePacket.from_packet(p, self.state_table)
+                st.received_at = time.monotonic()
+                if not st.timed_out:
+                    self.session = st.session
+                self._states.append(st)
+            else:
+                self.bad_packets += 1
+        except PacketError as exc:
+            self.bad_packets += 1
+            self.last_error = str(exc)
+        return True
+
+    def poll(self, timeout: float | None = 0.0) -> bool:
+        """Reads one datagram if one comes within timeout s (offers update .session, state packets are
+        queued for recv_state / take_states); True if one was read."""
+        return self._pump(timeout)
+
+    def take_states(self) -> list[StatePacket]:
+        """The state packets read so far and not yet returned, oldest first."""
+        out = list(self._states)
+        self._states.clear()
+        if out:
+            self.last_state = out[-1]
+        return out
+
+    def join(self, timeout: float = 1.0) -> int:
+        """Asks the runner for its session id and waits for the offer; returns it. TimeoutError if
+        none comes (the runner is not there, another controller owns the session, --allow or the key
+        refuses this one)."""
+        self.session = 0
+        t_end = time.monotonic() + timeout
+        next_hello = 0.0
+        while self.session == 0:
+            now = time.monotonic()
+            if now >= t_end:
+                raise TimeoutError(f"no session offer from {self.address[0]}:{self.address[1]} within {timeout} s "
+                                   "(runner not listening, session owned by another controller, or refused by "
+                                   "--allow / the key)")
+            if now >= next_hello:
+                self.sock.sendto(encode_packet(HELLO, self._next_seq(), key=self.key), self.address)
+                next_hello = now + 0.05
+            self._pump(min(0.01, t_end - now))
+        return self.session
+
+    def send(self, excitation, seq: int | None = None) -> int:
+        """Sends one excitation packet (array or dict through the mapping); returns its sequence number.
+        Joins the session first if none is known (TimeoutError if that fails)."""
+        if self.session == 0:
+            self.join()
+        if seq is None:
+            seq = self._next_seq()
+        data = encode_packet(self.mapping.packet_type, seq, self.mapping.values(excitation),
+                             session=self.session, key=self.key)
+        self.sock.sendto(data, self.address)
+        return seq
+
+    def send_raw(self, data: bytes) -> None:
+        self.sock.sendto(data, self.address)
+
+    def release(self) -> None:
+        """Ends the session (the runner sets the excitation to zero at once and accepts a new owner)."""
+        if self.session:
+            self.sock.sendto(encode_packet(RELEASE, self._next_seq(), session=self.session, key=self.key), self.address)
+            self.session = 0
+
+    def recv_state(self, timeout: float | None = 0.1) -> StatePacket | None:
+        """The next state packet from the runner (None after timeout s)."""
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while not self._states:
+            remaining = None if deadline is None else deadline - time.monotonic()
+            if remaining is not None and remaining <= 0:
+                self._pump(0.0)
+                if not self._states:
+                    return None
+                break
+            self._pump(remaining)
+        st = self._states.popleft()
+        self.last_state = st
+        return st
+
+    def latest_state(self, timeout: float = 0.1) -> StatePacket | None:
+        """Waits for a state packet, then drains the queue and returns the newest one."""
+        st = self.recv_state(timeout)
+        if st is None:
+            return None
+        while self._pump(0.0):
+            pass
+        while self._states:
+            st = self._states.popleft()
+        self.last_state = st
+        return st
+
+    def close(self) -> None:
+        try:
+            self.release()
+        except OSError:
+            pass
+        self.sock.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()

@@ -1,0 +1,174 @@
+"""armrt-rt's options (keywords, or its argv) -> a running real-time loop, in this process or the armrt-rt runner.
+
+RealtimeSession runs the model at a fixed rate on a C++ thread of this process (armrt._rt.RtLoop);
+runner_path / runner_args / rt_main find and start the shipped armrt-rt runner (the console entry point).
+"""
+from __future__ import annotations
+
+import os
+import shutil
+import sys
+import warnings
+from pathlib import Path
+from typing import Mapping
+
+import numpy as np
+
+from . import _rt
+from .checks import real_array, real_scalar
+from .realtime_packets import _key_bytes
+
+
+def _max_activation_items(values, model: str) -> list[str]:
+    """{name: value} or an array of one value per element -> the runner's "NAME=VALUE" items."""
+    if isinstance(values, Mapping):
+        items = [(str(k), real_scalar(v, f"max_activation[{k!r}]")) for k, v in values.items()]
+    else:
+        from . import _core
+        names = [e["name"] for e in _core.model_info(model)["elements"]]
+        arr = real_array(values, "max_activation").ravel()
+        if arr.size != len(names):
+            raise ValueError(f"max_activation must have {len(names)} values (one per element), got {arr.size}")
+        items = list(zip(names, arr.tolist()))
+    bad = [f"{k}={v}" for k, v in items if not 0.0 <= v <= 1.0]
+    if bad:
+        raise ValueError(f"max_activation must lie in [0, 1]: {bad[:5]}")
+    return [f"{k}={v!r}" for k, v in items]
+
+
+# ---------------------------------------------------------------------------------------- session
+class RealtimeSession:
+    """The real-time loop in-process: a C++ thread steps the model at rate_hz (SCHED_FIFO at
+    `priority` when permitted, else normal scheduling with a note in stats()["rt_note"]; with
+    require_rt=True start() raises instead). The loop never takes the GIL.
+
+    Parameters are those of armrt-rt (docs/realtime.md): model, integrator, rate_hz, integration_step
+    (the integrator's largest step, s; `dt`, its old name, is deprecated: dt is the control step, here
+    1/rate_hz), q0, duration,
+    realtime, priority, lock_memory (mlockall of the whole Python process; off by default), require_rt,
+    cpu, busy_wait_us, max_lag, listen ("127.0.0.1:0" for an ephemeral port), state_to (one "host:port"
+    or a list), allow (list of "host[:port]"), key (bytes >= 16), state_rate_hz, send_forces,
+    send_excitation, input_timeout, channels, rx_budget_us, max_activation ({name: value} of elements,
+    muscles or groups, or one value per element, in [0, 1]: paralysis and weakness; every excitation,
+    and the excitations streamed with send_excitation, are capped at it). Bad values raise ValueError
+    naming the option.
+    """
+
+    def __init__(self, **config):
+        if "dt" in config:
+            if "integration_step" in config:
+                raise ValueError("dt (deprecated) and integration_step both given; use integration_step")
+            warnings.warn("RealtimeSession(dt=...) is deprecated: use integration_step (dt is the control step, "
+                          "here 1/rate_hz)", DeprecationWarning, stacklevel=2)
+            config["integration_step"] = config.pop("dt")
+        if "model" in config and not isinstance(config["model"], str) or str(config.get("model", "")).endswith(".json"):
+            from .model import Model
+            config["model"] = Model(config["model"]).name  # a Model or a model file: loaded and registered
+        if "q0" in config and config["q0"] is not None:
+            config["q0"] = [float(x) for x in np.asarray(config["q0"], dtype=float).ravel()]
+        elif "q0" in config:
+            del config["q0"]
+        if "channels" in config:
+            config["channels"] = list(config["channels"] or [])
+        if config.get("max_activation") is not None:
+            config["max_activation"] = _max_activation_items(config["max_activation"], config.get("model", "das2"))
+        else:
+            config.pop("max_activation", None)
+        for name in ("state_to", "allow"):
+            if isinstance(config.get(name), str):
+                config[name] = [config[name]] if config[name] else []
+            elif name in config:
+                config[name] = list(config[name] or [])
+        if "key" in config:
+            config["key"] = _key_bytes(config["key"]) or b""
+        self.config = dict(config)
+        self._loop = _rt.RtLoop(**config)
+        self._started = False
+
+    @property
+    def port(self) -> int:
+        """UDP port the loop listens on (0 without `listen`)."""
+        return self._loop.port
+
+    @property
+    def running(self) -> bool:
+        return self._loop.running
+
+    @property
+    def finished(self) -> bool:
+        return self._loop.finished
+
+    def start(self) -> "RealtimeSession":
+        self._loop.start()
+        self._started = True
+        return self
+
+    def wait(self, timeout: float | None = None) -> bool:
+        """Waits for the loop to end by itself (duration, divergence); True if it has."""
+        return self._loop.wait(-1.0 if timeout is None else float(timeout))
+
+    def stop(self) -> dict:
+        """Stops the loop (if running) and returns the final statistics."""
+        self._loop.stop()
+        return self.stats()
+
+    def stats(self) -> dict:
+        """TET, cycle time and wake-up latency percentiles (ns), overruns, packet counters, scheduler."""
+        return self._loop.stats()
+
+    def stats_json(self) -> str:
+        return self._loop.stats_json()
+
+    def __enter__(self):
+        if not self._started:
+            self.start()
+        return self
+
+    def __exit__(self, *exc):
+        self.stop()
+
+
+# ---------------------------------------------------------------------------------------- runner
+def runner_path() -> str:
+    """Path of the armrt-rt executable: shipped in the package (armrt/bin), on PATH, or in a build tree."""
+    here = Path(__file__).resolve().parent
+    candidates = [here / "bin" / "armrt-rt"]
+    on_path = shutil.which("armrt-rt")
+    if on_path:
+        candidates.append(Path(on_path))
+    root = here.parent.parent
+    candidates += sorted((root / "build").glob("*/cpp/rt/armrt-rt"), key=lambda p: p.stat().st_mtime, reverse=True)
+    for c in candidates:
+        if c.is_file() and os.access(c, os.X_OK) and c.resolve() != Path(sys.argv[0]).resolve():
+            return str(c)
+    raise FileNotFoundError("armrt-rt not found: install armrt (pip install .) or build it with CMake (target armrt-rt)")
+
+
+def runner_args(argv: list[str]) -> list[str]:
+    """The runner's arguments: `--model FILE.json` (or --model=FILE.json) becomes the model built on demand
+    (armrt.Model.load, cached) as `--model-library LIB --model NAME`; everything else is passed as is."""
+    out, k = [], 0
+    while k < len(argv):
+        a = argv[k]
+        value = a.split("=", 1)[1] if a.startswith("--model=") else argv[k + 1] if a == "--model" and k + 1 < len(argv) else None
+        if value is not None and (value.endswith(".json") or os.sep in value):
+            from .model_build import build
+            res = build(value)
+            out += ["--model-library", str(res.library), "--model", res.name]
+            k += 1 if a.startswith("--model=") else 2
+            continue
+        out.append(a)
+        k += 1
+    return out
+
+
+def rt_main() -> None:
+    """Console entry point `armrt-rt`: runs the shipped C++ runner with the same arguments (a model file
+    given to --model is built on demand first)."""
+    exe = runner_path()
+    try:
+        args = runner_args(sys.argv[1:])
+    except (OSError, ValueError, RuntimeError) as exc:
+        print(f"armrt-rt: {exc}", file=sys.stderr)
+        sys.exit(2)
+    os.execv(exe, [exe, *args])
