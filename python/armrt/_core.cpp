@@ -292,7 +292,9 @@ PYBIND11_MODULE(_core, mod) {
         Array out(std::vector<py::ssize_t>(u.shape(), u.shape() + u.ndim()));
         const double* in = u.data();
         double* o = out.mutable_data();
-        for (py::ssize_t k = 0; k < u.size(); ++k) o[k] = capped_excitation(in[k], s.data.muscles.max_activation[k % n]);
+        const double* cap = s.data.muscles.max_activation.data();
+        for (py::ssize_t row = 0; row < u.size() / n; ++row)
+          for (int i = 0; i < n; ++i) o[row * n + i] = capped_excitation(in[row * n + i], cap[i]);
         return out;
       }, py::arg("u"))
       .def("clear_error", [](Arm& s) { s.data.status = Status::kOk; s.data.bad_index = -1; s.data.bad_contact = -1; })

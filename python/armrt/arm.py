@@ -450,7 +450,7 @@ class Arm:
         return rows * _row_bytes(self.n_elements, self.n_dofs, self._contact_points())
 
     def _contact_points(self) -> int:
-        girdle = self.model.info["girdle"]
+        girdle = self.model._info["girdle"]  # the Model's own description (Model.info would copy it: 1 ms)
         return len(girdle["contact_points"]) if girdle else 0
 
     def _n_steps(self, duration: float) -> int:
@@ -507,12 +507,11 @@ class Arm:
                                  f"element {self.element_names[col]})")
             if (u_all < 0).any() or (u_all > 1).any():
                 warnings.warn("excitation outside [0, 1] clipped", RuntimeWarning, stacklevel=2)
-            u_all = self._sim.cap_excitation(np.clip(u_all, 0.0, 1.0))
 
             def block(k0: int, k1: int) -> np.ndarray:
                 return u_all[k0:k1]
         else:
-            held = self._sim.cap_excitation(self._per_element(excitation, "excitation", 0.0, 1.0, clip=True))[None, :]
+            held = self._per_element(excitation, "excitation", 0.0, 1.0, clip=True)[None, :]
 
             def block(k0: int, k1: int) -> np.ndarray:
                 return held
