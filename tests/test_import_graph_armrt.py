@@ -15,6 +15,8 @@ from __future__ import annotations
 import ast
 from pathlib import Path
 
+from tests.test_import_graph import cycles as strongly_connected
+
 PACKAGE = Path(__file__).resolve().parents[1] / "python" / "armrt"
 
 
@@ -93,43 +95,10 @@ def import_graph(root: Path = PACKAGE) -> dict[str, dict[str, str]]:
 
 
 def cycles(graph: dict[str, dict[str, str]], kinds=("module", "function")) -> list[list[str]]:
-    """The strongly connected components with more than one module (Tarjan), each sorted, using edges
-    of the given kinds."""
-    index: dict[str, int] = {}
-    low: dict[str, int] = {}
-    stack: list[str] = []
-    on: set[str] = set()
-    out: list[list[str]] = []
-    counter = [0]
-
-    def strong(v: str) -> None:
-        index[v] = low[v] = counter[0]
-        counter[0] += 1
-        stack.append(v)
-        on.add(v)
-        for w, kind in graph[v].items():
-            if kind not in kinds:
-                continue
-            if w not in index:
-                strong(w)
-                low[v] = min(low[v], low[w])
-            elif w in on:
-                low[v] = min(low[v], index[w])
-        if low[v] == index[v]:
-            comp = []
-            while True:
-                w = stack.pop()
-                on.discard(w)
-                comp.append(w)
-                if w == v:
-                    break
-            if len(comp) > 1:
-                out.append(sorted(comp))
-
-    for v in sorted(graph):
-        if v not in index:
-            strong(v)
-    return out
+    """The strongly connected components with more than one module, each sorted, using edges of the given
+    kinds (the one cycle finder, tests/test_import_graph.py)."""
+    return strongly_connected(
+        {v: {w for w, kind in edges.items() if kind in kinds and w in graph} for v, edges in graph.items()})
 
 
 def describe(graph, comp: list[str]) -> str:
