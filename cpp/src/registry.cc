@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -58,10 +59,13 @@ const Model& shared_model(const ModelDef& def) {
   Registry& r = registry();
   std::lock_guard<std::mutex> lock(r.mutex);
   auto it = r.shared.find(&def);
-  // A ModelDef that is not a library's or built in (a test's copy on the stack) may reuse the address of
+  // A registered ModelDef (built in, or a library never unloaded) lives as long as the process and never
+  // changes: its Model is returned as it is. Any other (a test's copy on the stack) may reuse the address of
   // one that is gone: a Model whose tables are not this def's is replaced (and kept: arms may still use it).
-  if (it != r.shared.end() && it->second->def == &def && it->second->num_elements == def.num_elements &&
-      it->second->num_dofs == def.num_dofs && same_tables(*it->second, def))
+  const bool registered = std::find(r.models.begin(), r.models.end(), &def) != r.models.end();
+  if (it != r.shared.end() &&
+      (registered || (it->second->def == &def && it->second->num_elements == def.num_elements &&
+                      it->second->num_dofs == def.num_dofs && same_tables(*it->second, def))))
     return *it->second;
   auto m = std::make_unique<Model>();
   model_init(*m, def);  // throws for a model the engine cannot take; nothing is kept then
