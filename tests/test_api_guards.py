@@ -102,17 +102,17 @@ def test_substep_count_is_bounded():
 
 
 def test_set_state_checks_q_as_reset_does():
-    """A State whose q is far beyond the joint ranges is refused by set_state (Arm and Data alike) with
-    reset's message, degrees hint included; a State slightly beyond them (where a simulation can end:
-    the passive limits are springs) is restored without a warning."""
+    """A State whose q is far beyond the joint ranges is refused by set_state (Arm and Data alike) by the
+    engine's domain check (snapshot_error), degrees hint included; a State slightly beyond them (where a
+    simulation can end: the passive limits are springs) is restored without a warning."""
     arm = armrt.Arm()
     s = arm.get_state()
     far = dataclasses.replace(s, q=s.q + 100.0)
-    with pytest.raises(ValueError, match="q beyond the joint limits: GHy = 100.4 rad"):
+    with pytest.raises(ValueError, match=r"State.q\[GHy\] = 100.4 rad is more than 0.35 rad beyond its range"):
         arm.set_state(far)
-    with pytest.raises(ValueError, match="q beyond the joint limits"):
+    with pytest.raises(ValueError, match=r"State.q\[GHy\] = 100.4 rad"):
         arm.data.set_state(far)
-    with pytest.raises(ValueError, match="These look like degrees"):
+    with pytest.raises(ValueError, match="these values look like degrees"):
         arm.set_state(dataclasses.replace(s, q=np.degrees(s.q)))
     assert arm.get_state() == s, "nothing was written"
     hi = arm.dof_ranges[:, 1]

@@ -223,20 +223,20 @@ def test_state_carries_ros2_history(tmp_path):
     assert seen == {1, 2, 3}
     with pytest.raises(ValueError, match=r"path_anchors must have shape \(1, 5\) or \(2, 5\)"):
         arm.set_state(armrt.State(**{**s.as_dict(), "path_anchors": np.zeros(3)}))
-    with pytest.raises(ValueError, match="previous_step must be finite"):
+    with pytest.raises(ValueError, match=r"ROS2 memory .*step size h must be >= 0 s, got -1"):
         arm.set_state(armrt.State(**{**s.as_dict(), "previous_step": -1.0}))
     with pytest.raises(ValueError, match="path_anchor_steps must be two whole numbers"):
         armrt.State(**{**s.as_dict(), "path_anchor_steps": (1.5, 1)})
-    with pytest.raises(ValueError, match=r"path_anchor_steps \(3, 7\): .*steps since the newest anchor must be 1 to 3"):
+    with pytest.raises(ValueError, match=r"ROS2 memory .*steps since the newest anchor must be 1 to 3 with 2 anchor\(s\), got 7"):
         arm.set_state(armrt.State(**{**s.as_dict(), "path_anchor_steps": (3, 7)}))
     before_refusal = arm.get_state()
-    with pytest.raises(ValueError, match=r"path_anchor_steps \(2, 1\): .*anchor spacing 2 with 2 anchors"):
+    with pytest.raises(ValueError, match=r"ROS2 memory .*anchor spacing 2 with 2 anchors"):
         arm.set_state(armrt.State(**{**s.as_dict(), "path_anchor_steps": (2, 1),
                                      "q": s.q + 0.01}))  # no run leaves it
     assert arm.get_state() == before_refusal  # refused before anything was written
-    with pytest.raises(ValueError, match=r"path_anchor_steps \(0, 2\): .*must be 1 to 1 with 1 anchor"):
+    with pytest.raises(ValueError, match=r"ROS2 memory .*must be 1 to 1 with 1 anchor"):
         arm.set_state(armrt.State(**{**s.as_dict(), "path_anchors": s.path_anchors[1:], "path_anchor_steps": (0, 2)}))
-    with pytest.raises(ValueError, match=r"previous_step must be > 0 \(s\) with path_anchors"):
+    with pytest.raises(ValueError, match=r"ROS2 memory .*step size h must be > 0 s with anchors"):
         arm.set_state(armrt.State(**{**s.as_dict(), "previous_step": 0.0}))
     with pytest.raises(ValueError, match=r"path_anchor_steps must be \(0, 0\) without path_anchors"):
         armrt.State(**{**s.as_dict(), "path_anchors": None})
@@ -249,11 +249,12 @@ def test_state_carries_ros2_history(tmp_path):
     assert legacy == bare
     # An Arm pickled by an older armrt carried (previous_q, step) as its ROS2 memory: unpickled without it.
     func, (cls, model, settings, raw, extras) = arm.__reduce__()
-    older = func(cls, model, settings, raw[:5] + ((arm.q.copy(), 1e-3),), extras)
+    old_raw = (arm.data.state.copy(), arm.excitation, arm.data.hand_force, arm.data.hand_moment, arm.time, (arm.q.copy(), 1e-3))
+    older = func(cls, model, settings, old_raw, extras)
     assert older.get_state().path_anchors is None and np.array_equal(older.q, arm.q)
     far = s.path_anchors.copy()
     far[-1] = s.q + np.array([0.3, 0, 0, 0, 0]) * s.path_anchor_steps[1]
-    with pytest.raises(ValueError, match=r"path_anchors\[-1\] is not \d step\(s\) of 0.001 s before the next anchor or q: "
+    with pytest.raises(ValueError, match=r"ROS2 memory .*the newest anchor is not \d step\(s\) of 0.001 s before q: "
                                          "GHy would have moved at 300 rad/s"):
         arm.set_state(armrt.State(**{**s.as_dict(), "path_anchors": far}))
     # Through a file and back (State.as_dict's documented use), with and without the memory.
@@ -277,7 +278,7 @@ def test_set_state_refuses_another_model_and_bad_values(tmp_path):
         arm.set_state(other)
     with pytest.raises(ValueError, match="State.q must have shape"):
         arm.set_state(armrt.State(**{**s.as_dict(), "q": np.zeros(4)}))
-    with pytest.raises(ValueError, match="State.lce contains NaN"):
+    with pytest.raises(ValueError, match=r"State.lce\[deltscap1\] is not finite"):
         arm.set_state(armrt.State(**{**s.as_dict(), "lce": np.full(102, np.nan)}))
     with pytest.raises(TypeError, match="armrt.State"):
         arm.set_state(s.as_dict())
@@ -411,6 +412,22 @@ def test_model_built_on_demand_runs_like_the_built_in_one(tmp_path, cache, capsy
                         capture_output=True, text=True, timeout=60)
     assert rt.returncode == 0 and "das2_on_demand" in rt.stdout, rt.stderr
     assert RealtimeSession(model=m, duration=0.05).config["model"] == "das2_on_demand"
+    # The runner checks a library against its checksum before dlopen, as Model.load does: a damaged copy is
+    # refused with a message instead of killing the runner inside dlopen.
+    import shutil
+    lib_dir = tmp_path / "libcopy"
+    lib_dir.mkdir()
+    copied = lib_dir / libs[0].name
+    shutil.copy(libs[0], copied)
+    for checksum, expect in ((None, "no checksum"), ("0" * 64, "does not match its checksum")):
+        sidecar = copied.with_name(copied.name + ".sha256")
+        if checksum is None:
+            sidecar.unlink(missing_ok=True)
+        else:
+            sidecar.write_text(f"{checksum}  {copied.name}\n")
+        bad = subprocess.run([runner_path(), "--model-library", str(copied), "--model", "das2_on_demand",
+                              "--duration", "0.05", "--no-rt", "--no-mlock"], capture_output=True, text=True, timeout=60)
+        assert bad.returncode == 2 and expect in bad.stderr, bad.stderr
 
     # A new process finds it in the cache: nothing is generated, compiled or rewritten.
     stamps = {p: p.stat().st_mtime_ns for p in libs[0].parent.iterdir()}

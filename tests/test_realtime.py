@@ -898,3 +898,25 @@ def test_docs_list_every_row_of_the_packet_table():
         row = next((line for line in table.splitlines() if line.startswith(f"| `{r['name']}` |")), None)
         assert row is not None, f"docs/realtime.md lacks the row {r['name']}"
         assert f"| {r['unit']} |" in row, (r["name"], r["unit"], row)
+
+
+def test_runner_max_activation_overlapping_names_most_specific_wins_in_either_order():
+    """--max-activation by names that overlap (a group and one of its muscles) follows the engine's one rule
+    as Arm.max_activation does: the muscle's value wins over the group's, whatever the order."""
+    infra, supra = _cuff()
+    for cap in ({"rotator_cuff": 0.3, "infra": 0.05}, {"infra": 0.05, "rotator_cuff": 0.3}):
+        with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, send_excitation=True,
+                                max_activation=cap) as s, \
+                rt.UdpClient(s.port, mapping="groups") as c:
+            st = None
+            t_end = time.monotonic() + 3
+            while time.monotonic() < t_end:
+                c.send({"rotator_cuff": 1.0})
+                got = c.latest_state(timeout=0.1)
+                if got is not None and got.excitation is not None and got.excitation[supra[0]] > 0:
+                    st = got
+                    break
+            s.stop()
+        assert st is not None
+        np.testing.assert_array_equal(st.excitation[infra], 0.05)
+        np.testing.assert_array_equal(st.excitation[supra], 0.3)

@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
     cfg.lock_memory = !no_mlock;
     if (cfg.require_rt && !cfg.realtime) throw std::invalid_argument("--require-rt and --no-rt contradict each other");
     if (!key_file.empty()) cfg.key = armrt::rt::read_key_file(key_file);
-    for (const auto& lib : model_libraries) armrt::load_model_library(lib);
+    for (const auto& lib : model_libraries) armrt::rt::load_checked_model_library(lib);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help
     std::fprintf(stderr, "armrt-rt: %s (armrt-rt --help)\n", e.what());

@@ -7,11 +7,44 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 
+#include <openssl/evp.h>
+
 #include "armrt/arm.h"
+#include "armrt/registry.h"
 
 namespace armrt::rt {
+
+void load_checked_model_library(const std::string& path) {
+  const std::string checksum_path = path + ".sha256";
+  std::ifstream checksum(checksum_path);
+  std::string expected;
+  if (!(checksum >> expected) || expected.size() != 64)
+    throw std::invalid_argument("--model-library " + path + ": no checksum " + checksum_path +
+                                " (built by an older armrt, or its build was interrupted): rebuild it with "
+                                "`armrt model build`");
+  std::ifstream lib(path, std::ios::binary);
+  if (!lib) throw std::invalid_argument("--model-library " + path + ": cannot read it");
+  const std::string bytes((std::istreambuf_iterator<char>(lib)), std::istreambuf_iterator<char>());
+  unsigned char digest[EVP_MAX_MD_SIZE];
+  unsigned int length = 0;
+  if (!EVP_Digest(bytes.data(), bytes.size(), digest, &length, EVP_sha256(), nullptr))
+    throw std::runtime_error("--model-library " + path + ": SHA-256 failed");
+  static const char* hex = "0123456789abcdef";
+  std::string actual;
+  for (unsigned int k = 0; k < length; ++k) {
+    actual += hex[digest[k] >> 4];
+    actual += hex[digest[k] & 15];
+  }
+  if (actual != expected)
+    throw std::invalid_argument("--model-library " + path + " does not match its checksum (sha256 " +
+                                actual.substr(0, 12) + "..., built as " + expected.substr(0, 12) +
+                                "...): damaged; rebuild it with `armrt model build`");
+  load_model_library(path);
+}
 
 std::string fmt(double v) {
   char b[32];

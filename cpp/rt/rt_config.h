@@ -59,6 +59,12 @@ Schedule check_config(RtConfig& cfg);
 // "NAME=VALUE" items of --max-activation -> (name, value) pairs, VALUE a number in [0, 1].
 std::vector<std::pair<std::string, double>> parse_max_activation(const std::vector<std::string>& items);
 
+// Loads a model library given with --model-library (registry.h load_model_library) after checking it against the
+// SHA-256 written beside it when `armrt model build` made it (PATH.sha256: "HEX  NAME", armrt/model_build.py): a
+// truncated or damaged library would kill the runner inside dlopen with SIGBUS or SIGSEGV and no message.
+// Throws std::invalid_argument naming the file when the checksum is missing, unreadable or does not match.
+void load_checked_model_library(const std::string& path);
+
 std::string fmt(double v);  // "%g"
 
 }  // namespace armrt::rt

@@ -44,18 +44,22 @@ void RtLoop::make_simulator(const ModelDef& def, const Schedule& sched) {
   }
   sim_->data.excitation.fill(0.0);
   // max_activation lives in the model: forward() caps every excitation at it, whatever its source.
-  for (const auto& [name, v] : parse_max_activation(cfg_.max_activation)) {
-    std::vector<int> ix;
-    if (!find_elements(def, name, ix)) throw std::invalid_argument("--max-activation: " + unknown_names_message(def, {name}));
-    for (int i : ix) sim_->data.settings.max_activation[i] = v;
+  // Overlapping names: the engine's one rule (names.h), as Arm.max_activation takes a dict.
+  if (!cfg_.max_activation.empty()) {
+    std::vector<double> cap;
+    try {
+      cap = values_from_names(def, parse_max_activation(cfg_.max_activation), sim_->data.settings.max_activation.data());
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--max-activation: ") + e.what());
+    }
+    std::copy(cap.begin(), cap.end(), sim_->data.settings.max_activation.begin());
+    sim_->apply_settings();
   }
-  if (!cfg_.max_activation.empty()) sim_->apply_settings();
 }
 
 void RtLoop::apply_command(const double* u) {
   // Held (and streamed with --excitations) as the dynamics use it: capped at max_activation.
-  for (int i = 0; i < sim_->model.num_elements; ++i)
-    sim_->data.excitation[i] = capped_excitation(u[i], sim_->data.muscles.max_activation[i]);
+  data_set_excitation(sim_->model, sim_->data, u);
 }
 
 StateValues RtLoop::state_values(double& lag, double& overruns) {

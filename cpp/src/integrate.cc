@@ -19,44 +19,41 @@ const char* state_name(const Model& m, int index, char* buf, int buflen) {
   return buf;
 }
 
-bool check_state(const Model& m, Data& d) {
+DomainCheck check_domain(const Model& m, const Data& d, const double* x) {
+  DomainCheck c;
   const int ns = state_size(m);
   // Every step passes: one vectorised test of the whole state first, the search for the culprit only on
   // failure (both read the CE-length bounds from MuscleArrays).
   int nonfinite = 0;
 #pragma omp simd reduction(| : nonfinite)
-  for (int k = 0; k < ns; ++k) nonfinite |= !std::isfinite(d.x[k]);
+  for (int k = 0; k < ns; ++k) nonfinite |= !std::isfinite(x[k]);
   for (int k = 0; nonfinite && k < ns; ++k) {
-    if (!std::isfinite(d.x[k])) {
-      d.status = Status::kNonFinite;
-      d.bad_index = k;
-      d.bad_time = d.time;
-      return false;
+    if (!std::isfinite(x[k])) {
+      c.status = Status::kNonFinite;
+      c.bad_index = k;
+      return c;
     }
   }
   // A scapula driven into the thorax is ejected fast: name the cause before the speed it caused.
   if (const GirdleDef* g = m.def->girdle) {
     double p[(kMaxContactPoints + 2) * 3], J[(kMaxContactPoints + 2) * 3 * kMaxDofs];
-    g->points(&d.x[q_offset(m)], p, J);
+    g->points(&x[q_offset(m)], p, J);
     for (int k = 0; k < g->num_contact_points; ++k) {
       const double dist = thorax_signed_distance(g->thorax, p + 3 * k);
       if (dist < -kMaxContactPenetration) {
-        d.status = Status::kOutOfDomain;
-        d.bad_index = -1;
-        d.bad_contact = k;
-        d.bad_contact_distance = dist;
-        d.bad_time = d.time;
-        return false;
+        c.status = Status::kOutOfDomain;
+        c.bad_contact = k;
+        c.bad_contact_distance = dist;
+        return c;
       }
     }
   }
   const int iqd = qd_offset(m);
   for (int j = 0; j < m.num_dofs; ++j) {
-    if (std::fabs(d.x[iqd + j]) > d.settings.max_joint_speed) {
-      d.status = Status::kTooFast;
-      d.bad_index = iqd + j;
-      d.bad_time = d.time;
-      return false;
+    if (std::fabs(x[iqd + j]) > d.settings.max_joint_speed) {
+      c.status = Status::kTooFast;
+      c.bad_index = iqd + j;
+      return c;
     }
   }
   // The physical domain (model.h): an integrator that cannot take the step shows here long before the
@@ -67,28 +64,37 @@ bool check_state(const Model& m, Data& d) {
   int outside = 0;
 #pragma omp simd reduction(| : outside)
   for (int i = 0; i < n; ++i) {
-    const double lce = d.x[il + i], a = d.x[ia + i];
+    const double lce = x[il + i], a = x[ia + i];
     outside |= (lce < mc.min_lce[i]) | (lce > mc.max_lce[i]) | (a < -kActivationTolerance) |
                (a > 1.0 + kActivationTolerance);
   }
   int bad = -1;
   for (int i = n - 1; outside && i >= 0; --i) {
-    const double lce = d.x[il + i], a = d.x[ia + i];
+    const double lce = x[il + i], a = x[ia + i];
     if (lce < mc.min_lce[i] || lce > mc.max_lce[i]) bad = il + i;
     if (a < -kActivationTolerance || a > 1.0 + kActivationTolerance) bad = ia + i;
   }
   for (int j = m.num_dofs - 1; j >= 0; --j) {
     const DofParams& dof = m.def->dofs[j];
-    if (d.x[iq + j] < dof.range_min - kJointRangeMargin || d.x[iq + j] > dof.range_max + kJointRangeMargin)
+    if (x[iq + j] < dof.range_min - kJointRangeMargin || x[iq + j] > dof.range_max + kJointRangeMargin)
       bad = iq + j;
   }
   if (bad >= 0) {
-    d.status = Status::kOutOfDomain;
-    d.bad_index = bad;
-    d.bad_time = d.time;
-    return false;
+    c.status = Status::kOutOfDomain;
+    c.bad_index = bad;
   }
-  return true;
+  return c;
+}
+
+bool check_state(const Model& m, Data& d) {
+  const DomainCheck c = check_domain(m, d, d.x.data());
+  if (c.status == Status::kOk) return true;
+  d.status = c.status;
+  d.bad_index = c.bad_index;
+  d.bad_contact = c.bad_contact;
+  d.bad_contact_distance = c.bad_contact_distance;
+  d.bad_time = d.time;
+  return false;
 }
 
 bool integrate(const Model& m, Data& d, Stepper& s, double dt, bool record) {

@@ -67,6 +67,10 @@ ElementConstants data_element(const Model& m, const Data& d, int i) {
   return element_constants(m.def->elements[i], d.settings.strength_scale[i], d.settings.max_activation[i]);
 }
 
+void data_set_excitation(const Model& m, Data& d, const double* u) {
+  for (int i = 0; i < m.num_elements; ++i) d.excitation[i] = capped_excitation(u[i], d.muscles.max_activation[i]);
+}
+
 void data_apply_settings(const Model& m, Data& d) {
   const ArmSettings& st = d.settings;
   for (int i = 0; i < m.num_elements; ++i) {
@@ -95,6 +99,7 @@ void data_apply_settings(const Model& m, Data& d) {
     a.max_lce[i] = e.max_lce;
   }
   find_rest_fibre_rate(m, d);
+  data_set_excitation(m, d, d.excitation.data());  // the held excitation stays what the dynamics use
   d.settings_applied = true;
   ++d.settings_version;
 }

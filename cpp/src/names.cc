@@ -163,8 +163,8 @@ void combine_named_values(const NamedElements& m, const double* values, int num_
   }
 }
 
-std::vector<double> excitations_from_names(const ModelDef& def,
-                                           const std::vector<std::pair<std::string, double>>& items) {
+std::vector<double> values_from_names(const ModelDef& def, const std::vector<std::pair<std::string, double>>& items,
+                                      const double* unnamed) {
   std::vector<std::string> names;
   std::vector<double> values;
   for (const auto& [name, v] : items) {
@@ -175,7 +175,15 @@ std::vector<double> excitations_from_names(const ModelDef& def,
   std::vector<double> out(def.num_elements);
   std::vector<NameLevel> level(def.num_elements);
   combine_named_values(m, values.data(), def.num_elements, out.data(), level.data());
+  if (unnamed)
+    for (int i = 0; i < def.num_elements; ++i)
+      if (level[i] == NameLevel::kUnnamed) out[i] = unnamed[i];
   return out;
+}
+
+std::vector<double> excitations_from_names(const ModelDef& def,
+                                           const std::vector<std::pair<std::string, double>>& items) {
+  return values_from_names(def, items, nullptr);
 }
 
 int find_dof(const ModelDef& def, const std::string& name) {

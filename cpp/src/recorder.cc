@@ -57,7 +57,7 @@ long simulate_recorded(Arm& s, const double* u, bool held, long n_steps, long re
   bool stopped = false;
   for (long k = 0; k < n_steps; ++k) {
     const double* uk = u + (held ? 0 : k) * n;
-    std::copy(uk, uk + n, s.data.excitation.begin());
+    data_set_excitation(s.model, s.data, uk);  // recorded as the dynamics use it
     const bool rec = k % record_every == 0;
     const double t0 = s.data.time;
     if (rec) std::copy(s.data.x.begin(), s.data.x.begin() + x0.size(), x0.begin());

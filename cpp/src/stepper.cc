@@ -120,15 +120,33 @@ void evaluate_outputs(const Model& m, Data& d, Stepper& s) { forward(m, d, d.x.d
 namespace {
 
 std::string domain_error_message(const Model& model, const Data& data, const Stepper& s) {
+  DomainCheck c;
+  c.status = data.status;
+  c.bad_index = data.bad_index;
+  c.bad_contact = data.bad_contact;
+  c.bad_contact_distance = data.bad_contact_distance;
+  char buf[384];
+  std::snprintf(buf, sizeof buf,
+                "simulation left the physical domain: %s at t = %.6f s (a step too large for integrator '%s', "
+                "or inputs beyond the model)",
+                domain_problem(model, data, data.x.data(), c).c_str(), data.bad_time, integrator_name(s.integrator));
+  return buf;
+}
+
+}  // namespace
+
+std::string domain_problem(const Model& model, const Data& data, const double* x, const DomainCheck& c) {
   char name[96];
   char what[192];
-  const int k = data.bad_index, n = model.num_elements, ia = act_offset(model), il = lce_offset(model);
-  if (data.bad_contact >= 0) {
+  const int k = c.bad_index, n = model.num_elements, ia = act_offset(model), il = lce_offset(model);
+  if (c.bad_contact >= 0) {
     const GirdleDef& g = *model.def->girdle;
     std::snprintf(what, sizeof what, "girdle contact point %s is %.1f mm inside the thorax (more than %.0f mm)",
-                  g.contact_point_names[data.bad_contact], -1e3 * data.bad_contact_distance, 1e3 * kMaxContactPenetration);
+                  g.contact_point_names[c.bad_contact], -1e3 * c.bad_contact_distance, 1e3 * kMaxContactPenetration);
+  } else if (k < 0) {
+    return "no state";
   } else {
-    const double value = data.x[k];
+    const double value = x[k];
     state_name(model, k, name, sizeof name);
     if (k < qd_offset(model)) {
       const DofParams& dof = model.def->dofs[k];
@@ -144,15 +162,8 @@ std::string domain_error_message(const Model& model, const Data& data, const Ste
       std::snprintf(what, sizeof what, "%s = %.4g", name, value);
     }
   }
-  char buf[384];
-  std::snprintf(buf, sizeof buf,
-                "simulation left the physical domain: %s at t = %.6f s (a step too large for integrator '%s', "
-                "or inputs beyond the model)",
-                what, data.bad_time, integrator_name(s.integrator));
-  return buf;
+  return what;
 }
-
-}  // namespace
 
 std::string step_error_message(const Model& model, const Data& data, const Stepper& s) {
   char name[96];

@@ -12,11 +12,12 @@ from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
 from .model import Model, models
 from .model_build import CompilerNotFoundError, ModelBuildError, ModelFileError
 from .result import Result
+from .snapshot import StatePart
 from .stepper import Stepper, forward, step
 from .sweeps import sweep
 
 __all__ = ["Arm", "Stepper", "step", "forward", "Result", "SimulationError", "StepSizeWarning", "ConcurrentUseError", "deg", "rad", "ArmBatch",
-           "sweep", "Model", "Data", "State", "models", "ModelFileError", "ModelBuildError", "CompilerNotFoundError",
+           "sweep", "Model", "Data", "State", "StatePart", "models", "ModelFileError", "ModelBuildError", "CompilerNotFoundError",
            "RealtimeSession", "UdpClient"]
 try:  # the packet layout comes from armrt._rt: without that extension the rest of armrt still works
     from .realtime import RealtimeSession, UdpClient

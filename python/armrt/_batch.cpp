@@ -10,6 +10,7 @@
 
 #include "armrt/batch.h"
 #include "armrt/layouts.h"
+#include "armrt/snapshot.h"
 
 namespace py = pybind11;
 using namespace armrt;
@@ -62,8 +63,7 @@ std::vector<int> arm_indices(Batch& b, const IndexArray& idx) {
 PYBIND11_MODULE(_batch, mod) {
   mod.doc() = "armrt batch bindings (use armrt.ArmBatch)";
   mod.def("default_threads", &batch_default_threads);
-  // This module links its own copy of the engine, so its own model registry: armrt.model registers a
-  // model library built on demand here too (the same dlopen handle, the same ModelDef).
+  // libarmrt holds the one model registry: a model armrt.model loaded is found here too.
 
   py::class_<Batch>(mod, "Batch")
       .def(py::init([](const std::string& model, int n, const std::string& integrator, double dt, int substeps) {
@@ -103,6 +103,42 @@ PYBIND11_MODULE(_batch, mod) {
 #undef ARMRT_X
         throw py::key_error("no output '" + name + "' (layouts.h ARMRT_OUTPUTS)");
       }, py::arg("name"))
+      // Every arm's held excitation from an (n, elements) array, stored as the dynamics use it (capped at the
+      // arm's max_activation: data_set_excitation, the engine's one cap rule).
+      .def("set_excitation", [](Batch& b, const Array& u) {
+        const int ne = b.arm(0).model.num_elements;
+        if (u.ndim() != 2 || u.shape(0) != b.size() || u.shape(1) != ne)
+          throw py::value_error("excitation: expected shape (" + std::to_string(b.size()) + ", " + std::to_string(ne) + ")");
+        for (int i = 0; i < b.size(); ++i) data_set_excitation(b.arm(i).model, b.arm(i).data, u.data() + i * ne);
+      }, py::arg("u"))
+      // Snapshots by signature (snapshot.h), one row per arm.
+      .def("snapshot_size", [](Batch& b, unsigned signature) { return snapshot_size(*b.arm(0).model.def, signature); },
+           py::arg("signature"))
+      .def("get_snapshot", [](Batch& b, unsigned signature) {
+        const int n = snapshot_size(*b.arm(0).model.def, signature);
+        Array out({static_cast<py::ssize_t>(b.size()), static_cast<py::ssize_t>(n)});
+        for (int i = 0; i < b.size(); ++i)
+          get_snapshot(b.arm(i).model, b.arm(i).data, b.arm(i).stepper, signature, out.mutable_data() + i * n);
+        return out;
+      }, py::arg("signature"))
+      // Sets the selected arms (one row each); every row is checked (snapshot_error) before any is written:
+      // ValueError naming the arm's index and the value.
+      .def("set_snapshot", [](Batch& b, unsigned signature, const IndexArray& arms, const Array& x) {
+        const std::vector<int> idx = arm_indices(b, arms);
+        const auto m = static_cast<py::ssize_t>(idx.size());
+        Array keep;
+        const double* p = rows(x, keep, m, snapshot_size(*b.arm(0).model.def, signature), "state vector");
+        const int n = snapshot_size(*b.arm(0).model.def, signature);
+        for (py::ssize_t k = 0; k < m; ++k) {
+          const Arm& a = b.arm(idx[k]);
+          const std::string error = snapshot_error(a.model, a.data, signature, p + k * n);
+          if (!error.empty()) throw py::value_error("state vector of arm " + std::to_string(idx[k]) + ": " + error);
+        }
+        for (py::ssize_t k = 0; k < m; ++k) {
+          Arm& a = b.arm(idx[k]);
+          set_snapshot(a.model, a.data, a.stepper, signature, p + k * n);
+        }
+      }, py::arg("signature"), py::arg("arms"), py::arg("x"))
       // Errors.
       .def("status", [](Batch& b) {
         py::array_t<int> s({static_cast<py::ssize_t>(b.size())});

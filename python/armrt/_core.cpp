@@ -15,6 +15,7 @@
 #include "armrt/names.h"
 #include "armrt/recorder.h"
 #include "armrt/arm.h"
+#include "armrt/snapshot.h"
 
 namespace py = pybind11;
 using namespace armrt;
@@ -49,9 +50,9 @@ py::object output_value(const double* p, SizeRule size, const ModelDef& def) {
 }
 
 // A table's rows as (name, size rule, unit, stage, girdle_only, description) tuples; the size rule as
-// "one", "two", "three", "dofs", "elements" or "contact_points".
+// "one", "two", "three", "dofs", "elements", "contact_points" or "path_history".
 py::list table_rows(const LayoutRow* rows, int n) {
-  static const char* rule[] = {"one", "two", "three", "dofs", "elements", "contact_points"};
+  static const char* rule[] = {"one", "two", "three", "dofs", "elements", "contact_points", "path_history"};
   py::list out;
   for (int k = 0; k < n; ++k)
     out.append(py::make_tuple(rows[k].name, rule[static_cast<int>(rows[k].size)], rows[k].unit, rows[k].stage,
@@ -193,9 +194,14 @@ PYBIND11_MODULE(_core, mod) {
     const LayoutRow* rows = output_rows(&n);
     return table_rows(rows, n);
   }, "forward()'s outputs in stage order: (name, size rule, unit, stage, girdle_only, description)");
-  // Why these counts are not a ROS2 history a run leaves ("" if they are): checked before a State is written.
-  mod.def("ros2_history_error", &path_history_error, py::arg("num_anchors"), py::arg("anchor_spacing"),
-          py::arg("steps_since_anchor"));
+  mod.def("snapshot_rows", []() { return table_rows(snapshot_rows(), kNumSnapshotParts); },
+          "The snapshot's parts in order, part k being signature bit 1 << k: (name, size rule, unit, stage, "
+          "girdle_only, description)");
+  mod.attr("SNAPSHOT_TIME") = kSnapshotTime;
+  mod.attr("SNAPSHOT_PHYSICS") = kSnapshotPhysics;
+  mod.attr("SNAPSHOT_INPUTS") = kSnapshotInputs;
+  mod.attr("SNAPSHOT_INTEGRATOR") = kSnapshotIntegrator;
+  mod.attr("SNAPSHOT_FULL") = kSnapshotFull;
   // The name service (names.h): the Python API's lookups and messages come from here.
   mod.def("find_elements", [](const std::string& model, const std::string& name) {
         std::vector<int> ix;
@@ -220,6 +226,16 @@ PYBIND11_MODULE(_core, mod) {
       }, py::arg("model"), py::arg("items"),
       "[(name, value)] -> one value per element: the most specific name wins (element over muscle over group, in "
       "any order), equal specificity takes the largest; 0 where no name applies; KeyError naming unknown names");
+  mod.def("values_from_names", [](const std::string& model, const std::vector<std::pair<std::string, double>>& items,
+                                  const Array& unnamed) {
+        const ModelDef& def = require_model(model);
+        try {
+          return values_from_names(def, items, checked(unnamed, def.num_elements, "unnamed"));
+        } catch (const std::invalid_argument& e) {
+          throw py::key_error(e.what());
+        }
+      }, py::arg("model"), py::arg("items"), py::arg("unnamed"),
+      "excitations_from_names' rule for any per-element setting: elements no name covers keep unnamed (n,)");
   mod.def("find_dof", [](const std::string& model, const std::string& name) {
         const ModelDef& def = require_model(model);
         const int j = find_dof(def, name);
@@ -298,34 +314,31 @@ PYBIND11_MODULE(_core, mod) {
         return out;
       }, py::arg("u"))
       .def("clear_error", [](Arm& s) { s.data.status = Status::kOk; s.data.bad_index = -1; s.data.bad_contact = -1; })
-      // ROS2's memory (data.h PathHistory): (anchors (k, ndof) rad, anchor spacing, steps since the newest
-      // anchor, h) if the state is where the last step ended, else None; and its restoration for a state
-      // restored from a snapshot (k = 0 clears it).
-      .def("ros2_history", [](const Arm& s) -> py::object {
-        const PathHistory& ph = s.stepper.ros2.path_history;
-        const double* x = s.data.x.data();
-        if (!path_history_continues(s.model, ph, x + q_offset(s.model), x + qd_offset(s.model), ph.h) ||
-            ph.num_anchors == 0)
-          return py::none();
-        const int nq = s.model.num_dofs;
-        Array q({static_cast<py::ssize_t>(ph.num_anchors), static_cast<py::ssize_t>(nq)});
-        double* out = q.mutable_data();
-        if (ph.num_anchors == 2) std::copy(ph.anchor_q_old.begin(), ph.anchor_q_old.begin() + nq, out);
-        std::copy(ph.anchor_q_new.begin(), ph.anchor_q_new.begin() + nq, out + (ph.num_anchors - 1) * nq);
-        return py::make_tuple(q, ph.anchor_spacing, ph.steps_since_anchor, ph.h);
-      })
-      .def("restore_ros2_history", [](Arm& s, const Array& anchors, int anchor_spacing, int steps_since_anchor,
-                                      double h) {
-        const int nq = s.model.num_dofs;
-        if (anchors.ndim() != 2 || anchors.shape(1) != nq || anchors.shape(0) > 2)
-          throw std::invalid_argument("ROS2 history: anchors must have shape (0, 1 or 2, " + std::to_string(nq) + ")");
-        const int k = static_cast<int>(anchors.shape(0));
-        for (py::ssize_t i = 0; i < anchors.size(); ++i)
-          if (!std::isfinite(anchors.data()[i])) throw std::invalid_argument("ROS2 history: anchors contain NaN or inf");
-        const double* x = s.data.x.data();
-        path_history_restore(s.model, s.stepper.ros2.path_history, x + q_offset(s.model), x + qd_offset(s.model),
-                             anchors.data(), k, anchor_spacing, steps_since_anchor, h);
-      }, py::arg("anchors"), py::arg("anchor_spacing"), py::arg("steps_since_anchor"), py::arg("h"))
+      // The held excitation (n,), stored as the dynamics use it (data_set_excitation: the one cap rule).
+      .def("set_excitation", [](Arm& s, const Array& u) {
+        data_set_excitation(s.model, s.data, checked(u, s.model.num_elements, "excitation"));
+      }, py::arg("u"))
+      // Snapshots by signature (snapshot.h): get_snapshot -> (snapshot_size,) array; snapshot_error -> why an
+      // array is not a snapshot this arm may be set to ("" if it is); set_snapshot writes one, refusing what
+      // snapshot_error refuses (ValueError) unless validate is False (an arm's copy of a diverged state).
+      .def("snapshot_size", [](const Arm& s, unsigned signature) { return snapshot_size(*s.model.def, signature); },
+           py::arg("signature"))
+      .def("get_snapshot", [](const Arm& s, unsigned signature) {
+        Array out({snapshot_size(*s.model.def, signature)});
+        get_snapshot(s.model, s.data, s.stepper, signature, out.mutable_data());
+        return out;
+      }, py::arg("signature"))
+      .def("snapshot_error", [](const Arm& s, unsigned signature, const Array& in) {
+        return snapshot_error(s.model, s.data, signature, checked(in, snapshot_size(*s.model.def, signature), "snapshot"));
+      }, py::arg("signature"), py::arg("snapshot"))
+      .def("set_snapshot", [](Arm& s, unsigned signature, const Array& in, bool validate) {
+        const double* p = checked(in, snapshot_size(*s.model.def, signature), "snapshot");
+        if (validate) {
+          const std::string error = snapshot_error(s.model, s.data, signature, p);
+          if (!error.empty()) throw py::value_error("snapshot: " + error);
+        }
+        set_snapshot(s.model, s.data, s.stepper, signature, p);
+      }, py::arg("signature"), py::arg("snapshot"), py::arg("validate") = true)
       .def("evaluate_outputs", &Arm::evaluate_outputs, "outputs at the current state (computed only if stale)")
       .def("outputs_current", [](const Arm& s) { return outputs_current(s.model, s.data); })
       // One ARMRT_OUTPUTS row at the current state (a float or a copy); KeyError for an unknown name.

@@ -16,6 +16,7 @@ import numpy as np
 from . import _core
 from .checks import MAX_COUNT, RANGE_MARGIN, count, deg, joint_range, known_model, rad, real_array, real_scalar
 from .data import Data
+from .snapshot import StatePart
 from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
 from .errors import simulation_error as _simulation_error
 from .integrators import DEFAULT_INTEGRATOR, DEFAULT_MAX_STEP, INTEGRATORS, MAX_DT, MAX_SUBSTEPS, control_step
@@ -124,12 +125,9 @@ class Arm:
             if unknown:
                 raise KeyError(self._unknown_names_message(unknown))
             items = [(name, self._scalar(v, f"{what}[{name!r}]")) for name, v in values.items()]
-            if what == "excitation":
-                # Overlapping names: the engine's one rule (the most specific name wins, in any order).
-                out = np.asarray(_core.excitations_from_names(self.model_name, items))
-            else:
-                for name, v in items:
-                    out[self.indices(name)] = v
+            # Overlapping names, for every setting given by names: the engine's one rule (names.h: the most
+            # specific name wins, in any order; equal specificity takes the largest).
+            out = np.asarray(_core.values_from_names(self.model_name, items, out))
         else:
             arr = real_array(values, what)
             if arr.ndim == 0:
@@ -166,7 +164,7 @@ class Arm:
         what the dynamics use); NaN or infinite values raise ValueError, non-numbers TypeError."""
         u = self._per_element(u, "excitation", 0.0, 1.0, clip=True)
         with self._exclusive():
-            self._sim.excitation[:] = self._sim.cap_excitation(u)
+            self._sim.set_excitation(u)  # stored as the dynamics use it (the engine's data_set_excitation)
 
     @property
     def excitation(self) -> np.ndarray:
@@ -209,9 +207,8 @@ class Arm:
     def max_activation(self, values) -> None:
         m = self._per_element(values, "max_activation", 0.0, 1.0, clip=False)
         with self._exclusive():
+            # The engine caps the held excitation at the new bound (data_apply_settings).
             self._sim.set_strength_and_max_activation(self._sim.get_strength(), m)
-            # The held excitation is what the dynamics use: keep it under the new bound.
-            self._sim.excitation[:] = np.minimum(self._sim.excitation, m)
 
     def apply_profile(self, path_or_name, reference=None):
         """Set strength and max_activation element by element from a participant file, by element
@@ -229,7 +226,6 @@ class Arm:
         s, m, report = profile_values(self, path_or_name, reference)
         with self._exclusive():
             self._sim.set_strength_and_max_activation(s, m)
-            self._sim.excitation[:] = np.minimum(self._sim.excitation, m)
         return report
 
     # ------------------------------------------------------------------ state
@@ -357,16 +353,33 @@ class Arm:
         max_activation, gravity and the integrator are the arm's own, not part of the State."""
         with self._exclusive():
             self.data.set_state(state)
-            self._sim.excitation[:] = self._sim.cap_excitation(self._sim.excitation)
 
-    def _snapshot(self) -> tuple[dict, tuple]:
-        """(settings, raw state): what a copy or an unpickled arm is rebuilt from (call under _exclusive)."""
+    def get_state_vector(self, parts=StatePart.FULL) -> np.ndarray:
+        """The parts of the state selected by `parts` (armrt.StatePart, OR-able: TIME, Q, QDOT, LCE,
+        ACTIVATION, EXCITATION, HAND_FORCE, HAND_MOMENT, ROS2_PATH_HISTORY; groups PHYSICS, INPUTS, INTEGRATOR,
+        FULL; or a part name) as one flat array in the engine's order, as MuJoCo's mj_getState; e.g. PHYSICS
+        is [q | qdot | lce | activation]. state_vector_slices(parts) says where each part lies."""
+        with self._exclusive():
+            return self.data.get_state_vector(parts)
+
+    def set_state_vector(self, x, parts=StatePart.FULL) -> None:
+        """Sets the parts selected by `parts` from a flat array laid out as get_state_vector(parts); the others
+        are kept. Checked in the engine as set_state checks a State (ValueError naming the value; nothing
+        written). Setting a physics part without ROS2_PATH_HISTORY makes the next step evaluate the paths
+        afresh; CVODE restarts."""
+        with self._exclusive():
+            self.data.set_state_vector(x, parts)
+
+    def state_vector_slices(self, parts=StatePart.FULL) -> dict:
+        """{part name: slice} of get_state_vector(parts)'s array."""
+        return self.data.state_vector_slices(parts)
+
+    def _snapshot(self) -> tuple[dict, np.ndarray]:
+        """(settings, full snapshot): what a copy or an unpickled arm is rebuilt from (call under _exclusive)."""
         settings = dict(integrator=self.integrator, dt=self.dt, substeps=self.substeps,
                         strength=self._sim.get_strength(), max_activation=self._sim.get_max_activation(),
                         gravity=np.array(self._sim.gravity), max_joint_speed=self._sim.max_joint_speed)
-        raw = (np.array(self._sim.state), self._sim.excitation.copy(), self._sim.hand_force.copy(),
-               self._sim.hand_moment.copy(), self._sim.time, self._sim.ros2_history())
-        return settings, raw
+        return settings, self._sim.get_snapshot(_core.SNAPSHOT_FULL)
 
     @classmethod
     def _rebuild(cls, model, settings: dict, raw: tuple) -> "Arm":
@@ -377,7 +390,9 @@ class Arm:
         new._sim.set_strength_and_max_activation(settings["strength"], settings["max_activation"])
         new._sim.gravity = np.asarray(settings["gravity"], dtype=float)
         new._sim.max_joint_speed = settings["max_joint_speed"]
-        new.data._load(*raw)
+        if isinstance(raw, tuple):  # pickled by armrt before 2026-12-02: (x, excitation, force, moment, time, memory)
+            raw = _legacy_snapshot(new, raw)
+        new.data._load_snapshot(raw)
         return new
 
     def __deepcopy__(self, memo):
@@ -522,8 +537,6 @@ class Arm:
         chunk = record_every * max(1, -(-SIMULATE_BLOCK_STEPS // record_every))
         with self._exclusive():
             t0 = self.time
-            if n_steps == 0:
-                self._sim.excitation[:] = self._sim.cap_excitation(self._sim.excitation)
             row = 0
             with progress_bar(n_steps * self.dt, "simulate", unit="s", enabled=progress,
                               delay=0.0 if progress else 1.0) as pbar:
@@ -531,7 +544,6 @@ class Arm:
                     k1 = min(n_steps, k0 + chunk)
                     u = np.ascontiguousarray(block(k0, k1), dtype=float) if n_steps else \
                         self._sim.excitation[None, :].copy()
-                    u = self._sim.cap_excitation(u)  # what the dynamics use (the engine's one cap rule)
                     try:
                         raw = self._sim.simulate(u, k1 - k0, record_every)
                     except RuntimeError as exc:
@@ -645,7 +657,29 @@ class Arm:
         return self.model.gh_rim(force)
 
 
-def _unpickle_arm(cls, model, settings: dict, raw: tuple, extras: dict) -> Arm:
+def _legacy_snapshot(arm: Arm, raw: tuple) -> np.ndarray:
+    """The full snapshot of an Arm pickled before snapshots by signature: (state vector, excitation, hand force,
+    hand moment, time, ROS2 memory (anchors, spacing, steps since, h) or None, or (previous_q, h) before
+    2026-11-30, which is dropped)."""
+    x, excitation, hand_force, hand_moment, time, history = raw
+    where = arm.state_vector_slices(StatePart.FULL)
+    out = np.zeros(max(sl.stop for sl in where.values()))
+    out[where["time"]] = time
+    for name, values in (("excitation", excitation), ("hand_force", hand_force), ("hand_moment", hand_moment)):
+        out[where[name]] = values
+    layout = arm.model.state_layout
+    for name, (offset, n) in layout.items():
+        out[where[name]] = np.asarray(x)[offset:offset + n]
+    if history is not None and len(history) == 4:
+        anchors, spacing, since, h = history
+        anchors = np.asarray(anchors, dtype=float)
+        hist = out[where["ros2_path_history"]]
+        hist[:4] = (h, anchors.shape[0], spacing, since)
+        hist[4:4 + anchors.size] = anchors.ravel()
+    return out
+
+
+def _unpickle_arm(cls, model, settings: dict, raw, extras: dict) -> Arm:
     arm = cls._rebuild(model, settings, raw)
     arm.__dict__.update(extras)
     return arm

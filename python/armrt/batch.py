@@ -19,6 +19,7 @@ os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
 from . import _batch, _core  # noqa: E402
 from .arm import Arm, SimulationError  # noqa: E402
+from .snapshot import StatePart, part_slices, signature  # noqa: E402
 
 # Outputs of the girdle stage, for models whose scapula moves (das3): as Arm.outputs() names them.
 GIRDLE_OUTPUTS = ("girdle_torque", "contact_distance", "contact_force", "conoid_length", "conoid_tension")
@@ -159,23 +160,21 @@ class ArmBatch:
         """(n, elements) from an (n, elements) array, or anything Arm accepts for one arm (an array
         of elements, a scalar, a {name: value} dict) applied to every arm."""
         ne = self.n_elements
-        if isinstance(values, Mapping) and what == "excitation":
-            # Overlapping names: the engine's one rule (the most specific name wins, in any order), as Arm.
+        if isinstance(values, Mapping):
+            # Overlapping names, for every setting given by names: the engine's one rule (names.h: the most
+            # specific name wins, in any order; equal specificity takes the largest), as Arm.
             items = []
             for name, v in values.items():
                 try:
                     items.append((name if isinstance(name, str) else repr(name), float(v)))
                 except (TypeError, ValueError):
                     raise ValueError(f"{what}[{name!r}] must be a number, got {v!r}") from None
-            from . import _core
-            out = np.tile(np.asarray(_core.excitations_from_names(self.model_name, items)), (self.n, 1))
-        elif isinstance(values, Mapping):
-            out = np.zeros((self.n, ne)) if current is None else current.copy()
-            for name, v in values.items():
-                try:
-                    out[:, self.indices(name)] = float(v)
-                except (TypeError, ValueError):
-                    raise ValueError(f"{what}[{name!r}] must be a number, got {v!r}") from None
+                if not np.isfinite(items[-1][1]):
+                    raise ValueError(f"{what}[{name!r}] must be finite, got {v!r}")
+            # NaN marks the elements no name covers: they keep their current value (0 for an excitation).
+            named = np.asarray(_core.values_from_names(self.model_name, items, np.full(ne, np.nan)))
+            base = np.zeros((self.n, ne)) if current is None else current
+            out = np.where(np.isnan(named)[None, :], base, named[None, :])
         else:
             arr = np.asarray(values, dtype=float)
             if arr.ndim <= 1:
@@ -202,17 +201,20 @@ class ArmBatch:
 
     def set_excitation(self, u) -> None:
         """Excitations: an (n, elements) array, or one arm's (elements,) array, scalar or {name: value}
-        dict for every arm. Values outside [0, 1] are clipped with a RuntimeWarning; NaN raises ValueError."""
+        dict for every arm (overlapping names: as Arm.set_excitation). Values outside [0, 1] are clipped with a
+        RuntimeWarning and values above an arm's max_activation capped at it (so `excitation` reads back what
+        the dynamics use); NaN raises ValueError."""
         ne = self.n_elements
         arr = None if isinstance(u, Mapping) else np.asarray(u, dtype=float)
         if arr is not None and arr.shape == (self.n, ne) and np.isfinite(arr).all() and arr.min() >= 0 and arr.max() <= 1:
-            self._excitation[...] = arr  # the common case, checked without a copy
+            self._raw.set_excitation(arr)  # the common case, checked without a copy
             return
-        self._excitation[...] = self._per_arm(u, "excitation", 0.0, 1.0, clip=True)
+        # Stored as the dynamics use it, capped at each arm's max_activation (the engine's one cap rule, as Arm).
+        self._raw.set_excitation(self._per_arm(u, "excitation", 0.0, 1.0, clip=True))
 
     @property
     def excitation(self) -> np.ndarray:
-        """(n, elements) excitations now applied (a copy)."""
+        """(n, elements) excitations now applied, as the dynamics use them (a copy)."""
         return np.array(self._excitation)
 
     def set_hand_load(self, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> None:
@@ -287,6 +289,30 @@ class ArmBatch:
         self._raw.reset(idx, q, qdot, act)
         for i in idx:
             self._errors.pop(int(i), None)
+
+    def get_state_vector(self, parts=StatePart.FULL) -> np.ndarray:
+        """(n, size) the parts of every arm's state selected by `parts` (armrt.StatePart, OR-able, or a part
+        name), one row per arm laid out as Arm.get_state_vector(parts)."""
+        return self._raw.get_snapshot(signature(parts))
+
+    def set_state_vector(self, x, parts=StatePart.FULL, arms=None) -> None:
+        """Sets the parts selected by `parts` of the arms `arms` (indices or a boolean mask; None: all) from
+        x (m, size), one row per selected arm, or (size,) for all of them; the other parts are kept. Every
+        row is checked in the engine as Arm.set_state_vector checks one before any is written (ValueError
+        naming the arm and the value). Clears the arms' errors."""
+        sig = signature(parts)
+        idx = self._arms(arms)
+        size = self._raw.snapshot_size(sig)
+        rows = self._rows(x, len(idx), size, "state vector")
+        if rows is None:
+            raise ValueError("state vector: expected an array, got None")
+        self._raw.set_snapshot(sig, idx, rows)
+        for i in idx:
+            self._errors.pop(int(i), None)
+
+    def state_vector_slices(self, parts=StatePart.FULL) -> dict:
+        """{part name: slice} of a row of get_state_vector(parts)."""
+        return part_slices(self._raw, parts)
 
     # ------------------------------------------------------------------ stepping
     def step(self, k: int = 1, outputs: bool = True, warn: bool = True) -> np.ndarray:

@@ -19,10 +19,11 @@ from dataclasses import InitVar, dataclass, fields
 import numpy as np
 
 from . import _core
-from .checks import joint_range
+from .checks import real_array
 from .errors import ConcurrentUseError
 from .integrators import DEFAULT_INTEGRATOR
 from .model import Model
+from .snapshot import StatePart, part_slices, signature
 
 
 @dataclass(frozen=True, eq=False)
@@ -116,6 +117,60 @@ class State:
         return d
 
 
+# ROS2's packed memory in a snapshot (layouts.h ARMRT_SNAPSHOT ros2_path_history): h, anchors, anchor spacing,
+# steps since the newest anchor, then two rows of anchor q.
+_HISTORY_HEADER = 4
+
+
+def _state_from_snapshot(model: Model, sim, x: np.ndarray) -> State:
+    """The engine's full snapshot x -> a State."""
+    where = part_slices(sim, StatePart.FULL)
+    values = {name: x[sl] for name, sl in where.items() if name != "ros2_path_history"}
+    history = x[where["ros2_path_history"]]
+    h, k, spacing, since = history[:_HISTORY_HEADER]
+    nd = model.n_dofs
+    anchors = history[_HISTORY_HEADER:_HISTORY_HEADER + int(k) * nd].reshape(int(k), nd) if k else None
+    values["time"] = float(values["time"][0])
+    return State(model=model.name, source_hash=model.source_hash, **values, path_anchors=anchors,
+                 path_anchor_steps=(int(spacing), int(since)), previous_step=float(h))
+
+
+def _snapshot_from_state(model: Model, sim, state: State) -> np.ndarray:
+    """A State -> the engine's full snapshot (ValueError for arrays of the wrong shape; the values are the
+    engine's to check)."""
+    where = part_slices(sim, StatePart.FULL)
+    x = np.zeros(max(sl.stop for sl in where.values()))
+    nd = model.n_dofs
+    for name, sl in where.items():
+        if name == "time":
+            x[sl] = state.time
+        elif name == "ros2_path_history":
+            anchors = state.path_anchors
+            history = np.zeros(sl.stop - sl.start)
+            history[:_HISTORY_HEADER] = (state.previous_step, 0 if anchors is None else anchors.shape[0],
+                                         *state.path_anchor_steps)
+            if anchors is not None:
+                if anchors.ndim != 2 or anchors.shape[0] not in (1, 2) or anchors.shape[1] != nd:
+                    raise ValueError(f"State.path_anchors must have shape (1, {nd}) or (2, {nd}) or be None, "
+                                     f"got {anchors.shape}")
+                history[_HISTORY_HEADER:_HISTORY_HEADER + anchors.size] = anchors.ravel()
+            x[sl] = history
+        else:
+            a = getattr(state, name)
+            if a.shape != (sl.stop - sl.start,):
+                raise ValueError(f"State.{name} must have shape ({sl.stop - sl.start},), got {a.shape}")
+            x[sl] = a
+    return x
+
+
+def _state_error(error: str) -> str:
+    """The engine's snapshot_error message in a State's words."""
+    prefix = "ros2_path_history: "
+    if error.startswith(prefix):
+        return "State's ROS2 memory (path_anchors, path_anchor_steps, previous_step): " + error[len(prefix):]
+    return "State." + error
+
+
 class Data:
     """State, inputs and outputs of one arm of `model` (an armrt.Model, or what Model() accepts).
 
@@ -123,7 +178,8 @@ class Data:
     activation ((n,)), state (the whole engine state vector [q, qdot, lce, activation]).
     Inputs: excitation ((n,), a copy), hand_force, hand_moment ((3,) N, N m, thorax frame; copies).
     Outputs: outputs() evaluates them at the current state.
-    Snapshots: get_state() -> State, set_state(State).
+    Snapshots: get_state() -> State, set_state(State); get_state_vector(parts) -> a flat array of the parts
+    (armrt.StatePart) and set_state_vector(x, parts), checked in the engine.
     Data(model) starts at the rest posture, time 0, no excitation; Arm(model) creates the Data it steps
     (Arm.data), with the workspace of its integrator.
 
@@ -195,7 +251,7 @@ class Data:
             sim.gravity = np.asarray(s.gravity, dtype=float)
             sim.max_joint_speed = s.max_joint_speed
             new = Data._wrap(self.model, sim)
-            new._load(np.array(s.state), s.excitation, s.hand_force, s.hand_moment, s.time, s.ros2_history())
+            new._load_snapshot(s.get_snapshot(_core.SNAPSHOT_FULL))
             memo[id(self)] = new
             return new
 
@@ -255,92 +311,60 @@ class Data:
     def get_state(self) -> State:
         """A State: time, q, qdot, lce, activation, excitation, hand force and moment, and ROS2's memory
         (path_anchors, path_anchor_steps, previous_step; None, (0, 0) and 0.0 when the state was not reached
-        by a ROS2 step) (copies)."""
+        by a ROS2 step) (copies): the engine's full snapshot (get_state_vector(StatePart.FULL))."""
         with self._exclusive():
-            history = self._sim.ros2_history()
-            anchors, spacing, since, h = history if history is not None else (None, 0, 0, 0.0)
-            return State(model=self.model.name, source_hash=self.model.source_hash, time=self._sim.time,
-                         q=self.q, qdot=self.qdot, lce=self.lce, activation=self.activation,
-                         excitation=self._sim.excitation, hand_force=self._sim.hand_force,
-                         hand_moment=self._sim.hand_moment, path_anchors=anchors,
-                         path_anchor_steps=(spacing, since), previous_step=h)
+            x = self._sim.get_snapshot(_core.SNAPSHOT_FULL)
+        return _state_from_snapshot(self.model, self._sim, x)
 
     def set_state(self, state: State) -> None:
-        """Restores a State taken from an arm of the same model (ValueError otherwise, for arrays of
-        the wrong shape or with NaN, or a q more than checks.RANGE_MARGIN beyond the joint ranges). Clears a divergence error; restarts CVODE's history."""
+        """Restores a State taken from an arm of the same model. The engine checks it first (snapshot.h
+        snapshot_error) and writes nothing when it refuses: ValueError for a non-finite value, a state outside
+        the physical domain a step accepts (a joint more than 0.35 rad beyond its range, with a hint when q
+        looks like degrees; a joint faster than max_joint_speed; a fibre length or activation out of range; a
+        girdle contact point deep in the thorax), an excitation outside [0, 1], or ROS2 memory no run of steps
+        leaves; also for another model's State or arrays of the wrong shape. The excitation is capped at this
+        arm's max_activation; a divergence error is cleared; CVODE's history restarts."""
         if not isinstance(state, State):
             raise TypeError(f"set_state takes an armrt.State (from get_state()), got {type(state).__name__}")
         if state.source_hash != self.model.source_hash:
             raise ValueError(f"this State is of model {state.model!r} (sha256 {state.source_hash[:12]}...), "
                              f"not of {self.model.name!r} (sha256 {self.model.source_hash[:12]}...)")
-        nd, n = self.model.n_dofs, self.model.n_elements
-        shapes = {"q": (nd,), "qdot": (nd,), "lce": (n,), "activation": (n,), "excitation": (n,),
-                  "hand_force": (3,), "hand_moment": (3,)}
-        for k, shape in shapes.items():
-            a = getattr(state, k)
-            if a.shape != shape:
-                raise ValueError(f"State.{k} must have shape {shape}, got {a.shape}")
-            if not np.all(np.isfinite(a)):
-                raise ValueError(f"State.{k} contains NaN or infinite values")
-        # As reset(q=...) checks q, without its warning for slightly beyond: a simulated state can end there.
-        joint_range(state.q, self.model.dof_names, self.model.dof_ranges, warn=False)
-        if not np.isfinite(state.time):
-            raise ValueError(f"State.time must be finite, got {state.time}")
-        if not (np.isfinite(state.previous_step) and state.previous_step >= 0):
-            raise ValueError(f"State.previous_step must be finite and >= 0 (s), got {state.previous_step}")
-        history = None
-        if state.path_anchors is not None:
-            anchors = state.path_anchors
-            if anchors.ndim != 2 or anchors.shape[0] not in (1, 2) or anchors.shape[1] != nd:
-                raise ValueError(f"State.path_anchors must have shape (1, {nd}) or (2, {nd}) or be None, "
-                                 f"got {anchors.shape}")
-            if not np.all(np.isfinite(anchors)):
-                raise ValueError("State.path_anchors contains NaN or infinite values")
-            spacing, since = state.path_anchor_steps
-            h = state.previous_step
-            if not h > 0:
-                raise ValueError(f"State.previous_step must be > 0 (s) with path_anchors, got {h}")
-            error = _core.ros2_history_error(anchors.shape[0], spacing, since)
-            if error:  # counts no run leaves, by the engine's own rule (rosenbrock.cc), before anything is written
-                raise ValueError(f"State.path_anchor_steps {state.path_anchor_steps}: {error}")
-            # The anchors some steps before q: no joint faster than the arm's bound between them. This catches
-            # a mistaken anchor that would otherwise only show as a distorted or diverging next step; anchors
-            # are the q of exact evaluations and must come from get_state unchanged (an edit within the bound
-            # moves the continuation by what it implies).
-            gaps = [("path_anchors[-1]", anchors[-1], state.q, since)]
-            if anchors.shape[0] == 2:
-                gaps.append(("path_anchors[0]", anchors[0], anchors[1], spacing))
-            for name, a, b, steps in gaps:
-                speed = np.abs(b - a) / (steps * h)
-                j = int(np.argmax(speed))
-                if speed[j] > self._sim.max_joint_speed:
-                    raise ValueError(f"State.{name} is not {steps} step(s) of {h:g} s before the next anchor or "
-                                     f"q: {self.model.dof_names[j]} would have moved at {speed[j]:.3g} rad/s, "
-                                     f"beyond max_joint_speed {self._sim.max_joint_speed:g} rad/s")
-            history = (anchors, spacing, since, h)
-        x = np.empty(self._sim.state.shape)
-        for k, (o, n) in self.model.state_layout.items():
-            x[o:o + n] = getattr(state, k)
-        self._load(x, state.excitation, state.hand_force, state.hand_moment, state.time, history)
-
-    def _load(self, x, excitation, hand_force, hand_moment, time: float, ros2_history=None) -> None:
-        """Writes a state as is (set_state validates first; Arm.__deepcopy__ copies a diverged state too);
-        ros2_history: (anchors (k, ndof), anchor spacing, steps since the newest anchor, step size) or None."""
+        x = _snapshot_from_state(self.model, self._sim, state)
         with self._exclusive():
-            self._write(x, excitation, hand_force, hand_moment, time, ros2_history)
+            error = self._sim.snapshot_error(_core.SNAPSHOT_FULL, x)
+            if error:
+                raise ValueError(_state_error(error))
+            self._sim.set_snapshot(_core.SNAPSHOT_FULL, x, False)
 
-    def _write(self, x, excitation, hand_force, hand_moment, time: float, ros2_history) -> None:
-        self._sim.state[:] = x
-        self._sim.excitation[:] = excitation
-        self._sim.hand_force[:] = hand_force
-        self._sim.hand_moment[:] = hand_moment
-        self._sim.time = time
-        self._sim.clear_error()
-        if ros2_history is None or len(ros2_history) == 2:  # 2: (previous_q, h) of an Arm pickled by an older armrt
-            self._sim.restore_ros2_history(np.zeros((0, self.model.n_dofs)), 0, 0, 0.0)  # clears it
-        else:
-            anchors, spacing, since, h = ros2_history
-            self._sim.restore_ros2_history(np.asarray(anchors, dtype=float), int(spacing), int(since), float(h))
-        # CVODE keeps a history of past steps: start it afresh from the restored state.
-        if self._sim.integrator == "cvode":
-            self._sim.set_integrator("cvode", self._sim.dt, self._sim.substeps)
+    def get_state_vector(self, parts=StatePart.FULL) -> np.ndarray:
+        """The parts of the state selected by `parts` (an armrt.StatePart such as StatePart.PHYSICS, OR-able,
+        or a part name) as one flat array in the engine's order (as MuJoCo's mj_getState); state_vector_slices
+        says where each part lies."""
+        sig = signature(parts)
+        with self._exclusive():
+            return self._sim.get_snapshot(sig)
+
+    def set_state_vector(self, x, parts=StatePart.FULL) -> None:
+        """Sets the parts selected by `parts` from a flat array of get_state_vector(parts)'s layout; the others
+        are kept. Checked in the engine as set_state checks a State (ValueError, nothing written). Setting
+        any physics part restarts the integrator's memory unless ROS2_PATH_HISTORY is set with it."""
+        sig = signature(parts)
+        a = real_array(x, "state vector")
+        with self._exclusive():
+            n = self._sim.snapshot_size(sig)
+            if a.shape != (n,):
+                raise ValueError(f"state vector of {StatePart(sig)!r} must have shape ({n},), got {a.shape}")
+            error = self._sim.snapshot_error(sig, a)
+            if error:
+                raise ValueError(f"state vector: {error}")
+            self._sim.set_snapshot(sig, a, False)
+
+    def state_vector_slices(self, parts=StatePart.FULL) -> dict:
+        """{part name: slice} of get_state_vector(parts)'s array (names as StatePart's, lower case)."""
+        return part_slices(self._sim, parts)
+
+    def _load_snapshot(self, x) -> None:
+        """Writes a full snapshot as is (Arm.__deepcopy__ copies a diverged state too)."""
+        with self._exclusive():
+            self._sim.set_snapshot(_core.SNAPSHOT_FULL, np.asarray(x, dtype=float), False)
+

@@ -118,11 +118,16 @@ inline double capped_excitation(double u, double max_activation) {
   return u < 0.0 ? 0.0 : (u > max_activation ? max_activation : u);
 }
 
+// Holds the excitation u (num_elements) over the next steps as the dynamics use it: capped_excitation with d's
+// maximum activation. Every writer of d.excitation (the bindings, snapshots, the recorder's excitation rows, the
+// real-time runner) goes through it, so that d.excitation reads back what the dynamics use.
+void data_set_excitation(const Model& m, Data& d, const double* u);
+
 // A Data for m at its rest posture, with the model's own settings (intact strength, the model file's
 // maximum activation and gravity).
 void data_init(const Model& m, Data& d);
 // Derives d.muscles and the rest fibre rate from d.settings (after a change of strength or maximum activation;
-// gravity and the speed bound need nothing). Throws std::invalid_argument for a setting out of range.
+// gravity and the speed bound need nothing), and caps the held excitation at the new maximum activation. Throws std::invalid_argument for a setting out of range.
 void data_apply_settings(const Model& m, Data& d);
 // Whether d's outputs describe its current state, hand load, gravity and settings (computed by forward() with
 // record at exactly these).

@@ -112,8 +112,20 @@ GHStability gh_stability(const ModelDef& def, const double* force);
 void gh_rim(double theta, double phi, double theta_a, double phi_a, double* direction, double* margin);
 
 // ---- integrate.cc
-// Whether d.x lies in the physical domain (model.h); sets d.status and returns false otherwise.
+// Where a state vector x leaves the physical domain (model.h) of an arm with d's settings: kOk, or the status
+// a step ending there would get and what went bad.
+struct DomainCheck {
+  Status status = Status::kOk;
+  int bad_index = -1;    // state index, or -1
+  int bad_contact = -1;  // girdle contact point too deep in the thorax, or -1
+  double bad_contact_distance = 0;  // m, its signed distance
+};
+DomainCheck check_domain(const Model& m, const Data& d, const double* x);
+// Whether d.x lies in the physical domain; sets d.status (and what went bad) and returns false otherwise.
 bool check_state(const Model& m, Data& d);
+// What is outside the domain for a kOutOfDomain check of x, e.g. "q[GHy] = 4 rad is more than 0.35 rad beyond
+// its range [-1.2, 1.5] rad" (stepper.cc; step_error_message and the snapshot checks say it).
+std::string domain_problem(const Model& m, const Data& d, const double* x, const DomainCheck& c);
 const char* state_name(const Model& m, int index, char* buf, int buflen);
 
 // ---- ros2.cc

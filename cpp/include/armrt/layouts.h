@@ -11,9 +11,9 @@
 
 namespace armrt {
 
-// How many values a row has: one, two, three (x, y, z), the model's DOFs, its elements or its girdle contact
-// points (0 without girdle forces).
-enum class SizeRule { kOne, kTwo, kThree, kDofs, kElements, kContactPoints };
+// How many values a row has: one, two, three (x, y, z), the model's DOFs, its elements, its girdle contact
+// points (0 without girdle forces), or ROS2's packed path history (snapshot.h: 4 + 2 x DOFs).
+enum class SizeRule { kOne, kTwo, kThree, kDofs, kElements, kContactPoints, kPathHistory };
 
 inline int layout_size(SizeRule rule, const ModelDef& def) {
   switch (rule) {
@@ -23,6 +23,7 @@ inline int layout_size(SizeRule rule, const ModelDef& def) {
     case SizeRule::kDofs: return def.num_dofs;
     case SizeRule::kElements: return def.num_elements;
     case SizeRule::kContactPoints: return def.girdle ? def.girdle->num_contact_points : 0;
+    case SizeRule::kPathHistory: return 4 + 2 * def.num_dofs;
   }
   return 0;
 }
@@ -104,10 +105,45 @@ enum class Channel {
 };
 inline constexpr int kNumChannels = static_cast<int>(Channel::kCount);
 
+// The snapshot (snapshot.h; as MuJoCo's mjtState): what get_snapshot copies and set_snapshot restores, in this
+// order. Each row is one bit of a signature (1 << its SnapshotPart): time, the state blocks, the inputs held
+// over a step, the integrator's memory. Time and input rows are Data fields of the same name.
+//   X(name, size, unit, description)
+#define ARMRT_SNAPSHOT_TIME(X) X(time, kOne, "s", "simulation time")
+#define ARMRT_SNAPSHOT_INPUTS(X)                                                               \
+  X(excitation, kElements, "1", "neural excitation held over the steps (capped at max_activation)") \
+  X(hand_force, kThree, "N", "force at the hand point, thorax frame")                          \
+  X(hand_moment, kThree, "N m", "moment on the hand, thorax frame")
+#define ARMRT_SNAPSHOT_INTEGRATOR(X)                                                                  \
+  X(ros2_path_history, kPathHistory, "",                                                              \
+    "ROS2's memory: step size h (s), anchors (0-2), anchor spacing and steps since the newest anchor " \
+    "(steps), the anchors' q (2 x DOFs, rad, oldest first, unused rows 0); all 0 when there is none")
+#define ARMRT_SNAPSHOT(X) \
+  ARMRT_SNAPSHOT_TIME(X) ARMRT_STATE_BLOCKS(X) ARMRT_SNAPSHOT_INPUTS(X) ARMRT_SNAPSHOT_INTEGRATOR(X)
+
+enum class SnapshotPart {
+#define ARMRT_X_SNAP(name, ...) name,
+  ARMRT_SNAPSHOT(ARMRT_X_SNAP) kCount
+#undef ARMRT_X_SNAP
+};
+inline constexpr int kNumSnapshotParts = static_cast<int>(SnapshotPart::kCount);
+inline constexpr unsigned snapshot_bit(SnapshotPart p) { return 1u << static_cast<int>(p); }
+// Signatures (as mjSTATE_PHYSICS, ...): any OR of snapshot_bit()s.
+#define ARMRT_X_SNAP_BIT(name, ...) | snapshot_bit(SnapshotPart::name)
+inline constexpr unsigned kSnapshotTime = 0u ARMRT_SNAPSHOT_TIME(ARMRT_X_SNAP_BIT);
+inline constexpr unsigned kSnapshotPhysics = 0u ARMRT_STATE_BLOCKS(ARMRT_X_SNAP_BIT);
+inline constexpr unsigned kSnapshotInputs = 0u ARMRT_SNAPSHOT_INPUTS(ARMRT_X_SNAP_BIT);
+inline constexpr unsigned kSnapshotIntegrator = 0u ARMRT_SNAPSHOT_INTEGRATOR(ARMRT_X_SNAP_BIT);
+inline constexpr unsigned kSnapshotFull = (1u << kNumSnapshotParts) - 1;
+#undef ARMRT_X_SNAP_BIT
+
 // A row's values in Data, whatever its storage (for code generated from the tables).
 inline const double* row_values(const double& v) { return &v; }
 template <std::size_t N>
 const double* row_values(const std::array<double, N>& a) { return a.data(); }
+inline double* row_values(double& v) { return &v; }
+template <std::size_t N>
+double* row_values(std::array<double, N>& a) { return a.data(); }
 
 // A row of a table, for code that walks it (bindings, the recorder's reservations).
 struct LayoutRow {
@@ -119,8 +155,10 @@ struct LayoutRow {
   const char* description;
 };
 
-// The recorded channels in Channel order, and the outputs in ARMRT_OUTPUTS order.
+// The recorded channels in Channel order, the outputs in ARMRT_OUTPUTS order, the snapshot's parts in
+// SnapshotPart order (kNumSnapshotParts rows; stage "time", "state", "input" or "integrator").
 const LayoutRow* recorded_channels();  // kNumChannels rows
 const LayoutRow* output_rows(int* count);
+const LayoutRow* snapshot_rows();
 
 }  // namespace armrt

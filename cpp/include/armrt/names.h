@@ -44,6 +44,10 @@ void combine_named_values(const NamedElements& names, const double* values, int 
 // std::invalid_argument naming every unknown name.
 std::vector<double> excitations_from_names(const ModelDef& def,
                                            const std::vector<std::pair<std::string, double>>& items);
+// The same rule for every per-element setting given by names (strength, maximum activation, activations): the
+// elements no name covers keep unnamed[i] (num_elements values).
+std::vector<double> values_from_names(const ModelDef& def, const std::vector<std::pair<std::string, double>>& items,
+                                      const double* unnamed);
 
 // Index of a DOF by armrt ("GHy") or OpenSim ("GH_y") name; -1 if unknown.
 int find_dof(const ModelDef& def, const std::string& name);
