@@ -148,3 +148,9 @@ def test_an_array_with_nothing_masked_is_accepted():
     arm = armrt.Arm()
     arm.reset(q=np.ma.masked_array(arm.rest_posture, mask=False))
     assert np.array_equal(arm.q, arm.rest_posture)
+
+
+def test_reset_refuses_a_joint_speed_the_first_step_would_stop_at():
+    arm = armrt.Arm()
+    with pytest.raises(ValueError, match=r"qdot\[GHy\] = 1e\+06 rad/s is beyond max_joint_speed"):
+        arm.reset(qdot=[1e6] * 5)

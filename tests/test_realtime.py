@@ -291,6 +291,8 @@ def test_runner_rejects_bad_arguments():
              (["--dt", "0.001", "--integration-step", "0.001"], "both given"),
              (["--state-rate", "300"], "333.333 and 250"), (["--priority", "80.5"], "--priority"),
              (["--timeout", "60"], "--timeout"), (["--q0", "0,0,nan,0,0"], "--q0"),
+             # degrees, and a joint beyond its range: refused as Arm.set_state refuses them (issue 25)
+             (["--q0", "25,28,16,40,80"], "look like degrees"), (["--q0", "0,0,0,4,0"], "q[ELx] = 4 rad"),
              (["--stat-rate", "100"], "did you mean --state-rate"), (["--listen", "1.2.3.4"], "HOST:PORT")]
     for args, msg in cases:
         r = subprocess.run([runner(), *args, "--duration", "0.05", "--no-rt", "--no-mlock"] if args[0] != "--duration"

@@ -14,6 +14,7 @@
 
 #include "armrt/clock.h"
 #include "armrt/names.h"
+#include "armrt/snapshot.h"
 
 namespace armrt::rt {
 
@@ -38,8 +39,11 @@ void RtLoop::make_simulator(const ModelDef& def, const Schedule& sched) {
     if (static_cast<int>(cfg_.q0.size()) != def.num_dofs)
       throw std::invalid_argument("--q0 needs " + std::to_string(def.num_dofs) + " values (model '" + cfg_.model +
                                   "' has " + std::to_string(def.num_dofs) + " DOFs)");
-    for (double v : cfg_.q0)
-      if (!std::isfinite(v)) throw std::invalid_argument("--q0 values must be finite");
+    // The engine's snapshot check, as Arm.set_state applies it: finite, within the physical domain (joints at
+    // most kJointRangeMargin beyond their range, with a hint when the values look like degrees; no girdle
+    // contact point deep in the thorax), so a bad --q0 is refused here instead of diverging in the first cycle.
+    const std::string error = snapshot_error(sim_->model, sim_->data, snapshot_bit(SnapshotPart::q), cfg_.q0.data());
+    if (!error.empty()) throw std::invalid_argument("--q0 (rad): " + error);
     sim_->reset(cfg_.q0.data(), nullptr, nullptr);
   }
   sim_->data.excitation.fill(0.0);

@@ -103,10 +103,11 @@ std::string path_history_problem(const Model& m, const Data& d, const double* q,
     for (int j = 0; j < nq; ++j) {
       const double speed = std::fabs(gaps[g].to[j] - gaps[g].from[j]) / (gaps[g].steps * h);
       if (speed > d.settings.max_joint_speed) {
-        char buf[256];
+        char buf[320];
         std::snprintf(buf, sizeof buf,
-                      "%s is not %d step(s) of %g s before %s: %s would have moved at %.3g rad/s, beyond "
-                      "max_joint_speed %g rad/s",
+                      "%s is not %d step(s) of %g s before %s: %s would have moved at %.6g rad/s, beyond "
+                      "max_joint_speed %g rad/s (a state whose q or qdot was changed must be set without its "
+                      "ROS2 memory)",
                       gaps[g].name, gaps[g].steps, h, g == 0 ? "q" : "the newest anchor", m.def->dofs[j].name, speed,
                       d.settings.max_joint_speed);
         return buf;

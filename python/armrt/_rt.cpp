@@ -20,81 +20,17 @@ using namespace armrt::rt;
 
 namespace {
 
-py::dict pct(const Percentiles& p) {
-  py::dict d;
-  d["min"] = p.min;
-  d["median"] = p.median;
-  d["p99"] = p.p99;
-  d["p999"] = p.p999;
-  d["max"] = p.max;
-  d["mean"] = p.mean;
-  d["count"] = p.count;
-  return d;
-}
-
-py::dict stats_dict(const RtLoop& loop) {
-  const RtStats s = loop.stats();
-  py::dict d;
-  d["rate_hz"] = s.rate_hz;
-  d["control_step"] = s.control_step;
-  d["integration_step"] = s.integration_step;
-  d["integrator"] = s.integrator;
-  d["cycles"] = s.cycles;
-  d["recorded"] = s.recorded;
-  d["overruns"] = s.overruns;
-  d["missed_deadlines"] = s.missed_deadlines;
-  d["lag_s"] = s.lag_s;
-  d["resync"] = "skip";
-  d["warnings"] = s.warnings;
-  d["authenticated"] = s.authenticated;
-  d["elapsed_s"] = s.elapsed_s;
-  d["sim_time"] = s.sim_time;
-  d["scheduler"] = s.scheduler;
-  d["priority"] = s.priority;
-  d["memory_locked"] = s.memory_locked;
-  d["cpu"] = s.cpu;
-  d["rt_note"] = s.rt_note;
-  d["stop_reason"] = s.stop_reason;
-  d["error"] = s.error;
-  d["tet_ns"] = pct(s.tet);
-  d["cycle_ns"] = pct(s.cycle);
-  d["latency_ns"] = pct(s.latency);
-  const PacketCounters& k = s.packets;
-  py::dict p;
-  p["received"] = k.received;
-  p["applied"] = k.applied;
-  p["dropped"] = k.dropped();
-  p["foreign"] = k.foreign;
-  p["not_allowed"] = k.not_allowed;
-  p["bad_magic"] = k.bad_magic;
-  p["bad_version"] = k.bad_version;
-  p["bad_size"] = k.bad_size;
-  p["bad_type"] = k.bad_type;
-  p["bad_count"] = k.bad_count;
-  p["bad_auth"] = k.bad_auth;
-  p["bad_session"] = k.bad_session;
-  p["non_finite"] = k.non_finite;
-  p["stale"] = k.stale;
-  p["out_of_order"] = k.out_of_order;
-  p["clipped"] = k.clipped;
-  p["hellos"] = k.hellos;
-  p["offers"] = k.offers;
-  p["sessions"] = k.sessions;
-  p["owner_changes"] = k.owner_changes;
-  p["releases"] = k.releases;
-  p["timeouts"] = k.timeouts;
-  p["rx_budget_hits"] = k.rx_budget_hits;
-  p["state_sent"] = k.state_sent;
-  p["send_errors"] = k.send_errors;
-  d["packets"] = p;
-  return d;
+// The runner's statistics as a dict: rt_stats.cc's JSON, the one place they are written (armrt-rt --json gives
+// the same document).
+py::object stats_dict(const RtLoop& loop) {
+  return py::module_::import("json").attr("loads")(loop.stats_json());
 }
 
 }  // namespace
 
 PYBIND11_MODULE(_rt, m) {
   m.doc() = "armrt real-time loop (C++ thread, SCHED_FIFO when permitted) with UDP I/O";
-  // Its own copy of the engine's model registry (see _batch.cpp): armrt.model registers on-demand models here too.
+  // libarmrt's one model registry: a model armrt.model loaded is found here too.
   // The packet layout, defined once in cpp/rt/packet.h; armrt.realtime builds its codec from it.
   m.attr("MAGIC") = py::bytes(reinterpret_cast<const char*>(kMagic), 4);
   m.attr("VERSION") = static_cast<int>(kVersion);

@@ -14,7 +14,7 @@ from typing import Mapping
 import numpy as np
 
 from . import _core
-from .checks import MAX_COUNT, RANGE_MARGIN, count, deg, joint_range, known_model, rad, real_array, real_scalar
+from .checks import MAX_COUNT, RANGE_MARGIN, count, deg, joint_range, known_model, per_element, rad, real_array, real_scalar
 from .data import Data
 from .snapshot import StatePart
 from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
@@ -66,6 +66,7 @@ class Arm:
         self.model = Model(model)  # a name, a model file (built on demand) or a Model
         self._sim = _core.Arm(self.model._def, integrator, dt, substeps)
         self.data = Data._wrap(self.model, self._sim)
+        self.data._arm_stepper = True
         # One thread at a time: the engine's Data is a single workspace, so the Arm and its Data share
         # one guard (Data._exclusive): arm.data.outputs() from a second thread is refused like arm.outputs().
         self._lock = self.data._lock
@@ -106,52 +107,14 @@ class Arm:
             ix = list(_core.find_elements(self.model_name, name))  # aliases, or KeyError with close matches
         return ix
 
-    def _is_name(self, name) -> bool:
-        return isinstance(name, str) and (name in self._index or _core.is_name(self.model_name, name))
-
-    def _unknown_names_message(self, names: list) -> str:
-        return _core.unknown_names_message(self.model_name, [str(n) for n in names])
-
     def dof_index(self, name: str) -> int:
         """Index of a DOF by armrt name (GHy) or OpenSim coordinate name (GH_y); KeyError with close matches."""
         return _core.find_dof(self.model_name, str(name))
 
     def _per_element(self, values, what: str, lo: float, hi: float | None, clip: bool) -> np.ndarray:
-        """Array of n from an array of n, a scalar or a {name: value} dict (names as in indices())."""
-        n = self.n_elements
-        if isinstance(values, Mapping):
-            out = np.zeros(n) if what in ("excitation", "activation") else self._current(what)
-            unknown = [name for name in values if not self._is_name(name)]
-            if unknown:
-                raise KeyError(self._unknown_names_message(unknown))
-            items = [(name, self._scalar(v, f"{what}[{name!r}]")) for name, v in values.items()]
-            # Overlapping names, for every setting given by names: the engine's one rule (names.h: the most
-            # specific name wins, in any order; equal specificity takes the largest).
-            out = np.asarray(_core.values_from_names(self.model_name, items, out))
-        else:
-            arr = real_array(values, what)
-            if arr.ndim == 0:
-                arr = np.full(n, float(arr))
-            if arr.shape != (n,):
-                raise ValueError(f"{what} must have shape ({n},) (one value per element), got {arr.shape}")
-            out = arr.copy()
-        bad = ~np.isfinite(out)
-        if bad.any():
-            names = [self.element_names[i] for i in np.flatnonzero(bad)[:5]]
-            raise ValueError(f"{what} contains NaN or infinite values (elements {names})")
-        hi_ = np.inf if hi is None else hi
-        outside = (out < lo) | (out > hi_)
-        if outside.any():
-            names = [self.element_names[i] for i in np.flatnonzero(outside)[:5]]
-            if not clip:
-                raise ValueError(f"{what} must lie in [{lo}, {hi_}]; elements {names} do not")
-            warnings.warn(f"{what} outside [{lo}, {hi_}] clipped for elements {names}", RuntimeWarning, stacklevel=3)
-            out = np.clip(out, lo, hi_)
-        return out
-
-    @staticmethod
-    def _scalar(v, what: str) -> float:
-        return real_scalar(v, what)
+        """Array of n from an array of n, a scalar or a {name: value} dict (checks.per_element)."""
+        current = None if what in ("excitation", "activation") else self._current(what)
+        return per_element(self.model_name, self.element_names, values, what, lo, hi, clip, current, stacklevel=4)
 
     def _current(self, what: str) -> np.ndarray:
         return {"strength": self._sim.get_strength, "max_activation": self._sim.get_max_activation}[what]()
@@ -159,12 +122,12 @@ class Arm:
     # ------------------------------------------------------------------ inputs
     def set_excitation(self, u) -> None:
         """Neural excitation of the elements: an array of n, a scalar, or {name: value} with element,
-        muscle or group names (unnamed elements get 0). Values outside [0, 1] are clipped with a
-        RuntimeWarning and values above max_activation are capped at it (so `excitation` reads back
-        what the dynamics use); NaN or infinite values raise ValueError, non-numbers TypeError."""
-        u = self._per_element(u, "excitation", 0.0, 1.0, clip=True)
+        muscle or group names (unnamed elements get 0; overlapping names: the most specific wins). Values
+        outside [0, 1] are clipped with a RuntimeWarning and values above max_activation are capped at it
+        (so `excitation` reads back what the dynamics use); NaN or infinite values raise ValueError,
+        non-numbers TypeError. (Data.set_excitation.)"""
         with self._exclusive():
-            self._sim.set_excitation(u)  # stored as the dynamics use it (the engine's data_set_excitation)
+            self.data.set_excitation(u)
 
     @property
     def excitation(self) -> np.ndarray:
@@ -173,27 +136,18 @@ class Arm:
     def set_hand_load(self, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> None:
         """External force (N) at the hand point and moment (N m) on the hand, thorax frame
         (x lateral, y up, z posterior): e.g. a 1 kg weight is force=(0, -9.81, 0)."""
-        values = []
-        for name, v in (("force", force), ("moment", moment)):
-            a = real_array(v, f"hand {name}")
-            if a.shape != (3,):
-                raise ValueError(f"hand {name} must have shape (3,), got {a.shape}")
-            if not np.all(np.isfinite(a)):
-                raise ValueError(f"hand {name} contains NaN or infinite values")
-            values.append(a)
         with self._exclusive():
-            self._sim.hand_force[:], self._sim.hand_moment[:] = values
+            self.data.set_hand_load(force, moment)
 
     @property
     def strength(self) -> np.ndarray:
         """Per-element strength scale (multiplies DAS3 fmax, 1 = intact)."""
-        return self._sim.get_strength()
+        return self.data.strength
 
     @strength.setter
     def strength(self, values) -> None:
-        s = self._per_element(values, "strength", 0.0, None, clip=False)
         with self._exclusive():
-            self._sim.set_strength_and_max_activation(s, self._sim.get_max_activation())
+            self.data.strength = values
 
     @property
     def max_activation(self) -> np.ndarray:
@@ -201,14 +155,12 @@ class Arm:
         every activation reached from then on. Lowered during a run, it does not cut the present activation:
         that decays to the new bound with the element's deactivation dynamics (tdeact, tens of ms), as a
         muscle does when its drive drops; reset() starts within the bound."""
-        return self._sim.get_max_activation()
+        return self.data.max_activation
 
     @max_activation.setter
     def max_activation(self, values) -> None:
-        m = self._per_element(values, "max_activation", 0.0, 1.0, clip=False)
         with self._exclusive():
-            # The engine caps the held excitation at the new bound (data_apply_settings).
-            self._sim.set_strength_and_max_activation(self._sim.get_strength(), m)
+            self.data.max_activation = values
 
     def apply_profile(self, path_or_name, reference=None):
         """Set strength and max_activation element by element from a participant file, by element
@@ -271,6 +223,10 @@ class Arm:
         time: finite, s. Raises ValueError for NaN/infinite values, TypeError for non-numbers."""
         q = None if q is None else self._check_girdle_contact(self._check_range(self._dof_vector(q, "q")))
         qdot = None if qdot is None else self._dof_vector(qdot, "qdot")
+        if qdot is not None and np.any(np.abs(qdot) > self._sim.max_joint_speed):
+            j = int(np.argmax(np.abs(qdot)))
+            raise ValueError(f"qdot[{self.dof_names[j]}] = {qdot[j]:g} rad/s is beyond max_joint_speed "
+                             f"{self._sim.max_joint_speed:g} rad/s (the first step would stop there)")
         if activation is not None:
             activation = self._per_element(activation, "activation", 0.0, 1.0, clip=False)
             capped = self._sim.cap_excitation(activation)  # the engine's cap rule, for activations too
@@ -325,7 +281,7 @@ class Arm:
         if isinstance(v, Mapping):
             out = (self.rest_posture if what == "q" else np.zeros(self.n_dofs)).copy()
             for name, x in v.items():
-                out[self.dof_index(name)] = self._scalar(x, f"{what}[{name!r}]")
+                out[self.dof_index(name)] = real_scalar(x, f"{what}[{name!r}]")
             v = out
         a = real_array(v, what)
         if a.shape != (self.n_dofs,):
@@ -376,10 +332,7 @@ class Arm:
 
     def _snapshot(self) -> tuple[dict, np.ndarray]:
         """(settings, full snapshot): what a copy or an unpickled arm is rebuilt from (call under _exclusive)."""
-        settings = dict(integrator=self.integrator, dt=self.dt, substeps=self.substeps,
-                        strength=self._sim.get_strength(), max_activation=self._sim.get_max_activation(),
-                        gravity=np.array(self._sim.gravity), max_joint_speed=self._sim.max_joint_speed)
-        return settings, self._sim.get_snapshot(_core.SNAPSHOT_FULL)
+        return self.data._settings(), self._sim.get_snapshot(_core.SNAPSHOT_FULL)
 
     @classmethod
     def _rebuild(cls, model, settings: dict, raw: tuple) -> "Arm":
@@ -387,12 +340,9 @@ class Arm:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", StepSizeWarning)  # warned when the original was made
             Arm.__init__(new, model, settings["integrator"], settings["dt"], settings["substeps"])
-        new._sim.set_strength_and_max_activation(settings["strength"], settings["max_activation"])
-        new._sim.gravity = np.asarray(settings["gravity"], dtype=float)
-        new._sim.max_joint_speed = settings["max_joint_speed"]
         if isinstance(raw, tuple):  # pickled by armrt before 2026-12-02: (x, excitation, force, moment, time, memory)
             raw = _legacy_snapshot(new, raw)
-        new.data._load_snapshot(raw)
+        new.data._restore(settings, raw)
         return new
 
     def __deepcopy__(self, memo):

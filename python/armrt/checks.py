@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numbers
 import operator
+import warnings
+from typing import Mapping
 
 import numpy as np
 
@@ -121,3 +123,55 @@ def joint_range(q: np.ndarray, dof_names, dof_ranges: np.ndarray, warn: bool = T
         import warnings
         warnings.warn(f"q slightly beyond the joint limits: {desc}", RuntimeWarning, stacklevel=4)
     return q
+
+
+def per_element(model_name: str, element_names, values, what: str, lo: float, hi: float | None, clip: bool,
+                current: np.ndarray | None = None, stacklevel: int = 3) -> np.ndarray:
+    """(n,) values of a per-element input or setting from an array of n, a scalar, or {name: value} with
+    element, muscle or group names (OpenSim aliases too); overlapping names follow the engine's one rule
+    (names.h: the most specific name wins, in any order; equal specificity takes the largest), and elements no
+    name covers keep `current` (None: 0). KeyError for unknown names (with close matches), TypeError for
+    non-numbers, ValueError for NaN/infinite values or, unless `clip` (then a RuntimeWarning), values outside
+    [lo, hi] (hi None: no upper bound)."""
+    n = len(element_names)
+    if isinstance(values, Mapping):
+        unknown = [name for name in values if not (isinstance(name, str) and _core.is_name(model_name, name))]
+        if unknown:
+            raise KeyError(_core.unknown_names_message(model_name, [str(name) for name in unknown]))
+        items = [(name, real_scalar(v, f"{what}[{name!r}]")) for name, v in values.items()]
+        base = np.zeros(n) if current is None else np.asarray(current, dtype=float)
+        out = np.asarray(_core.values_from_names(model_name, items, base))
+    else:
+        arr = real_array(values, what)
+        if arr.ndim == 0:
+            arr = np.full(n, float(arr))
+        if arr.shape != (n,):
+            raise ValueError(f"{what} must have shape ({n},) (one value per element), got {arr.shape}")
+        out = arr.copy()
+    bad = ~np.isfinite(out)
+    if bad.any():
+        names = [element_names[i] for i in np.flatnonzero(bad)[:5]]
+        raise ValueError(f"{what} contains NaN or infinite values (elements {names})")
+    hi_ = np.inf if hi is None else hi
+    outside = (out < lo) | (out > hi_)
+    if outside.any():
+        names = [element_names[i] for i in np.flatnonzero(outside)[:5]]
+        if not clip:
+            raise ValueError(f"{what} must lie in [{lo}, {hi_}]; elements {names} do not")
+        warnings.warn(f"{what} outside [{lo}, {hi_}] clipped for elements {names}", RuntimeWarning,
+                      stacklevel=stacklevel + 1)
+        out = np.clip(out, lo, hi_)
+    return out
+
+
+def hand_load(force, moment) -> tuple[np.ndarray, np.ndarray]:
+    """(force (3,) N, moment (3,) N m) checked: ValueError for another shape or NaN/infinite values."""
+    values = []
+    for name, v in (("force", force), ("moment", moment)):
+        a = real_array(v, f"hand {name}")
+        if a.shape != (3,):
+            raise ValueError(f"hand {name} must have shape (3,), got {a.shape}")
+        if not np.all(np.isfinite(a)):
+            raise ValueError(f"hand {name} contains NaN or infinite values")
+        values.append(a)
+    return values[0], values[1]

@@ -19,7 +19,7 @@ from dataclasses import InitVar, dataclass, fields
 import numpy as np
 
 from . import _core
-from .checks import real_array
+from .checks import hand_load, per_element, real_array
 from .errors import ConcurrentUseError
 from .integrators import DEFAULT_INTEGRATOR
 from .model import Model
@@ -176,7 +176,9 @@ class Data:
 
     State (read-only views that follow the simulation): time (s), q, qdot ((ndof,) rad, rad/s), lce ((n,) m),
     activation ((n,)), state (the whole engine state vector [q, qdot, lce, activation]).
-    Inputs: excitation ((n,), a copy), hand_force, hand_moment ((3,) N, N m, thorax frame; copies).
+    Inputs: excitation ((n,), a copy), hand_force, hand_moment ((3,) N, N m, thorax frame; copies); set with
+    set_excitation(u) and set_hand_load(force, moment).
+    Per-arm settings: strength, max_activation ((n,), set with arrays, scalars or {name: value}).
     Outputs: outputs() evaluates them at the current state.
     Snapshots: get_state() -> State, set_state(State); get_state_vector(parts) -> a flat array of the parts
     (armrt.StatePart) and set_state_vector(x, parts), checked in the engine.
@@ -202,6 +204,9 @@ class Data:
     def _attach(self, model, sim) -> None:
         self.model = model
         self._sim = sim
+        # True when an Arm steps this Data with its own integrator (Arm.__init__): armrt.step with another
+        # Stepper then leaves the Arm's integrator as it was.
+        self._arm_stepper = False
         # The engine's Data is a single workspace: the Arm stepping it shares this lock (Arm._exclusive).
         self._lock = threading.RLock()
         state = sim.state
@@ -213,16 +218,23 @@ class Data:
 
     def _step(self, integrator: str, dt: float, substeps: int, n: int) -> None:
         """n control steps with this integrator (armrt.step): the engine's stepper is set up anew only when the
-        integrator, dt or substeps differ from the last ones. SimulationError on divergence."""
+        integrator, dt or substeps differ from the last ones. An Arm's Data goes back to the Arm's own
+        integrator afterwards (its memory restarted): a Stepper passed to armrt.step is the caller's, and
+        must not change what the Arm does next. SimulationError on divergence."""
         from .errors import simulation_error
         with self._exclusive():
             s = self._sim
-            if (s.integrator, s.dt, s.substeps) != (integrator, dt, substeps):
+            own = (s.integrator, s.dt, s.substeps)
+            foreign = own != (integrator, dt, substeps)
+            if foreign:
                 s.set_integrator(integrator, dt, substeps)
             try:
                 s.step(n)
             except RuntimeError as exc:
                 raise simulation_error(exc) from None
+            finally:
+                if foreign and self._arm_stepper:
+                    s.set_integrator(*own)
 
     @contextmanager
     def _exclusive(self):
@@ -241,19 +253,41 @@ class Data:
     def __repr__(self) -> str:
         return f"Data({self.model.name}, t = {self._sim.time:g} s)"  # a repr never raises ConcurrentUseError
 
+    def _settings(self) -> dict:
+        """The integrator and per-arm settings a copy is rebuilt with (call under _exclusive)."""
+        s = self._sim
+        return dict(integrator=s.integrator, dt=s.dt, substeps=s.substeps, strength=s.get_strength(),
+                    max_activation=s.get_max_activation(), gravity=np.array(s.gravity),
+                    max_joint_speed=s.max_joint_speed)
+
+    def _restore(self, settings: dict, snapshot: np.ndarray) -> None:
+        """Applies _settings() (but the integrator, which the engine arm was made with) and a full snapshot, as
+        is (a diverged state too)."""
+        with self._exclusive():
+            self._sim.set_strength_and_max_activation(settings["strength"], settings["max_activation"])
+            self._sim.gravity = np.asarray(settings["gravity"], dtype=float)
+            self._sim.max_joint_speed = settings["max_joint_speed"]
+            self._load_snapshot(snapshot)
+
+    @classmethod
+    def _rebuild(cls, model: Model, settings: dict, snapshot: np.ndarray) -> "Data":
+        new = cls._wrap(model, _core.Arm(model._def, settings["integrator"], settings["dt"], settings["substeps"]))
+        new._restore(settings, snapshot)
+        return new
+
     def __deepcopy__(self, memo):
         """An independent Data: the same Model, state, inputs, per-arm settings (strength, maximum
-        activation, gravity) and integrator workspace configuration, in a new engine."""
+        activation, gravity, joint-speed bound) and integrator configuration, in a new engine."""
         with self._exclusive():
-            s = self._sim
-            sim = _core.Arm(self.model._def, s.integrator, s.dt, s.substeps)
-            sim.set_strength_and_max_activation(s.get_strength(), s.get_max_activation())
-            sim.gravity = np.asarray(s.gravity, dtype=float)
-            sim.max_joint_speed = s.max_joint_speed
-            new = Data._wrap(self.model, sim)
-            new._load_snapshot(s.get_snapshot(_core.SNAPSHOT_FULL))
+            new = Data._rebuild(self.model, self._settings(), self._sim.get_snapshot(_core.SNAPSHOT_FULL))
             memo[id(self)] = new
             return new
+
+    def __reduce__(self):
+        """Pickling (multiprocessing, Ray): the Model (by name or model file, as Model pickles), the settings
+        and the full snapshot of deepcopy."""
+        with self._exclusive():
+            return (_unpickle_data, (self.model, self._settings(), self._sim.get_snapshot(_core.SNAPSHOT_FULL)))
 
     # ------------------------------------------------------------------ state
     @property
@@ -287,6 +321,53 @@ class Data:
     def excitation(self) -> np.ndarray:
         with self._exclusive():
             return self._sim.excitation.copy()
+
+    def set_excitation(self, u) -> None:
+        """Neural excitation of the elements, held over the next steps: an array of n, a scalar, or
+        {name: value} with element, muscle or group names (unnamed elements get 0; overlapping names: the
+        most specific wins, in any order). Values outside [0, 1] are clipped with a RuntimeWarning; values
+        above max_activation are stored capped at it (what the dynamics use). ValueError for NaN or
+        infinite values, TypeError for non-numbers, KeyError for unknown names."""
+        u = per_element(self.model.name, self.model.element_names, u, "excitation", 0.0, 1.0, clip=True, stacklevel=4)
+        with self._exclusive():
+            self._sim.set_excitation(u)  # the engine's data_set_excitation: the one cap rule
+
+    def set_hand_load(self, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> None:
+        """External force (3,) N at the hand point and moment (3,) N m on the hand, thorax frame (x lateral,
+        y up, z posterior): a 1 kg weight is force=(0, -9.81, 0). ValueError for another shape or NaN."""
+        f, m = hand_load(force, moment)
+        with self._exclusive():
+            self._sim.hand_force[:], self._sim.hand_moment[:] = f, m
+
+    # ------------------------------------------------------------------ per-arm settings
+    @property
+    def strength(self) -> np.ndarray:
+        """(n,) strength scale per element (multiplies DAS3 fmax; 1 = intact, < 1 weakness), a copy. Set
+        with an array, a scalar or {name: value} (unnamed elements keep theirs); ValueError below 0."""
+        with self._exclusive():
+            return self._sim.get_strength()
+
+    @strength.setter
+    def strength(self, values) -> None:
+        with self._exclusive():
+            s = per_element(self.model.name, self.model.element_names, values, "strength", 0.0, None, clip=False,
+                            current=self._sim.get_strength(), stacklevel=4)
+            self._sim.set_strength_and_max_activation(s, self._sim.get_max_activation())
+
+    @property
+    def max_activation(self) -> np.ndarray:
+        """(n,) maximum activation per element in [0, 1] (0 = paralysed), a copy; excitations are capped at
+        it (the held one too, when it is lowered). Set like strength; ValueError outside [0, 1]."""
+        with self._exclusive():
+            return self._sim.get_max_activation()
+
+    @max_activation.setter
+    def max_activation(self, values) -> None:
+        with self._exclusive():
+            m = per_element(self.model.name, self.model.element_names, values, "max_activation", 0.0, 1.0,
+                            clip=False, current=self._sim.get_max_activation(), stacklevel=4)
+            # The engine caps the held excitation at the new bound (data_apply_settings).
+            self._sim.set_strength_and_max_activation(self._sim.get_strength(), m)
 
     @property
     def hand_force(self) -> np.ndarray:
@@ -368,3 +449,7 @@ class Data:
         with self._exclusive():
             self._sim.set_snapshot(_core.SNAPSHOT_FULL, np.asarray(x, dtype=float), False)
 
+
+
+def _unpickle_data(model: Model, settings: dict, snapshot: np.ndarray) -> Data:
+    return Data._rebuild(model, settings, snapshot)

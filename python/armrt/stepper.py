@@ -49,7 +49,7 @@ def step(model, data, stepper: Stepper, n: int = 1) -> None:
     """Advances data by n control steps of stepper (C++ step(model, data, stepper, n)). Raises
     SimulationError on divergence (the state stays where it stopped), ValueError for a Data of another model or
     a Stepper of another model. Changing a Data's stepper (another integrator, dt or substeps) starts the
-    integrator's memory afresh."""
+    integrator's memory afresh; an Arm's Data (arm.data) goes back to the Arm's own integrator after the steps."""
     from .checks import count
     _check(model, data, "step")
     if not isinstance(stepper, Stepper):
