@@ -118,7 +118,7 @@ def build_model(das3_dir: Path, paths: str = "opensim", cache_dir: Path | None =
         rom = {d: [float(v) for v in fits["rom"][d]] for d in src.ARM_DOFS}
         # The model file's words as models/das2.json records them (its bytes are hashed into cpp/generated):
         # the module has moved to codegen/importers/ since.
-        path_note = "length and line-of-action polynomials fitted against das3.osim (codegen/fit_paths.py)"
+        path_note = "length and line-of-action polynomials fitted against das3.osim (codegen/importers/fit_paths.py)"
     elif paths == "das3":
         fits = None
         rom = {d: [float(v) for v in struct.dof_ranges[d]] for d in src.ARM_DOFS}

@@ -226,8 +226,8 @@ def build_das3_model(das3_dir: Path, paths_file: Path = DAS3_PATHS) -> dict:
             "fixed-scapula range of motion of docs/path_accuracy.md) for GHy, GHz, GHyy, ELx, PSy. The rest "
             "posture is equilibrium.mat. "
             "Muscle paths: length and GH line-of-action polynomials fitted against das3.osim over the girdle-"
-            "and-arm range of docs/das3.md, read from models/das3_paths.json (codegen/das3_fit.py, "
-            "codegen/das3_directions.py; docs/das3_path_accuracy.md). Groups: das2's, plus trapezius "
+            "and-arm range of docs/das3.md, read from models/das3_paths.json (codegen/importers/das3_fit.py, "
+            "codegen/importers/das3_directions.py; docs/das3_path_accuracy.md). Groups: das2's, plus trapezius "
             "(trapscap, trapclav), serratus_anterior (serrant), rhomboids (rhomboid), levator_scapulae "
             "(levscap), pectoralis_minor (pectmin), and scapular (the muscles crossing only SC/AC)."),
         "source": {"importer": COMMAND, "files": {k: sha256(f) for k, f in files.items()}},

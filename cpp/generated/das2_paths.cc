@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/das2.json --out cpp/generated`
-// from the model file das2.json (sha256 69aacd6ac52703df8467776e9c81629f0b676b236d6c6c4aae92c6b97957a4f2).
+// from the model file das2.json (sha256 effb6ef66ec79560b06b1541ad3764787289ecb15b03c0a146d0090edd57a0b0).
 // Change the model file or the generator and regenerate instead.
 
 #include <cmath>

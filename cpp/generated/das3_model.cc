@@ -1,6 +1,6 @@
 // GENERATED FILE - DO NOT EDIT BY HAND.
 // Written by `python -m codegen.generate --model models/das3.json --out cpp/generated`
-// from the model file das3.json (sha256 45d6e3596ef8950f1c0775f0317c3e04c8f2bdad244931f0e59f3ff8138660fa).
+// from the model file das3.json (sha256 9289e81ac11b44228bbcac078e6e0a2af00fdbe2eabf7ee115c9eac3ffce5409).
 // Change the model file or the generator and regenerate instead.
 
 #include "das3.h"
@@ -271,7 +271,7 @@ const GirdleDef kGirdle = {
 
 const ModelDef kModel = {
     .name = "das3",
-    .source_hash = "45d6e3596ef8950f1c0775f0317c3e04c8f2bdad244931f0e59f3ff8138660fa",
+    .source_hash = "9289e81ac11b44228bbcac078e6e0a2af00fdbe2eabf7ee115c9eac3ffce5409",
     .num_dofs = 11,
     .num_elements = 138,
     .dofs = kDofs,
