@@ -15,6 +15,25 @@ namespace {
 
 bool holds(unsigned signature, SnapshotPart p) { return (signature & snapshot_bit(p)) != 0; }
 
+// One part of a snapshot: which, and where its values lie in the flat vector.
+struct PartSpan {
+  SnapshotPart part;
+  int offset, size;
+};
+
+// The parts a signature holds, in table order; returns how many.
+int signature_parts(const ModelDef& def, unsigned signature, PartSpan* out) {
+  int count = 0, offset = 0;
+  for (int k = 0; k < kNumSnapshotParts; ++k) {
+    const SnapshotPart p = static_cast<SnapshotPart>(k);
+    if (!holds(signature, p)) continue;
+    const int n = layout_size(snapshot_rows()[k].size, def);
+    out[count++] = {p, offset, n};
+    offset += n;
+  }
+  return count;
+}
+
 const LayoutRow& row(SnapshotPart p) { return snapshot_rows()[static_cast<int>(p)]; }
 
 // Offset of a state block in x: the blocks lie in x in ARMRT_STATE_BLOCKS order.
@@ -136,15 +155,13 @@ int snapshot_offset(const ModelDef& def, unsigned signature, SnapshotPart part) 
 
 void get_snapshot(const Model& m, const Data& d, const Stepper& s, unsigned signature, double* out) {
   const ModelDef& def = *m.def;
-  int o = 0;
-  for (int k = 0; k < kNumSnapshotParts; ++k) {
-    const SnapshotPart p = static_cast<SnapshotPart>(k);
-    if (!holds(signature, p)) continue;
-    const int n = layout_size(row(p).size, def);
+  PartSpan parts[kNumSnapshotParts];
+  const int count = signature_parts(def, signature, parts);
+  for (int k = 0; k < count; ++k) {
+    const auto [p, o, n] = parts[k];
     if (const double* field = data_field(d, p)) std::copy(field, field + n, out + o);
     else if (p == SnapshotPart::ros2_path_history) pack_path_history(m, d, s.ros2.path_history, out + o);
     else std::copy(d.x.begin() + state_block_offset(def, p), d.x.begin() + state_block_offset(def, p) + n, out + o);
-    o += n;
   }
 }
 
@@ -153,11 +170,10 @@ std::string snapshot_error(const Model& m, const Data& d, unsigned signature, co
   const ModelDef& def = *m.def;
   StateVec x = d.x;  // the state as it would be once set
   const double* hist = nullptr;
-  int o = 0;
-  for (int k = 0; k < kNumSnapshotParts; ++k) {
-    const SnapshotPart p = static_cast<SnapshotPart>(k);
-    if (!holds(signature, p)) continue;
-    const int n = layout_size(row(p).size, def);
+  PartSpan parts[kNumSnapshotParts];
+  const int count = signature_parts(def, signature, parts);
+  for (int k = 0; k < count; ++k) {
+    const auto [p, o, n] = parts[k];
     for (int i = 0; i < n; ++i)
       if (!std::isfinite(in[o + i])) return value_name(m, p, i) + " is not finite";
     if (p == SnapshotPart::excitation) {
@@ -172,7 +188,6 @@ std::string snapshot_error(const Model& m, const Data& d, unsigned signature, co
     } else if (!data_field(static_cast<const Data&>(d), p)) {
       std::copy(in + o, in + o + n, x.begin() + state_block_offset(def, p));
     }
-    o += n;
   }
   if (signature & kSnapshotPhysics) {
     const DomainCheck c = check_domain(m, d, x.data());
@@ -206,16 +221,14 @@ void set_snapshot(const Model& m, Data& d, Stepper& s, unsigned signature, const
   const ModelDef& def = *m.def;
   snapshot_size(def, signature);  // refuses unknown bits
   const double* hist = nullptr;
-  int o = 0;
-  for (int k = 0; k < kNumSnapshotParts; ++k) {
-    const SnapshotPart p = static_cast<SnapshotPart>(k);
-    if (!holds(signature, p)) continue;
-    const int n = layout_size(row(p).size, def);
+  PartSpan parts[kNumSnapshotParts];
+  const int count = signature_parts(def, signature, parts);
+  for (int k = 0; k < count; ++k) {
+    const auto [p, o, n] = parts[k];
     if (p == SnapshotPart::excitation) data_set_excitation(m, d, in + o);
     else if (p == SnapshotPart::ros2_path_history) hist = in + o;
     else if (double* field = data_field(d, p)) std::copy(in + o, in + o + n, field);
     else std::copy(in + o, in + o + n, d.x.begin() + state_block_offset(def, p));
-    o += n;
   }
   if (signature & (kSnapshotPhysics | kSnapshotIntegrator)) {
     stepper_restart(m, d, s);
