@@ -148,3 +148,57 @@ def test_an_array_with_nothing_masked_is_accepted():
     arm = armrt.Arm()
     arm.reset(q=np.ma.masked_array(arm.rest_posture, mask=False))
     assert np.array_equal(arm.q, arm.rest_posture)
+
+
+# ------------------------------------------------------------------- ArmBatch refuses what Arm refuses
+DEGREES = np.array([25, 28, 16, 40, 80.0])   # das2's rest posture written in degrees
+
+
+def test_batch_reset_checks_every_posture_as_arm_reset():
+    """Degrees, or a joint far beyond its range, diverged at the next step; each row is now checked by
+    checks.joint_range, the error naming the arm."""
+    b = armrt.ArmBatch(2, threads=1)
+    with pytest.raises(ValueError, match=r"arm 0: q beyond the joint limits.*look like degrees"):
+        b.reset(q=DEGREES)
+    q = np.tile(b.rest_posture, (2, 1))
+    q[1] = b.dof_ranges[:, 1] + 0.3
+    with pytest.raises(ValueError, match=r"arm 1: q beyond the joint limits"):
+        b.reset(q=q)
+    with pytest.raises(ValueError, match=r"arm 1: q beyond the joint limits"):
+        b.reset(q=b.dof_ranges[:, 1] + 0.3, arms=[1])
+    near = b.rest_posture.copy()
+    near[3] = b.dof_ranges[3, 1] + 0.05
+    with pytest.warns(RuntimeWarning, match=r"arm 1: q slightly beyond the joint limits"):
+        b.reset(q=near, arms=[1])
+    assert b.q[1, 3] == near[3]
+
+
+def test_batch_reset_refuses_non_numbers_and_fractional_arms():
+    b = armrt.ArmBatch(2, threads=1)
+    with pytest.raises(TypeError, match="q must be real numbers, got complex"):
+        b.reset(q=b.rest_posture + 0j)
+    with pytest.raises(TypeError, match="qdot must be real numbers"):
+        b.reset(qdot=np.zeros(b.n_dofs, dtype=complex))
+    with pytest.raises(TypeError, match="activation must be numbers"):
+        b.reset(activation="0.1")
+    with pytest.raises(TypeError, match="arm indices must be integers"):
+        b.reset(arms=[1.5])
+    with pytest.raises(TypeError, match="arm indices must be integers"):
+        b.reset(arms=["1"])
+    b.reset(arms=[])                   # nothing selected: nothing reset
+    b.reset(arms=np.array([1], dtype=np.uint8))
+
+
+def test_batch_reset_checks_the_girdle_contact_as_arm_reset():
+    """das3: a posture in range that puts the scapula into the thorax is refused by Arm.reset; ArmBatch
+    too, naming the arm."""
+    arm = armrt.Arm("das3")
+    q = arm.rest_posture.copy()
+    q[arm.dof_names.index("SCx")] = arm.dof_ranges[arm.dof_names.index("SCx"), 1]
+    with pytest.raises(ValueError, match="into the thorax"):
+        arm.reset(q=q)
+    b = armrt.ArmBatch(2, "das3", threads=1)
+    rows = np.tile(arm.rest_posture, (2, 1))
+    rows[1] = q
+    with pytest.raises(ValueError, match=r"arm 1: q puts the scapula into the thorax"):
+        b.reset(q=rows)

@@ -19,6 +19,7 @@ os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
 from . import _batch, _core  # noqa: E402
 from .arm import Arm, SimulationError  # noqa: E402
+from .checks import each_row, joint_range_rows, real_array  # noqa: E402
 from .snapshot import StatePart, part_slices, signature  # noqa: E402
 
 # Outputs of the girdle stage, for models whose scapula moves (das3): as Arm.outputs() names them.
@@ -257,7 +258,11 @@ class ArmBatch:
             if a.shape != (self.n,):
                 raise ValueError(f"a boolean arm mask must have shape ({self.n},), got {a.shape}")
             return np.flatnonzero(a)
-        a = np.atleast_1d(a).astype(np.int64)
+        a = np.atleast_1d(a)
+        # astype would truncate 1.5 to arm 1; an empty list is float64 to numpy and selects nothing.
+        if a.dtype.kind not in "iu" and a.size:
+            raise TypeError(f"arm indices must be integers (or a boolean mask), got {arms!r}")
+        a = a.astype(np.int64)
         if a.ndim != 1 or ((a < 0) | (a >= self.n)).any():
             raise IndexError(f"arm indices must be in [0, {self.n}), got {arms!r}")
         return a
@@ -265,7 +270,7 @@ class ArmBatch:
     def _rows(self, v, m: int, width: int, what: str):
         if v is None:
             return None
-        a = np.asarray(v, dtype=float)
+        a = real_array(v, what)
         if a.shape == (width,):
             a = np.broadcast_to(a, (m, width))
         if a.shape != (m, width):
@@ -286,6 +291,13 @@ class ArmBatch:
         act = self._rows(activation, m, self.n_elements, "activation")
         if act is not None and ((act < 0) | (act > 1)).any():
             raise ValueError("activation must lie in [0, 1]")
+        if q is not None:
+            # As Arm.reset: a posture far beyond the joint ranges (degrees, say) diverges at the first step.
+            def label(r):
+                return f"arm {idx[r]}"
+            joint_range_rows(q, self.dof_names, self.dof_ranges, label)
+            if self.model.base_body == "thorax":  # Arm.reset's girdle contact check (das3), row by row
+                each_row(self._arm._check_girdle_contact, q, range(m), label)
         self._raw.reset(idx, q, qdot, act)
         for i in idx:
             self._errors.pop(int(i), None)

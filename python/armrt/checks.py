@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numbers
 import operator
+import warnings
 
 import numpy as np
 
@@ -118,6 +119,35 @@ def joint_range(q: np.ndarray, dof_names, dof_ranges: np.ndarray, warn: bool = T
                 if np.all((r >= lo - RANGE_MARGIN) & (r <= hi + RANGE_MARGIN)) else "")
         raise ValueError(f"q beyond the joint limits: {desc}.{hint}")
     if warn:
-        import warnings
         warnings.warn(f"q slightly beyond the joint limits: {desc}", RuntimeWarning, stacklevel=4)
+    return q
+
+
+def each_row(check, q: np.ndarray, rows, label, stacklevel: int = 2) -> None:
+    """check(q[r]) for each r in rows, its ValueError prefixed with label(r); the RuntimeWarnings it
+    gives are collected into one naming their rows, so k rows do not print k warnings. stacklevel:
+    counted from the caller of each_row, as for warnings.warn."""
+    slight = []
+    for r in rows:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            try:
+                check(q[r])
+            except ValueError as exc:
+                raise ValueError(f"{label(r)}: {exc}") from None
+        slight += [f"{label(r)}: {w.message}" for w in caught]
+    if slight:
+        more = f"; and {len(slight) - 3} more" if len(slight) > 3 else ""
+        warnings.warn("; ".join(slight[:3]) + more, RuntimeWarning, stacklevel=stacklevel + 1)
+
+
+def joint_range_rows(q: np.ndarray, dof_names, dof_ranges: np.ndarray, label=None, warn: bool = True,
+                     stacklevel: int = 2) -> np.ndarray:
+    """q (k, ndof) itself: joint_range for every row, each error and warning naming its row (label(r),
+    default "row r"); stacklevel as for warnings.warn, from the caller."""
+    lo, hi = dof_ranges[:, 0], dof_ranges[:, 1]
+    # Postures in range, the usual case, cost one vectorised test, not a Python loop over rows.
+    rows = np.flatnonzero(((q < lo) | (q > hi)).any(axis=1))
+    each_row(lambda row: joint_range(row, dof_names, dof_ranges, warn=warn), q, rows,
+             label or (lambda r: f"row {r}"), stacklevel=stacklevel + 1)
     return q
