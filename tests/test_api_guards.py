@@ -202,3 +202,14 @@ def test_batch_reset_checks_the_girdle_contact_as_arm_reset():
     rows[1] = q
     with pytest.raises(ValueError, match=r"arm 1: q puts the scapula into the thorax"):
         b.reset(q=rows)
+
+
+@pytest.mark.parametrize("k, error", [(1.5, TypeError), ("3", TypeError), (2.9, TypeError), (True, TypeError),
+                                      (10**30, OverflowError), (-1, ValueError)])
+def test_batch_step_counts_as_arm_step(k, error):
+    b = armrt.ArmBatch(1, threads=1)
+    with pytest.raises(error, match=r"k \(number of steps\)"):
+        b.step(k)
+    assert b.time[0] == 0.0
+    b.step(np.int64(2))
+    assert b.time[0] == pytest.approx(2 * b.dt)

@@ -19,7 +19,7 @@ os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
 from . import _batch, _core  # noqa: E402
 from .arm import Arm, SimulationError  # noqa: E402
-from .checks import each_row, joint_range_rows, real_array  # noqa: E402
+from .checks import count, each_row, joint_range_rows, real_array  # noqa: E402
 from .snapshot import StatePart, part_slices, signature  # noqa: E402
 
 # Outputs of the girdle stage, for models whose scapula moves (das3): as Arm.outputs() names them.
@@ -333,9 +333,7 @@ class ArmBatch:
         `warn`, named in a RuntimeWarning); they stay where they stopped until reset. With
         outputs=False the output views are left as they were (saves one state-derivative
         evaluation per arm and call; evaluate_outputs() brings them up to date)."""
-        k = int(k)
-        if k < 0:
-            raise ValueError(f"k must be >= 0, got {k}")
+        k = count(k, "k (number of steps)")
         failed = self._raw.step(k, self._threads, bool(outputs))
         for i in failed:
             msg = self._raw.error_message(int(i))
