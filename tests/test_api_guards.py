@@ -213,3 +213,29 @@ def test_batch_step_counts_as_arm_step(k, error):
     assert b.time[0] == 0.0
     b.step(np.int64(2))
     assert b.time[0] == pytest.approx(2 * b.dt)
+
+
+@pytest.mark.parametrize("setting", ["excitation", "strength", "max_activation"])
+@pytest.mark.parametrize("value, error", [({"bicb": "0.3"}, TypeError), ({"bicb": 0.3j}, TypeError),
+                                          ({"bicb": [0.1, 0.2]}, ValueError), ({"bicbb": 0.3}, KeyError),
+                                          ([{"bicb": 0.3}, {"bicb": 0.2}], TypeError), ("0.3", TypeError)])
+def test_batch_settings_by_name_refuse_what_arm_refuses(setting, value, error):
+    """The same helper for both (Arm._named_items, real_array), so the same error and message."""
+    arm, b = armrt.Arm(), armrt.ArmBatch(2, threads=1)
+
+    def apply(target):
+        if setting == "excitation":
+            target.set_excitation(value)
+        else:
+            setattr(target, setting, value)
+    with pytest.raises(error) as from_arm:
+        apply(arm)
+    with pytest.raises(error) as from_batch:
+        apply(b)
+    assert str(from_batch.value) == str(from_arm.value)
+
+
+def test_batch_hand_load_refuses_non_numbers():
+    b = armrt.ArmBatch(2, threads=1)
+    with pytest.raises(TypeError, match="hand force must be real numbers, got complex"):
+        b.set_hand_load(force=[0, 1j, 0])

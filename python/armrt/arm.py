@@ -121,10 +121,7 @@ class Arm:
         n = self.n_elements
         if isinstance(values, Mapping):
             out = np.zeros(n) if what in ("excitation", "activation") else self._current(what)
-            unknown = [name for name in values if not self._is_name(name)]
-            if unknown:
-                raise KeyError(self._unknown_names_message(unknown))
-            items = [(name, self._scalar(v, f"{what}[{name!r}]")) for name, v in values.items()]
+            items = self._named_items(values, what)
             # Overlapping names, for every setting given by names: the engine's one rule (names.h: the most
             # specific name wins, in any order; equal specificity takes the largest).
             out = np.asarray(_core.values_from_names(self.model_name, items, out))
@@ -148,6 +145,15 @@ class Arm:
             warnings.warn(f"{what} outside [{lo}, {hi_}] clipped for elements {names}", RuntimeWarning, stacklevel=3)
             out = np.clip(out, lo, hi_)
         return out
+
+    def _named_items(self, values: Mapping, what: str) -> list[tuple[str, float]]:
+        """[(name, value)] of a {name: value} dict, for the engine's values_from_names (ArmBatch uses it
+        too, so both refuse the same dicts): KeyError naming every unknown name with close matches,
+        TypeError or ValueError for a value that is not one real number."""
+        unknown = [name for name in values if not self._is_name(name)]
+        if unknown:
+            raise KeyError(self._unknown_names_message(unknown))
+        return [(name, self._scalar(v, f"{what}[{name!r}]")) for name, v in values.items()]
 
     @staticmethod
     def _scalar(v, what: str) -> float:

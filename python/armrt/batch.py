@@ -149,7 +149,7 @@ class ArmBatch:
 
     def hand_position_at(self, q) -> np.ndarray:
         """(m, 3) hand positions (m, thorax frame) at postures q of shape (m, dofs) rad (kinematics only)."""
-        q = np.atleast_2d(np.asarray(q, dtype=float))
+        q = np.atleast_2d(real_array(q, "q"))
         out = np.empty((len(q), 3))
         for k, qk in enumerate(q):
             self._arm.reset(q=qk)
@@ -164,20 +164,17 @@ class ArmBatch:
         if isinstance(values, Mapping):
             # Overlapping names, for every setting given by names: the engine's one rule (names.h: the most
             # specific name wins, in any order; equal specificity takes the largest), as Arm.
-            items = []
-            for name, v in values.items():
-                try:
-                    items.append((name if isinstance(name, str) else repr(name), float(v)))
-                except (TypeError, ValueError):
-                    raise ValueError(f"{what}[{name!r}] must be a number, got {v!r}") from None
-                if not np.isfinite(items[-1][1]):
+            items = self._arm._named_items(values, what)
+            for name, v in items:
+                # Before the engine: NaN is the marker below for the elements no name covers.
+                if not np.isfinite(v):
                     raise ValueError(f"{what}[{name!r}] must be finite, got {v!r}")
             # NaN marks the elements no name covers: they keep their current value (0 for an excitation).
             named = np.asarray(_core.values_from_names(self.model_name, items, np.full(ne, np.nan)))
             base = np.zeros((self.n, ne)) if current is None else current
             out = np.where(np.isnan(named)[None, :], base, named[None, :])
         else:
-            arr = np.asarray(values, dtype=float)
+            arr = real_array(values, what)
             if arr.ndim <= 1:
                 arr = np.broadcast_to(arr, (ne,)) if arr.ndim == 0 else arr
                 if arr.shape != (ne,):
@@ -206,7 +203,7 @@ class ArmBatch:
         RuntimeWarning and values above an arm's max_activation capped at it (so `excitation` reads back what
         the dynamics use); NaN raises ValueError."""
         ne = self.n_elements
-        arr = None if isinstance(u, Mapping) else np.asarray(u, dtype=float)
+        arr = None if isinstance(u, Mapping) else real_array(u, "excitation")
         if arr is not None and arr.shape == (self.n, ne) and np.isfinite(arr).all() and arr.min() >= 0 and arr.max() <= 1:
             self._raw.set_excitation(arr)  # the common case, checked without a copy
             return
@@ -221,7 +218,7 @@ class ArmBatch:
     def set_hand_load(self, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> None:
         """External force (N) at the hand and moment (N m) on it, thorax frame: (n, 3) or (3,) for every arm."""
         for name, v, target in (("force", force, self._hand_force), ("moment", moment, self._hand_moment)):
-            a = np.asarray(v, dtype=float)
+            a = real_array(v, f"hand {name}")
             if a.shape not in ((3,), (self.n, 3)):
                 raise ValueError(f"hand {name} must have shape ({self.n}, 3) or (3,), got {a.shape}")
             if not np.all(np.isfinite(a)):
