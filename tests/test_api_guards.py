@@ -6,6 +6,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import threading
+import warnings
 
 import numpy as np
 import pytest
@@ -239,3 +240,59 @@ def test_batch_hand_load_refuses_non_numbers():
     b = armrt.ArmBatch(2, threads=1)
     with pytest.raises(TypeError, match="hand force must be real numbers, got complex"):
         b.set_hand_load(force=[0, 1j, 0])
+
+
+# ------------------------------------------------------------------- functions of a pose check q
+def _pose_calls():
+    m = armrt.Model("das2")
+    arm = armrt.Arm()
+    calls = {f"Model.{name}": getattr(m, name) for name in ("moment_arms", "muscle_lengths", "gh_directions",
+                                                             "mass_matrix", "body_poses", "hand_position",
+                                                             "hand_jacobian")}
+    calls.update({f"Arm.{name}": getattr(arm, name) for name in ("moment_arms", "muscle_lengths", "gh_directions",
+                                                                  "mass_matrix", "girdle_forces",
+                                                                  "thorax_humerus_angles")})
+    from armrt.geometry import ArmGeometry
+    g = ArmGeometry("das2")
+    calls.update({f"ArmGeometry.{name}": getattr(g, name) for name in ("points", "body_poses", "gh_lines_of_action",
+                                                                        "girdle", "points_series", "girdle_series",
+                                                                        "scapula_pose")})
+    return calls
+
+
+POSE_CALLS = _pose_calls()
+
+
+@pytest.mark.parametrize("name", sorted(POSE_CALLS))
+def test_functions_of_a_pose_refuse_q_far_beyond_the_ranges(name):
+    """Degrees given as radians: moment arms of -4.7e6 m before; now checks.joint_range's error with its
+    degrees hint. In range, and slightly beyond it (a simulated state may be), the values come back."""
+    call = POSE_CALLS[name]
+    m = armrt.Model("das2")
+    with pytest.raises(ValueError, match="q beyond the joint limits.*look like degrees"):
+        call(DEGREES)
+    with pytest.raises(ValueError, match="q beyond the joint limits"):
+        call(np.full(m.n_dofs, 1e3))
+    near = m.rest_posture.copy()
+    near[3] = m.dof_ranges[3, 1] + 0.05
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        call(near)
+
+
+@pytest.mark.parametrize("name", ["Model.moment_arms", "Model.hand_position", "ArmGeometry.points_series"])
+def test_rows_of_q_are_checked_naming_the_row(name):
+    m = armrt.Model("das2")
+    rows = np.tile(m.rest_posture, (3, 1))
+    rows[2] = DEGREES
+    with pytest.raises(ValueError, match=r"q row 2: q beyond the joint limits.*look like degrees"):
+        POSE_CALLS[name](rows)
+    assert len(POSE_CALLS[name](rows[:2])) == 2
+
+
+def test_moment_arms_in_range_are_unchanged():
+    m = armrt.Model("das2")
+    arm = armrt.Arm()
+    q = m.rest_posture
+    assert np.array_equal(m.moment_arms(q), arm._sim.muscle_paths(q)[1])
+    assert np.abs(m.moment_arms(q)).max() < 0.2

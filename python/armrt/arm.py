@@ -327,6 +327,13 @@ class Arm:
         beyond a joint's range, with a degrees hint; RuntimeWarning beyond it by less)."""
         return joint_range(q, self.dof_names, self.dof_ranges)
 
+    def _pose(self, q) -> np.ndarray:
+        """q of the functions of a pose: refused, as reset refuses it, more than RANGE_MARGIN beyond a
+        joint's range (the path polynomials are fitted over the ranges: at 25 rad, degrees given as
+        radians, they return moment arms of kilometres). No warning closer in: a simulated state may be
+        slightly beyond its range."""
+        return joint_range(self._dof_vector(q, "q"), self.dof_names, self.dof_ranges, warn=False)
+
     def _dof_vector(self, v, what: str) -> np.ndarray:
         if isinstance(v, Mapping):
             out = (self.rest_posture if what == "q" else np.zeros(self.n_dofs)).copy()
@@ -622,18 +629,18 @@ class Arm:
     # ------------------------------------------------------------------ model at any pose
     def moment_arms(self, q) -> np.ndarray:
         """(n, ndof) moment arms (m) at pose q: -dL/dq of the path polynomials."""
-        return self._sim.muscle_paths(self._dof_vector(q, "q"))[1]
+        return self._sim.muscle_paths(self._pose(q))[1]
 
     def muscle_lengths(self, q) -> np.ndarray:
         """(n,) muscle-tendon lengths (m) at pose q."""
-        return self._sim.muscle_paths(self._dof_vector(q, "q"))[0]
+        return self._sim.muscle_paths(self._pose(q))[0]
 
     def gh_directions(self, q) -> np.ndarray:
         """(n, 3) unit lines of action at GH (scapula frame); zero rows for elements not crossing GH."""
-        return self._sim.gh_directions(self._dof_vector(q, "q"))
+        return self._sim.gh_directions(self._pose(q))
 
     def mass_matrix(self, q) -> np.ndarray:
-        return self._sim.mass_matrix(self._dof_vector(q, "q"))
+        return self._sim.mass_matrix(self._pose(q))
 
     def girdle_forces(self, q) -> dict:
         """The girdle stage at pose q (docs/das3.md; zeros for a model with a fixed girdle): 'tau' (ndof,)
@@ -641,11 +648,11 @@ class Arm:
         (ndof, ndof) N m/rad, J^T dF/dp J (the ROS2 Jacobian's part; the dJ/dq term is left out);
         'contact_distance' (P,) m, first-order signed distance of each contact point (TS, AI) from the
         thorax surface, negative inside; 'contact_force' (P,) N; 'conoid_length' m; 'conoid_tension' N."""
-        return self._sim.girdle_forces(self._dof_vector(q, "q"))
+        return self._sim.girdle_forces(self._pose(q))
 
     def thorax_humerus_angles(self, q) -> np.ndarray:
         """Plane of elevation, elevation, axial rotation (rad) of the humerus relative to the thorax."""
-        return self._sim.thorax_humerus_angles(self._dof_vector(q, "q"))
+        return self._sim.thorax_humerus_angles(self._pose(q))
 
     def gh_stability(self, force) -> tuple[float, float, float]:
         """(theta, phi, GHstab) of a force of the humeral head on the glenoid (scapula frame, N)."""
