@@ -24,7 +24,7 @@ def test_unknown_names_all_at_once_with_close_matches(capsys):
     rc, out, err = run(capsys, "simulate", "bicbb=0.1", "tricepz=0.2", "deltscap=0.1", "--duration", "0.01")
     line = one_line_error(err)
     assert rc == 2 and out == ""
-    assert line.startswith("armrt simulate: error: unknown element, muscle or group 2 names")
+    assert line.startswith("armrt simulate: error: 2 unknown element, muscle or group names")
     assert "'bicbb' (did you mean 'bicb'" in line and "'tricepz' (did you mean 'triceps'" in line
 
 
