@@ -132,6 +132,17 @@ def test_every_option_has_help_with_default():
             assert "--q-deg" in text and "rad" in text
 
 
+def test_model_import_errors_in_the_usual_format(das3_dir, tmp_path, capsys):
+    """The importer printed "import: --free: ..."; every armrt command says "armrt COMMAND: error: ..."."""
+    rc, out, err = run(capsys, "model", "import", str(das3_dir / "model_struct.mat"), "--free", "ELX",
+                       "-o", str(tmp_path / "m.json"))
+    line = one_line_error(err)
+    assert rc == 2 and line.startswith("armrt model import: error: --free: 'ELX' is not a DOF of model_struct.mat")
+    with pytest.raises(ValueError, match="'ELX' is not a DOF"):
+        main(["--traceback", "model", "import", str(das3_dir / "model_struct.mat"), "--free", "ELX",
+              "-o", str(tmp_path / "m.json")])
+
+
 def test_out_of_range_excitation_warns_in_one_line(capsys):
     rc, _, err = run(capsys, "simulate", "bicb=1.5", "--duration", "0.01")
     assert rc == 0
