@@ -296,3 +296,25 @@ def test_moment_arms_in_range_are_unchanged():
     q = m.rest_posture
     assert np.array_equal(m.moment_arms(q), arm._sim.muscle_paths(q)[1])
     assert np.abs(m.moment_arms(q)).max() < 0.2
+
+
+# ------------------------------------------------------------------- ArmBatch's memory
+def test_batch_too_large_for_memory_says_how_much_it_needs():
+    """10**7 arms gave a bare std::bad_alloc; now refused before any allocation, with the bytes per arm
+    (the engine's Batch::stride) and the total."""
+    per_arm = armrt._batch.ARM_BYTES
+    assert per_arm > 1000
+    with pytest.raises(MemoryError, match=rf"needs {per_arm} bytes per arm x 10000000 arms = [\d.e+]+ GB.*arms fit"):
+        armrt.ArmBatch(10**7)
+    with pytest.raises(ValueError, match="at most 2147483647"):
+        armrt.ArmBatch(2**31)
+
+
+def test_batch_memory_check_uses_the_memory_available(monkeypatch):
+    from armrt import batch
+    monkeypatch.setattr(batch, "available_memory", lambda: 10 * armrt._batch.ARM_BYTES)
+    with pytest.raises(MemoryError, match="at most 10 arms fit"):
+        armrt.ArmBatch(11)
+    assert len(armrt.ArmBatch(10, threads=1)) == 10
+    monkeypatch.setattr(batch, "available_memory", lambda: None)   # unknown: not refused
+    assert len(armrt.ArmBatch(2, threads=1)) == 2

@@ -22,6 +22,8 @@ from .arm import Arm, SimulationError  # noqa: E402
 from .checks import count, each_row, joint_range_rows, real_array  # noqa: E402
 from .snapshot import StatePart, part_slices, signature  # noqa: E402
 
+# The engine counts its arms in a C int.
+MAX_ARMS = 2**31 - 1
 # Outputs of the girdle stage, for models whose scapula moves (das3): as Arm.outputs() names them.
 GIRDLE_OUTPUTS = ("girdle_torque", "contact_distance", "contact_force", "conoid_length", "conoid_tension")
 
@@ -32,6 +34,47 @@ def available_cores() -> int:
         return len(os.sched_getaffinity(0))
     except AttributeError:  # not Linux
         return os.cpu_count() or 1
+
+
+def available_memory() -> int | None:
+    """Bytes this process may still take (Linux: MemAvailable, within the cgroup's memory.max when
+    that is lower), else the physical memory; None if unknown."""
+    avail = None
+    try:
+        with open("/proc/meminfo") as f:
+            for line in f:
+                if line.startswith("MemAvailable:"):
+                    avail = int(line.split()[1]) * 1024
+                    break
+    except (OSError, ValueError):
+        pass
+    if avail is None:
+        try:
+            avail = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+        except (AttributeError, ValueError, OSError):
+            return None
+    # In a container MemAvailable is the host's: the cgroup's limit is what the OOM killer enforces.
+    try:
+        with open("/sys/fs/cgroup/memory.max") as f:
+            limit = f.read().strip()
+        if limit != "max":
+            with open("/sys/fs/cgroup/memory.current") as f:
+                used = int(f.read())
+            avail = min(avail, max(int(limit) - used, 0))
+    except (OSError, ValueError):
+        pass
+    return avail
+
+
+def check_batch_memory(n: int) -> None:
+    """MemoryError, naming the bytes per arm and the total, if n arms do not fit in the memory available:
+    the engine would otherwise fail with a bare std::bad_alloc, or have the process killed as it fills them."""
+    per_arm = _batch.ARM_BYTES
+    need = n * per_arm
+    avail = available_memory()
+    if avail is not None and need > avail:
+        raise MemoryError(f"ArmBatch({n}) needs {per_arm} bytes per arm x {n} arms = {need / 1e9:.3g} GB, more than "
+                          f"the {avail / 1e9:.3g} GB of memory available: at most {avail // per_arm} arms fit")
 
 
 def default_threads() -> int:
@@ -74,6 +117,9 @@ class ArmBatch:
         Raises ValueError for a bad n, integrator, dt, substeps or threads."""
         if int(n) != n or n < 1:
             raise ValueError(f"n must be a positive integer number of arms, got {n!r}")
+        if n > MAX_ARMS:
+            raise ValueError(f"n = {n} arms: at most {MAX_ARMS} (the engine counts arms in a C int)")
+        check_batch_memory(int(n))
         kw = {k: v for k, v in (("integrator", integrator), ("dt", dt), ("substeps", substeps)) if v is not None}
         # A single Arm resolves the defaults and validates exactly as Arm does, and gives the names.
         self._arm = Arm(model=model, **kw)
