@@ -6,6 +6,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import threading
+import warnings
 
 import numpy as np
 import pytest
@@ -154,3 +155,172 @@ def test_reset_refuses_a_joint_speed_the_first_step_would_stop_at():
     arm = armrt.Arm()
     with pytest.raises(ValueError, match=r"qdot\[GHy\] = 1e\+06 rad/s is beyond max_joint_speed"):
         arm.reset(qdot=[1e6] * 5)
+
+
+# ------------------------------------------------------------------- ArmBatch refuses what Arm refuses
+DEGREES = np.array([25, 28, 16, 40, 80.0])   # das2's rest posture written in degrees
+
+
+def test_batch_reset_checks_every_posture_as_arm_reset():
+    """Degrees, or a joint far beyond its range, diverged at the next step; each row is now checked by
+    checks.joint_range, the error naming the arm."""
+    b = armrt.ArmBatch(2, threads=1)
+    with pytest.raises(ValueError, match=r"arm 0: q beyond the joint limits.*look like degrees"):
+        b.reset(q=DEGREES)
+    q = np.tile(b.rest_posture, (2, 1))
+    q[1] = b.dof_ranges[:, 1] + 0.3
+    with pytest.raises(ValueError, match=r"arm 1: q beyond the joint limits"):
+        b.reset(q=q)
+    with pytest.raises(ValueError, match=r"arm 1: q beyond the joint limits"):
+        b.reset(q=b.dof_ranges[:, 1] + 0.3, arms=[1])
+    near = b.rest_posture.copy()
+    near[3] = b.dof_ranges[3, 1] + 0.05
+    with pytest.warns(RuntimeWarning, match=r"arm 1: q slightly beyond the joint limits"):
+        b.reset(q=near, arms=[1])
+    assert b.q[1, 3] == near[3]
+
+
+def test_batch_reset_refuses_non_numbers_and_fractional_arms():
+    b = armrt.ArmBatch(2, threads=1)
+    with pytest.raises(TypeError, match="q must be real numbers, got complex"):
+        b.reset(q=b.rest_posture + 0j)
+    with pytest.raises(TypeError, match="qdot must be real numbers"):
+        b.reset(qdot=np.zeros(b.n_dofs, dtype=complex))
+    with pytest.raises(TypeError, match="activation must be numbers"):
+        b.reset(activation="0.1")
+    with pytest.raises(TypeError, match="arm indices must be integers"):
+        b.reset(arms=[1.5])
+    with pytest.raises(TypeError, match="arm indices must be integers"):
+        b.reset(arms=["1"])
+    b.reset(arms=[])                   # nothing selected: nothing reset
+    b.reset(arms=np.array([1], dtype=np.uint8))
+
+
+def test_batch_reset_checks_the_girdle_contact_as_arm_reset():
+    """das3: a posture in range that puts the scapula into the thorax is refused by Arm.reset; ArmBatch
+    too, naming the arm."""
+    arm = armrt.Arm("das3")
+    q = arm.rest_posture.copy()
+    q[arm.dof_names.index("SCx")] = arm.dof_ranges[arm.dof_names.index("SCx"), 1]
+    with pytest.raises(ValueError, match="into the thorax"):
+        arm.reset(q=q)
+    b = armrt.ArmBatch(2, "das3", threads=1)
+    rows = np.tile(arm.rest_posture, (2, 1))
+    rows[1] = q
+    with pytest.raises(ValueError, match=r"arm 1: q puts the scapula into the thorax"):
+        b.reset(q=rows)
+
+
+@pytest.mark.parametrize("k, error", [(1.5, TypeError), ("3", TypeError), (2.9, TypeError), (True, TypeError),
+                                      (10**30, OverflowError), (-1, ValueError)])
+def test_batch_step_counts_as_arm_step(k, error):
+    b = armrt.ArmBatch(1, threads=1)
+    with pytest.raises(error, match=r"k \(number of steps\)"):
+        b.step(k)
+    assert b.time[0] == 0.0
+    b.step(np.int64(2))
+    assert b.time[0] == pytest.approx(2 * b.dt)
+
+
+@pytest.mark.parametrize("setting", ["excitation", "strength", "max_activation"])
+@pytest.mark.parametrize("value, error", [({"bicb": "0.3"}, TypeError), ({"bicb": 0.3j}, TypeError),
+                                          ({"bicb": [0.1, 0.2]}, ValueError), ({"bicbb": 0.3}, KeyError),
+                                          ([{"bicb": 0.3}, {"bicb": 0.2}], TypeError), ("0.3", TypeError)])
+def test_batch_settings_by_name_refuse_what_arm_refuses(setting, value, error):
+    """The same helper for both (Arm._named_items, real_array), so the same error and message."""
+    arm, b = armrt.Arm(), armrt.ArmBatch(2, threads=1)
+
+    def apply(target):
+        if setting == "excitation":
+            target.set_excitation(value)
+        else:
+            setattr(target, setting, value)
+    with pytest.raises(error) as from_arm:
+        apply(arm)
+    with pytest.raises(error) as from_batch:
+        apply(b)
+    assert str(from_batch.value) == str(from_arm.value)
+
+
+def test_batch_hand_load_refuses_non_numbers():
+    b = armrt.ArmBatch(2, threads=1)
+    with pytest.raises(TypeError, match="hand force must be real numbers, got complex"):
+        b.set_hand_load(force=[0, 1j, 0])
+
+
+# ------------------------------------------------------------------- functions of a pose check q
+def _pose_calls():
+    m = armrt.Model("das2")
+    arm = armrt.Arm()
+    calls = {f"Model.{name}": getattr(m, name) for name in ("moment_arms", "muscle_lengths", "gh_directions",
+                                                             "mass_matrix", "body_poses", "hand_position",
+                                                             "hand_jacobian")}
+    calls.update({f"Arm.{name}": getattr(arm, name) for name in ("moment_arms", "muscle_lengths", "gh_directions",
+                                                                  "mass_matrix", "girdle_forces",
+                                                                  "thorax_humerus_angles")})
+    from armrt.geometry import ArmGeometry
+    g = ArmGeometry("das2")
+    calls.update({f"ArmGeometry.{name}": getattr(g, name) for name in ("points", "body_poses", "gh_lines_of_action",
+                                                                        "girdle", "points_series", "girdle_series",
+                                                                        "scapula_pose")})
+    return calls
+
+
+POSE_CALLS = _pose_calls()
+
+
+@pytest.mark.parametrize("name", sorted(POSE_CALLS))
+def test_functions_of_a_pose_refuse_q_far_beyond_the_ranges(name):
+    """Degrees given as radians: moment arms of -4.7e6 m before; now checks.joint_range's error with its
+    degrees hint. In range, and slightly beyond it (a simulated state may be), the values come back."""
+    call = POSE_CALLS[name]
+    m = armrt.Model("das2")
+    with pytest.raises(ValueError, match="q beyond the joint limits.*look like degrees"):
+        call(DEGREES)
+    with pytest.raises(ValueError, match="q beyond the joint limits"):
+        call(np.full(m.n_dofs, 1e3))
+    near = m.rest_posture.copy()
+    near[3] = m.dof_ranges[3, 1] + 0.05
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        call(near)
+
+
+@pytest.mark.parametrize("name", ["Model.moment_arms", "Model.hand_position", "ArmGeometry.points_series"])
+def test_rows_of_q_are_checked_naming_the_row(name):
+    m = armrt.Model("das2")
+    rows = np.tile(m.rest_posture, (3, 1))
+    rows[2] = DEGREES
+    with pytest.raises(ValueError, match=r"q row 2: q beyond the joint limits.*look like degrees"):
+        POSE_CALLS[name](rows)
+    assert len(POSE_CALLS[name](rows[:2])) == 2
+
+
+def test_moment_arms_in_range_are_unchanged():
+    m = armrt.Model("das2")
+    arm = armrt.Arm()
+    q = m.rest_posture
+    assert np.array_equal(m.moment_arms(q), arm._sim.muscle_paths(q)[1])
+    assert np.abs(m.moment_arms(q)).max() < 0.2
+
+
+# ------------------------------------------------------------------- ArmBatch's memory
+def test_batch_too_large_for_memory_says_how_much_it_needs():
+    """10**7 arms gave a bare std::bad_alloc; now refused before any allocation, with the bytes per arm
+    (the engine's Batch::stride) and the total."""
+    per_arm = armrt._batch.ARM_BYTES
+    assert per_arm > 1000
+    with pytest.raises(MemoryError, match=rf"needs {per_arm} bytes per arm x 10000000 arms = [\d.e+]+ GB.*arms fit"):
+        armrt.ArmBatch(10**7)
+    with pytest.raises(ValueError, match="at most 2147483647"):
+        armrt.ArmBatch(2**31)
+
+
+def test_batch_memory_check_uses_the_memory_available(monkeypatch):
+    from armrt import batch
+    monkeypatch.setattr(batch, "available_memory", lambda: 10 * armrt._batch.ARM_BYTES)
+    with pytest.raises(MemoryError, match="at most 10 arms fit"):
+        armrt.ArmBatch(11)
+    assert len(armrt.ArmBatch(10, threads=1)) == 10
+    monkeypatch.setattr(batch, "available_memory", lambda: None)   # unknown: not refused
+    assert len(armrt.ArmBatch(2, threads=1)) == 2

@@ -24,7 +24,7 @@ def test_unknown_names_all_at_once_with_close_matches(capsys):
     rc, out, err = run(capsys, "simulate", "bicbb=0.1", "tricepz=0.2", "deltscap=0.1", "--duration", "0.01")
     line = one_line_error(err)
     assert rc == 2 and out == ""
-    assert line.startswith("armrt simulate: error: unknown element, muscle or group 2 names")
+    assert line.startswith("armrt simulate: error: 2 unknown element, muscle or group names")
     assert "'bicbb' (did you mean 'bicb'" in line and "'tricepz' (did you mean 'triceps'" in line
 
 
@@ -130,6 +130,53 @@ def test_every_option_has_help_with_default():
         if name == "simulate":
             assert "control step, s (default: 0.001)" in " ".join(text.split())
             assert "--q-deg" in text and "rad" in text
+
+
+def _all_parsers():
+    """{"simulate": parser, ..., "model import": parser}: every armrt command, the model actions too."""
+    def subparsers(p):
+        return next((a.choices for a in p._actions if a.__class__.__name__ == "_SubParsersAction"), {})
+    out = {}
+    for name, p in subparsers(build_parser()).items():
+        out[name] = p
+        out.update({f"{name} {sub}": q for sub, q in subparsers(p).items()})
+    return out
+
+
+def test_help_says_each_default_once():
+    """ArgumentDefaultsHelpFormatter added "(default: None)" after "(default: rest posture)", and "(default:
+    True)" to --no-progress."""
+    import re
+    for name, p in _all_parsers().items():
+        text = " ".join(p.format_help().split())
+        for wrong in ("(default: None)", "(default: True)", "(default: False)", "(default: [])"):
+            assert wrong not in text, f"armrt {name} --help: {wrong}"
+        assert not re.search(r"default[^()]*\) \(default:", text), f"armrt {name} --help says a default twice"
+    text = " ".join(_all_parsers()["simulate"].format_help().split())
+    assert "rad (default: rest posture) --q-deg" in text and "control step, s (default: 0.001)" in text
+    assert "--no-progress no progress bar (shown on a terminal for runs longer than 1 s) -o" in text
+
+
+def test_runner_help_names_q0_as_a_list():
+    import subprocess
+    from armrt import realtime
+    try:
+        runner = realtime.runner_path()
+    except FileNotFoundError as e:
+        pytest.skip(str(e))
+    text = subprocess.run([runner, "--help"], capture_output=True, text=True, timeout=20).stdout
+    assert "--q0 Q,Q,..." in text and "--q0 FLOAT" not in text
+
+
+def test_model_import_errors_in_the_usual_format(das3_dir, tmp_path, capsys):
+    """The importer printed "import: --free: ..."; every armrt command says "armrt COMMAND: error: ..."."""
+    rc, out, err = run(capsys, "model", "import", str(das3_dir / "model_struct.mat"), "--free", "ELX",
+                       "-o", str(tmp_path / "m.json"))
+    line = one_line_error(err)
+    assert rc == 2 and line.startswith("armrt model import: error: --free: 'ELX' is not a DOF of model_struct.mat")
+    with pytest.raises(ValueError, match="'ELX' is not a DOF"):
+        main(["--traceback", "model", "import", str(das3_dir / "model_struct.mat"), "--free", "ELX",
+              "-o", str(tmp_path / "m.json")])
 
 
 def test_out_of_range_excitation_warns_in_one_line(capsys):

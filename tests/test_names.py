@@ -91,3 +91,17 @@ def test_arm_and_armbatch_follow_the_rule_in_either_order():
         arm.set_excitation({"infrx": 0.1})
     with pytest.raises(KeyError, match="infrx"):
         batch.set_excitation({"infrx": 0.1})
+
+
+def test_several_unknown_names_are_counted_first_and_another_case_is_suggested():
+    """"unknown element, muscle or group 2 names" read garbled; 'BICB' got no suggestion (difflib's ratio is
+    case-sensitive)."""
+    import armrt
+    arm = armrt.Arm()
+    with pytest.raises(KeyError) as err:
+        arm.set_excitation({"bicepz": 0.3, "tricepz": 0.2})
+    assert err.value.args[0].startswith("2 unknown element, muscle or group names: 'bicepz' (did you mean")
+    with pytest.raises(KeyError, match=r"unknown element, muscle or group name 'BICB' \(did you mean 'bicb'"):
+        arm.set_excitation({"BICB": 0.3})
+    assert _core.close_matches("das2", "Rotator_Cuff")[0] == "rotator_cuff"
+    assert _core.close_matches("das2", "elx", dofs=True)[0] == "ELx"

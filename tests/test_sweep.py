@@ -89,3 +89,17 @@ def test_fig3_cuff_grid_on_ray_equals_local(local_ray):
     assert np.array_equal(remote["gh_stab_max"], local["gh_stab_max"])
     assert np.array_equal(remote["elevation_deg"], local["elevation_deg"])
     assert np.all(remote["elevation_deg"] > 20)   # the deltoid really elevates the arm
+
+
+def test_progress_bar_only_on_a_terminal_unless_asked(monkeypatch):
+    """README: progress bars appear only on a terminal; sweep drew one into pipes and logs (progress
+    defaulted to True, tqdm's disable=False). It now uses armrt.progress.bar like every other loop."""
+    pytest.importorskip("tqdm")
+    import io
+    import sys
+    plain = io.StringIO()
+    monkeypatch.setattr(sys, "stderr", plain)
+    assert sweep(str, [1, 2], stack=False) == ["1", "2"]
+    assert plain.getvalue() == ""
+    sweep(str, [1, 2], progress=True, stack=False)
+    assert "sweep" in plain.getvalue()

@@ -132,6 +132,40 @@ def test_viewer_offline_controls(arm):
         v.stop()
 
 
+def test_viewer_says_why_it_cannot_draw_a_frame():
+    """A pose the geometry refuses (degrees from a runner) is reported on the page; the loop goes on."""
+    pytest.importorskip("viser", reason="viser is not installed (pip install viser)")
+    from armrt.view import Frame, serve
+
+    class Degrees:
+        model, element_names = "das2", []
+
+        def __init__(self):
+            self.frame = Frame(time=0.5, q=np.array([25, 28, 16, 40, 80.0]), activation=None)
+
+        def start(self):
+            pass
+
+        def latest(self):
+            return self.frame
+
+        def close(self):
+            pass
+
+    v = serve(Degrees(), host="127.0.0.1", port=_free_port(), block=False)
+    try:
+        deadline = time.monotonic() + 5
+        while v.last_frame is None and time.monotonic() < deadline:
+            time.sleep(0.02)
+        assert "cannot draw t = 0.50 s" in v._status.content and "look like degrees" in v._status.content
+        v.source.frame = Frame(time=0.6, q=armrt.Model("das2").rest_posture.copy(), activation=None)
+        while v.frames_drawn == 0 and time.monotonic() < deadline:
+            time.sleep(0.02)
+        assert v.frames_drawn == 1 and v._thread.is_alive()
+    finally:
+        v.stop()
+
+
 def test_udp_source_decodes_state_packets(geom):
     realtime = pytest.importorskip("armrt.realtime", reason="armrt.realtime (the armrt-rt codec) is not built")
     from armrt.view import UdpSource

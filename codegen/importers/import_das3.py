@@ -247,7 +247,10 @@ def import_any(mat: Path, free: list[str], out: Path, name: str | None = None, p
     return model
 
 
-def main(argv=None, prog="python -m codegen.import_das3"):
+def main(argv=None, prog="python -m codegen.import_das3", raise_errors: bool = False):
+    """The command; 2 after printing `PROG: error: ...` for a bad request (ModelInputError), or with
+    raise_errors that error raised (armrt model import reports it, and --traceback shows it, as for any
+    armrt command)."""
     ap = argparse.ArgumentParser(prog=prog, description=__doc__.split("\n\n")[0] + " Any DAS-format "
                                  "model_struct*.mat with chosen free DOFs (docs/model_schema.md).")
     ap.add_argument("mat", nargs="?", type=Path, help="DAS-format model_struct*.mat (default: --das3/model_struct.mat)")
@@ -285,7 +288,9 @@ def main(argv=None, prog="python -m codegen.import_das3"):
         model = import_any(mat, free, args.out, name=args.name, posture=posture, equilibrium=args.equilibrium,
                            paths=args.paths, cache_dir=args.cache, seed=args.seed, command=cmd)
     except ModelInputError as exc:
-        print(f"{prog.split()[-1]}: {exc}", file=sys.stderr)
+        if raise_errors:
+            raise
+        print(f"{prog}: error: {exc}", file=sys.stderr)
         return 2
     dropped = model["source"].get("dropped_elements", [])
     print(f"wrote {args.out}: {model['name']}, {len(model['dofs'])} DOFs, {len(model['elements'])} elements, "

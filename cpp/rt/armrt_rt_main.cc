@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
       ->take_all();
   app.add_option("--q0", cfg.q0, "initial joint angles, rad, one per DOF of the model in its order, comma-separated "
                                   "(das2: GHy,GHz,GHyy,ELx,PSy; default: rest posture)")
-      ->delimiter(',')->expected(1, armrt::kMaxDofs);
+      ->delimiter(',')->expected(1, armrt::kMaxDofs)->type_name("Q,Q,...");  // CLI11 would say FLOAT: one number
   app.add_option("--duration", cfg.duration, "run for S seconds (0: until SIGINT/SIGTERM)")->capture_default_str();
   app.add_option("--priority", cfg.priority, "SCHED_FIFO priority 1..99")->capture_default_str();
   app.add_flag("--no-rt", no_rt, "normal scheduling on purpose (no SCHED_FIFO)");

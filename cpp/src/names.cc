@@ -2,6 +2,7 @@
 #include "armrt/names.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 #include <cstring>
@@ -10,6 +11,12 @@
 namespace armrt {
 
 namespace {
+
+std::string to_lower(const std::string& s) {
+  std::string out = s;
+  for (char& ch : out) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return out;
+}
 
 bool is_armrt_name(const ModelDef& def, const std::string& name) {
   for (int i = 0; i < def.num_elements; ++i)
@@ -203,6 +210,13 @@ std::vector<std::string> close_matches(const ModelDef& def, const std::string& n
   } else {
     choices = element_choices(def);
   }
+  // A name typed in another case ('BICB') first: difflib's ratio is case-sensitive and would find nothing.
+  std::vector<std::string> out;
+  const std::string lower = to_lower(name);
+  for (const std::string& c : choices)
+    if (static_cast<int>(out.size()) < n && to_lower(c) == lower && c != name &&
+        std::find(out.begin(), out.end(), c) == out.end())
+      out.push_back(c);
   // As difflib: the ratio of (choice, word), kept at >= 0.6, the n largest (score, choice) pairs.
   std::vector<std::pair<double, std::string>> scored;
   for (const std::string& c : choices) {
@@ -210,8 +224,8 @@ std::vector<std::string> close_matches(const ModelDef& def, const std::string& n
     if (r >= 0.6) scored.emplace_back(r, c);
   }
   std::sort(scored.begin(), scored.end(), [](const auto& x, const auto& y) { return x > y; });
-  std::vector<std::string> out;
-  for (size_t k = 0; k < scored.size() && static_cast<int>(k) < n; ++k) out.push_back(scored[k].second);
+  for (size_t k = 0; k < scored.size() && static_cast<int>(out.size()) < n; ++k)
+    if (std::find(out.begin(), out.end(), scored[k].second) == out.end()) out.push_back(scored[k].second);
   return out;
 }
 
@@ -224,7 +238,7 @@ std::string unknown_names_message(const ModelDef& def, const std::vector<std::st
   std::string joined;
   for (size_t k = 0; k < parts.size(); ++k) joined += (k ? "; " : "") + parts[k];
   if (names.size() == 1) return "unknown element, muscle or group name " + joined + "; `armrt info` lists them";
-  return "unknown element, muscle or group " + std::to_string(names.size()) + " names: " + joined +
+  return std::to_string(names.size()) + " unknown element, muscle or group names: " + joined +
          "; `armrt info` lists them";
 }
 

@@ -48,6 +48,17 @@ TEST_CASE("similarity is difflib's ratio; suggestions as difflib.get_close_match
   CHECK(unknown_dof_message(def, "zz").find("DOFs are ['GHy', 'GHz', 'GHyy', 'ELx', 'PSy']") != std::string::npos);
 }
 
+TEST_CASE("several unknown names are counted before the phrase; another case is suggested first") {
+  const ModelDef& def = armrt_test::das2();
+  const std::string two = unknown_names_message(def, {"bicepz", "tricepz"});
+  CHECK(two.rfind("2 unknown element, muscle or group names: 'bicepz'", 0) == 0);
+  const auto close = close_matches(def, "BICB", NameKind::kElementsMusclesGroups);
+  REQUIRE(!close.empty());
+  CHECK(close[0] == "bicb");
+  CHECK(close_matches(def, "elx", NameKind::kDofs)[0] == "ELx");
+  CHECK(unknown_names_message(def, {"BICB"}).find("(did you mean 'bicb'") != std::string::npos);
+}
+
 TEST_CASE("the same service on another model") {
   const ModelDef& def = generated::pendulum2::model_def();
   std::vector<int> ix;

@@ -63,6 +63,8 @@ std::vector<int> arm_indices(Batch& b, const IndexArray& idx) {
 PYBIND11_MODULE(_batch, mod) {
   mod.doc() = "armrt batch bindings (use armrt.ArmBatch)";
   mod.def("default_threads", &batch_default_threads);
+  // Bytes of one arm (the batch holds them in one block): ArmBatch refuses an n that cannot fit before asking.
+  mod.attr("ARM_BYTES") = static_cast<py::ssize_t>(Batch::stride());
   // libarmrt holds the one model registry: a model armrt.model loaded is found here too.
 
   py::class_<Batch>(mod, "Batch")

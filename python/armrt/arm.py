@@ -14,7 +14,7 @@ from typing import Mapping
 import numpy as np
 
 from . import _core
-from .checks import MAX_COUNT, RANGE_MARGIN, count, deg, joint_range, known_model, per_element, rad, real_array, real_scalar
+from .checks import MAX_COUNT, RANGE_MARGIN, count, deg, joint_range, known_model, named_items, per_element, rad, real_array, real_scalar
 from .data import Data
 from .snapshot import StatePart
 from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
@@ -115,6 +115,10 @@ class Arm:
         """Array of n from an array of n, a scalar or a {name: value} dict (checks.per_element)."""
         current = None if what in ("excitation", "activation") else self._current(what)
         return per_element(self.model_name, self.element_names, values, what, lo, hi, clip, current, stacklevel=4)
+
+    def _named_items(self, values: Mapping, what: str) -> list[tuple[str, float]]:
+        """checks.named_items for this arm's model (ArmBatch refuses the same dicts)."""
+        return named_items(self.model_name, values, what)
 
     def _current(self, what: str) -> np.ndarray:
         return {"strength": self._sim.get_strength, "max_activation": self._sim.get_max_activation}[what]()
@@ -276,6 +280,13 @@ class Arm:
         """q itself; reset's range check (checks.joint_range: ValueError more than RANGE_MARGIN rad
         beyond a joint's range, with a degrees hint; RuntimeWarning beyond it by less)."""
         return joint_range(q, self.dof_names, self.dof_ranges)
+
+    def _pose(self, q) -> np.ndarray:
+        """q of the functions of a pose: refused, as reset refuses it, more than RANGE_MARGIN beyond a
+        joint's range (the path polynomials are fitted over the ranges: at 25 rad, degrees given as
+        radians, they return moment arms of kilometres). No warning closer in: a simulated state may be
+        slightly beyond its range."""
+        return joint_range(self._dof_vector(q, "q"), self.dof_names, self.dof_ranges, warn=False)
 
     def _dof_vector(self, v, what: str) -> np.ndarray:
         if isinstance(v, Mapping):
@@ -566,18 +577,18 @@ class Arm:
     # ------------------------------------------------------------------ model at any pose
     def moment_arms(self, q) -> np.ndarray:
         """(n, ndof) moment arms (m) at pose q: -dL/dq of the path polynomials."""
-        return self._sim.muscle_paths(self._dof_vector(q, "q"))[1]
+        return self._sim.muscle_paths(self._pose(q))[1]
 
     def muscle_lengths(self, q) -> np.ndarray:
         """(n,) muscle-tendon lengths (m) at pose q."""
-        return self._sim.muscle_paths(self._dof_vector(q, "q"))[0]
+        return self._sim.muscle_paths(self._pose(q))[0]
 
     def gh_directions(self, q) -> np.ndarray:
         """(n, 3) unit lines of action at GH (scapula frame); zero rows for elements not crossing GH."""
-        return self._sim.gh_directions(self._dof_vector(q, "q"))
+        return self._sim.gh_directions(self._pose(q))
 
     def mass_matrix(self, q) -> np.ndarray:
-        return self._sim.mass_matrix(self._dof_vector(q, "q"))
+        return self._sim.mass_matrix(self._pose(q))
 
     def girdle_forces(self, q) -> dict:
         """The girdle stage at pose q (docs/das3.md; zeros for a model with a fixed girdle): 'tau' (ndof,)
@@ -585,11 +596,11 @@ class Arm:
         (ndof, ndof) N m/rad, J^T dF/dp J (the ROS2 Jacobian's part; the dJ/dq term is left out);
         'contact_distance' (P,) m, first-order signed distance of each contact point (TS, AI) from the
         thorax surface, negative inside; 'contact_force' (P,) N; 'conoid_length' m; 'conoid_tension' N."""
-        return self._sim.girdle_forces(self._dof_vector(q, "q"))
+        return self._sim.girdle_forces(self._pose(q))
 
     def thorax_humerus_angles(self, q) -> np.ndarray:
         """Plane of elevation, elevation, axial rotation (rad) of the humerus relative to the thorax."""
-        return self._sim.thorax_humerus_angles(self._dof_vector(q, "q"))
+        return self._sim.thorax_humerus_angles(self._pose(q))
 
     def gh_stability(self, force) -> tuple[float, float, float]:
         """(theta, phi, GHstab) of a force of the humeral head on the glenoid (scapula frame, N)."""

@@ -19,8 +19,11 @@ os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
 from . import _batch, _core  # noqa: E402
 from .arm import Arm, SimulationError  # noqa: E402
+from .checks import count, each_row, joint_range_rows, real_array  # noqa: E402
 from .snapshot import StatePart, part_slices, signature  # noqa: E402
 
+# The engine counts its arms in a C int.
+MAX_ARMS = 2**31 - 1
 # Outputs of the girdle stage, for models whose scapula moves (das3): as Arm.outputs() names them.
 GIRDLE_OUTPUTS = ("girdle_torque", "contact_distance", "contact_force", "conoid_length", "conoid_tension")
 
@@ -31,6 +34,47 @@ def available_cores() -> int:
         return len(os.sched_getaffinity(0))
     except AttributeError:  # not Linux
         return os.cpu_count() or 1
+
+
+def available_memory() -> int | None:
+    """Bytes this process may still take (Linux: MemAvailable, within the cgroup's memory.max when
+    that is lower), else the physical memory; None if unknown."""
+    avail = None
+    try:
+        with open("/proc/meminfo") as f:
+            for line in f:
+                if line.startswith("MemAvailable:"):
+                    avail = int(line.split()[1]) * 1024
+                    break
+    except (OSError, ValueError):
+        pass
+    if avail is None:
+        try:
+            avail = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+        except (AttributeError, ValueError, OSError):
+            return None
+    # In a container MemAvailable is the host's: the cgroup's limit is what the OOM killer enforces.
+    try:
+        with open("/sys/fs/cgroup/memory.max") as f:
+            limit = f.read().strip()
+        if limit != "max":
+            with open("/sys/fs/cgroup/memory.current") as f:
+                used = int(f.read())
+            avail = min(avail, max(int(limit) - used, 0))
+    except (OSError, ValueError):
+        pass
+    return avail
+
+
+def check_batch_memory(n: int) -> None:
+    """MemoryError, naming the bytes per arm and the total, if n arms do not fit in the memory available:
+    the engine would otherwise fail with a bare std::bad_alloc, or have the process killed as it fills them."""
+    per_arm = _batch.ARM_BYTES
+    need = n * per_arm
+    avail = available_memory()
+    if avail is not None and need > avail:
+        raise MemoryError(f"ArmBatch({n}) needs {per_arm} bytes per arm x {n} arms = {need / 1e9:.3g} GB, more than "
+                          f"the {avail / 1e9:.3g} GB of memory available: at most {avail // per_arm} arms fit")
 
 
 def default_threads() -> int:
@@ -73,6 +117,9 @@ class ArmBatch:
         Raises ValueError for a bad n, integrator, dt, substeps or threads."""
         if int(n) != n or n < 1:
             raise ValueError(f"n must be a positive integer number of arms, got {n!r}")
+        if n > MAX_ARMS:
+            raise ValueError(f"n = {n} arms: at most {MAX_ARMS} (the engine counts arms in a C int)")
+        check_batch_memory(int(n))
         kw = {k: v for k, v in (("integrator", integrator), ("dt", dt), ("substeps", substeps)) if v is not None}
         # A single Arm resolves the defaults and validates exactly as Arm does, and gives the names.
         self._arm = Arm(model=model, **kw)
@@ -148,7 +195,7 @@ class ArmBatch:
 
     def hand_position_at(self, q) -> np.ndarray:
         """(m, 3) hand positions (m, thorax frame) at postures q of shape (m, dofs) rad (kinematics only)."""
-        q = np.atleast_2d(np.asarray(q, dtype=float))
+        q = np.atleast_2d(real_array(q, "q"))
         out = np.empty((len(q), 3))
         for k, qk in enumerate(q):
             self._arm.reset(q=qk)
@@ -163,20 +210,17 @@ class ArmBatch:
         if isinstance(values, Mapping):
             # Overlapping names, for every setting given by names: the engine's one rule (names.h: the most
             # specific name wins, in any order; equal specificity takes the largest), as Arm.
-            items = []
-            for name, v in values.items():
-                try:
-                    items.append((name if isinstance(name, str) else repr(name), float(v)))
-                except (TypeError, ValueError):
-                    raise ValueError(f"{what}[{name!r}] must be a number, got {v!r}") from None
-                if not np.isfinite(items[-1][1]):
+            items = self._arm._named_items(values, what)
+            for name, v in items:
+                # Before the engine: NaN is the marker below for the elements no name covers.
+                if not np.isfinite(v):
                     raise ValueError(f"{what}[{name!r}] must be finite, got {v!r}")
             # NaN marks the elements no name covers: they keep their current value (0 for an excitation).
             named = np.asarray(_core.values_from_names(self.model_name, items, np.full(ne, np.nan)))
             base = np.zeros((self.n, ne)) if current is None else current
             out = np.where(np.isnan(named)[None, :], base, named[None, :])
         else:
-            arr = np.asarray(values, dtype=float)
+            arr = real_array(values, what)
             if arr.ndim <= 1:
                 arr = np.broadcast_to(arr, (ne,)) if arr.ndim == 0 else arr
                 if arr.shape != (ne,):
@@ -205,7 +249,7 @@ class ArmBatch:
         RuntimeWarning and values above an arm's max_activation capped at it (so `excitation` reads back what
         the dynamics use); NaN raises ValueError."""
         ne = self.n_elements
-        arr = None if isinstance(u, Mapping) else np.asarray(u, dtype=float)
+        arr = None if isinstance(u, Mapping) else real_array(u, "excitation")
         if arr is not None and arr.shape == (self.n, ne) and np.isfinite(arr).all() and arr.min() >= 0 and arr.max() <= 1:
             self._raw.set_excitation(arr)  # the common case, checked without a copy
             return
@@ -220,7 +264,7 @@ class ArmBatch:
     def set_hand_load(self, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> None:
         """External force (N) at the hand and moment (N m) on it, thorax frame: (n, 3) or (3,) for every arm."""
         for name, v, target in (("force", force, self._hand_force), ("moment", moment, self._hand_moment)):
-            a = np.asarray(v, dtype=float)
+            a = real_array(v, f"hand {name}")
             if a.shape not in ((3,), (self.n, 3)):
                 raise ValueError(f"hand {name} must have shape ({self.n}, 3) or (3,), got {a.shape}")
             if not np.all(np.isfinite(a)):
@@ -257,7 +301,11 @@ class ArmBatch:
             if a.shape != (self.n,):
                 raise ValueError(f"a boolean arm mask must have shape ({self.n},), got {a.shape}")
             return np.flatnonzero(a)
-        a = np.atleast_1d(a).astype(np.int64)
+        a = np.atleast_1d(a)
+        # astype would truncate 1.5 to arm 1; an empty list is float64 to numpy and selects nothing.
+        if a.dtype.kind not in "iu" and a.size:
+            raise TypeError(f"arm indices must be integers (or a boolean mask), got {arms!r}")
+        a = a.astype(np.int64)
         if a.ndim != 1 or ((a < 0) | (a >= self.n)).any():
             raise IndexError(f"arm indices must be in [0, {self.n}), got {arms!r}")
         return a
@@ -265,7 +313,7 @@ class ArmBatch:
     def _rows(self, v, m: int, width: int, what: str):
         if v is None:
             return None
-        a = np.asarray(v, dtype=float)
+        a = real_array(v, what)
         if a.shape == (width,):
             a = np.broadcast_to(a, (m, width))
         if a.shape != (m, width):
@@ -286,6 +334,13 @@ class ArmBatch:
         act = self._rows(activation, m, self.n_elements, "activation")
         if act is not None and ((act < 0) | (act > 1)).any():
             raise ValueError("activation must lie in [0, 1]")
+        if q is not None:
+            # As Arm.reset: a posture far beyond the joint ranges (degrees, say) diverges at the first step.
+            def label(r):
+                return f"arm {idx[r]}"
+            joint_range_rows(q, self.dof_names, self.dof_ranges, label)
+            if self.model.base_body == "thorax":  # Arm.reset's girdle contact check (das3), row by row
+                each_row(self._arm._check_girdle_contact, q, range(m), label)
         self._raw.reset(idx, q, qdot, act)
         for i in idx:
             self._errors.pop(int(i), None)
@@ -321,9 +376,7 @@ class ArmBatch:
         `warn`, named in a RuntimeWarning); they stay where they stopped until reset. With
         outputs=False the output views are left as they were (saves one state-derivative
         evaluation per arm and call; evaluate_outputs() brings them up to date)."""
-        k = int(k)
-        if k < 0:
-            raise ValueError(f"k must be >= 0, got {k}")
+        k = count(k, "k (number of steps)")
         failed = self._raw.step(k, self._threads, bool(outputs))
         for i in failed:
             msg = self._raw.error_message(int(i))

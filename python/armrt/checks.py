@@ -120,9 +120,18 @@ def joint_range(q: np.ndarray, dof_names, dof_ranges: np.ndarray, warn: bool = T
                 if np.all((r >= lo - RANGE_MARGIN) & (r <= hi + RANGE_MARGIN)) else "")
         raise ValueError(f"q beyond the joint limits: {desc}.{hint}")
     if warn:
-        import warnings
         warnings.warn(f"q slightly beyond the joint limits: {desc}", RuntimeWarning, stacklevel=4)
     return q
+
+
+def named_items(model_name: str, values: Mapping, what: str) -> list[tuple[str, float]]:
+    """[(name, value)] of a {name: value} dict, for the engine's values_from_names (Arm, Data and ArmBatch
+    refuse the same dicts): KeyError naming every unknown name with close matches, TypeError or ValueError
+    for a value that is not one real number."""
+    unknown = [name for name in values if not (isinstance(name, str) and _core.is_name(model_name, name))]
+    if unknown:
+        raise KeyError(_core.unknown_names_message(model_name, [str(name) for name in unknown]))
+    return [(name, real_scalar(v, f"{what}[{name!r}]")) for name, v in values.items()]
 
 
 def per_element(model_name: str, element_names, values, what: str, lo: float, hi: float | None, clip: bool,
@@ -135,10 +144,7 @@ def per_element(model_name: str, element_names, values, what: str, lo: float, hi
     [lo, hi] (hi None: no upper bound)."""
     n = len(element_names)
     if isinstance(values, Mapping):
-        unknown = [name for name in values if not (isinstance(name, str) and _core.is_name(model_name, name))]
-        if unknown:
-            raise KeyError(_core.unknown_names_message(model_name, [str(name) for name in unknown]))
-        items = [(name, real_scalar(v, f"{what}[{name!r}]")) for name, v in values.items()]
+        items = named_items(model_name, values, what)
         base = np.zeros(n) if current is None else np.asarray(current, dtype=float)
         out = np.asarray(_core.values_from_names(model_name, items, base))
     else:
@@ -175,3 +181,33 @@ def hand_load(force, moment) -> tuple[np.ndarray, np.ndarray]:
             raise ValueError(f"hand {name} contains NaN or infinite values")
         values.append(a)
     return values[0], values[1]
+
+
+def each_row(check, q: np.ndarray, rows, label, stacklevel: int = 2) -> None:
+    """check(q[r]) for each r in rows, its ValueError prefixed with label(r); the RuntimeWarnings it
+    gives are collected into one naming their rows, so k rows do not print k warnings. stacklevel:
+    counted from the caller of each_row, as for warnings.warn."""
+    slight = []
+    for r in rows:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            try:
+                check(q[r])
+            except ValueError as exc:
+                raise ValueError(f"{label(r)}: {exc}") from None
+        slight += [f"{label(r)}: {w.message}" for w in caught]
+    if slight:
+        more = f"; and {len(slight) - 3} more" if len(slight) > 3 else ""
+        warnings.warn("; ".join(slight[:3]) + more, RuntimeWarning, stacklevel=stacklevel + 1)
+
+
+def joint_range_rows(q: np.ndarray, dof_names, dof_ranges: np.ndarray, label=None, warn: bool = True,
+                     stacklevel: int = 2) -> np.ndarray:
+    """q (k, ndof) itself: joint_range for every row, each error and warning naming its row (label(r),
+    default "row r"); stacklevel as for warnings.warn, from the caller."""
+    lo, hi = dof_ranges[:, 0], dof_ranges[:, 1]
+    # Postures in range, the usual case, cost one vectorised test, not a Python loop over rows.
+    rows = np.flatnonzero(((q < lo) | (q > hi)).any(axis=1))
+    each_row(lambda row: joint_range(row, dof_names, dof_ranges, warn=warn), q, rows,
+             label or (lambda r: f"row {r}"), stacklevel=stacklevel + 1)
+    return q

@@ -119,8 +119,20 @@ def cmd_experiments(args) -> int:
     return run_all(out_dir=args.out, quick=args.quick)
 
 
+class DefaultsOnceFormatter(argparse.ArgumentDefaultsHelpFormatter):
+    """ArgumentDefaultsHelpFormatter, but a default is said once and only where it says something: not
+    after a help that already names it ("(default: rest posture)"), nor for None or an empty list (the
+    help says what happens without the option), nor for a flag (--no-progress is not "True")."""
+
+    def _get_help_string(self, action):
+        text = action.help or ""
+        if "default" in text or action.nargs == 0 or action.default is None or action.default == []:
+            return text
+        return super()._get_help_string(action)
+
+
 def _formatter(prog):
-    return argparse.ArgumentDefaultsHelpFormatter(prog, max_help_position=32)
+    return DefaultsOnceFormatter(prog, max_help_position=32)
 
 
 def build_parser() -> argparse.ArgumentParser:

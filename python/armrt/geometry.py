@@ -32,6 +32,7 @@ from pathlib import Path
 import numpy as np
 
 from . import _core
+from .checks import joint_range, joint_range_rows, real_array
 from .model_files import find_model_file  # noqa: F401 (armrt.geometry.find_model_file)
 
 BONES = ("humerus", "ulna", "radius", "hand")
@@ -76,6 +77,7 @@ class ArmGeometry:
         self.rest = np.array([d["rest"] for d in self.info["dofs"]])
         self.dof_names = [d["name"] for d in self.info["dofs"]]
         self.osim_names = [d["osim_name"] for d in self.info["dofs"]]
+        self.dof_ranges = np.array([d["range"] for d in self.info["dofs"]], dtype=float)
         # The fixed scapula's pose (das2), or the rest posture's (das3: the mirrored left side).
         self.R_scapula, self.o_scapula = self.scapula_pose(self.rest)
         self._derive_body_points()
@@ -83,6 +85,24 @@ class ArmGeometry:
         self.model_file = path
         self.model_json = json.loads(path.read_text()) if path is not None else None
         self._derive_scapula_points()
+
+    # -------------------------------------------------------------- poses given
+    def _pose(self, q) -> np.ndarray:
+        """q (ndof,) rad as the engine takes it; ValueError, as Arm.reset, more than RANGE_MARGIN beyond the
+        joint ranges (degrees given as radians would draw the arm folded through itself). No warning closer
+        in: a recorded run may be slightly beyond its range."""
+        a = real_array(q, "q")
+        if a.shape != (len(self.dof_names),) or not np.all(np.isfinite(a)):
+            raise ValueError(f"q must be {len(self.dof_names)} finite joint angles ({', '.join(self.dof_names)}), "
+                             f"got shape {a.shape}")
+        return joint_range(a, self.dof_names, self.dof_ranges, warn=False)
+
+    def _poses(self, q) -> np.ndarray:
+        """A (T, ndof) series of q, every row checked as _pose checks one (errors name the row)."""
+        a = np.atleast_2d(real_array(q, "q"))
+        if a.ndim != 2 or a.shape[1] != len(self.dof_names) or not np.all(np.isfinite(a)):
+            raise ValueError(f"q must be (T, {len(self.dof_names)}) finite joint angles, got shape {a.shape}")
+        return joint_range_rows(a, self.dof_names, self.dof_ranges, lambda r: f"q row {r}", warn=False)
 
     # -------------------------------------------------------------- derived once
     def _arm_poses(self, q) -> tuple[np.ndarray, np.ndarray]:
@@ -145,9 +165,10 @@ class ArmGeometry:
 
     def scapula_pose(self, q) -> tuple[np.ndarray, np.ndarray]:
         """(R (3, 3), o (3,)): the scapula frame in the thorax frame at pose q (fixed for das2)."""
+        q = self._pose(q)
         if self.scapula_body < 0:
             return self.R_base.copy(), self.o_base.copy()
-        R, p = self._sim.body_poses(np.asarray(q, dtype=float))
+        R, p = self._sim.body_poses(q)
         return self.R_base @ R[self.scapula_body], self.to_thorax(p[self.scapula_body])
 
     def scapula_to_thorax(self, x_scapula: np.ndarray, q=None) -> np.ndarray:
@@ -157,11 +178,14 @@ class ArmGeometry:
 
     def body_poses(self, q) -> tuple[np.ndarray, np.ndarray]:
         """(R (4, 3, 3), p (4, 3)) of humerus, ulna, radius, hand in the thorax frame."""
-        R, p = self._arm_poses(q)
+        R, p = self._arm_poses(self._pose(q))
         return np.einsum("ij,bjk->bik", self.R_base, R), self.to_thorax(p)
 
     def points(self, q) -> np.ndarray:
         """(6, 3) thorax-frame points of pose q, in the order of POINTS."""
+        return self._points(self._pose(q))
+
+    def _points(self, q: np.ndarray) -> np.ndarray:
         R, p = self._arm_poses(q)
         pts = np.empty((6, 3))
         pts[0] = p[0]
@@ -174,8 +198,7 @@ class ArmGeometry:
 
     def points_series(self, q: np.ndarray) -> np.ndarray:
         """(T, 6, 3) points for a (T, n_dofs) series of poses."""
-        q = np.atleast_2d(np.asarray(q, dtype=float))
-        return np.stack([self.points(qk) for qk in q])
+        return np.stack([self._points(qk) for qk in self._poses(q)])
 
     @staticmethod
     def segments(points: np.ndarray) -> np.ndarray:
@@ -193,7 +216,7 @@ class ArmGeometry:
         centre along its line of action (the direction of its force on the arm), thorax frame; the
         directions are in the scapula frame, which moves with q in a thorax-based model.
         Not muscle paths: the model stores only their length and GH-direction polynomials."""
-        q = np.asarray(q, dtype=float)
+        q = self._pose(q)
         d = np.asarray(self._sim.gh_directions(q))
         idx = np.flatnonzero(np.linalg.norm(d, axis=1) > 0.5)
         R, o = self.scapula_pose(q)
@@ -232,9 +255,10 @@ class ArmGeometry:
         clavicle_r (SC joint to AC joint), scapula_r, glenoid (with the model file), contact_points
         (TS, AI of the scapulothoracic contact, when the model has them). Empty for a model whose
         scapula is fixed (das2: static() holds it)."""
-        if not self.moving_girdle:
-            return {}
-        q = np.asarray(q, dtype=float)
+        q = self._pose(q)
+        return self._girdle(q) if self.moving_girdle else {}
+
+    def _girdle(self, q: np.ndarray) -> dict[str, np.ndarray]:
         R, p = self._sim.body_poses(q)
         Rs, os_ = self.R_base @ R[self.scapula_body], self.to_thorax(p[self.scapula_body])
         sc = self.to_thorax(p[self.clavicle_body]) if self.clavicle_body >= 0 else self.o_base
@@ -246,8 +270,10 @@ class ArmGeometry:
 
     def girdle_series(self, q: np.ndarray) -> dict[str, np.ndarray]:
         """{part: (T, k, 3)} girdle(q) for a (T, n_dofs) series of poses (empty for a fixed girdle)."""
-        q = np.atleast_2d(np.asarray(q, dtype=float))
-        frames = [self.girdle(qk) for qk in q]
+        q = self._poses(q)
+        if not self.moving_girdle:
+            return {}
+        frames = [self._girdle(qk) for qk in q]
         return {k: np.stack([f[k] for f in frames]) for k in (frames[0] if frames else {})}
 
     def thorax_ellipsoid(self, n: int = 49) -> dict[str, np.ndarray]:

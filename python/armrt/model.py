@@ -7,7 +7,8 @@
     armrt.models()                              # names of the registered models
 
 Shapes: ndof = model.n_dofs, n = model.n_elements. Every function of a pose takes q of shape (ndof,)
-(rad) and returns arrays as documented, or q of shape (k, ndof) and returns them with a leading k.
+(rad) and returns arrays as documented, or q of shape (k, ndof) and returns them with a leading k; a q
+more than checks.RANGE_MARGIN beyond the joint ranges is refused (ValueError), as Arm.reset refuses it.
 """
 from __future__ import annotations
 
@@ -19,7 +20,7 @@ from types import MappingProxyType
 import numpy as np
 
 from . import _core
-from .checks import real_array
+from .checks import joint_range, joint_range_rows, real_array
 from .model_build import BuildResult, build, cached_library
 from .model_files import LOADED as _LOADED
 from .model_files import find_model_file
@@ -307,7 +308,12 @@ class Model:
                              f"got {a.shape}")
         if not np.all(np.isfinite(a)):
             raise ValueError(f"{what} contains NaN or infinite values")
-        return a
+        # The paths are polynomials fitted over the joint ranges: far outside (degrees given as radians)
+        # they return moment arms of kilometres, not an error. No warning closer in: a simulated state
+        # may be slightly beyond its range.
+        if a.ndim == 1:
+            return joint_range(a, self.dof_names, self.dof_ranges, warn=False)
+        return joint_range_rows(a, self.dof_names, self.dof_ranges, lambda r: f"{what} row {r}", warn=False)
 
     def muscle_lengths(self, q) -> np.ndarray:
         """(n,) m: muscle-tendon lengths at pose q (ndof,) rad; (k, n) for q (k, ndof)."""

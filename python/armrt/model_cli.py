@@ -37,7 +37,7 @@ def cmd_model_import(args) -> int:
         argv += ["--name", args.name]
     if args.paths:
         argv += ["--paths", args.paths]
-    return imp.main(argv, prog="armrt model import")
+    return imp.main(argv, prog="armrt model import", raise_errors=True)
 
 
 def add_cli(sub, formatter, msub=None) -> None:

@@ -16,27 +16,14 @@ from typing import Any, Callable, Iterable, Sequence
 
 import numpy as np
 
+from .progress import bar
+
 BACKENDS = ("local", "ray")
 
 
-class _NoBar:
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        return False
-
-    def update(self, n=1):
-        pass
-
-
-def _progress(total: int, desc: str | None, enabled: bool):
-    """A tqdm bar (pip install tqdm); without tqdm, none."""
-    try:
-        from tqdm.auto import tqdm
-    except ImportError:
-        return _NoBar()
-    return tqdm(total=total, desc=desc or "sweep", disable=not enabled, unit="item")
+def _progress(total: int, desc: str | None, enabled: bool | None):
+    """The bar every armrt loop shows (progress.bar: None = only when stderr is a terminal)."""
+    return bar(total, desc or "sweep", unit="item", enabled=enabled, delay=0.0 if enabled else 1.0)
 
 
 def gather(results: Sequence[Any]):
@@ -61,7 +48,7 @@ def gather(results: Sequence[Any]):
 
 
 def sweep(fn: Callable[[Any], Any], items: Iterable[Any], backend: str = "local", *, address: str | None = None,
-          num_cpus_per_task: float = 1.0, progress: bool = True, desc: str | None = None, stack: bool = True,
+          num_cpus_per_task: float = 1.0, progress: bool | None = None, desc: str | None = None, stack: bool = True,
           ray_init: dict | None = None):
     """Returns fn(item) for each item, in the order of `items`.
 
@@ -75,7 +62,8 @@ def sweep(fn: Callable[[Any], Any], items: Iterable[Any], backend: str = "local"
     armrt installed.
 
     With `stack` (default) results are gathered as arrays (see gather()); otherwise a list.
-    A progress bar (tqdm) counts finished items unless progress=False.
+    A progress bar (tqdm) on stderr counts finished items: progress None (default) shows it only on a
+    terminal, and only once the sweep has run for a second; True always; False never.
     Raises ValueError for an unknown backend, ImportError if Ray is needed and missing, and
     re-raises the first exception raised by fn (Ray wraps it in a RayTaskError that names the item's
     task and carries the original traceback).

@@ -550,7 +550,12 @@ class Viewer:
         while not self._stop.is_set():
             f = self.source.latest()
             if f is not None and f is not self.last_frame:
-                self.draw(f)
+                try:
+                    self.draw(f)
+                except ValueError as exc:
+                    # A pose the geometry refuses (q far beyond the joint ranges: degrees, a runner of another
+                    # model) must not end this loop, which would freeze the page without a word: it says why.
+                    self._status.content = f"**cannot draw t = {f.time:.2f} s:** {exc}"
                 self.last_frame = f
             next_t += period
             delay = next_t - time.perf_counter()

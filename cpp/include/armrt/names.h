@@ -53,11 +53,12 @@ std::vector<double> values_from_names(const ModelDef& def, const std::vector<std
 int find_dof(const ModelDef& def, const std::string& name);
 
 enum class NameKind { kElementsMusclesGroups, kDofs };
-// Up to n known names most similar to `name` (Python difflib.get_close_matches: Ratcliff-Obershelp
-// ratio >= 0.6, best first), among element/muscle/group names and their OpenSim aliases, or DOF names.
+// Up to n known names most similar to `name`, among element/muscle/group names and their OpenSim aliases,
+// or DOF names: first those equal to it but for case ('BICB': 'bicb'), then difflib.get_close_matches's
+// (Ratcliff-Obershelp ratio >= 0.6, best first).
 std::vector<std::string> close_matches(const ModelDef& def, const std::string& name, NameKind kind, int n = 3);
 // "unknown element, muscle or group name 'bicc' (did you mean 'bicb', 'bicl'?); `armrt info` lists
-// them", or for several names "... 2 names: 'x'; 'y' (did you mean ...?); ...".
+// them", or for several names "2 unknown element, muscle or group names: 'x'; 'y' (did you mean ...?); ...".
 std::string unknown_names_message(const ModelDef& def, const std::vector<std::string>& names);
 // "unknown DOF 'ELy'; did you mean 'ELx'?", or the list of DOFs when nothing is close.
 std::string unknown_dof_message(const ModelDef& def, const std::string& name);
