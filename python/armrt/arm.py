@@ -282,8 +282,8 @@ class Arm:
         return joint_range(q, self.dof_names, self.dof_ranges)
 
     def _pose(self, q) -> np.ndarray:
-        """q of the functions of a pose: refused, as reset refuses it, more than RANGE_MARGIN beyond a
-        joint's range (the path polynomials are fitted over the ranges: at 25 rad, degrees given as
+        """q of the functions of a pose: refused more than checks.STATE_MARGIN (the engine's domain,
+        0.35 rad) beyond a joint's range, with the degrees hint (the path polynomials are fitted over the ranges: at 25 rad, degrees given as
         radians, they return moment arms of kilometres). No warning closer in: a simulated state may be
         slightly beyond its range."""
         return joint_range(self._dof_vector(q, "q"), self.dof_names, self.dof_ranges, warn=False)
@@ -312,11 +312,11 @@ class Arm:
             return self.data.get_state()
 
     def set_state(self, state) -> None:
-        """Restores an armrt.State from get_state() of an arm of the same model (ValueError otherwise, for
-        a q more than RANGE_MARGIN beyond the joint ranges, as reset(q=...) refuses it, or for path
-        anchors farther from q than max_joint_speed allows). ROS2's memory is rebuilt from
+        """Restores an armrt.State from get_state() of an arm of the same model (ValueError otherwise: the
+        engine's snapshot check, Data.set_state, refuses what a step would stop at, such as a q more than
+        0.35 rad beyond the joint ranges, or path anchors farther from q than max_joint_speed allows). ROS2's memory is rebuilt from
         path_anchors; a State without it makes the next step evaluate the paths afresh.
-        The excitation is capped at this arm's max_activation; a divergence error is cleared. Strength,
+        The excitation is stored capped at this arm's max_activation; a divergence error is cleared. Strength,
         max_activation, gravity and the integrator are the arm's own, not part of the State."""
         with self._exclusive():
             self.data.set_state(state)

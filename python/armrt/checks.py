@@ -13,8 +13,11 @@ from . import _core
 
 # Largest step count or record interval the engine counts (C++ long on every supported platform).
 MAX_COUNT = 2**63 - 1
-# reset(q=...) and set_state refuse a joint further than this (rad, ~11 deg) beyond its range.
+# reset(q=...) refuses a joint further than this (rad, ~11 deg) beyond its range.
 RANGE_MARGIN = 0.2
+# rad: the engine's physical domain (model.h kJointRangeMargin, 0.35): a step stops beyond it, and the engine's
+# snapshot check refuses a state beyond it.
+STATE_MARGIN = _core.JOINT_RANGE_MARGIN
 
 
 def _masked_count(values) -> int:
@@ -105,19 +108,21 @@ def joint_range(q: np.ndarray, dof_names, dof_ranges: np.ndarray, warn: bool = T
     """q (ndof,) rad itself; ValueError if a joint is more than RANGE_MARGIN rad beyond its range
     (dof_ranges (ndof, 2) rad), with a hint when the values look like degrees. Beyond it by less:
     a RuntimeWarning if `warn` (the passive joint limits are springs, so a simulated state can end
-    slightly outside; set_state restores such a state without one)."""
+    slightly outside). Without `warn` (a pose that may come from a simulation: the functions of a pose)
+    the bound is the engine's own, STATE_MARGIN: every state a step accepts is accepted."""
     lo, hi = dof_ranges[:, 0], dof_ranges[:, 1]
+    margin = RANGE_MARGIN if warn else STATE_MARGIN
     outside = (q < lo) | (q > hi)
     if not outside.any():
         return q
     desc = "; ".join(f"{dof_names[j]} = {q[j]:.4g} rad ({np.degrees(q[j]):.1f} deg) outside "
                      f"[{np.degrees(lo[j]):.1f}, {np.degrees(hi[j]):.1f}] deg" for j in np.flatnonzero(outside))
-    far = (q < lo - RANGE_MARGIN) | (q > hi + RANGE_MARGIN)
+    far = (q < lo - margin) | (q > hi + margin)
     if far.any():
         r = np.radians(q)
         hint = (" These look like degrees: q is in radians (np.radians(q) or armrt.rad(q); "
                 "armrt simulate --q-deg on the command line)."
-                if np.all((r >= lo - RANGE_MARGIN) & (r <= hi + RANGE_MARGIN)) else "")
+                if np.all((r >= lo - margin) & (r <= hi + margin)) else "")
         raise ValueError(f"q beyond the joint limits: {desc}.{hint}")
     if warn:
         warnings.warn(f"q slightly beyond the joint limits: {desc}", RuntimeWarning, stacklevel=4)

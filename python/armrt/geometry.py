@@ -88,8 +88,8 @@ class ArmGeometry:
 
     # -------------------------------------------------------------- poses given
     def _pose(self, q) -> np.ndarray:
-        """q (ndof,) rad as the engine takes it; ValueError, as Arm.reset, more than RANGE_MARGIN beyond the
-        joint ranges (degrees given as radians would draw the arm folded through itself). No warning closer
+        """q (ndof,) rad as the engine takes it; ValueError more than checks.STATE_MARGIN (the engine's
+        domain, 0.35 rad) beyond the joint ranges, with the degrees hint (degrees given as radians would draw the arm folded through itself). No warning closer
         in: a recorded run may be slightly beyond its range."""
         a = real_array(q, "q")
         if a.shape != (len(self.dof_names),) or not np.all(np.isfinite(a)):

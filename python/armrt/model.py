@@ -8,7 +8,8 @@
 
 Shapes: ndof = model.n_dofs, n = model.n_elements. Every function of a pose takes q of shape (ndof,)
 (rad) and returns arrays as documented, or q of shape (k, ndof) and returns them with a leading k; a q
-more than checks.RANGE_MARGIN beyond the joint ranges is refused (ValueError), as Arm.reset refuses it.
+more than checks.STATE_MARGIN (the engine's physical domain, 0.35 rad) beyond the joint ranges is refused
+(ValueError, with a hint when q looks like degrees): any state a simulation reaches is accepted.
 """
 from __future__ import annotations
 
