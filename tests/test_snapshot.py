@@ -193,3 +193,11 @@ def test_overlapping_names_follow_one_rule_for_every_setting_given_by_names():
         arm.strength = {"infrx": 0.5}
     with pytest.raises(ValueError, match="must be finite"):
         batch.strength = {"infra": float("nan")}
+
+
+def test_a_state_prints_on_one_line():
+    s = _running_arm().get_state()
+    text = repr(s)
+    assert "\n" not in text and len(text) < 200, text
+    assert text.startswith("armrt.State(das2, t = 0.007 s, 5 DOFs, 102 elements") and "2 anchor(s)" in text
+    assert "no ROS2 memory" in repr(armrt.Arm().get_state())

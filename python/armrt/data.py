@@ -106,6 +106,14 @@ class State:
 
     __hash__ = None
 
+    def __repr__(self) -> str:
+        """One line: the model, time and sizes (the arrays are the fields; print(s.q) shows one)."""
+        memory = ("no ROS2 memory" if self.path_anchors is None else
+                  f"ROS2 memory: {self.path_anchors.shape[0]} anchor(s), steps {self.path_anchor_steps}, "
+                  f"h {self.previous_step:g} s")
+        return (f"armrt.State({self.model}, t = {self.time:g} s, {self.q.size} DOFs, {self.lce.size} elements, "
+                f"max excitation {self.excitation.max(initial=0.0):g}, {memory})")
+
     def as_dict(self) -> dict:
         """Plain dict (e.g. for np.savez(**state.as_dict()); State(**d) rebuilds it). path_anchors of None is
         an empty array here and path_anchor_steps an integer array, which np.savez stores without pickling
