@@ -15,7 +15,7 @@ import numpy as np
 
 from . import _core
 from .checks import MAX_COUNT, RANGE_MARGIN, count, deg, joint_range, known_model, named_items, per_element, rad, real_array, real_scalar
-from .data import Data
+from .data import Data, State, _snapshot_from_state
 from .snapshot import StatePart
 from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
 from .errors import simulation_error as _simulation_error
@@ -623,21 +623,17 @@ def _legacy_snapshot(arm: Arm, raw: tuple) -> np.ndarray:
     hand moment, time, ROS2 memory (anchors, spacing, steps since, h) or None, or (previous_q, h) before
     2026-11-30, which is dropped)."""
     x, excitation, hand_force, hand_moment, time, history = raw
-    where = arm.state_vector_slices(StatePart.FULL)
-    out = np.zeros(max(sl.stop for sl in where.values()))
-    out[where["time"]] = time
-    for name, values in (("excitation", excitation), ("hand_force", hand_force), ("hand_moment", hand_moment)):
-        out[where[name]] = values
-    layout = arm.model.state_layout
-    for name, (offset, n) in layout.items():
-        out[where[name]] = np.asarray(x)[offset:offset + n]
+    x = np.asarray(x, dtype=float)
+    blocks = {name: x[offset:offset + n] for name, (offset, n) in arm.model.state_layout.items()}
+    anchors, steps, h = None, (0, 0), 0.0
     if history is not None and len(history) == 4:
         anchors, spacing, since, h = history
-        anchors = np.asarray(anchors, dtype=float)
-        hist = out[where["ros2_path_history"]]
-        hist[:4] = (h, anchors.shape[0], spacing, since)
-        hist[4:4 + anchors.size] = anchors.ravel()
-    return out
+        steps = (spacing, since)
+    # Packed as any State is (data.py), so the two formats cannot drift apart.
+    state = State(model=arm.model.name, source_hash=arm.model.source_hash, time=time, excitation=excitation,
+                  hand_force=hand_force, hand_moment=hand_moment, path_anchors=anchors, path_anchor_steps=steps,
+                  previous_step=h, **blocks)
+    return _snapshot_from_state(arm.model, arm._sim, state)
 
 
 def _unpickle_arm(cls, model, settings: dict, raw, extras: dict) -> Arm:
