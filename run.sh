@@ -9,7 +9,7 @@ cd "$(dirname "$0")"
 PY=${PYTHON:-python3}
 
 setup() {
-  local debs=(g++ cmake ninja-build libeigen3-dev libsundials-dev doctest-dev chromium ffmpeg libssl-dev libcli11-dev nlohmann-json3-dev)
+  local debs=(g++ cmake ninja-build libeigen3-dev libsundials-dev doctest-dev chromium ffmpeg libssl-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev)
   local missing=()
   for p in "${debs[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
   if [ ${#missing[@]} -gt 0 ]; then

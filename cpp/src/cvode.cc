@@ -75,6 +75,8 @@ bool CvodeIntegrator::advance(double dt) {
   // straddle a discontinuity, and keep the history (and large steps) while they are constant.
   bool inputs_changed = !have_inputs_;
   for (int i = 0; i < m_.num_elements; ++i) inputs_changed |= d_.excitation[i] != last_excitation_[i];
+  // A stimulation map's drive changes at every step: each step is its own initial-value problem then.
+  inputs_changed |= d_.stimulation_map.num_channels > 0;
   for (int k = 0; k < 3; ++k)
     inputs_changed |= d_.hand_force[k] != last_load_[k] || d_.hand_moment[k] != last_load_[3 + k];
   if (inputs_changed) {

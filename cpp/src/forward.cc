@@ -2,6 +2,7 @@
 // mj_forward runs position, velocity, actuation, acceleration stages):
 //   paths           q -> muscle-tendon lengths L, moment arms R            (generated polynomials)
 //   muscles         u, L, R, lce, a -> da/dt, dlce/dt, F, tau_muscle        muscles.cc
+//                   (elements a stimulation map drives: the stimulation stage's target and rate, stimulation.cc)
 //   passive joints  q, qd -> tau_passive                                   passive_joints.cc
 //   external loads  q, hand force/moment -> tau_ext                        external_loads.cc
 //   girdle          q -> tau_girdle: scapulothoracic contact, conoid        girdle.cc (das3 only)
@@ -36,7 +37,9 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
   // Muscles.
   double force[kMaxElements];
   double tau_muscle[kMaxDofs];
-  muscle_dynamics(m, d.muscles, d.excitation.data(), L, R, x + ia, x + il, xdot + ia, xdot + il, force, tau_muscle, jac);
+  const ActivationDrive drive{d.stimulation_map.driven.data(), d.drive_target.data(), d.drive_rate.data()};
+  muscle_dynamics(m, d.muscles, d.excitation.data(), L, R, x + ia, x + il, xdot + ia, xdot + il, force, tau_muscle, jac,
+                  d.stimulation_map.num_channels > 0 ? &drive : nullptr);
 
   // Passive joints.
   double tau_passive[kMaxDofs];

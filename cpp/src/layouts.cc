@@ -29,10 +29,13 @@ const LayoutRow kOutputs[] = {ARMRT_OUTPUTS(ARMRT_ROW_OUT)};
 #define ARMRT_ROW_SNAP(stage) ARMRT_ROW_SNAP_##stage
 #define ARMRT_ROW_SNAP_time(name, size, unit, description) {#name, SizeRule::size, unit, "time", false, description},
 #define ARMRT_ROW_SNAP_input(name, size, unit, description) {#name, SizeRule::size, unit, "input", false, description},
+#define ARMRT_ROW_SNAP_stimulation(name, size, unit, description) \
+  {#name, SizeRule::size, unit, "stimulation", false, description},
 #define ARMRT_ROW_SNAP_integrator(name, size, unit, description) \
   {#name, SizeRule::size, unit, "integrator", false, description},
 const LayoutRow kSnapshot[] = {ARMRT_SNAPSHOT_TIME(ARMRT_ROW_SNAP(time)) ARMRT_STATE_BLOCKS(ARMRT_ROW_STATE)
                                    ARMRT_SNAPSHOT_INPUTS(ARMRT_ROW_SNAP(input))
+                                       ARMRT_SNAPSHOT_STIMULATION(ARMRT_ROW_SNAP(stimulation))
                                        ARMRT_SNAPSHOT_INTEGRATOR(ARMRT_ROW_SNAP(integrator))};
 static_assert(sizeof kSnapshot / sizeof kSnapshot[0] == kNumSnapshotParts, "one row per SnapshotPart");
 

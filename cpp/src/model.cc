@@ -190,7 +190,10 @@ void data_reset(const Model& m, Data& d, const double* q) {
   fresh.excitation = d.excitation;
   fresh.hand_force = d.hand_force;
   fresh.hand_moment = d.hand_moment;
+  fresh.stimulation_map = d.stimulation_map;
+  fresh.stimulation = d.stimulation;
   d = fresh;
+  stimulation_reset(d);  // rested channels: no pulse yet, no fatigue
   for (int j = 0; j < m.num_dofs; ++j) d.x[q_offset(m) + j] = q ? q[j] : m.def->dofs[j].rest;
   double L[kMaxElements];
   m.def->muscle_lengths(&d.x[q_offset(m)], L);

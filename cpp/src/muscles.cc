@@ -1,4 +1,4 @@
-// Stage: muscles. (excitation u, path lengths L, moment arms R, CE lengths lce, activations a) ->
+// Stage: muscles. (excitation u or the stimulation stage's drive, path lengths L, moment arms R, CE lengths lce, activations a) ->
 // (da/dt, dlce/dt, tendon forces F (N), generalised muscle forces tau = R^T F (N m)), and with a
 // Jacobian the kernel's derivatives in the same pass. The element itself: muscle_kernel.h, muscle.cc.
 #include <algorithm>
@@ -51,7 +51,7 @@ void generalised_force_n(const double* moment_arm, const double* force, int n, d
 
 void muscle_dynamics(const Model& m, const MuscleArrays& mc, const double* excitation, const double* muscle_length,
                      const double* moment_arm, const double* act, const double* lce, double* act_dot,
-                     double* lce_dot, double* force, double* tau, StepJacobian* jac) {
+                     double* lce_dot, double* force, double* tau, StepJacobian* jac, const ActivationDrive* drive) {
   const int n = m.num_elements;
   const double b = m.fibre_damping;
   if (!jac) {
@@ -87,6 +87,15 @@ void muscle_dynamics(const Model& m, const MuscleArrays& mc, const double* excit
       jac->inv_cos_pennation[i] = der.inv_cos_pennation;
       jac->pee_force[i] = der.pee_force;
       jac->compress_force[i] = der.compress_force;
+    }
+  }
+  // Elements a stimulation map drives: their activation ODE's target and rate come from the stimulation stage
+  // (a pass of its own, so that the loops above stay the same with and without stimulation).
+  if (drive) {
+    for (int i = 0; i < n; ++i) {
+      if (!drive->driven[i]) continue;
+      act_dot[i] = drive->rate[i] * (drive->target[i] - act[i]);
+      if (jac) jac->act_rate[i] = drive->rate[i];
     }
   }
   generalised_force(moment_arm, force, n, m.num_dofs, tau, m.dof_elements_begin.data(), m.dof_elements_end.data());

@@ -28,7 +28,9 @@ void add_row(Recording& r, const Arm& s, const double* x, double time, double te
   offset += layout_size(SizeRule::size, *m.def);
   ARMRT_STATE_BLOCKS(ARMRT_X)
 #undef ARMRT_X
-  put(d.excitation.data());
+#define ARMRT_X(name, ...) put(row_values(d.name));
+  ARMRT_RECORDED_INPUTS(ARMRT_X)
+#undef ARMRT_X
 #define ARMRT_X(name, size, unit, stage, girdle_only, recorded, description) \
   if (recorded) put(row_values(d.name));
   ARMRT_OUTPUTS(ARMRT_X)
@@ -48,7 +50,7 @@ long simulate_recorded(Arm& s, const double* u, bool held, long n_steps, long re
   const long n_rec = n_steps / record_every + 1;
   const LayoutRow* rows = recorded_channels();
   for (int c = 0; c < kNumChannels; ++c) {
-    r.width[c] = rows[c].girdle_only && !def.girdle ? 0 : layout_size(rows[c].size, def);
+    r.width[c] = rows[c].girdle_only && !def.girdle ? 0 : layout_size(rows[c].size, def, s.data.stimulation_map.num_channels);
     r.channel[c].reserve(n_rec * r.width[c]);
   }
   // Only a recorded step keeps a copy of its start state (its outputs describe that state).

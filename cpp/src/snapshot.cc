@@ -22,12 +22,12 @@ struct PartSpan {
 };
 
 // The parts a signature holds, in table order; returns how many.
-int signature_parts(const ModelDef& def, unsigned signature, PartSpan* out) {
+int signature_parts(const ModelDef& def, unsigned signature, PartSpan* out, int num_channels) {
   int count = 0, offset = 0;
   for (int k = 0; k < kNumSnapshotParts; ++k) {
     const SnapshotPart p = static_cast<SnapshotPart>(k);
     if (!holds(signature, p)) continue;
-    const int n = layout_size(snapshot_rows()[k].size, def);
+    const int n = layout_size(snapshot_rows()[k].size, def, num_channels);
     out[count++] = {p, offset, n};
     offset += n;
   }
@@ -53,11 +53,13 @@ int state_block_offset(const ModelDef& def, SnapshotPart p) {
 const double* data_field(const Data& d, SnapshotPart p) {
   ARMRT_SNAPSHOT_TIME(ARMRT_X)
   ARMRT_SNAPSHOT_INPUTS(ARMRT_X)
+  ARMRT_SNAPSHOT_STIMULATION(ARMRT_X)
   return nullptr;
 }
 double* data_field(Data& d, SnapshotPart p) {
   ARMRT_SNAPSHOT_TIME(ARMRT_X)
   ARMRT_SNAPSHOT_INPUTS(ARMRT_X)
+  ARMRT_SNAPSHOT_STIMULATION(ARMRT_X)
   return nullptr;
 }
 #undef ARMRT_X
@@ -136,27 +138,46 @@ std::string path_history_problem(const Model& m, const Data& d, const double* q,
   return "";
 }
 
+// Why a channel's memory cannot be an arm's: values no run of stimulation reaches.
+std::string stimulation_state_problem(const Data& d, const double* in) {
+  for (int c = 0; c < d.stimulation_map.num_channels; ++c) {
+    const double* st = in + c * kStimStateSize;
+    const std::string ch = std::string("channel '") + d.stimulation_map.channels[c].name + "': ";
+    if (st[kStimCalciumSum] < 0 || st[kStimCalcium] < 0 || st[kStimForce] < 0 || st[kStimForce] > 2)
+      return ch + "calcium sum, CN and force level must be >= 0 (force level <= 2)";
+    if (!(st[kStimFatigueA] >= 0 && st[kStimFatigueA] <= 1) || !(st[kStimFatigueTau1] >= 1) || !(st[kStimFatigueKm] >= 1))
+      return ch + "fatigue must hold A/A_rest in [0, 1] and tau1, Km at least their rested values";
+    if (!(st[kStimRecruitment] >= 0 && st[kStimRecruitment] <= 1)) return ch + "recruitment must lie in [0, 1]";
+    const double q = st[kStimQueued];
+    if (!(q >= 0 && q <= kMaxQueuedPulses && q == std::floor(q)))
+      return ch + "queued pulses must be a whole number in [0, " + std::to_string(kMaxQueuedPulses) + "]";
+    for (int i = 1; i < static_cast<int>(q); ++i)
+      if (st[kStimQueue + i] < st[kStimQueue + i - 1]) return ch + "queued pulse times must increase";
+  }
+  return "";
+}
+
 }  // namespace
 
-int snapshot_size(const ModelDef& def, unsigned signature) {
+int snapshot_size(const ModelDef& def, unsigned signature, int num_channels) {
   if (signature & ~kSnapshotFull)
     throw std::invalid_argument("snapshot signature " + std::to_string(signature) + " has bits beyond the " +
                                 std::to_string(kNumSnapshotParts) + " parts (layouts.h ARMRT_SNAPSHOT)");
   int size = 0;
   for (int p = 0; p < kNumSnapshotParts; ++p)
-    if (signature & (1u << p)) size += layout_size(snapshot_rows()[p].size, def);
+    if (signature & (1u << p)) size += layout_size(snapshot_rows()[p].size, def, num_channels);
   return size;
 }
 
-int snapshot_offset(const ModelDef& def, unsigned signature, SnapshotPart part) {
+int snapshot_offset(const ModelDef& def, unsigned signature, SnapshotPart part, int num_channels) {
   if (!holds(signature, part)) return -1;
-  return snapshot_size(def, signature & (snapshot_bit(part) - 1));
+  return snapshot_size(def, signature & (snapshot_bit(part) - 1), num_channels);
 }
 
 void get_snapshot(const Model& m, const Data& d, const Stepper& s, unsigned signature, double* out) {
   const ModelDef& def = *m.def;
   PartSpan parts[kNumSnapshotParts];
-  const int count = signature_parts(def, signature, parts);
+  const int count = signature_parts(def, signature, parts, d.stimulation_map.num_channels);
   for (int k = 0; k < count; ++k) {
     const auto [p, o, n] = parts[k];
     if (const double* field = data_field(d, p)) std::copy(field, field + n, out + o);
@@ -171,7 +192,7 @@ std::string snapshot_error(const Model& m, const Data& d, unsigned signature, co
   StateVec x = d.x;  // the state as it would be once set
   const double* hist = nullptr;
   PartSpan parts[kNumSnapshotParts];
-  const int count = signature_parts(def, signature, parts);
+  const int count = signature_parts(def, signature, parts, d.stimulation_map.num_channels);
   for (int k = 0; k < count; ++k) {
     const auto [p, o, n] = parts[k];
     for (int i = 0; i < n; ++i)
@@ -183,6 +204,16 @@ std::string snapshot_error(const Model& m, const Data& d, unsigned signature, co
           std::snprintf(buf, sizeof buf, "%s = %.6g is outside [0, 1]", value_name(m, p, i).c_str(), in[o + i]);
           return buf;
         }
+    } else if (p == SnapshotPart::stimulation) {
+      for (int c = 0; c < d.stimulation_map.num_channels; ++c) {
+        const double* v = in + o + c * kStimInputs;
+        const std::string problem =
+            stimulation_command_error(d.stimulation_map.channels[c], v[kStimPulseWidth], v[kStimAmplitude], v[kStimFrequency]);
+        if (!problem.empty()) return "stimulation: " + problem;
+      }
+    } else if (p == SnapshotPart::stimulation_state) {
+      const std::string problem = stimulation_state_problem(d, in + o);
+      if (!problem.empty()) return "stimulation_state: " + problem;
     } else if (p == SnapshotPart::ros2_path_history) {
       hist = in + o;
     } else if (!data_field(static_cast<const Data&>(d), p)) {
@@ -219,10 +250,10 @@ std::string snapshot_error(const Model& m, const Data& d, unsigned signature, co
 
 void set_snapshot(const Model& m, Data& d, Stepper& s, unsigned signature, const double* in) {
   const ModelDef& def = *m.def;
-  snapshot_size(def, signature);  // refuses unknown bits
+  snapshot_size(def, signature, d.stimulation_map.num_channels);  // refuses unknown bits
   const double* hist = nullptr;
   PartSpan parts[kNumSnapshotParts];
-  const int count = signature_parts(def, signature, parts);
+  const int count = signature_parts(def, signature, parts, d.stimulation_map.num_channels);
   for (int k = 0; k < count; ++k) {
     const auto [p, o, n] = parts[k];
     if (p == SnapshotPart::excitation) data_set_excitation(m, d, in + o);

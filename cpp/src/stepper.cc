@@ -99,6 +99,7 @@ bool step(const Model& m, Data& d, Stepper& s, long n, bool record) {
     // and however many substeps (the real-time runner reads data.tet.last_ns).
     const std::int64_t t0 = now_ns();
     bool ok = true;
+    stimulation_advance(m, d, s.dt);  // the stimulation stage: its drive is held over the control step
     if (s.cvode) {
       ok = s.cvode->advance(s.dt);
     } else if (s.substeps == 1) {

@@ -10,6 +10,7 @@
 
 #include "armrt/registry.h"
 #include "armrt/arm.h"
+#include "armrt/engine.h"
 #include "pendulum2.h"
 #include "test_util.h"
 
@@ -73,6 +74,23 @@ TEST_CASE("no heap allocation during 1000 steps (euler, rk4, ros2, ros2_adaptive
     const double dt = integ == Integrator::kEuler ? 1e-4 : integ == Integrator::kRk4 ? 2.5e-4 : default_max_step(integ);
     auto sim = std::make_unique<Arm>(armrt_test::das2(), integ, dt);
     check_1000_steps_allocate_nothing(*sim, {{"elbow_flexors", 0.3}, {"rotator_cuff", 0.05}});
+  }
+}
+
+TEST_CASE("no heap allocation during 1000 steps driven by stimulation (22 channels pulsing, fatigue on)") {
+  for (Integrator integ : {Integrator::kRk4, Integrator::kRos2}) {
+    CAPTURE(integrator_name(integ));
+    const double dt = integ == Integrator::kRk4 ? 2.5e-4 : default_max_step(integ);
+    auto sim = std::make_unique<Arm>(armrt_test::das2(), integ, dt);
+    data_set_stimulation_map(sim->model, sim->data, stimulation_map_per_muscle(*sim->model.def));
+    for (int k = 0; k < sim->data.stimulation_map.num_channels; ++k) {
+      double* c = sim->data.stimulation.data() + k * kStimInputs;
+      c[kStimPulseWidth] = 150e-6, c[kStimAmplitude] = 0.012, c[kStimFrequency] = 20.0 + k;
+    }
+    const double pulses[3] = {0.0105, 0.0207, 0.0309};
+    stimulation_queue_pulses(sim->model, sim->data, 3, pulses, 3);
+    check_1000_steps_allocate_nothing(*sim, {});
+    CHECK(sim->data.stimulation_state[kStimForce] > 0.0);  // the first channel's fibres pull
   }
 }
 

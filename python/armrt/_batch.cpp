@@ -114,10 +114,10 @@ PYBIND11_MODULE(_batch, mod) {
         for (int i = 0; i < b.size(); ++i) data_set_excitation(b.arm(i).model, b.arm(i).data, u.data() + i * ne);
       }, py::arg("u"))
       // Snapshots by signature (snapshot.h), one row per arm.
-      .def("snapshot_size", [](Batch& b, unsigned signature) { return snapshot_size(*b.arm(0).model.def, signature); },
+      .def("snapshot_size", [](Batch& b, unsigned signature) { return snapshot_size(*b.arm(0).model.def, signature, b.arm(0).data.stimulation_map.num_channels); },
            py::arg("signature"))
       .def("get_snapshot", [](Batch& b, unsigned signature) {
-        const int n = snapshot_size(*b.arm(0).model.def, signature);
+        const int n = snapshot_size(*b.arm(0).model.def, signature, b.arm(0).data.stimulation_map.num_channels);
         Array out({static_cast<py::ssize_t>(b.size()), static_cast<py::ssize_t>(n)});
         for (int i = 0; i < b.size(); ++i)
           get_snapshot(b.arm(i).model, b.arm(i).data, b.arm(i).stepper, signature, out.mutable_data() + i * n);
@@ -129,8 +129,8 @@ PYBIND11_MODULE(_batch, mod) {
         const std::vector<int> idx = arm_indices(b, arms);
         const auto m = static_cast<py::ssize_t>(idx.size());
         Array keep;
-        const double* p = rows(x, keep, m, snapshot_size(*b.arm(0).model.def, signature), "state vector");
-        const int n = snapshot_size(*b.arm(0).model.def, signature);
+        const double* p = rows(x, keep, m, snapshot_size(*b.arm(0).model.def, signature, b.arm(0).data.stimulation_map.num_channels), "state vector");
+        const int n = snapshot_size(*b.arm(0).model.def, signature, b.arm(0).data.stimulation_map.num_channels);
         for (py::ssize_t k = 0; k < m; ++k) {
           const Arm& a = b.arm(idx[k]);
           const std::string error = snapshot_error(a.model, a.data, signature, p + k * n);

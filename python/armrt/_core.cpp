@@ -50,9 +50,11 @@ py::object output_value(const double* p, SizeRule size, const ModelDef& def) {
 }
 
 // A table's rows as (name, size rule, unit, stage, girdle_only, description) tuples; the size rule as
-// "one", "two", "three", "dofs", "elements", "contact_points" or "path_history".
+// "one", "two", "three", "dofs", "elements", "contact_points", "path_history", or for stimulation channels
+// "channels", "channel_inputs" (3 per channel), "channel_state" (STIM_STATE_SIZE per channel).
 py::list table_rows(const LayoutRow* rows, int n) {
-  static const char* rule[] = {"one", "two", "three", "dofs", "elements", "contact_points", "path_history"};
+  static const char* rule[] = {"one",        "two",          "three",    "dofs",          "elements",
+                               "contact_points", "path_history", "channels", "channel_inputs", "channel_state"};
   py::list out;
   for (int k = 0; k < n; ++k)
     out.append(py::make_tuple(rows[k].name, rule[static_cast<int>(rows[k].size)], rows[k].unit, rows[k].stage,
@@ -202,6 +204,21 @@ PYBIND11_MODULE(_core, mod) {
   mod.attr("SNAPSHOT_PHYSICS") = kSnapshotPhysics;
   mod.attr("SNAPSHOT_INPUTS") = kSnapshotInputs;
   mod.attr("SNAPSHOT_INTEGRATOR") = kSnapshotIntegrator;
+  mod.attr("SNAPSHOT_STIMULATION") = kSnapshotStimulation;
+  mod.attr("STIM_STATE_SIZE") = static_cast<int>(kStimStateSize);
+  {
+    py::dict cols;
+    cols["calcium_sum"] = static_cast<int>(kStimCalciumSum);
+    cols["calcium"] = static_cast<int>(kStimCalcium);
+    cols["force"] = static_cast<int>(kStimForce);
+    cols["fatigue_A"] = static_cast<int>(kStimFatigueA);
+    cols["fatigue_tau1"] = static_cast<int>(kStimFatigueTau1);
+    cols["fatigue_Km"] = static_cast<int>(kStimFatigueKm);
+    cols["last_pulse"] = static_cast<int>(kStimLastPulse);
+    cols["recruitment"] = static_cast<int>(kStimRecruitment);
+    cols["queued"] = static_cast<int>(kStimQueued);
+    mod.attr("STIM_STATE_COLUMNS") = cols;
+  }
   mod.attr("SNAPSHOT_FULL") = kSnapshotFull;
   // The name service (names.h): the Python API's lookups and messages come from here.
   mod.def("find_elements", [](const std::string& model, const std::string& name) {
@@ -322,24 +339,86 @@ PYBIND11_MODULE(_core, mod) {
       // Snapshots by signature (snapshot.h): get_snapshot -> (snapshot_size,) array; snapshot_error -> why an
       // array is not a snapshot this arm may be set to ("" if it is); set_snapshot writes one, refusing what
       // snapshot_error refuses (ValueError) unless validate is False (an arm's copy of a diverged state).
-      .def("snapshot_size", [](const Arm& s, unsigned signature) { return snapshot_size(*s.model.def, signature); },
+      .def("snapshot_size", [](const Arm& s, unsigned signature) { return snapshot_size(*s.model.def, signature, s.data.stimulation_map.num_channels); },
            py::arg("signature"))
       .def("get_snapshot", [](const Arm& s, unsigned signature) {
-        Array out({snapshot_size(*s.model.def, signature)});
+        Array out({snapshot_size(*s.model.def, signature, s.data.stimulation_map.num_channels)});
         get_snapshot(s.model, s.data, s.stepper, signature, out.mutable_data());
         return out;
       }, py::arg("signature"))
       .def("snapshot_error", [](const Arm& s, unsigned signature, const Array& in) {
-        return snapshot_error(s.model, s.data, signature, checked(in, snapshot_size(*s.model.def, signature), "snapshot"));
+        return snapshot_error(s.model, s.data, signature, checked(in, snapshot_size(*s.model.def, signature, s.data.stimulation_map.num_channels), "snapshot"));
       }, py::arg("signature"), py::arg("snapshot"))
       .def("set_snapshot", [](Arm& s, unsigned signature, const Array& in, bool validate) {
-        const double* p = checked(in, snapshot_size(*s.model.def, signature), "snapshot");
+        const double* p = checked(in, snapshot_size(*s.model.def, signature, s.data.stimulation_map.num_channels), "snapshot");
         if (validate) {
           const std::string error = snapshot_error(s.model, s.data, signature, p);
           if (!error.empty()) throw py::value_error("snapshot: " + error);
         }
         set_snapshot(s.model, s.data, s.stepper, signature, p);
       }, py::arg("signature"), py::arg("snapshot"), py::arg("validate") = true)
+      // Stimulation (stimulation.h): the map from JSON text, a file (.json/.toml) or one channel per muscle;
+      // commands (channels, 3) of [pulse width s, amplitude A, frequency Hz], refused beyond a channel's limits.
+      .def("set_stimulation_map_json", [](Arm& s, const std::string& text) {
+        data_set_stimulation_map(s.model, s.data, stimulation_map_from_json(*s.model.def, text));
+      }, py::arg("text"))
+      .def("set_stimulation_map_file", [](Arm& s, const std::string& path) {
+        data_set_stimulation_map(s.model, s.data, stimulation_map_from_file(*s.model.def, path));
+      }, py::arg("path"))
+      .def("set_stimulation_map_per_muscle", [](Arm& s) {
+        data_set_stimulation_map(s.model, s.data, stimulation_map_per_muscle(*s.model.def));
+      })
+      .def("clear_stimulation_map", [](Arm& s) { data_set_stimulation_map(s.model, s.data, StimulationMap{}); })
+      .def("stimulation_map_json", [](const Arm& s) { return stimulation_map_to_json(*s.model.def, s.data.stimulation_map); })
+      .def_property_readonly("num_channels", [](const Arm& s) { return s.data.stimulation_map.num_channels; })
+      .def_property_readonly("channel_names", [](const Arm& s) {
+        std::vector<std::string> out;
+        for (int k = 0; k < s.data.stimulation_map.num_channels; ++k) out.emplace_back(s.data.stimulation_map.channels[k].name);
+        return out;
+      })
+      .def_property_readonly("stimulation_driven", [](const Arm& s) {
+        std::vector<bool> out(s.model.num_elements);
+        for (int i = 0; i < s.model.num_elements; ++i) out[i] = s.data.stimulation_map.driven[i] != 0;
+        return out;
+      })
+      .def("stimulation_command_error", [](const Arm& s, const Array& cmd) {
+        const int nc = s.data.stimulation_map.num_channels;
+        const double* p = checked(cmd, 3 * nc, "stimulation");
+        for (int k = 0; k < nc; ++k) {
+          const std::string e = stimulation_command_error(s.data.stimulation_map.channels[k], p[3 * k], p[3 * k + 1], p[3 * k + 2]);
+          if (!e.empty()) return e;
+        }
+        return std::string();
+      }, py::arg("stimulation"))
+      .def("set_stimulation", [](Arm& s, const Array& cmd) {
+        const int nc = s.data.stimulation_map.num_channels;
+        const double* p = checked(cmd, 3 * nc, "stimulation");
+        for (int k = 0; k < nc; ++k) {
+          const std::string e = stimulation_command_error(s.data.stimulation_map.channels[k], p[3 * k], p[3 * k + 1], p[3 * k + 2]);
+          if (!e.empty()) throw py::value_error(e);
+        }
+        std::copy(p, p + 3 * nc, s.data.stimulation.begin());
+      }, py::arg("stimulation"))
+      .def_property_readonly("stimulation", [](py::object self) {
+        auto& s = self.cast<Arm&>();
+        Array out({s.data.stimulation_map.num_channels, 3});
+        std::copy(s.data.stimulation.begin(), s.data.stimulation.begin() + 3 * s.data.stimulation_map.num_channels, out.mutable_data());
+        return out;
+      })
+      .def("queue_pulses", [](Arm& s, int channel, const Array& times) {
+        stimulation_queue_pulses(s.model, s.data, channel, times.data(), static_cast<int>(times.size()));
+      }, py::arg("channel"), py::arg("times"))
+      // The chain's memory (channels, kStimStateSize) as a copy: columns as stimulation.h StimState.
+      .def_property_readonly("stimulation_state", [](const Arm& s) {
+        const int nc = s.data.stimulation_map.num_channels;
+        Array out({nc, static_cast<int>(kStimStateSize)});
+        std::copy(s.data.stimulation_state.begin(), s.data.stimulation_state.begin() + nc * kStimStateSize, out.mutable_data());
+        return out;
+      })
+      .def("recruitment_fraction", [](const Arm& s, int channel, double pw, double amp) {
+        if (channel < 0 || channel >= s.data.stimulation_map.num_channels) throw py::index_error("no such channel");
+        return recruitment_fraction(s.data.stimulation_map.channels[channel].recruitment, pw, amp);
+      }, py::arg("channel"), py::arg("pulse_width"), py::arg("amplitude"))
       .def("evaluate_outputs", &Arm::evaluate_outputs, "outputs at the current state (computed only if stale)")
       .def("outputs_current", [](const Arm& s) { return outputs_current(s.model, s.data); })
       // One ARMRT_OUTPUTS row at the current state (a float or a copy); KeyError for an unknown name.

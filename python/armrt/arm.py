@@ -23,6 +23,7 @@ from .integrators import DEFAULT_INTEGRATOR, DEFAULT_MAX_STEP, INTEGRATORS, MAX_
 from .model import Model
 from .profile import profile_values
 from .progress import bar as progress_bar
+from . import stimulation as _stimulation
 from .result import Result, _recorded_rows, _row_bytes
 from .result import _rim_of_recorded_angles  # noqa: F401 (armrt.arm._rim_of_recorded_angles, as before)
 
@@ -45,7 +46,7 @@ class Arm:
     """
 
     def __init__(self, model="das2", integrator: str = DEFAULT_INTEGRATOR, dt: float = 1e-3,
-                 substeps: int | None = None):
+                 substeps: int | None = None, stimulation=None):
         """model: a registered model's name (armrt.models(); "das2" is built in), a model file path
         (built on demand and cached, see armrt.Model.load) or an armrt.Model; `arm.model` is the
         armrt.Model, `arm.data` the armrt.Data this arm steps.
@@ -58,6 +59,11 @@ class Arm:
         explicit RK4 step of 1 ms is not stable because the model's short-tendon elements are stiff at
         low activation. "ros2_adaptive" redoes a step as two halves when its error estimate is too
         large: for offline runs at dt = 2 ms, not for hard real time.
+
+        stimulation: None (excitation drives every element), "per_muscle" (one intramuscular channel per
+        muscle, named after it), or a stimulation map (a .json/.toml path or a dict; armrt.stimulation,
+        docs/fes.md): the elements it reaches then follow the stimulation (set_stimulation) and ignore
+        their excitation.
 
         Raises ValueError for an unknown integrator, a dt outside (0, 1] s (integrators.MAX_DT: the
         excitation is held for a whole control step), or substeps outside [1, 100 000]
@@ -85,6 +91,8 @@ class Arm:
         self._index.update({g: list(ix) for g, ix in info["groups"]})
         self.n_elements = len(self.element_names)
         self.n_dofs = len(self.dof_names)
+        if stimulation is not None:
+            _stimulation.install_map(self._sim, stimulation)
         # The state views are Data's, from the engine's state layout (data.h via model_info).
         self._views = self.data._views
         # What Arm itself sets; anything else on an arm is the user's, carried by copies and pickles.
@@ -136,6 +144,76 @@ class Arm:
     @property
     def excitation(self) -> np.ndarray:
         return self._sim.excitation.copy()
+
+    # ------------------------------------------------------------------ stimulation (docs/fes.md)
+    def set_stimulation_map(self, stimulation) -> None:
+        """Installs a stimulation map (None, "per_muscle", a .json/.toml path or a dict; see __init__):
+        commands zero, every channel rested. ValueError naming the field for a map the engine refuses."""
+        with self._exclusive():
+            _stimulation.install_map(self._sim, stimulation)
+
+    @property
+    def channel_names(self) -> list[str]:
+        """The stimulation map's channels, in command order ([] without a map)."""
+        return list(self._sim.channel_names)
+
+    def stimulation_map(self) -> dict:
+        """The installed map with every default explicit (a dict a file or set_stimulation_map accepts)."""
+        import json
+        return json.loads(self._sim.stimulation_map_json()) if self._sim.num_channels else {}
+
+    def set_stimulation(self, values) -> None:
+        """Holds each channel's command over the next steps: {channel: (pulse_width_s, amplitude_A,
+        frequency_Hz)} (unnamed channels keep theirs) or a (channels, 3) array. Frequency 0 stops the
+        channel's train; a changed frequency takes effect from the last pulse. ValueError for an unknown
+        channel, a non-finite or negative value, or one beyond the channel's limits (pulse width, amplitude,
+        frequency, charge per phase = amplitude x pulse width); nothing is changed then."""
+        with self._exclusive():
+            cmd = _stimulation.commands(self._sim, values, self._sim.stimulation)
+            self._sim.set_stimulation(cmd.ravel())
+
+    @property
+    def stimulation(self) -> np.ndarray:
+        """(channels, 3): the held [pulse width s, amplitude A, frequency Hz] per channel."""
+        return self._sim.stimulation
+
+    def queue_pulses(self, channel: str, times) -> None:
+        """Queues single pulses on a channel at explicit times (s, increasing, not before arm.time), with the
+        channel's held pulse width and amplitude, besides any frequency train (set frequency 0 for pulses
+        alone). At most 16 ahead per channel (ValueError beyond: queue the rest later)."""
+        names = self.channel_names
+        if channel not in names:
+            raise ValueError(f"unknown stimulation channel {channel!r}; channels: {', '.join(names) or 'none'}")
+        t = np.atleast_1d(np.asarray(times, dtype=float))
+        with self._exclusive():
+            self._sim.queue_pulses(names.index(channel), np.ascontiguousarray(t))
+
+    @property
+    def stimulation_state(self) -> np.ndarray:
+        """(channels, armrt.stimulation.STATE_SIZE): the chain's memory (columns: armrt.stimulation.STATE_COLUMNS:
+        calcium_sum, calcium (CN), force (F/F_ref), fatigue_A, fatigue_tau1, fatigue_Km (over rested values),
+        last_pulse (s), recruitment, queued, then the queued pulse times)."""
+        return self._sim.stimulation_state
+
+    @property
+    def fatigue(self) -> dict:
+        """{channel: 1 - A/A_rest} now: the fraction of Ding's force-scaling factor A the channel's fibres have
+        lost (0 rested). reset() rests every channel."""
+        st = self._sim.stimulation_state
+        return {n: float(1.0 - st[k, _stimulation.STATE_COLUMNS["fatigue_A"]]) for k, n in enumerate(self.channel_names)}
+
+    @property
+    def force_level(self) -> dict:
+        """{channel: f = F/F_ref} now: the normalised force of the fibres the channel recruits (docs/fes.md)."""
+        st = self._sim.stimulation_state
+        return {n: float(st[k, _stimulation.STATE_COLUMNS["force"]]) for k, n in enumerate(self.channel_names)}
+
+    def recruitment_fraction(self, channel: str, pulse_width: float, amplitude: float) -> float:
+        """The fraction of what `channel` reaches that one pulse recruits (pulse width s, amplitude A)."""
+        names = self.channel_names
+        if channel not in names:
+            raise ValueError(f"unknown stimulation channel {channel!r}; channels: {', '.join(names) or 'none'}")
+        return float(self._sim.recruitment_fraction(names.index(channel), float(pulse_width), float(amplitude)))
 
     def set_hand_load(self, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> None:
         """External force (N) at the hand point and moment (N m) on the hand, thorax frame
@@ -423,7 +501,7 @@ class Arm:
         """Memory (bytes) of the Result simulate(duration, record_every=...) returns."""
         n_steps = self._n_steps(real_scalar(duration, "duration"))
         rows = _recorded_rows(n_steps, count(record_every, "record_every", minimum=1))
-        return rows * _row_bytes(self.n_elements, self.n_dofs, self._contact_points())
+        return rows * _row_bytes(self.n_elements, self.n_dofs, self._contact_points(), self._sim.num_channels)
 
     def _contact_points(self) -> int:
         girdle = self.model._info["girdle"]  # the Model's own description (Model.info would copy it: 1 ms)
@@ -457,7 +535,7 @@ class Arm:
         record_every = count(record_every, "record_every", minimum=1)
         rows = _recorded_rows(n_steps, record_every)
         limit = RESULT_MEMORY_LIMIT if max_bytes is None else real_scalar(max_bytes, "max_bytes")
-        need = rows * _row_bytes(self.n_elements, self.n_dofs, self._contact_points())
+        need = rows * _row_bytes(self.n_elements, self.n_dofs, self._contact_points(), self._sim.num_channels)
         if need > limit:
             fit = int(np.ceil(need / limit)) * record_every
             raise MemoryError(
@@ -519,6 +597,8 @@ class Arm:
                     row += take
                     pbar.update((k1 - k0) * self.dt)
         assert row == rows, (row, rows)
+        if "stimulation" in out:  # (T, 3 x channels) -> (T, channels, 3)
+            out["stimulation"] = out["stimulation"].reshape(rows, -1, 3)
         return Result(**out, dof_names=list(self.dof_names), element_names=list(self.element_names),
                       integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model_name,
                       model_hash=self.model.source_hash)

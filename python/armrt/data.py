@@ -14,7 +14,7 @@ from __future__ import annotations
 import threading
 import warnings
 from contextlib import contextmanager
-from dataclasses import InitVar, dataclass, fields
+from dataclasses import InitVar, dataclass, field, fields
 
 import numpy as np
 
@@ -59,10 +59,15 @@ class State:
     path_anchors: np.ndarray | None = None  # (k, ndof) rad, k = 1 or 2: q of ROS2's last path evaluations
     path_anchor_steps: tuple = (0, 0)       # (steps between the anchors, steps from the newest to this state)
     previous_step: float = 0.0              # s, the size of the steps that led here
+    # An arm with a stimulation map (armrt.stimulation): per channel [pulse width s, amplitude A, frequency Hz]
+    # flattened (3 x channels,), and the chain's memory (STIM_STATE_SIZE x channels,); empty without a map.
+    stimulation: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    stimulation_state: np.ndarray = field(default_factory=lambda: np.zeros(0))
     # armrt before 2026-11-30 saved ROS2's memory as previous_q: accepted when read back, and dropped (below).
     previous_q: InitVar[np.ndarray | None] = None
 
-    _ARRAYS = ("q", "qdot", "lce", "activation", "excitation", "hand_force", "hand_moment")
+    _ARRAYS = ("q", "qdot", "lce", "activation", "excitation", "hand_force", "hand_moment", "stimulation",
+               "stimulation_state")
 
     def _array_fields(self) -> tuple:
         """The array fields this State holds: _ARRAYS, and path_anchors unless it is None."""
@@ -266,7 +271,8 @@ class Data:
         s = self._sim
         return dict(integrator=s.integrator, dt=s.dt, substeps=s.substeps, strength=s.get_strength(),
                     max_activation=s.get_max_activation(), gravity=np.array(s.gravity),
-                    max_joint_speed=s.max_joint_speed)
+                    max_joint_speed=s.max_joint_speed,
+                    stimulation_map=s.stimulation_map_json() if s.num_channels else None)
 
     def _restore(self, settings: dict, snapshot: np.ndarray) -> None:
         """Applies _settings() (but the integrator, which the engine arm was made with) and a full snapshot, as
@@ -275,6 +281,8 @@ class Data:
             self._sim.set_strength_and_max_activation(settings["strength"], settings["max_activation"])
             self._sim.gravity = np.asarray(settings["gravity"], dtype=float)
             self._sim.max_joint_speed = settings["max_joint_speed"]
+            if settings.get("stimulation_map"):  # before the snapshot: its stimulation parts are sized by the map
+                self._sim.set_stimulation_map_json(settings["stimulation_map"])
             self._load_snapshot(snapshot)
 
     @classmethod

@@ -192,13 +192,13 @@ class Motion:
         T, n = len(self.time), arm.n_elements
         nan = lambda *shape: np.full((T, *shape), np.nan)  # noqa: E731
         qdot = np.gradient(self.q, self.time, axis=0) if T > 1 else np.zeros_like(self.q)
-        from .result import CHANNELS
+        from .result import CHANNELS, _optional
         width = {"one": (), "two": (2,), "three": (3,), "dofs": (arm.n_dofs,), "elements": (n,)}
         # Every recorded channel the file does not give is unknown (NaN), whatever the engine's table holds.
         known = {"time": self.time.copy(), "q": self.q.copy(), "qdot": qdot, "tet_ns": np.zeros(T),
                  "thorax_humerus": np.array([arm.thorax_humerus_angles(q) for q in self.q])}
         arrays = {name: known[name] if name in known else nan(*width[rule])
-                  for name, rule, _unit, _stage, girdle_only, _doc in CHANNELS if not girdle_only}
+                  for name, rule, *_ in (c for c in CHANNELS if not _optional(c))}
         return Result(**arrays, dof_names=list(arm.dof_names), element_names=list(arm.element_names),
                       integrator="", dt=float(np.median(np.diff(self.time))) if T > 1 else 0.0, model=self.model)
 

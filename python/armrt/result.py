@@ -17,12 +17,22 @@ from .model import Model
 CHANNELS = tuple(_core.recorded_channels())
 _WIDTH = {"one": lambda nd, ne, nc: 1, "two": lambda nd, ne, nc: 2, "three": lambda nd, ne, nc: 3,
           "dofs": lambda nd, ne, nc: nd, "elements": lambda nd, ne, nc: ne, "contact_points": lambda nd, ne, nc: nc}
+# Channels of an arm's stimulation map (one value, or three, per channel): present only with a map.
+_STIMULATION_RULES = ("channels", "channel_inputs")
 
 
-def _row_bytes(n_elements: int, n_dofs: int = 5, n_contact_points: int = 0) -> int:
+def _optional(channel) -> bool:
+    """Whether a recorded channel exists only for some arms: girdle channels (models whose scapula moves) and
+    stimulation channels (arms with a stimulation map)."""
+    return bool(channel[4]) or channel[1] in _STIMULATION_RULES
+
+
+def _row_bytes(n_elements: int, n_dofs: int = 5, n_contact_points: int = 0, n_channels: int = 0) -> int:
     """Bytes of one recorded row of a Result (float64): the sum of the recorded channels' widths for a model
-    of n_dofs DOFs, n_elements elements and n_contact_points girdle contact points (0: no girdle channels)."""
-    return 8 * sum(_WIDTH[rule](n_dofs, n_elements, n_contact_points)
+    of n_dofs DOFs, n_elements elements and n_contact_points girdle contact points (0: no girdle channels),
+    and an arm of n_channels stimulation channels (0: no stimulation channels)."""
+    width = dict(_WIDTH, channels=lambda nd, ne, nc: n_channels, channel_inputs=lambda nd, ne, nc: 3 * n_channels)
+    return 8 * sum(width[rule](n_dofs, n_elements, n_contact_points)
                    for _name, rule, _unit, _stage, girdle_only, _doc in CHANNELS
                    if not girdle_only or n_contact_points > 0)
 
@@ -42,7 +52,7 @@ def _other_columns() -> dict:
 
 
 _SHAPES = {"one": "(T,)", "two": "(T, 2)", "three": "(T, 3)", "dofs": "(T, ndof)", "elements": "(T, n)",
-           "contact_points": "(T, P)"}
+           "contact_points": "(T, P)", "channels": "(T, channels)", "channel_inputs": "(T, channels, 3)"}
 
 
 class _ResultMethods:
@@ -51,12 +61,14 @@ class _ResultMethods:
     repr() is one line; to_dataframe() gives a pandas DataFrame (pandas optional), plot() a figure.
     Arrays (the engine's recorded channels, armrt/layouts.h; ndof DOFs, n elements, P girdle contact points):
     {arrays}
-    The girdle arrays ({optional}) exist for models whose scapula moves (das3), else they are None.
+    The optional arrays ({optional}) are None where they do not apply: the girdle arrays exist for models
+    whose scapula moves (das3), the stimulation arrays for arms with a stimulation map (stimulation: pulse
+    width s, amplitude A, frequency Hz per channel; recruitment and fatigue per channel).
     Metadata: dof_names, element_names, integrator, dt (control step, s), substeps, model, model_hash (SHA-256
     of the model file: reopens a model built on demand from the cache)."""
 
-    ARRAYS = tuple(c[0] for c in CHANNELS if not c[4])
-    OPTIONAL_ARRAYS = tuple(c[0] for c in CHANNELS if c[4])
+    ARRAYS = tuple(c[0] for c in CHANNELS if not _optional(c))
+    OPTIONAL_ARRAYS = tuple(c[0] for c in CHANNELS if _optional(c))
     # Arrays added after the first file format: a file without them gets them from its own recorded
     # gh_angles through the engine (gh_rim), so that older results load whole.
     _DERIVED_FROM_GH_ANGLES = ("gh_rim_margin", "gh_rim_direction")
@@ -72,7 +84,7 @@ class _ResultMethods:
     _OTHER_COLUMNS = _other_columns()
 
     def channels(self) -> list[str]:
-        """The time-series names this Result has besides time: ARRAYS, and the girdle arrays when present."""
+        """The time-series names this Result has besides time: ARRAYS, and the optional arrays when present."""
         return [k for k in self.ARRAYS if k != "time"] + [k for k in self.OPTIONAL_ARRAYS if getattr(self, k) is not None]
 
     def __repr__(self) -> str:
@@ -246,11 +258,11 @@ def _rim_of_recorded_angles(model: str, gh_angles: np.ndarray, path: str, keys) 
 # array here without a change to this file), then the metadata.
 Result = make_dataclass(
     "Result",
-    [(c[0], np.ndarray) for c in CHANNELS if not c[4]]
+    [(c[0], np.ndarray) for c in CHANNELS if not _optional(c)]
     + [("dof_names", list, field(default_factory=list)), ("element_names", list, field(default_factory=list)),
        ("integrator", str, field(default="")), ("dt", float, field(default=0.0)), ("substeps", int, field(default=1)),
        ("model", str, field(default="")), ("model_hash", str, field(default=""))]
-    + [(c[0], "np.ndarray | None", field(default=None)) for c in CHANNELS if c[4]],
+    + [(c[0], "np.ndarray | None", field(default=None)) for c in CHANNELS if _optional(c)],
     bases=(_ResultMethods,), repr=False, namespace={"__module__": __name__})
 Result.__doc__ = _ResultMethods.__doc__.format(
     arrays="\n    ".join(f"{c[0]} {_SHAPES[c[1]]} {c[2]}: {c[5]}" for c in CHANNELS),

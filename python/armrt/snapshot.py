@@ -24,6 +24,7 @@ def _state_part() -> type:
     members = {name.upper(): 1 << k for k, name in enumerate(PART_NAMES)}
     members.update(PHYSICS=_core.SNAPSHOT_PHYSICS, INPUTS=_core.SNAPSHOT_INPUTS,
                    INTEGRATOR=_core.SNAPSHOT_INTEGRATOR, FULL=_core.SNAPSHOT_FULL)
+    # STIMULATION_STATE is one part already (the stimulation chain's memory): no group of the same name.
     flag = enum.IntFlag("StatePart", members, module=__name__)
     flag.__doc__ = ("The parts of a state vector (Arm.get_state_vector), one bit each, OR-able: "
                     + ", ".join(f"{row[0].upper()} ({row[5]})" for row in ROWS)

@@ -10,6 +10,7 @@
 
 #include "armrt/layouts.h"
 #include "armrt/model.h"
+#include "armrt/stimulation.h"
 
 namespace armrt {
 
@@ -83,6 +84,21 @@ struct Data {
   std::array<double, kMaxElements> excitation{};  // neural excitation u in [0, 1]
   std::array<double, 3> hand_force{};   // N, applied at the hand point, thorax frame
   std::array<double, 3> hand_moment{};  // N m, applied to the hand, thorax frame
+
+  // Stimulation (stimulation.h): the map (a setting: which channels reach which elements), each channel's
+  // command held over the steps [pulse width (s), amplitude (A), frequency (Hz)] x num_channels, and the chain's
+  // memory (StimState x num_channels; part of the snapshot). Without a map (num_channels 0) excitation drives
+  // every element; with one, the elements it reaches follow the stimulation and ignore their excitation.
+  StimulationMap stimulation_map;
+  std::array<double, kMaxChannels * kStimInputs> stimulation{};
+  std::array<double, kMaxChannels * kStimStateSize> stimulation_state{};
+  // At the start of the last control step (recorded with its start state): each channel's recruitment (the
+  // fraction its last pulse recruited) and fatigue (1 - A/A_rest).
+  std::array<double, kMaxChannels> recruitment{};
+  std::array<double, kMaxChannels> fatigue{};
+  // The driven elements' activation ODE over the current control step (stimulation_advance): target, rate (1/s).
+  std::array<double, kMaxElements> drive_target{};
+  std::array<double, kMaxElements> drive_rate{};
 
   // Outputs of forward() with record = true: one field per ARMRT_OUTPUTS row (layouts.h gives each its size,
   // unit and the stage that fills it), all describing the state at output_q. The moment arms there are

@@ -14,9 +14,12 @@
 //   fibre_limiter.cc ROS2's limit on a CE running through its operating point within a step
 //   path_history.cc  ROS2's path anchors and extrapolation
 //   cvode.cc         SUNDIALS CVODE (BDF), the accurate reference
+//   stimulation.cc   FES channels -> recruitment, Ding calcium/force/fatigue -> element activation targets
+//   stimulation_map.cc a lab's stimulation map (JSON/TOML) -> StimulationMap, the electrode kinds' defaults
 //   kinematics.cc    outputs derived from q: thorax-humerus angles
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "armrt/data.h"
@@ -53,9 +56,17 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
 // muscles.cc. The muscle stage of forward(): activation dynamics and CE velocity of every element (a vectorised
 // loop) with the arm's constants mc (Data::muscles), their tendon forces (N) and the generalised muscle forces
 // tau = R^T F (N m). The excitation is capped at mc.max_activation here, the one place the cap is applied.
+// Elements a stimulation map drives (drive != nullptr and drive->driven[i]) follow drive's target and rate instead
+// (stimulation.cc): da/dt = rate (target - a).
+struct ActivationDrive {
+  const std::uint8_t* driven;  // num_elements flags
+  const double* target;        // [0, max_activation]
+  const double* rate;          // 1/s
+};
 void muscle_dynamics(const Model& m, const MuscleArrays& mc, const double* excitation, const double* muscle_length,
                      const double* moment_arm, const double* act, const double* lce, double* act_dot,
-                     double* lce_dot, double* force, double* tau, StepJacobian* jac = nullptr);
+                     double* lce_dot, double* force, double* tau, StepJacobian* jac = nullptr,
+                     const ActivationDrive* drive = nullptr);
 // Generalised forces tau = R^T F (N m) of n element forces F (N) with moment arms R (m) by DOF, as
 // ModelDef::muscle_paths writes them (R[j * kMaxElements + i]). With dof_begin and dof_end (Model's
 // dof_elements_begin, _end) row j is summed over the elements [dof_begin[j], dof_end[j]) only, the moment
@@ -149,5 +160,18 @@ void limit_fibre_overshoot(const Model& m, Data& d, StepJacobian& jac, const dou
 // Thorax-humerus angles (rad): plane of elevation, elevation, axial rotation (Y-Z-Y sequence in the
 // DSEM thorax axes: plane 0 = abduction in the frontal plane, 90 deg = forward flexion).
 void thorax_humerus_angles(const Model& m, const double* q, double* angles);
+
+// ---- stimulation.cc
+// Installs a map (num_channels 0: none, excitation drives every element): zero commands, rested channels.
+void data_set_stimulation_map(const Model& m, Data& d, const StimulationMap& map);
+// Rested channels (no pulse yet, no fatigue), commands kept.
+void stimulation_reset(Data& d);
+// The stage: advances the channels over [d.time, d.time + h] and sets the driven elements' targets and rates.
+void stimulation_advance(const Model& m, Data& d, double h);
+// Queues explicit pulse times (s, increasing, not before d.time) on a channel; throws std::invalid_argument
+// beyond kMaxQueuedPulses or for times out of order.
+void stimulation_queue_pulses(const Model& m, Data& d, int channel, const double* times, int count);
+// 1 - A/A_rest of channel k now.
+double channel_fatigue(const Data& d, int k);
 
 }  // namespace armrt

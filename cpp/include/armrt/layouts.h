@@ -8,14 +8,16 @@
 #include <array>
 
 #include "armrt/model.h"
+#include "armrt/stimulation.h"
 
 namespace armrt {
 
 // How many values a row has: one, two, three (x, y, z), the model's DOFs, its elements, its girdle contact
 // points (0 without girdle forces), or ROS2's packed path history (snapshot.h: 4 + 2 x DOFs).
-enum class SizeRule { kOne, kTwo, kThree, kDofs, kElements, kContactPoints, kPathHistory };
+// kChannels, kChannelInputs and kChannelState are sized by the arm's stimulation map (num_channels; 0 without).
+enum class SizeRule { kOne, kTwo, kThree, kDofs, kElements, kContactPoints, kPathHistory, kChannels, kChannelInputs, kChannelState };
 
-inline int layout_size(SizeRule rule, const ModelDef& def) {
+inline int layout_size(SizeRule rule, const ModelDef& def, int num_channels = 0) {
   switch (rule) {
     case SizeRule::kOne: return 1;
     case SizeRule::kTwo: return 2;
@@ -24,6 +26,9 @@ inline int layout_size(SizeRule rule, const ModelDef& def) {
     case SizeRule::kElements: return def.num_elements;
     case SizeRule::kContactPoints: return def.girdle ? def.girdle->num_contact_points : 0;
     case SizeRule::kPathHistory: return 4 + 2 * def.num_dofs;
+    case SizeRule::kChannels: return num_channels;
+    case SizeRule::kChannelInputs: return 3 * num_channels;
+    case SizeRule::kChannelState: return kStimStateSize * num_channels;
   }
   return 0;
 }
@@ -35,6 +40,7 @@ inline int layout_size(SizeRule rule, const ModelDef& def) {
 #define ARMRT_STORAGE_kDofs std::array<double, kMaxDofs>
 #define ARMRT_STORAGE_kElements std::array<double, kMaxElements>
 #define ARMRT_STORAGE_kContactPoints std::array<double, kMaxContactPoints>
+#define ARMRT_STORAGE_kChannels std::array<double, kMaxChannels>
 #define ARMRT_STORAGE(size) ARMRT_STORAGE_##size
 
 // State blocks, in the order of x = [q | qdot | lce | activation] (offsets: data.h).
@@ -85,7 +91,12 @@ inline int layout_size(SizeRule rule, const ModelDef& def) {
 // held over the step, the recorded outputs, and the step's task execution time.
 //   X(name, size, unit, girdle_only, description)
 #define ARMRT_RECORDED_EXTRA_FIRST(X) X(time, kOne, "s", 0, "time of the row's state")
-#define ARMRT_RECORDED_INPUTS(X) X(excitation, kElements, "1", 0, "neural excitation held over the step")
+#define ARMRT_RECORDED_INPUTS(X)                                                                      \
+  X(excitation, kElements, "1", 0, "neural excitation held over the step")                            \
+  X(stimulation, kChannelInputs, "s, A, Hz", 0,                                                       \
+    "per channel: pulse width (s), amplitude (A), frequency (Hz) held over the step")                  \
+  X(recruitment, kChannels, "1", 0, "per channel: fraction its last pulse recruited, at the step's start") \
+  X(fatigue, kChannels, "1", 0, "per channel: 1 - A/A_rest (Ding 2003's force-scaling factor lost), at the step's start")
 #define ARMRT_RECORDED_EXTRA_LAST(X) X(tet_ns, kOne, "ns", 0, "task execution time of the step (0: the final state)")
 
 // Indices of the recorded channels (Recording::channel).
@@ -113,13 +124,20 @@ inline constexpr int kNumChannels = static_cast<int>(Channel::kCount);
 #define ARMRT_SNAPSHOT_INPUTS(X)                                                               \
   X(excitation, kElements, "1", "neural excitation held over the steps (capped at max_activation)") \
   X(hand_force, kThree, "N", "force at the hand point, thorax frame")                          \
-  X(hand_moment, kThree, "N m", "moment on the hand, thorax frame")
+  X(hand_moment, kThree, "N m", "moment on the hand, thorax frame")                             \
+  X(stimulation, kChannelInputs, "s, A, Hz",                                                   \
+    "per channel: pulse width (s), amplitude (A), frequency (Hz) held over the steps")
+// The stimulation chain's memory per channel (stimulation.h StimState): calcium sum, CN, force level, fatigue
+// (A, tau1, Km over their rested values), last pulse time, last recruitment, queued pulse count and times.
+#define ARMRT_SNAPSHOT_STIMULATION(X) \
+  X(stimulation_state, kChannelState, "", "per channel: the stimulation chain's memory (stimulation.h StimState)")
 #define ARMRT_SNAPSHOT_INTEGRATOR(X)                                                                  \
   X(ros2_path_history, kPathHistory, "",                                                              \
     "ROS2's memory: step size h (s), anchors (0-2), anchor spacing and steps since the newest anchor " \
     "(steps), the anchors' q (2 x DOFs, rad, oldest first, unused rows 0); all 0 when there is none")
-#define ARMRT_SNAPSHOT(X) \
-  ARMRT_SNAPSHOT_TIME(X) ARMRT_STATE_BLOCKS(X) ARMRT_SNAPSHOT_INPUTS(X) ARMRT_SNAPSHOT_INTEGRATOR(X)
+#define ARMRT_SNAPSHOT(X)                                                                                     \
+  ARMRT_SNAPSHOT_TIME(X) ARMRT_STATE_BLOCKS(X) ARMRT_SNAPSHOT_INPUTS(X) ARMRT_SNAPSHOT_STIMULATION(X) \
+      ARMRT_SNAPSHOT_INTEGRATOR(X)
 
 enum class SnapshotPart {
 #define ARMRT_X_SNAP(name, ...) name,
@@ -133,6 +151,7 @@ inline constexpr unsigned snapshot_bit(SnapshotPart p) { return 1u << static_cas
 inline constexpr unsigned kSnapshotTime = 0u ARMRT_SNAPSHOT_TIME(ARMRT_X_SNAP_BIT);
 inline constexpr unsigned kSnapshotPhysics = 0u ARMRT_STATE_BLOCKS(ARMRT_X_SNAP_BIT);
 inline constexpr unsigned kSnapshotInputs = 0u ARMRT_SNAPSHOT_INPUTS(ARMRT_X_SNAP_BIT);
+inline constexpr unsigned kSnapshotStimulation = 0u ARMRT_SNAPSHOT_STIMULATION(ARMRT_X_SNAP_BIT);
 inline constexpr unsigned kSnapshotIntegrator = 0u ARMRT_SNAPSHOT_INTEGRATOR(ARMRT_X_SNAP_BIT);
 inline constexpr unsigned kSnapshotFull = (1u << kNumSnapshotParts) - 1;
 #undef ARMRT_X_SNAP_BIT

@@ -12,10 +12,11 @@
 
 namespace armrt {
 
-// Values in a snapshot of `signature`; throws std::invalid_argument for bits no SnapshotPart has.
-int snapshot_size(const ModelDef& def, unsigned signature);
+// Values in a snapshot of `signature` for an arm with num_channels stimulation channels (Data::stimulation_map);
+// throws std::invalid_argument for bits no SnapshotPart has.
+int snapshot_size(const ModelDef& def, unsigned signature, int num_channels = 0);
 // Offset of `part` in a snapshot of `signature` (-1 if the signature does not hold it).
-int snapshot_offset(const ModelDef& def, unsigned signature, SnapshotPart part);
+int snapshot_offset(const ModelDef& def, unsigned signature, SnapshotPart part, int num_channels = 0);
 // Copies the parts of `signature` into out (snapshot_size values). ROS2's path history is all zeros unless the
 // stepper's memory continues from d's state (a state set from outside, or reached by another integrator, has none).
 void get_snapshot(const Model& m, const Data& d, const Stepper& s, unsigned signature, double* out);
