@@ -187,7 +187,7 @@ def test_snapshot_continues_bit_for_bit_and_pickles():
         a.set_state_vector(bad)
 
 
-def test_recording_holds_stimulation_recruitment_and_fatigue():
+def test_recording_holds_stimulation_recruitment_and_fatigue(tmp_path):
     a = armrt.Arm("das2", stimulation="per_muscle")
     a.set_stimulation({"bicl": (200e-6, 0.02, 30.0)})
     r = a.simulate(np.zeros(a.n_elements), 0.2)
@@ -196,6 +196,13 @@ def test_recording_holds_stimulation_recruitment_and_fatigue():
     assert np.all(r.stimulation[:-1, k] == (200e-6, 0.02, 30.0))
     assert r.recruitment[-1, k] == 1.0 and np.all(r.fatigue[:, k] >= 0)
     assert armrt.Arm("das2").simulate(np.zeros(102), 0.01).stimulation is None
+    pd = pytest.importorskip("pandas")
+    df = r.to_dataframe(["stimulation", "recruitment", "fatigue"])
+    assert isinstance(df, pd.DataFrame) and df[f"stimulation.{k}.frequency"].iloc[0] == 30.0
+    assert df[f"recruitment.{k}"].iloc[-1] == 1.0
+    r.save(tmp_path / "r.npz")
+    back = armrt.Result.load(tmp_path / "r.npz")
+    assert np.array_equal(back.stimulation, r.stimulation) and np.array_equal(back.fatigue, r.fatigue)
 
 
 @pytest.mark.parametrize("bad, match", [

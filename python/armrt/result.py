@@ -126,6 +126,11 @@ class _ResultMethods:
                 labels = self.element_names or [str(i) for i in range(a.shape[1])]
             else:
                 labels = self._OTHER_COLUMNS[c]
+            if a.ndim == 3:  # stimulation (T, channels, 3): one column per channel and value
+                labels = [f"{k}.{v}" for k in range(a.shape[1]) for v in ("pulse_width", "amplitude", "frequency")]
+                a = a.reshape(len(a), -1)
+            elif labels is None and a.ndim == 2:  # per stimulation channel, by channel index
+                labels = [str(k) for k in range(a.shape[1])]
             if labels is None:
                 cols[c] = a
             else:
