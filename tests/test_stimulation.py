@@ -254,3 +254,23 @@ def test_toml_and_json_files(tmp_path):
     (tmp_path / "bad.toml").write_text("channels = [\n")
     with pytest.raises(ValueError, match="bad.toml: .*not TOML"):
         armrt.Arm("das2", stimulation=tmp_path / "bad.toml")
+
+
+def test_batch_arms_follow_their_own_commands_bit_for_bit_as_lone_arms():
+    b = armrt.ArmBatch(3, "das2", stimulation="per_muscle", threads=1)
+    b.set_stimulation({"bicl": (200e-6, 0.02, 30.0)})
+    cmd = b.stimulation
+    cmd[1, b.channel_names.index("bicl")] = (100e-6, 0.01, 20.0)
+    cmd[2] = 0.0
+    b.set_stimulation(cmd)
+    b.step(300)
+    lone = armrt.Arm("das2", stimulation="per_muscle")
+    lone.set_stimulation({"bicl": (100e-6, 0.01, 20.0)})
+    lone.step(300)
+    assert np.array_equal(b.get_state_vector()[1], lone.get_state_vector())
+    assert b.fatigue.shape == (3, 22) and b.fatigue[0].max() > 0 and b.fatigue[2].max() == 0
+    bad = b.stimulation
+    bad[2, 0] = (300e-6, 0.01, 20.0)
+    with pytest.raises(ValueError, match="arm 2: channel 'deltscap': pulse width 300 us exceeds"):
+        b.set_stimulation(bad)
+    assert np.array_equal(b.stimulation[2], np.zeros((22, 3)))

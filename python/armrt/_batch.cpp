@@ -10,7 +10,9 @@
 
 #include "armrt/batch.h"
 #include "armrt/layouts.h"
+#include "armrt/engine.h"
 #include "armrt/snapshot.h"
+#include "armrt/stimulation.h"
 
 namespace py = pybind11;
 using namespace armrt;
@@ -113,6 +115,35 @@ PYBIND11_MODULE(_batch, mod) {
           throw py::value_error("excitation: expected shape (" + std::to_string(b.size()) + ", " + std::to_string(ne) + ")");
         for (int i = 0; i < b.size(); ++i) data_set_excitation(b.arm(i).model, b.arm(i).data, u.data() + i * ne);
       }, py::arg("u"))
+      // Stimulation (stimulation.h): one map (JSON text, checked by the engine) for every arm; commands as an
+      // (n, channels * 3) array, every arm's checked before any is written.
+      .def("set_stimulation_map_json", [](Batch& b, const std::string& text) {
+        const StimulationMap map = stimulation_map_from_json(*b.arm(0).model.def, text);
+        for (int i = 0; i < b.size(); ++i) data_set_stimulation_map(b.arm(i).model, b.arm(i).data, map);
+      }, py::arg("text"))
+      .def("set_stimulation", [](Batch& b, const Array& cmd) {
+        const int nc = b.arm(0).data.stimulation_map.num_channels;
+        if (cmd.ndim() != 2 || cmd.shape(0) != b.size() || cmd.shape(1) != 3 * nc)
+          throw py::value_error("stimulation: expected shape (" + std::to_string(b.size()) + ", " + std::to_string(3 * nc) + ")");
+        const double* p = cmd.data();
+        for (int i = 0; i < b.size(); ++i)
+          for (int k = 0; k < nc; ++k) {
+            const double* c = p + i * 3 * nc + 3 * k;
+            const std::string e = stimulation_command_error(b.arm(i).data.stimulation_map.channels[k], c[0], c[1], c[2]);
+            if (!e.empty()) throw py::value_error("arm " + std::to_string(i) + ": " + e);
+          }
+        for (int i = 0; i < b.size(); ++i) std::copy(p + i * 3 * nc, p + (i + 1) * 3 * nc, b.arm(i).data.stimulation.begin());
+      }, py::arg("stimulation"))
+      .def_property_readonly("num_channels", [](Batch& b) { return b.arm(0).data.stimulation_map.num_channels; })
+      // (n, channels, kStimStateSize) copy of every arm's chain memory.
+      .def_property_readonly("stimulation_state", [](Batch& b) {
+        const int nc = b.arm(0).data.stimulation_map.num_channels;
+        Array out({b.size(), nc, static_cast<int>(kStimStateSize)});
+        for (int i = 0; i < b.size(); ++i)
+          std::copy(b.arm(i).data.stimulation_state.begin(), b.arm(i).data.stimulation_state.begin() + nc * kStimStateSize,
+                    out.mutable_data() + i * nc * kStimStateSize);
+        return out;
+      })
       // Snapshots by signature (snapshot.h), one row per arm.
       .def("snapshot_size", [](Batch& b, unsigned signature) { return snapshot_size(*b.arm(0).model.def, signature, b.arm(0).data.stimulation_map.num_channels); },
            py::arg("signature"))

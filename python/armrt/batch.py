@@ -109,12 +109,14 @@ class ArmBatch:
     """
 
     def __init__(self, n: int, model="das2", integrator: str | None = None, dt: float | None = None,
-                 substeps: int | None = None, threads: int | None = None):
+                 substeps: int | None = None, threads: int | None = None, stimulation=None):
         """n: number of arms (>= 1). model: a name, a model file or an armrt.Model, as for `Arm`.
         integrator, dt (control step, s) and substeps: as for `Arm`
         (None: Arm's defaults). threads: OpenMP threads for step() (None: OMP_NUM_THREADS if set,
         else the cores available).
-        Raises ValueError for a bad n, integrator, dt, substeps or threads."""
+        stimulation: one stimulation map for every arm, as for `Arm` (None, "per_muscle", a file or a dict);
+        commands per arm with set_stimulation, fatigue per arm and channel in `fatigue`.
+        Raises ValueError for a bad n, integrator, dt, substeps, threads or stimulation map."""
         if int(n) != n or n < 1:
             raise ValueError(f"n must be a positive integer number of arms, got {n!r}")
         if n > MAX_ARMS:
@@ -122,7 +124,7 @@ class ArmBatch:
         check_batch_memory(int(n))
         kw = {k: v for k, v in (("integrator", integrator), ("dt", dt), ("substeps", substeps)) if v is not None}
         # A single Arm resolves the defaults and validates exactly as Arm does, and gives the names.
-        self._arm = Arm(model=model, **kw)
+        self._arm = Arm(model=model, stimulation=stimulation, **kw)  # validates the map too
         a = self._arm
         # By name: the engine (libarmrt) has one registry, where Arm's model is already registered.
         self._raw = _batch.Batch(a.model_name, int(n), a.integrator, a.dt, a.substeps)
@@ -150,6 +152,9 @@ class ArmBatch:
         self._views = views
         self._excitation = self._raw.excitation
         self._hand_force, self._hand_moment = self._raw.hand_force, self._raw.hand_moment
+        if stimulation is not None:
+            self._raw.set_stimulation_map_json(self._arm._sim.stimulation_map_json())
+        self.channel_names = self._arm.channel_names
         self._raw.reset(np.arange(self.n))  # outputs at the rest posture
 
     # ------------------------------------------------------------------ configuration
@@ -260,6 +265,36 @@ class ArmBatch:
     def excitation(self) -> np.ndarray:
         """(n, elements) excitations now applied, as the dynamics use them (a copy)."""
         return np.array(self._excitation)
+
+    def set_stimulation(self, values) -> None:
+        """Stimulation commands: an (n, channels, 3) array of [pulse width s, amplitude A, frequency Hz], or
+        what Arm.set_stimulation takes ({channel: (pw, amp, f)} or (channels, 3)) for every arm. Refused
+        (ValueError naming the arm and channel, nothing written) beyond a channel's limits."""
+        nc = len(self.channel_names)
+        a = None if isinstance(values, Mapping) else real_array(values, "stimulation")
+        if a is not None and a.shape == (self.n, nc, 3):
+            cmd = a
+        else:
+            from .stimulation import commands
+            one = commands(self._arm._sim, values, np.zeros((nc, 3)))
+            if isinstance(values, Mapping):  # unnamed channels keep each arm's command
+                cmd = self.stimulation.copy()
+                named = [self.channel_names.index(k) for k in values]
+                cmd[:, named] = one[named]
+            else:
+                cmd = np.broadcast_to(one, (self.n, nc, 3))
+        self._raw.set_stimulation(np.ascontiguousarray(cmd, dtype=float).reshape(self.n, 3 * nc))
+
+    @property
+    def stimulation(self) -> np.ndarray:
+        """(n, channels, 3) held commands (a copy)."""
+        return self._raw.get_snapshot(int(StatePart.STIMULATION)).reshape(self.n, -1, 3)
+
+    @property
+    def fatigue(self) -> np.ndarray:
+        """(n, channels): 1 - A/A_rest per arm and channel (docs/fes.md)."""
+        from .stimulation import STATE_COLUMNS
+        return 1.0 - self._raw.stimulation_state[:, :, STATE_COLUMNS["fatigue_A"]]
 
     def set_hand_load(self, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> None:
         """External force (N) at the hand and moment (N m) on it, thorax frame: (n, 3) or (3,) for every arm."""
