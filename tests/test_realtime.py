@@ -783,8 +783,9 @@ def test_decoder_reads_every_row_of_the_packet_table_from_the_v3_capture():
     them): the table-driven decoder yields every row, with the values in the table's order."""
     data = bytes.fromhex(GOLDEN_PACKET.read_text().strip())
     p = rt.decode_packet(data)
-    table = rt.state_packet_fields("das2")
-    assert p.flags & rt.FLAG_FORCES and p.flags & rt.FLAG_EXCITATION
+    # Every row the capture's flags carry (the stimulation rows came later, with their own flag).
+    table = [r for r in rt.state_packet_fields("das2") if r["flag"] != rt.FLAG_STIMULATION]
+    assert p.flags & rt.FLAG_FORCES and p.flags & rt.FLAG_EXCITATION and not p.flags & rt.FLAG_STIMULATION
     values = rt.StatePacket.decode_values(p, table)
     assert [r["name"] for r in table] == list(values)          # every row, in order
     st = rt.StatePacket.from_packet(p, "das2")
@@ -922,3 +923,141 @@ def test_runner_max_activation_overlapping_names_most_specific_wins_in_either_or
         assert st is not None
         np.testing.assert_array_equal(st.excitation[infra], 0.05)
         np.testing.assert_array_equal(st.excitation[supra], 0.3)
+
+
+# ---------------------------------------------------------------------------------------- stimulation
+def test_stimulation_through_udp_flexes_the_elbow_fatigues_and_times_out_to_zero():
+    """A stimulation map drives the runner over UDP: the elbow flexors' channels flex the elbow, the state
+    packets carry the applied command and the fatigue, the client refuses what Arm.set_stimulation refuses,
+    and silence sets every channel to zero."""
+    flexors = {"bicl": (250e-6, 0.020, 30.0), "bicb": (250e-6, 0.020, 30.0), "brachialis": (250e-6, 0.020, 30.0)}
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=0.2,
+                            stimulation="per_muscle") as s, \
+            rt.UdpClient(s.port, stimulation="per_muscle") as c:
+        names = s.channel_names
+        assert names == c.stimulation.names and set(flexors) <= set(names)
+        # What the Python API refuses is refused before it is sent (the message names the channel).
+        with pytest.raises(ValueError, match="exceeds its limit"):
+            c.send_stimulation({next(iter(flexors)): (250e-6, 0.030, 30.0)})
+        with pytest.raises(ValueError, match="not finite"):
+            c.send_stimulation({next(iter(flexors)): (np.nan, 0.01, 30.0)})
+        with pytest.raises(ValueError, match="unknown stimulation channel"):
+            c.send_stimulation({"bicepz": (250e-6, 0.01, 30.0)})
+        el0 = None
+        t_end = time.monotonic() + 2.0
+        while time.monotonic() < t_end:
+            c.send_stimulation(flexors)
+            st = c.latest_state(timeout=0.2)
+            assert st is not None and not st.diverged
+            el0 = st.q[3] if el0 is None else el0
+        assert st.stimulation.shape == (len(names), 3)
+        k = names.index(next(iter(flexors)))
+        np.testing.assert_array_equal(st.stimulation[k], flexors[names[k]])
+        assert st.fatigue[k] > 0 and st.fatigue[names.index("anconeus")] == 0  # stimulated / never pulsed
+        assert np.degrees(st.q[3] - el0) > 20, (np.degrees(el0), np.degrees(st.q[3]))
+        # A raw packet beyond the limits (a client that does not check): clamped and counted by the runner.
+        raw = np.zeros((len(names), 3))
+        raw[k] = (900e-6, 0.5, 500.0)
+        c.send_raw(rt.encode_packet(rt.STIMULATION, c._next_seq(), raw.ravel(), session=c.session))
+        time.sleep(0.05)
+        st = c.latest_state(timeout=0.2)
+        lim = armrt.Arm("das2", stimulation="per_muscle").stimulation_map()["channels"][k]["limits"]
+        assert st.stimulation[k][0] == lim["max_pulse_width_s"] and st.stimulation[k][2] == lim["max_frequency_Hz"]
+        assert st.stimulation[k][0] * st.stimulation[k][1] <= lim["max_charge_C"] * (1 + 1e-12)
+        time.sleep(0.4)  # silence: the session ends and every channel falls to zero
+        stats = s.stop()
+    assert stats["packets"]["stimulation_clamped"] == 1
+    assert stats["packets"]["stimulation_applied"] > 20
+    assert stats["packets"]["timeouts"] == 1
+
+
+def test_runner_stimulation_option_and_its_errors(tmp_path):
+    m = tmp_path / "map.toml"
+    m.write_text('[[channels]]\nname = "flexors"\nelements = ["bicl", "brachialis"]\n')
+    with rt.RealtimeSession(listen="127.0.0.1:0", stimulation=m) as s:
+        assert s.channel_names == ["flexors"]
+    with rt.RealtimeSession(listen="127.0.0.1:0", stimulation={"channels": [{"name": "f", "elements": ["bicl"]}]}) as s:
+        assert s.channel_names == ["f"]
+    with pytest.raises(ValueError, match="--stimulation.*bicepz"):
+        rt.RealtimeSession(stimulation={"channels": [{"name": "f", "elements": ["bicepz"]}]})
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[[channels]]\nname = "f"\nelements = []\n')
+    r = subprocess.run([runner(), "--stimulation", str(bad), "--duration", "0.01", "--no-rt", "--no-mlock"],
+                       capture_output=True, text=True, timeout=30)
+    assert r.returncode == 2 and "--stimulation" in r.stderr, r.stderr
+    p, port = start_runner("--stimulation", str(m), "--no-rt", "--no-mlock", "--timeout", "0.2")
+    try:
+        with rt.UdpClient(port, stimulation=m) as c:
+            c.send_stimulation({"flexors": (200e-6, 0.015, 25.0)})
+            time.sleep(0.05)
+    finally:
+        code, out, err = stop_runner(p)
+    assert code == 0, err
+    assert "stimulation: 1 channels, packets applied 1, clamped to the channels' limits 0" in out, out
+
+
+def test_lsl_stimulator_stream_by_label_drives_the_runner():
+    """A stimulator on LSL (channels labelled "<channel>/pulse_width", "/amplitude", "/frequency", a subset of
+    the map's, in any order): forwarded as stimulation packets; a sample beyond the limits is not forwarded; the
+    state stream carries the applied stimulation and the fatigue by channel."""
+    pylsl = _pylsl()
+    from armrt.lsl_bridge import LslBridge, channel_labels
+    source = f"armrt-test-stim-{os.getpid()}"
+    bridge = LslBridge(runner_port=0, mapping="stimulation", stimulation="per_muscle", source_id=source,
+                       excitation_source_id=f"{source}-stimulator", state_rate_hz=200)
+    assert bridge.excitation_name == "armrt_stimulation"
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, stimulation="per_muscle",
+                            state_to=f"127.0.0.1:{bridge.state_port}") as s:
+        bridge.runner_address = ("127.0.0.1", s.port)
+        stop, th, errors = _run_bridge(bridge)
+        try:
+            labels = ["brachialis/amplitude", "brachialis/pulse_width", "brachialis/frequency",
+                      "bicl/frequency", "bicl/pulse_width", "bicl/amplitude"]
+            outlet = _exc_outlet(pylsl, "stimulator", f"{source}-stimulator", labels)
+            good = [0.020, 250e-6, 30.0, 30.0, 250e-6, 0.020]
+            found = pylsl.resolve_byprop("source_id", f"{source}-state", timeout=10)
+            assert found, "state stream not found on loopback"
+            inlet = pylsl.StreamInlet(found[0])
+            out_labels = channel_labels(inlet.info(timeout=5))
+            assert "bicl/pulse_width" in out_labels and "bicl/fatigue" in out_labels
+            el0 = el = None
+            t_end = time.monotonic() + 3
+            while time.monotonic() < t_end and not errors:
+                outlet.push_sample(good)
+                samples, _ = inlet.pull_chunk(timeout=0.05)
+                if samples:
+                    el = samples[-1][out_labels.index("ELx")]
+                    el0 = el if el0 is None else el0
+                    last = samples[-1]
+                time.sleep(0.01)
+            assert not errors, errors
+            assert el is not None and np.degrees(el - el0) > 15, (el0, el)
+            assert last[out_labels.index("bicl/amplitude")] == 0.020
+            assert last[out_labels.index("bicl/fatigue")] > 0
+            assert last[out_labels.index("triclong/amplitude")] == 0.0
+            forwarded = bridge.forwarded
+            bad = list(good)
+            bad[0] = 0.5  # 500 mA on an intramuscular channel: never sent
+            for _ in range(5):
+                outlet.push_sample(bad)
+                time.sleep(0.02)
+            t_end = time.monotonic() + 2
+            while bridge.refused == 0 and time.monotonic() < t_end:
+                time.sleep(0.01)
+            assert bridge.refused >= 1 and bridge.forwarded == forwarded
+            assert any("refused" in w and "brachialis" in w for w in bridge.warnings), bridge.warnings
+        finally:
+            stop.set()
+            th.join(timeout=5)
+            bridge.close()
+        st = s.stop()
+    assert st["packets"]["stimulation_applied"] > 10 and st["packets"]["stimulation_clamped"] == 0
+
+
+def test_state_channels_with_stimulation_have_units_per_value():
+    from armrt.lsl_bridge import state_channels
+    labels, units, types = state_channels("das2", channels=["flexors", "extensors"])
+    for c in ("flexors", "extensors"):
+        for v, u in (("pulse_width", "s"), ("amplitude", "A"), ("frequency", "Hz"), ("fatigue", "1")):
+            assert units[labels.index(f"{c}/{v}")] == u
+    assert labels[-1] == "extensors/fatigue" and len(labels) == len(state_channels("das2")[0]) + 8

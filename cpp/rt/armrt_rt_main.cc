@@ -115,6 +115,9 @@ int main(int argc, char** argv) {
   app.add_option("--max-activation", cfg.max_activation, "paralysis/weakness: NAME=V caps the activation of "
                                                        "element, muscle or group NAME at V in [0, 1] (comma-separated)")
       ->delimiter(',');
+  app.add_option("--stimulation", cfg.stimulation, "stimulation map (docs/fes.md): FILE.toml / FILE.json, or per_muscle; "
+                                                 "packet type 7 then carries pulse width s, amplitude A, frequency Hz "
+                                                 "per channel (beyond a channel's limits: clamped and counted)");
   app.add_option("--rx-budget", cfg.rx_budget_us, "receive work per cycle, us (default: min(150, period / 4))");
   app.add_option("--json", json_path, "write the statistics as JSON");
   app.add_flag("--quiet", quiet, "print only the summary");
@@ -198,6 +201,10 @@ int main(int argc, char** argv) {
               (unsigned long long)k.received, (unsigned long long)k.applied, (unsigned long long)k.dropped(),
               (unsigned long long)k.foreign, (unsigned long long)k.sessions, (unsigned long long)k.owner_changes,
               (unsigned long long)k.timeouts, (unsigned long long)k.state_sent, st.lag_s);
+  if (!cfg.stimulation.empty())
+    std::printf("  stimulation: %d channels, packets applied %llu, clamped to the channels' limits %llu\n",
+                loop->arm().data.stimulation_map.num_channels, (unsigned long long)k.stimulation_applied,
+                (unsigned long long)k.stimulation_clamped);
   std::fflush(stdout);
   if (!json_path.empty()) {
     std::ofstream f(json_path);

@@ -46,6 +46,8 @@ enum PacketType : std::uint16_t {
   kRelease = 5,             // controller -> runner, count 0: the owner ends its session
   kHello = 6,               // controller -> runner, count 0: asks for a session id (answered by kOffer)
   kStatePacket = 16,        // runner -> controller / subscribers: see ARMRT_STATE_PACKET_FIELDS below
+  kStimulation = 7,         // count = 3 * channels of the runner's --stimulation map, in its order: per channel
+                            // pulse width (s), amplitude (A), frequency (Hz); beyond a channel's limits: clamped
   kOffer = 17,              // runner -> controller, count 0: the session id to put in excitation packets
 };
 
@@ -57,6 +59,7 @@ enum PacketFlags : std::uint16_t {
   kFlagAuth = 16,       // any: a 32-byte HMAC-SHA256 tag follows the values
   kFlagOverrun = 32,    // state: at least one cycle overran since the previous state packet
   kFlagExcitation = 64, // state: the applied element excitations follow (after the forces, if any)
+  kFlagStimulation = 128, // state: the applied stimulation and each channel's fatigue follow (a --stimulation map)
 };
 
 // The state packet's payload: ONE table, in packet order (MuJoCo's mjxmacro.h style). The runner's
@@ -65,7 +68,8 @@ enum PacketFlags : std::uint16_t {
 // Version 3's bytes: tests/data/state_packet_v3_das2.hex. A change here is a new version.
 //
 //   X(name, size, unit, flag, integer, label, lsl_type, description)
-//   size: kOne, kDofs (the model's DOFs, in its order), kThree (x, y, z), kElements (the model's elements)
+//   size: kOne, kDofs (the model's DOFs, in its order), kThree (x, y, z), kElements (the model's elements),
+//         kChannels (the stimulation map's channels), kChannelInputs (3 per channel: pulse width, amplitude, frequency)
 //   flag: 0, always sent; else the row is sent only with that PacketFlags bit (in that order, at the end)
 //   integer: 1 if the value is an integer carried as a float64 (counts, sequence numbers)
 //   label: the value's name (state_fields, LSL channel labels); "{}" is the DOF / axis / element name
@@ -87,15 +91,23 @@ enum PacketFlags : std::uint16_t {
   X(overruns, kOne, "1", 0, 1, "overruns", "count", "overrun cycles since the start")                                 \
   X(muscle_force, kElements, "N", kFlagForces, 0, "force_{}", "force", "muscle force of each element")                \
   X(excitation, kElements, "1", kFlagExcitation, 0, "excitation_{}", "excitation",                                     \
-    "applied element excitations (capped at max activation)")
+    "applied element excitations (capped at max activation)")                                                       \
+  X(stimulation, kChannelInputs, "s,A,Hz", kFlagStimulation, 0, "{}", "stimulation",                                   \
+    "applied stimulation per channel (pulse width s, amplitude A, frequency Hz), after the runner's clamp")           \
+  X(fatigue, kChannels, "1", kFlagStimulation, 0, "{}/fatigue", "fatigue",                                            \
+    "1 - A/A_rest of each channel's muscle (Ding 2003; 0 rested)")
 
-enum FieldSize { kOne, kDofs, kThree, kElements };
-inline int field_size(FieldSize size, int num_dofs, int num_elements) {
+enum FieldSize { kOne, kDofs, kThree, kElements, kChannels, kChannelInputs };
+// The three values of a kChannelInputs row per channel, as labels ("<channel>/pulse_width", ...).
+inline constexpr const char* kChannelInputNames[3] = {"pulse_width", "amplitude", "frequency"};
+inline int field_size(FieldSize size, int num_dofs, int num_elements, int num_channels) {
   switch (size) {
     case kOne: return 1;
     case kDofs: return num_dofs;
     case kThree: return 3;
     case kElements: return num_elements;
+    case kChannels: return num_channels;
+    case kChannelInputs: return 3 * num_channels;
   }
   return 0;
 }
@@ -117,13 +129,13 @@ struct StateOffsets {
   int fixed_values = 0;  // values of the rows always sent
   int count = 0;         // values in a packet with these flags
 };
-inline StateOffsets state_offsets(int num_dofs, int num_elements, std::uint16_t flags) {
+inline StateOffsets state_offsets(int num_dofs, int num_elements, std::uint16_t flags, int num_channels = 0) {
   StateOffsets o;
   int c = 0;
 #define ARMRT_X(name, size, unit, flag, ...)                        \
   if ((flag) == 0 || (flags & (flag))) {                            \
     o.name = c;                                                     \
-    c += field_size(size, num_dofs, num_elements);                  \
+    c += field_size(size, num_dofs, num_elements, num_channels);    \
   }                                                                 \
   if ((flag) == 0) o.fixed_values = c;
   ARMRT_STATE_PACKET_FIELDS(ARMRT_X)
@@ -134,11 +146,12 @@ inline StateOffsets state_offsets(int num_dofs, int num_elements, std::uint16_t 
 
 // The encoder, generated from the table: the rows sent with `flags`, in order, into v; returns the
 // number of values. No allocation (the runner's hot loop).
-inline int put_state_values(const StateValues& s, std::uint16_t flags, int num_dofs, int num_elements, double* v) {
+inline int put_state_values(const StateValues& s, std::uint16_t flags, int num_dofs, int num_elements, int num_channels,
+                            double* v) {
   int c = 0;
 #define ARMRT_X(name, size, unit, flag, ...)                        \
   if ((flag) == 0 || (flags & (flag))) {                            \
-    const int n = field_size(size, num_dofs, num_elements);         \
+    const int n = field_size(size, num_dofs, num_elements, num_channels); \
     for (int k = 0; k < n; ++k) v[c++] = s.name[k];                 \
   }
   ARMRT_STATE_PACKET_FIELDS(ARMRT_X)
@@ -149,28 +162,40 @@ inline int put_state_values(const StateValues& s, std::uint16_t flags, int num_d
 // One row of the table for a model (armrt._rt.state_packet_fields).
 struct StateFieldInfo {
   std::string name, unit, lsl_type, description;
-  std::string rule;  // the size rule: "one", "dofs", "three", "elements"
+  std::string rule;  // the size rule: "one", "dofs", "three", "elements", "channels", "channel_inputs"
   int size = 0;
   std::uint16_t flag = 0;
   bool integer = false;
   std::vector<std::string> labels;  // one per value
 };
 inline std::vector<StateFieldInfo> state_field_table(const std::vector<std::string>& dof_names,
-                                                     const std::vector<std::string>& element_names) {
+                                                     const std::vector<std::string>& element_names,
+                                                     const std::vector<std::string>& channel_names = {}) {
   std::vector<StateFieldInfo> rows;
   static const std::vector<std::string> xyz{"x", "y", "z"};
+  std::vector<std::string> channel_inputs;
+  for (const std::string& c : channel_names)
+    for (const char* v : kChannelInputNames) channel_inputs.push_back(c + "/" + v);
   auto items = [&](FieldSize size) -> const std::vector<std::string>& {
-    return size == kDofs ? dof_names : size == kThree ? xyz : element_names;
+    switch (size) {
+      case kDofs: return dof_names;
+      case kThree: return xyz;
+      case kChannels: return channel_names;
+      case kChannelInputs: return channel_inputs;
+      default: return element_names;
+    }
   };
+  static const char* const rule_names[] = {"one", "dofs", "three", "elements", "channels", "channel_inputs"};
 #define ARMRT_X(name_, size_, unit_, flag_, integer_, label_, lsl_type_, description_)                        \
   {                                                                                                           \
     StateFieldInfo r;                                                                                         \
     r.name = #name_;                                                                                          \
     r.unit = unit_;                                                                                           \
-    r.rule = size_ == kOne ? "one" : size_ == kDofs ? "dofs" : size_ == kThree ? "three" : "elements";        \
+    r.rule = rule_names[size_];                                                                               \
     r.lsl_type = lsl_type_;                                                                                   \
     r.description = description_;                                                                             \
-    r.size = field_size(size_, static_cast<int>(dof_names.size()), static_cast<int>(element_names.size()));  \
+    r.size = field_size(size_, static_cast<int>(dof_names.size()), static_cast<int>(element_names.size()),   \
+                        static_cast<int>(channel_names.size()));                                              \
     r.flag = flag_;                                                                                           \
     r.integer = integer_;                                                                                     \
     const std::string label = label_;                                                                         \

@@ -41,6 +41,10 @@ struct RtConfig {
   // Paralysis / weakness: "NAME=VALUE" (element, muscle or group; VALUE in [0, 1]) caps the
   // activation every excitation source can produce; later entries override earlier ones.
   std::vector<std::string> max_activation;
+  // Stimulation map (docs/fes.md): a .json / .toml file or "per_muscle"; empty: none. With one, kStimulation
+  // packets drive the channels (values beyond a channel's limits are clamped and counted) and state packets
+  // carry the applied stimulation and each channel's fatigue.
+  std::string stimulation;
   double rx_budget_us = 0;     // receive work per cycle: drain the socket until empty or this long; 0: min(150 us, period / 4)
 };
 

@@ -15,6 +15,8 @@
 #include "armrt/clock.h"
 #include "armrt/names.h"
 #include "armrt/snapshot.h"
+#include "armrt/engine.h"
+#include "armrt/stimulation.h"
 
 namespace armrt::rt {
 
@@ -59,11 +61,25 @@ void RtLoop::make_simulator(const ModelDef& def, const Schedule& sched) {
     std::copy(cap.begin(), cap.end(), sim_->data.settings.max_activation.begin());
     sim_->apply_settings();
   }
+  // The stimulation map, read and checked by the engine's one reader (stimulation_map.cc), as Arm(stimulation=)
+  // reads it: the channels start at zero (no pulses) until the owner's first stimulation packet.
+  if (!cfg_.stimulation.empty()) {
+    try {
+      const StimulationMap map = cfg_.stimulation == "per_muscle" ? stimulation_map_per_muscle(def)
+                                                                  : stimulation_map_from_file(def, cfg_.stimulation);
+      data_set_stimulation_map(sim_->model, sim_->data, map);
+    } catch (const std::exception& e) {
+      throw std::invalid_argument(std::string("--stimulation: ") + e.what());
+    }
+  }
 }
 
-void RtLoop::apply_command(const double* u) {
+void RtLoop::apply_command(const double* u, const double* stimulation) {
   // Held (and streamed with --excitations) as the dynamics use it: capped at max_activation.
   data_set_excitation(sim_->model, sim_->data, u);
+  // Already within every channel's limits (the session clamps): the engine's held command, as Arm.set_stimulation.
+  const int nc = sim_->data.stimulation_map.num_channels;
+  std::copy(stimulation, stimulation + kStimInputs * nc, sim_->data.stimulation.begin());
 }
 
 StateValues RtLoop::state_values(double& lag, double& overruns) {
@@ -86,6 +102,9 @@ StateValues RtLoop::state_values(double& lag, double& overruns) {
   v.overruns = &overruns;
   v.muscle_force = &d.muscle_force[0];
   v.excitation = &d.excitation[0];
+  v.stimulation = &d.stimulation[0];
+  for (int k = 0; k < d.stimulation_map.num_channels; ++k) fatigue_now_[k] = channel_fatigue(d, k);
+  v.fatigue = fatigue_now_.data();
   return v;  // last_applied_seq: the session's
 }
 
@@ -97,12 +116,17 @@ RtLoop::RtLoop(const RtConfig& config) : cfg_(config) {
   sched_ = check_config(cfg_);
   period_ns_ = 1e9 / cfg_.rate_hz;
   rec_ = CycleRecorder(period_ns_);
-  const StateOffsets all = state_offsets(def->num_dofs, def->num_elements, kFlagForces | kFlagExcitation);
-  if (def->num_elements > kMaxValues || all.count > kMaxValues)
-    throw std::invalid_argument("model '" + cfg_.model + "' has " + std::to_string(def->num_elements) +
-                                " elements: too many for one packet (state with forces and excitations)");
   make_simulator(*def, sched_);
-  session_ = std::make_unique<Session>(cfg_, *def, warnings_);
+  const int nc = sim_->data.stimulation_map.num_channels;
+  const std::uint16_t flags = (cfg_.send_forces ? kFlagForces : 0) | (cfg_.send_excitation ? kFlagExcitation : 0) |
+                              (nc > 0 ? kFlagStimulation : 0);
+  const StateOffsets sent = state_offsets(def->num_dofs, def->num_elements, flags, nc);
+  if (def->num_elements > kMaxValues || sent.count > kMaxValues)
+    throw std::invalid_argument("model '" + cfg_.model + "' with " + std::to_string(def->num_elements) + " elements, " +
+                                std::to_string(nc) + " stimulation channels" + (cfg_.send_forces ? ", --forces" : "") +
+                                (cfg_.send_excitation ? ", --excitations" : "") + ": " + std::to_string(sent.count) +
+                                " state values, more than one packet carries (" + std::to_string(kMaxValues) + ")");
+  session_ = std::make_unique<Session>(cfg_, *def, sim_->data.stimulation_map, warnings_);
 }
 
 RtLoop::~RtLoop() {
@@ -191,7 +215,7 @@ void RtLoop::run_cycles(std::int64_t n) {
 
     if (session_) {
       session_->receive(static_cast<double>(woke - t_start) * 1e-9);
-      if (session_->take_changed()) apply_command(session_->command());
+      if (session_->take_changed()) apply_command(session_->command(), session_->stimulation_command());
     }
     const bool ok = sim_->step();  // measures its TET (step(), stepper.cc: the one place)
     if (!ok) {

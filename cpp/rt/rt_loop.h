@@ -10,6 +10,7 @@
 
 #include <pthread.h>
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -59,7 +60,7 @@ class RtLoop {
 
   // The loop's only contact with the engine core's Model / Data (the core's redesign adapts these).
   void make_simulator(const ModelDef& def, const Schedule& sched);
-  void apply_command(const double* u);
+  void apply_command(const double* u, const double* stimulation);
   StateValues state_values(double& lag, double& overruns);
 
   RtConfig cfg_;
@@ -76,6 +77,7 @@ class RtLoop {
   double elapsed_s_ = 0;
   std::string scheduler_ = "SCHED_OTHER", rt_note_, stop_reason_, error_;
   std::vector<std::string> warnings_;
+  std::array<double, kMaxChannels> fatigue_now_{};  // each channel's fatigue at the state packet's time
   int priority_ = 0, cpu_ = -1;
   bool memory_locked_ = false;
   bool diverged_ = false, lagged_ = false;

@@ -51,11 +51,14 @@ NamedElements model_mapping(const GroupDef* g, int n, NameLevel level) {
 
 }  // namespace
 
-Session::Session(const RtConfig& cfg, const ModelDef& def, std::vector<std::string>& warnings)
+Session::Session(const RtConfig& cfg, const ModelDef& def, const StimulationMap& map,
+                 std::vector<std::string>& warnings)
     : listening_(!cfg.listen.empty()), input_timeout_(cfg.input_timeout), rx_budget_us_(cfg.rx_budget_us),
-      n_dofs_(def.num_dofs), n_el_(def.num_elements) {
+      n_dofs_(def.num_dofs), n_el_(def.num_elements), map_(map) {
   if (cfg.send_forces) block_flags_ |= kFlagForces;
   if (cfg.send_excitation) block_flags_ |= kFlagExcitation;
+  if (map_.num_channels > 0) block_flags_ |= kFlagStimulation;
+  stim_command_.assign(3 * static_cast<std::size_t>(map_.num_channels), 0.0);
   muscles_ = model_mapping(def.muscles, def.num_muscles, NameLevel::kMuscle);
   groups_ = model_mapping(def.groups, def.num_groups, NameLevel::kGroup);
   try {
@@ -153,7 +156,8 @@ void Session::send_offer(const sockaddr_in& to) {
 }
 
 void Session::end_session(bool released) {
-  for (int i = 0; i < n_el_; ++i) command_[i] = 0.0;  // safety default
+  for (int i = 0; i < n_el_; ++i) command_[i] = 0.0;  // safety default: no excitation, no stimulation
+  std::fill(stim_command_.begin(), stim_command_.end(), 0.0);
   changed_ = true;
   if (released) ++pk_.releases;
   else ++pk_.timeouts;
@@ -200,6 +204,7 @@ void Session::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in
     case kExcitationMuscles: map = &muscles_; expected = map->size(); break;
     case kExcitationGroups: map = &groups_; expected = map->size(); break;
     case kExcitationChannels: map = &channels_; expected = map->size(); break;
+    case kStimulation: expected = 3 * map_.num_channels; break;  // 0 without a map: refused as bad_count
     default: ++pk_.bad_type; return;
   }
   if (h.count != expected || expected == 0) { ++pk_.bad_count; return; }
@@ -210,19 +215,43 @@ void Session::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in
     send_offer(from);
     return;
   }
+  for (int k = 0; k < h.count; ++k) {
+    values_[k] = get_f64(buf + kHeaderSize + 8 * k);
+    if (!std::isfinite(values_[k])) { ++pk_.non_finite; return; }  // the whole packet: nothing applied
+  }
+  if (!accept_sequence(h, from)) return;
+  if (h.type == kStimulation) {
+    // Beyond a channel's limits (pulse width, amplitude, frequency, charge per phase; negative values) the
+    // runner clamps and counts, where the Python API refuses: a person may be wired to the output, and
+    // dropping the packet would hold the previous command instead.
+    bool clamped = false;
+    for (int c = 0; c < map_.num_channels; ++c)
+      clamped = clamp_stimulation_command(map_.channels[c], &values_[3 * c], &values_[3 * c + 1], &values_[3 * c + 2]) ||
+                clamped;
+    if (clamped) ++pk_.stimulation_clamped;
+    std::copy(values_.begin(), values_.begin() + h.count, stim_command_.begin());
+    ++pk_.stimulation_applied;
+    applied(h, now_s);
+    return;
+  }
   bool clipped = false;
   for (int k = 0; k < h.count; ++k) {
-    double v = get_f64(buf + kHeaderSize + 8 * k);
-    if (!std::isfinite(v)) { ++pk_.non_finite; return; }
-    if (v < 0.0) { v = 0.0; clipped = true; }
-    if (v > 1.0) { v = 1.0; clipped = true; }
-    values_[k] = v;
+    if (values_[k] < 0.0) { values_[k] = 0.0; clipped = true; }
+    if (values_[k] > 1.0) { values_[k] = 1.0; clipped = true; }
   }
-  // Sequence numbers (wrap-around aware) within the session.
+  if (clipped) ++pk_.clipped;
+  // Overlapping names (a channel mapping of a group and its muscles): the rule of names.h.
+  if (map) combine_named_values(*map, values_.data(), n_el_, command_.data(), level_scratch_.data());
+  else for (int i = 0; i < n_el_; ++i) command_[i] = values_[i];
+  applied(h, now_s);
+}
+
+bool Session::accept_sequence(const Header& h, const sockaddr_in& from) {
+  // Sequence numbers (wrap-around aware) within the session: one counter for excitation and stimulation.
   if (have_seq_) {
     const std::int32_t diff = static_cast<std::int32_t>(h.seq - last_seq_);
-    if (diff == 0) { ++pk_.stale; return; }
-    if (diff < 0) { ++pk_.out_of_order; return; }
+    if (diff == 0) { ++pk_.stale; return false; }
+    if (diff < 0) { ++pk_.out_of_order; return false; }
   }
   if (!have_owner_) {  // the first valid packet with the offered id claims the session
     have_owner_ = true;
@@ -231,10 +260,10 @@ void Session::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in
     ++pk_.sessions;
     if (!had_owner_ || !same_source(from, previous_owner_)) ++pk_.owner_changes;
   }
-  if (clipped) ++pk_.clipped;
-  // Overlapping names (a channel mapping of a group and its muscles): the rule of names.h.
-  if (map) combine_named_values(*map, values_.data(), n_el_, command_.data(), level_scratch_.data());
-  else for (int i = 0; i < n_el_; ++i) command_[i] = values_[i];
+  return true;
+}
+
+void Session::applied(const Header& h, double now_s) {
   changed_ = true;
   have_seq_ = true;
   last_seq_ = h.seq;
@@ -299,7 +328,7 @@ void Session::send_state(const StateValues& values, std::uint16_t loop_flags) {
   const double last_seq = have_seq_ ? static_cast<double>(last_seq_) : -1.0;
   v.last_applied_seq = &last_seq;
   // values_ is reused as the output staging area (the input is applied by now).
-  const int c = put_state_values(v, flags, n_dofs_, n_el_, values_.data());
+  const int c = put_state_values(v, flags, n_dofs_, n_el_, map_.num_channels, values_.data());
   std::uint8_t* b = tx_buf_.data();
   const int len = encode(b, kStatePacket, tx_seq_++, flags, values_.data(), c, session_id_);
   if (key_.enabled()) key_.sign(b, len - kTagSize, b + len - kTagSize);

@@ -20,6 +20,7 @@
 
 #include "armrt/model_def.h"
 #include "armrt/names.h"
+#include "armrt/stimulation.h"
 #include "endpoint.h"
 #include "hmac.h"
 #include "packet.h"
@@ -31,8 +32,10 @@ namespace armrt::rt {
 class Session {
  public:
   // Opens the sockets (listen, state_to), resolves the channel names of cfg against def; throws
-  // std::invalid_argument (bad names, endpoints, key) or std::runtime_error (socket, bind).
-  Session(const RtConfig& cfg, const ModelDef& def, std::vector<std::string>& warnings);
+  // std::invalid_argument (bad names, endpoints, key) or std::runtime_error (socket, bind). map: the
+  // simulator's stimulation map (num_channels 0: none; kStimulation packets are then refused), which must
+  // outlive the session.
+  Session(const RtConfig& cfg, const ModelDef& def, const StimulationMap& map, std::vector<std::string>& warnings);
   ~Session();
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
@@ -41,13 +44,17 @@ class Session {
   // session silent for longer than the input timeout. now_s: loop time.
   void receive(double now_s);
   // True once after the command changed (a packet applied, a session ended); command(): one
-  // excitation per element in [0, 1], before the model's max activation.
+  // excitation per element in [0, 1], before the model's max activation; stimulation_command(): 3 values
+  // per channel of the map (pulse width s, amplitude A, frequency Hz), within the channels' limits, all
+  // zero while no session is active.
   bool take_changed() {
     const bool c = changed_;
     changed_ = false;
     return c;
   }
   const double* command() const { return command_.data(); }
+  const double* stimulation_command() const { return stim_command_.data(); }
+  int num_channels() const { return map_.num_channels; }
 
   bool wants_state() const { return sock_ >= 0 && (!subscribers_.empty() || have_owner_ || notify_previous_); }
   // Sends one state packet (rows per cfg's --forces / --excitations; last_applied_seq is the
@@ -60,6 +67,9 @@ class Session {
 
  private:
   void handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in& from, double now_s);
+  // The sequence check and claim of an applicable packet (excitation or stimulation); false: not applied.
+  bool accept_sequence(const Header& h, const sockaddr_in& from);
+  void applied(const Header& h, double now_s);
   bool drain(int fd, double now_s, std::int64_t budget_end);
   void isolate_owner(const sockaddr_in* owner);
   void end_session(bool released);
@@ -75,6 +85,8 @@ class Session {
   NamedElements muscles_, groups_, channels_;
   std::vector<NameLevel> level_scratch_;
   std::vector<double> command_;
+  const StimulationMap& map_;
+  std::vector<double> stim_command_;    // 3 per channel
   bool changed_ = false;
 
   // UDP.

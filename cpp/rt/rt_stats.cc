@@ -69,7 +69,8 @@ std::string stats_json(const RtStats& s) {
                   {"bad_version", k.bad_version}, {"bad_size", k.bad_size}, {"bad_type", k.bad_type},
                   {"bad_count", k.bad_count}, {"bad_auth", k.bad_auth}, {"bad_session", k.bad_session},
                   {"non_finite", k.non_finite}, {"stale", k.stale}, {"out_of_order", k.out_of_order},
-                  {"clipped", k.clipped}, {"hellos", k.hellos}, {"offers", k.offers}, {"sessions", k.sessions},
+                  {"clipped", k.clipped}, {"stimulation_applied", k.stimulation_applied},
+                  {"stimulation_clamped", k.stimulation_clamped}, {"hellos", k.hellos}, {"offers", k.offers}, {"sessions", k.sessions},
                   {"owner_changes", k.owner_changes}, {"releases", k.releases}, {"timeouts", k.timeouts},
                   {"rx_budget_hits", k.rx_budget_hits}, {"state_sent", k.state_sent},
                   {"send_errors", k.send_errors}};

@@ -20,7 +20,8 @@ Percentiles percentiles(const LogHistogram& h);
 
 struct PacketCounters {
   std::uint64_t received = 0;      // datagrams read
-  std::uint64_t applied = 0;       // valid excitation packets applied
+  std::uint64_t applied = 0;       // valid excitation and stimulation packets applied
+  std::uint64_t stimulation_applied = 0;  // of which stimulation packets
   std::uint64_t foreign = 0;       // from a source other than the session's owner (not decoded)
   std::uint64_t not_allowed = 0;   // from a source outside --allow (not decoded)
   std::uint64_t bad_magic = 0, bad_version = 0, bad_size = 0, bad_type = 0, bad_count = 0;
@@ -29,7 +30,9 @@ struct PacketCounters {
   std::uint64_t non_finite = 0;    // NaN / inf values
   std::uint64_t stale = 0;         // duplicate sequence number in the session
   std::uint64_t out_of_order = 0;  // sequence number older than the session's last applied one
-  std::uint64_t clipped = 0;       // packets with values outside [0, 1] (applied, clipped)
+  std::uint64_t clipped = 0;       // excitation packets with values outside [0, 1] (applied, clipped)
+  std::uint64_t stimulation_clamped = 0;  // stimulation packets with a value beyond its channel's limits
+                                          // (pulse width, amplitude, frequency, charge; applied, clamped)
   std::uint64_t hellos = 0;        // session requests read
   std::uint64_t offers = 0;        // session offers sent (at most one per cycle)
   std::uint64_t sessions = 0;      // sessions started (first excitation with the offered id)

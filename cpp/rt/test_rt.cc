@@ -27,12 +27,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <new>
 #include <thread>
 #include <vector>
 
+#include "armrt/engine.h"
 #include "armrt/names.h"
+#include "armrt/stimulation.h"
 #include "histogram.h"
 #include "hmac.h"
 #include "packet.h"
@@ -75,6 +78,11 @@ extern "C" int pthread_mutex_lock(pthread_mutex_t* m) {
 }
 
 using namespace armrt::rt;
+using armrt::ChannelLimits;
+using armrt::Data;
+using armrt::act_offset;
+using armrt::channel_fatigue;
+using armrt::stimulation_command_error;
 
 namespace {
 
@@ -872,10 +880,10 @@ TEST_CASE("channel mapping: the most specific name wins, in either order") {
 }
 
 TEST_CASE("state packet table: offsets, labels and sizes agree") {
-  const std::vector<std::string> dofs{"a", "b"}, els{"e1", "e2", "e3"};
-  const auto rows = state_field_table(dofs, els);
-  const StateOffsets all = state_offsets(2, 3, kFlagForces | kFlagExcitation);
-  const StateOffsets fixed = state_offsets(2, 3, 0);
+  const std::vector<std::string> dofs{"a", "b"}, els{"e1", "e2", "e3"}, channels{"c1", "c2"};
+  const auto rows = state_field_table(dofs, els, channels);
+  const StateOffsets all = state_offsets(2, 3, kFlagForces | kFlagExcitation | kFlagStimulation, 2);
+  const StateOffsets fixed = state_offsets(2, 3, 0, 2);
   int c = 0;
   for (const auto& r : rows) {
     CHECK(static_cast<int>(r.labels.size()) == r.size);
@@ -890,5 +898,147 @@ TEST_CASE("state packet table: offsets, labels and sizes agree") {
   CHECK(rows[1].labels == std::vector<std::string>{"a", "b"});
   CHECK(rows[2].labels == std::vector<std::string>{"a_dot", "b_dot"});
   CHECK(rows[3].labels == std::vector<std::string>{"hand_x", "hand_y", "hand_z"});
-  CHECK(rows.back().labels[2] == "excitation_e3");
+  CHECK(rows[rows.size() - 3].labels[2] == "excitation_e3");
+  // The stimulation rows: after the excitations, 3 values per channel, then one fatigue per channel.
+  CHECK(all.stimulation == fixed.fixed_values + 6);
+  CHECK(all.fatigue == fixed.fixed_values + 6 + 6);
+  CHECK(state_offsets(2, 3, kFlagStimulation, 2).stimulation == fixed.fixed_values);
+  CHECK(fixed.stimulation == -1);
+  CHECK(rows[rows.size() - 2].labels ==
+        std::vector<std::string>{"c1/pulse_width", "c1/amplitude", "c1/frequency", "c2/pulse_width", "c2/amplitude",
+                                 "c2/frequency"});
+  CHECK(rows.back().labels == std::vector<std::string>{"c1/fatigue", "c2/fatigue"});
+  CHECK(rows.back().rule == "channels");
+  CHECK(rows[rows.size() - 2].rule == "channel_inputs");
+}
+
+TEST_CASE("stimulation packets: clamped and counted, state carries them, the timeout zeroes every channel") {
+  RtConfig c = test_config();
+  c.state_rate_hz = 1000;
+  c.send_forces = false;
+  c.stimulation = "per_muscle";
+  RtLoop loop(c);
+  Data& d = loop.arm().data;
+  const int nc = d.stimulation_map.num_channels;
+  REQUIRE(nc == loop.arm().model.def->num_muscles);
+  const int port = loop.bound_port();
+  Controller ctl(port);
+  ctl.join(loop);
+  REQUIRE(ctl.session != 0);
+  auto settle = [&] { usleep(3000); loop.run_cycles(2); };
+
+  // Channel 0 within its (intramuscular: NNP) limits; channel 1 beyond every limit and negative elsewhere.
+  std::vector<double> v(3 * nc, 0.0);
+  v[0] = 200e-6, v[1] = 0.015, v[2] = 30.0;
+  v[3] = 900e-6, v[4] = 0.5, v[5] = 400.0;
+  v[6] = -1e-6, v[7] = 0.01, v[8] = 20.0;
+  ctl.send(kStimulation, v);
+  settle();
+  const ChannelLimits& lim = d.stimulation_map.channels[1].limits;
+  CHECK(d.stimulation[0] == 200e-6);
+  CHECK(d.stimulation[1] == 0.015);
+  CHECK(d.stimulation[2] == 30.0);
+  CHECK(d.stimulation[3] == lim.max_pulse_width_s);
+  CHECK(d.stimulation[5] == lim.max_frequency_Hz);
+  CHECK(d.stimulation[3] * d.stimulation[4] <= lim.max_charge_C * (1 + 1e-12));
+  CHECK(d.stimulation[6] == 0.0);
+  for (int k = 0; k < nc; ++k)
+    CHECK(stimulation_command_error(d.stimulation_map.channels[k], d.stimulation[3 * k], d.stimulation[3 * k + 1],
+                                    d.stimulation[3 * k + 2]) == "");
+  RtStats st = loop.stats();
+  CHECK(st.packets.stimulation_applied == 1);
+  CHECK(st.packets.stimulation_clamped == 1);
+
+  // NaN anywhere: the whole packet is dropped, the command held; the wrong count is refused.
+  std::vector<double> nan = v;
+  nan[2] = std::numeric_limits<double>::quiet_NaN();
+  nan[0] = 100e-6;
+  ctl.send(kStimulation, nan);
+  ctl.send(kStimulation, std::vector<double>(3 * nc - 1, 0.0));
+  settle();
+  CHECK(d.stimulation[0] == 200e-6);
+  CHECK(loop.stats().packets.non_finite == 1);
+  CHECK(loop.stats().packets.bad_count == 1);
+
+  // Stimulating channel 0 for 300 ms: its muscle activates and fatigues; state packets carry both.
+  for (int k = 0; k < 30; ++k) {
+    ctl.send(kStimulation, v);
+    usleep(1000);
+    loop.run_cycles(10);
+  }
+  const int e0 = loop.arm().model.def->muscles[0].elements[0];
+  CHECK(d.x[act_offset(loop.arm().model) + e0] > 0.05);
+  std::uint8_t b[kMaxPacket];
+  Header h;
+  long n = -1, got = 0;
+  std::vector<std::uint8_t> last;
+  while ((n = ::recv(ctl.s, b, sizeof b, MSG_DONTWAIT)) > 0)
+    if (decode_header(b, n, h) == DecodeError::kOk && h.type == kStatePacket) { last.assign(b, b + n); ++got; }
+  REQUIRE(got > 0);
+  decode_header(last.data(), static_cast<long>(last.size()), h);
+  CHECK((h.flags & kFlagStimulation) != 0);
+  const StateOffsets o = state_offsets(loop.arm().model.num_dofs, loop.arm().model.num_elements, h.flags, nc);
+  CHECK(h.count == o.count);
+  CHECK(get_f64(last.data() + kHeaderSize + 8 * o.stimulation) == 200e-6);
+  CHECK(get_f64(last.data() + kHeaderSize + 8 * (o.stimulation + 5)) == lim.max_frequency_Hz);
+  const double fatigue0 = get_f64(last.data() + kHeaderSize + 8 * o.fatigue);
+  CHECK(fatigue0 > 0.0);
+  CHECK(fatigue0 == doctest::Approx(channel_fatigue(d, 0)).epsilon(0.05));
+  CHECK(get_f64(last.data() + kHeaderSize + 8 * (o.fatigue + 2)) == 0.0);  // channel 2 never pulsed
+
+  // Applying stimulation in the hot loop allocates nothing.
+  const long a0 = g_allocations.load();
+  t_counting = true;
+  for (int k = 0; k < 5; ++k) {
+    ctl.send(kStimulation, v);
+    loop.run_cycles(3);
+  }
+  t_counting = false;
+  CHECK(g_allocations.load() - a0 == 0);
+
+  // Silence beyond the timeout (50 ms): every channel to zero, whatever the owner sent last.
+  loop.run_cycles(80);
+  CHECK(loop.stats().packets.timeouts == 1);
+  for (int k = 0; k < 3 * nc; ++k) CHECK(d.stimulation[k] == 0.0);
+}
+
+TEST_CASE("--stimulation: the engine's map reader, errors naming the option; no map, no stimulation packets") {
+  RtConfig c = test_config();
+  c.stimulation = "/nonexistent/map.toml";
+  try {
+    RtLoop loop(c);
+    FAIL("a missing map file was accepted");
+  } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()).find("--stimulation") != std::string::npos);
+  }
+  const std::string path = "/tmp/armrt_rt_test_map_" + std::to_string(::getpid()) + ".toml";
+  {
+    std::ofstream f(path);
+    f << "[[channels]]\nname = \"flexors\"\nelements = [\"bicl\", \"brachialis\"]\n"
+         "[[channels]]\nname = \"bad\"\nelements = [\"bicepz\"]\n";
+  }
+  c.stimulation = path;
+  try {
+    RtLoop loop(c);
+    FAIL("a map with an unknown muscle was accepted");
+  } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()).find("--stimulation") != std::string::npos);
+    CHECK(std::string(e.what()).find("bicepz") != std::string::npos);
+  }
+  {
+    std::ofstream f(path);
+    f << "[[channels]]\nname = \"flexors\"\nelements = [\"bicl\", \"brachialis\"]\n";
+  }
+  RtLoop loop(c);
+  CHECK(loop.arm().data.stimulation_map.num_channels == 1);
+  std::remove(path.c_str());
+
+  RtLoop plain(test_config());  // no map: a stimulation packet is refused (no channels to fill)
+  Controller ctl(plain.bound_port());
+  ctl.join(plain);
+  ctl.send(kStimulation, {200e-6, 0.01, 20.0});
+  usleep(3000);
+  plain.run_cycles(2);
+  CHECK(plain.stats().packets.bad_count == 1);
+  CHECK(plain.stats().packets.applied == 0);
 }

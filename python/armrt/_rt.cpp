@@ -49,6 +49,7 @@ PYBIND11_MODULE(_rt, m) {
   types["hello"] = static_cast<int>(kHello);
   types["state"] = static_cast<int>(kStatePacket);
   types["offer"] = static_cast<int>(kOffer);
+  types["stimulation"] = static_cast<int>(kStimulation);
   m.attr("TYPES") = types;
   py::dict flags;
   flags["forces"] = static_cast<int>(kFlagForces);
@@ -58,6 +59,7 @@ PYBIND11_MODULE(_rt, m) {
   flags["auth"] = static_cast<int>(kFlagAuth);
   flags["overrun"] = static_cast<int>(kFlagOverrun);
   flags["excitation"] = static_cast<int>(kFlagExcitation);
+  flags["stimulation"] = static_cast<int>(kFlagStimulation);
   m.attr("FLAGS") = flags;
   // The state packet's table (packet.h ARMRT_STATE_PACKET_FIELDS) for a model: its sizes and labels
   // depend on the model's DOFs and elements.
@@ -72,10 +74,10 @@ PYBIND11_MODULE(_rt, m) {
     for (int i = 0; i < def.num_elements; ++i) els.emplace_back(def.elements[i].name);
     return std::pair{dofs, els};
   };
-  m.def("state_packet_fields", [require, names_of](const std::string& model) {
+  m.def("state_packet_fields", [require, names_of](const std::string& model, const std::vector<std::string>& channels) {
         const auto [dofs, els] = names_of(require(model));
         py::list rows;
-        for (const StateFieldInfo& r : state_field_table(dofs, els)) {
+        for (const StateFieldInfo& r : state_field_table(dofs, els, channels)) {
           py::dict d;
           d["name"] = r.name;
           d["size"] = r.size;
@@ -89,9 +91,10 @@ PYBIND11_MODULE(_rt, m) {
           rows.append(d);
         }
         return rows;
-      }, py::arg("model") = "das2",
-      "The state packet's rows in packet order: dicts of name, size (values), rule (one, dofs, three, elements), unit, flag (0: always sent, else "
-      "the PacketFlags bit that adds it), integer, labels (one per value), lsl_type, description");
+      }, py::arg("model") = "das2", py::arg("channels") = std::vector<std::string>{},
+      "The state packet's rows in packet order: dicts of name, size (values), rule (one, dofs, three, elements, channels, "
+      "channel_inputs), unit, flag (0: always sent, else the PacketFlags bit that adds it), integer, labels (one per value), "
+      "lsl_type, description. channels: the stimulation map's channel names (the runner's --stimulation), in its order");
   m.def("state_fields", [require, names_of](const std::string& model) {
         return state_field_names(names_of(require(model)).first);
       }, py::arg("model") = "das2",
@@ -112,7 +115,7 @@ PYBIND11_MODULE(_rt, m) {
                        std::vector<std::string> state_to, std::vector<std::string> allow, py::bytes key,
                        double state_rate_hz, bool send_forces, bool send_excitation, double input_timeout,
                        std::vector<std::string> channels, double rx_budget_us,
-                       std::vector<std::string> max_activation) {
+                       std::vector<std::string> max_activation, const std::string& stimulation) {
              RtConfig c;
              c.model = model;
              c.integrator = integrator;
@@ -138,6 +141,7 @@ PYBIND11_MODULE(_rt, m) {
              c.channels = std::move(channels);
              c.rx_budget_us = rx_budget_us;
              c.max_activation = std::move(max_activation);
+             c.stimulation = stimulation;
              return std::make_unique<RtLoop>(c);
            }),
            py::arg("model") = "das2", py::arg("integrator") = RtConfig{}.integrator, py::arg("rate_hz") = 1000.0,
@@ -148,7 +152,8 @@ PYBIND11_MODULE(_rt, m) {
            py::arg("allow") = std::vector<std::string>{}, py::arg("key") = py::bytes(""),
            py::arg("state_rate_hz") = 100.0, py::arg("send_forces") = false, py::arg("send_excitation") = false,
            py::arg("input_timeout") = 0.1, py::arg("channels") = std::vector<std::string>{},
-           py::arg("rx_budget_us") = 0.0, py::arg("max_activation") = std::vector<std::string>{})
+           py::arg("rx_budget_us") = 0.0, py::arg("max_activation") = std::vector<std::string>{},
+           py::arg("stimulation") = "")
       .def("start", [](RtLoop& l) {
         py::gil_scoped_release release;
         l.start();
@@ -183,6 +188,12 @@ PYBIND11_MODULE(_rt, m) {
       .def_property_readonly("port", &RtLoop::bound_port)
       .def_property_readonly("integration_step", [](const RtLoop& l) { return l.config().integration_step; })
       .def_property_readonly("n_elements", [](RtLoop& l) { return l.arm().model.num_elements; })
+      .def_property_readonly("stimulation_channels", [](RtLoop& l) {
+        std::vector<std::string> out;
+        const auto& map = l.arm().data.stimulation_map;
+        for (int k = 0; k < map.num_channels; ++k) out.emplace_back(map.channels[k].name);
+        return out;
+      })
       .def("stats", &stats_dict)
       .def("stats_json", &RtLoop::stats_json);
 }

@@ -6,6 +6,13 @@ runner as UDP excitation packets, as the owner of the runner's session (armrt.re
 It only forwards new samples: when the LSL controller goes silent the runner's input timeout sets
 the excitation to zero, as with a direct UDP controller.
 
+With --mapping stimulation and the runner's --stimulation map, the input stream is a stimulator's: channels
+labelled "<channel>/pulse_width" (s), "<channel>/amplitude" (A) and "<channel>/frequency" (Hz), any subset of
+the map's channels (the others are off). A sample the Python API would refuse (NaN, negative, beyond a
+channel's limits) is not forwarded (counted in .refused, warned about once): the runner holds the previous
+command and, if nothing valid follows, its timeout sets every channel to zero. The state stream then also
+carries the applied stimulation and each channel's fatigue.
+
     armrt-rt --listen 127.0.0.1:45100 --state-to 127.0.0.1:45101 &
     python -m armrt.lsl_bridge --runner 127.0.0.1:45100 --state-port 45101 --mapping groups \\
         --excitation-source-id my-controller
@@ -31,26 +38,35 @@ import numpy as np
 from .realtime import GroupMapping, PacketError, StatePacket, UdpClient, decode_packet, parse_endpoint, state_packet_fields
 
 
-def _stream_rows(model: str, forces: bool, excitations: bool) -> list[dict]:
+def _stream_rows(model: str, forces: bool, excitations: bool, channels=()) -> list[dict]:
     """The rows of the state packet table (cpp/rt/packet.h) the stream carries: the ones always sent,
-    then the runner's overrun flag (a channel of its own), then forces / excitations if asked for."""
-    rows = state_packet_fields(model)
+    then the runner's overrun flag (a channel of its own), then forces / excitations if asked for, then the
+    stimulation and fatigue rows when the runner has a map with these channels."""
+    rows = state_packet_fields(model, channels)
     fixed = [r for r in rows if r["flag"] == 0]
     flag = {"name": "overrun", "labels": ["overrun"], "unit": "1", "lsl_type": "flag", "size": 1, "flag": 0}
-    optional = [r for r in rows if (r["name"] == "muscle_force" and forces) or (r["name"] == "excitation" and excitations)]
+    optional = [r for r in rows if (r["name"] == "muscle_force" and forces) or (r["name"] == "excitation" and excitations)
+                or (r["name"] in ("stimulation", "fatigue") and len(channels) > 0)]
     return fixed + [flag] + optional
 
 
-def state_channels(model: str = "das2", forces: bool = False,
-                   excitations: bool = False) -> tuple[list[str], list[str], list[str]]:
+def _row_units(r: dict) -> list[str]:
+    # A row of several quantities ("s,A,Hz": pulse width, amplitude, frequency per channel) cycles its units.
+    units = r["unit"].split(",")
+    return [units[k % len(units)] for k in range(len(r["labels"]))]
+
+
+def state_channels(model: str = "das2", forces: bool = False, excitations: bool = False,
+                   channels=()) -> tuple[list[str], list[str], list[str]]:
     """Labels, units and types of the state stream's channels for `model`, read from the state packet
     table (armrt.realtime.state_packet_fields): time, one angle and one angular velocity per DOF
     (labelled by the DOF names), hand position, GHstab, the GH force's angles, rim margin and rim
     direction, last applied sequence number, lag, overruns, the overrun flag, then the muscle forces
-    and excitations when the runner sends them."""
-    rows = _stream_rows(model, forces, excitations)
+    and excitations when the runner sends them, then with stimulation channels (the runner's --stimulation
+    map, in order) "<channel>/pulse_width" (s), "/amplitude" (A), "/frequency" (Hz) and "<channel>/fatigue"."""
+    rows = _stream_rows(model, forces, excitations, channels)
     labels = [lab for r in rows for lab in r["labels"]]
-    units = [r["unit"] for r in rows for _ in r["labels"]]
+    units = [u for r in rows for u in _row_units(r)]
     types = [r["lsl_type"] for r in rows for _ in r["labels"]]
     return labels, units, types
 
@@ -78,8 +94,8 @@ def check_state_rate(state_rate_hz: float, runner_rate_hz: float = 1000.0) -> in
 
 
 def state_stream_info(pylsl, name: str, source_id: str, rate_hz: float, forces: bool = False,
-                      model: str = "das2", excitations: bool = False):
-    labels, units, types = state_channels(model, forces, excitations)
+                      model: str = "das2", excitations: bool = False, channels=()):
+    labels, units, types = state_channels(model, forces, excitations, channels)
     info = pylsl.StreamInfo(name, "ArmState", len(labels), rate_hz, pylsl.cf_double64, source_id)
     desc = info.desc()
     desc.append_child_value("model", model)
@@ -129,9 +145,11 @@ class LslBridge:
     .state_port). source_id is stable (default "armrt-<model>"): the state stream is "<source_id>-state".
     excitation_source_id pins the excitation stream; without it, the stream named excitation_name on
     excitation_host (default: this host). state_rate_hz must be runner_rate_hz / an integer (ValueError).
-    key: the runner's shared key, if any. Faults (bad packets, rate mismatch) are counted and warned
-    about once each (.warnings); a stream that cannot be matched, or a declared channel set the runner
-    does not fill (forces), raises from step() / run().
+    key: the runner's shared key, if any. mapping "stimulation" with stimulation= (the runner's --stimulation
+    map): the input stream carries "<channel>/pulse_width", "/amplitude", "/frequency" (SI) by label, forwarded
+    as stimulation packets (excitation_name defaults to "armrt_stimulation"). Faults (bad packets, rate
+    mismatch, refused stimulation samples) are counted and warned about once each (.warnings); a stream that
+    cannot be matched, or a declared channel set the runner does not fill (forces), raises from step() / run().
     """
 
     def __init__(self, runner_port: int, runner_host: str = "127.0.0.1", state_port: int = 0,
@@ -139,12 +157,22 @@ class LslBridge:
                  state_name: str = "armrt_state", excitation_name: str = "armrt_excitation",
                  state_rate_hz: float = 100.0, forces: bool = False, excitation_source_id: str | None = None,
                  excitation_host: str | None = None, runner_rate_hz: float = 1000.0, key: bytes | None = None,
-                 excitations: bool = False):
+                 excitations: bool = False, stimulation=None):
         self.pylsl = _pylsl()
         self.state_every = check_state_rate(state_rate_hz, runner_rate_hz)
         self.state_period = self.state_every / runner_rate_hz
-        self.client = UdpClient(runner_port, runner_host, mapping, model, channels, bind_port=state_port, key=key)
-        self.mapping = self.client.mapping
+        self.stimulating = mapping == "stimulation"
+        if self.stimulating and stimulation is None:
+            raise ValueError("mapping 'stimulation' needs the runner's stimulation map (stimulation=, --stimulation)")
+        if self.stimulating and excitation_name == "armrt_excitation":
+            excitation_name = "armrt_stimulation"
+        self.client = UdpClient(runner_port, runner_host, "groups" if self.stimulating else mapping, model, channels,
+                                bind_port=state_port, key=key, stimulation=stimulation)
+        channel_names = self.client.stimulation.names if self.client.stimulation else []
+        # What the input stream's labels are matched against: the mapping's names, or the stimulation labels.
+        self.mapping = self.client.stimulation if self.stimulating else self.client.mapping
+        self.input_names = list(self.mapping.labels if self.stimulating else self.mapping.names)
+        self.refused = 0  # stimulation samples not forwarded (the Python API would refuse them)
         self.state_port = self.client.local_port
         self.source_id = source_id or f"armrt-{model}"
         self.excitation_name = excitation_name
@@ -152,10 +180,10 @@ class LslBridge:
         self.excitation_host = excitation_host or socket.gethostname()
         self.forces = forces
         self.excitations = excitations
-        self.stream_rows = _stream_rows(model, forces, excitations)
+        self.stream_rows = _stream_rows(model, forces, excitations, channel_names)
         self.outlet = self.pylsl.StreamOutlet(
             state_stream_info(self.pylsl, state_name, f"{self.source_id}-state", state_rate_hz, forces, model,
-                              excitations))
+                              excitations, channel_names))
         self.inlet = None
         self.channel_index: np.ndarray | None = None
         self.last_values: np.ndarray | None = None   # the last forwarded excitation, in the mapping's order
@@ -207,7 +235,7 @@ class LslBridge:
                 elif found:
                     inlet = pylsl.StreamInlet(found[0], max_buflen=1, recover=True)
                     full = inlet.info(timeout=5.0)
-                    self.channel_index = match_labels(channel_labels(full), list(self.mapping.names),
+                    self.channel_index = match_labels(channel_labels(full), self.input_names,
                                                       f"{full.name()}@{full.hostname()}")
                     self.inlet = inlet
                     print(f"lsl_bridge: excitation stream {full.name()!r} ({full.source_id()}) on "
@@ -227,14 +255,20 @@ class LslBridge:
         if self.inlet is not None:
             samples, _ = self.inlet.pull_chunk(timeout=0.0)
             if samples:  # only the newest matters
-                v = np.zeros(len(self.mapping.names))
+                v = np.zeros(len(self.input_names))
                 v[self.channel_index] = np.asarray(samples[-1], dtype=float)
-                self.last_values = v
                 try:
-                    self.client.send(v)
+                    if self.stimulating:
+                        self.client.send_stimulation(v.reshape(-1, 3))
+                    else:
+                        self.client.send(v)
+                    self.last_values = v
                     self.forwarded += 1
                 except TimeoutError as e:
                     self.warn("no-session", f"the runner gives this bridge no session: {e}")
+                except ValueError as e:  # a stimulation sample beyond the limits: never sent
+                    self.refused += 1
+                    self.warn("refused", f"stimulation samples refused, not forwarded (counted in .refused): {e}")
         bad0 = self.client.bad_packets + self.client.foreign_packets
         if self.client.poll(0.002):  # the bridge's pace: at most 2 ms idle, then drain without waiting
             while self.client.poll(0.0):
@@ -254,6 +288,9 @@ class LslBridge:
         if self.excitations and st.excitation is None:
             raise RuntimeError("the state stream declares excitations but the runner sends none: start "
                                "armrt-rt with --excitations, or the bridge without --excitations")
+        if self.client.stimulation is not None and st.stimulation is None:
+            raise RuntimeError("the state stream declares stimulation channels but the runner sends none: start "
+                               "armrt-rt with the same --stimulation map")
         if self._last_time is not None and not st.stopped:
             dt = st.time - self._last_time
             if dt > 0 and abs(dt - self.state_period) > 1e-6:
@@ -266,7 +303,7 @@ class LslBridge:
         sample = []
         for r in self.stream_rows:  # the table's rows, in the stream's order
             v = float(st.overrun) if r["name"] == "overrun" else getattr(st, r["name"])
-            sample += list(np.atleast_1d(np.asarray(v, dtype=float)))
+            sample += np.asarray(v, dtype=float).ravel().tolist()
         self.outlet.push_sample(sample, self.pylsl.local_clock())
         self.published += 1
 
@@ -285,12 +322,16 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python -m armrt.lsl_bridge", description=__doc__.split("\n\n")[0])
     ap.add_argument("--runner", default="127.0.0.1:45100", help="the runner's --listen HOST:PORT")
     ap.add_argument("--state-port", type=int, default=45101, help="UDP port the runner sends state to (--state-to)")
-    ap.add_argument("--mapping", default="groups", choices=["elements", "muscles", "groups", "channels"])
+    ap.add_argument("--mapping", default="groups", choices=["elements", "muscles", "groups", "channels", "stimulation"])
+    ap.add_argument("--stimulation", default=None, help="the runner's --stimulation map (FILE or per_muscle): with "
+                                                        "--mapping stimulation, and for the state stream's "
+                                                        "stimulation and fatigue channels")
     ap.add_argument("--model", default="das2", help="the runner's --model (names of the state channels and the mapping)")
     ap.add_argument("--channels", default="", help="comma-separated names for --mapping channels")
     ap.add_argument("--source-id", default=None)
     ap.add_argument("--state-name", default="armrt_state")
-    ap.add_argument("--excitation-name", default="armrt_excitation")
+    ap.add_argument("--excitation-name", default="armrt_excitation",
+                    help="the input stream's name (with --mapping stimulation: default armrt_stimulation)")
     ap.add_argument("--excitation-source-id", default=None, help="pin the excitation stream by its source_id")
     ap.add_argument("--excitation-host", default=None, help="host of the excitation stream (default: this one)")
     ap.add_argument("--rate", type=float, default=100.0, help="state rate: the runner's --state-rate")
@@ -308,7 +349,7 @@ def main(argv=None) -> int:
                            state_rate_hz=a.rate, forces=a.forces, excitation_source_id=a.excitation_source_id,
                            excitation_host=a.excitation_host, runner_rate_hz=a.runner_rate,
                            key=read_key_file(a.key_file) if a.key_file else None, model=a.model,
-                           excitations=a.excitations)
+                           excitations=a.excitations, stimulation=a.stimulation)
     except (ValueError, RuntimeError, OSError) as e:
         print(f"lsl_bridge: {e}", file=sys.stderr)
         return 2

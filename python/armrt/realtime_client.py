@@ -16,8 +16,8 @@ import numpy as np
 
 from . import _rt
 from .realtime_packets import (EXC_CHANNELS, EXC_ELEMENTS, EXC_GROUPS, EXC_MUSCLES, HELLO, OFFER, RELEASE, STATE,
-                               PacketError, StatePacket, _key_bytes, decode_packet, encode_packet, state_fields,
-                               state_packet_fields)
+                               STIMULATION, PacketError, StatePacket, _key_bytes, decode_packet, encode_packet,
+                               state_fields, state_packet_fields)
 
 MAPPING_TYPES = {"elements": EXC_ELEMENTS, "muscles": EXC_MUSCLES, "groups": EXC_GROUPS, "channels": EXC_CHANNELS}
 
@@ -109,6 +109,33 @@ class GroupMapping:
         return np.asarray(_core.excitations_from_names(self.model, list(zip(self.names, np.clip(v, 0, 1).tolist()))))
 
 
+class StimulationChannels:
+    """The runner's stimulation map on the controller's side: its channels in order, and the engine's own check
+    of a command against each channel's limits (armrt.Arm.set_stimulation's), so a client refuses what the
+    Python API refuses before it is sent; the runner clamps and counts whatever still arrives beyond them.
+
+    model: the runner's --model; stimulation: the same map as its --stimulation ("per_muscle", a .json/.toml
+    path or a dict). ValueError / FileNotFoundError as Arm(model, stimulation=...)."""
+
+    def __init__(self, model: str, stimulation):
+        from .arm import Arm  # one reader of maps: the engine's (cpp/src/stimulation_map.cc)
+        self._arm = Arm(model, stimulation=stimulation)
+        self.names: list[str] = list(self._arm.channel_names)
+        #: The labels of a stimulation stream's channels (LSL), in packet order: "<channel>/pulse_width", ...
+        self.labels: list[str] = [f"{c}/{v}" for c in self.names for v in ("pulse_width", "amplitude", "frequency")]
+
+    def values(self, stimulation) -> np.ndarray:
+        """{channel: (pulse_width_s, amplitude_A, frequency_Hz)} (channels not named: 0, off) or a (channels, 3)
+        array -> the packet's 3 * channels values. ValueError naming the channel for an unknown name, a NaN, a
+        negative value or one beyond the channel's limits (pulse width, amplitude, frequency, charge per phase)."""
+        from . import stimulation as _stimulation
+        cmd = _stimulation.commands(self._arm._sim, stimulation, np.zeros((len(self.names), 3)))
+        err = self._arm._sim.stimulation_command_error(cmd.ravel())
+        if err:
+            raise ValueError(err)
+        return cmd.ravel()
+
+
 # ---------------------------------------------------------------------------------------- UDP client
 class UdpClient:
     """A controller's end of the link: owns a session of the runner, sends excitations, receives state.
@@ -124,10 +151,12 @@ class UdpClient:
 
     def __init__(self, port: int, host: str = "127.0.0.1", mapping: str | GroupMapping = "elements",
                  model: str = "das2", channels: Sequence[str] | None = None, bind_port: int = 0,
-                 key: bytes | str | None = None):
+                 key: bytes | str | None = None, stimulation=None):
         self.address = parse_endpoint(f"{host}:{int(port)}")
         self.state_fields = state_fields(model)
-        self.state_table = state_packet_fields(model)
+        #: The runner's stimulation channels (its --stimulation map, given here as stimulation=), or None.
+        self.stimulation = None if stimulation is None else StimulationChannels(model, stimulation)
+        self.state_table = state_packet_fields(model, self.stimulation.names if self.stimulation else ())
         self.mapping = mapping if isinstance(mapping, GroupMapping) else GroupMapping.from_model(mapping, model, channels)
         self.key = _key_bytes(key)
         self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
@@ -218,6 +247,22 @@ class UdpClient:
         data = encode_packet(self.mapping.packet_type, seq, self.mapping.values(excitation),
                              session=self.session, key=self.key)
         self.sock.sendto(data, self.address)
+        return seq
+
+    def send_stimulation(self, stimulation, seq: int | None = None) -> int:
+        """Sends one stimulation packet: {channel: (pulse_width_s, amplitude_A, frequency_Hz)} (channels not
+        named are off) or a (channels, 3) array, in the map's channel order; returns its sequence number.
+        ValueError (nothing sent) for a value the Python API refuses: NaN, negative, beyond a channel's limits;
+        RuntimeError without stimulation= (the runner's map). Joins the session first if none is known."""
+        if self.stimulation is None:
+            raise RuntimeError("this client has no stimulation map: UdpClient(..., stimulation=<the runner's "
+                               "--stimulation map>)")
+        values = self.stimulation.values(stimulation)
+        if self.session == 0:
+            self.join()
+        if seq is None:
+            seq = self._next_seq()
+        self.sock.sendto(encode_packet(STIMULATION, seq, values, session=self.session, key=self.key), self.address)
         return seq
 
     def send_raw(self, data: bytes) -> None:

@@ -46,15 +46,20 @@ TYPES: dict = dict(_rt.TYPES)
 FLAGS: dict = dict(_rt.FLAGS)
 EXC_ELEMENTS, EXC_MUSCLES, EXC_GROUPS, EXC_CHANNELS = (TYPES[k] for k in ("elements", "muscles", "groups", "channels"))
 RELEASE, HELLO, STATE, OFFER = (TYPES[k] for k in ("release", "hello", "state", "offer"))
+STIMULATION: int = TYPES["stimulation"]
 FLAG_FORCES, FLAG_STOPPED, FLAG_ERROR, FLAG_TIMED_OUT = (FLAGS[k] for k in ("forces", "stopped", "error", "timed_out"))
 FLAG_AUTH, FLAG_OVERRUN, FLAG_EXCITATION = (FLAGS[k] for k in ("auth", "overrun", "excitation"))
+FLAG_STIMULATION: int = FLAGS["stimulation"]
 
 
-def state_packet_fields(model: str = "das2") -> list[dict]:
+def state_packet_fields(model: str = "das2", channels=()) -> list[dict]:
     """The state packet's table for `model` (cpp/rt/packet.h ARMRT_STATE_PACKET_FIELDS), in packet
-    order: dicts of name, size, rule (one, dofs, three, elements), unit, flag (0: always sent, else the FLAGS bit that adds the row),
-    integer, labels (one per value), lsl_type, description. The decoder and the LSL bridge read it."""
-    return [dict(r) for r in _rt.state_packet_fields(model)]
+    order: dicts of name, size, rule (one, dofs, three, elements, channels, channel_inputs), unit, flag (0: always
+    sent, else the FLAGS bit that adds the row), integer, labels (one per value), lsl_type, description. channels:
+    the runner's stimulation channel names (its --stimulation map, in order); they size the stimulation rows
+    (labels "<channel>/pulse_width", "/amplitude", "/frequency", "<channel>/fatigue"). The decoder and the LSL
+    bridge read it."""
+    return [dict(r) for r in _rt.state_packet_fields(model, [str(c) for c in channels])]
 
 
 def state_fields(model: str = "das2") -> list:
@@ -158,7 +163,7 @@ def _table(table, n_elements: int | None = None) -> list[dict]:
         n_fixed_one = sum(r["size"] for r in template if r["flag"] == 0 and r["rule"] != "dofs")
         n_dofs = (len(rows) - n_fixed_one) // 2
         n_el = n_elements if n_elements is not None else next(r["size"] for r in template if r["rule"] == "elements")
-        size = {"one": 1, "three": 3, "dofs": n_dofs, "elements": n_el}
+        size = {"one": 1, "three": 3, "dofs": n_dofs, "elements": n_el, "channels": 0, "channel_inputs": 0}
         return [dict(r, size=size[r["rule"]]) for r in template]
     return rows
 
@@ -180,6 +185,10 @@ class StatePacket:
     overruns: int = 0           # overrun cycles since the runner started
     muscle_force: np.ndarray | None = None  # (n,) N, if the runner sends forces (--forces)
     excitation: np.ndarray | None = None    # (n,) applied element excitations (--excitations)
+    # With a stimulation map (--stimulation): the applied command (channels, 3: pulse width s, amplitude A,
+    # frequency Hz; after the runner's clamp to the channels' limits) and each channel's fatigue, 1 - A/A_rest.
+    stimulation: np.ndarray | None = None
+    fatigue: np.ndarray | None = None
     session: int = 0
     received_at: float = 0.0    # time.monotonic() at reception
     # The GH force where GHstab is (armrt.Arm.gh_rim, docs/conventions.md).
@@ -218,6 +227,10 @@ class StatePacket:
         present = [r for r in rows if r["flag"] == 0 or p.flags & r["flag"]]
         expect = sum(r["size"] for r in present)
         v = p.values
+        stim = [r for r in present if r["rule"] == "channel_inputs"]
+        if v.size != expect and stim and stim[0]["size"] == 0:
+            raise PacketError("the runner sends stimulation (armrt-rt --stimulation): decode with the map's channels, "
+                              "state_packet_fields(model, channels) / UdpClient(stimulation=...)")
         if v.size != expect:
             raise PacketError(f"state packet with {v.size} values where this model's has {expect}: is the runner "
                               f"running another model (armrt-rt --model)?")
@@ -241,4 +254,6 @@ class StatePacket:
             if sizes.get("muscle_force", n_elements) != n_elements:
                 raise PacketError(f"the table has {sizes['muscle_force']} elements, n_elements is {n_elements}")
         values = cls.decode_values(p, rows)
+        if "stimulation" in values:
+            values["stimulation"] = values["stimulation"].reshape(-1, 3)
         return cls(seq=p.seq, flags=p.flags, session=p.session, **values)

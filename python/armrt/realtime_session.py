@@ -5,9 +5,11 @@ runner_path / runner_args / rt_main find and start the shipped armrt-rt runner (
 """
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import sys
+import tempfile
 import warnings
 from pathlib import Path
 from typing import Mapping
@@ -50,8 +52,10 @@ class RealtimeSession:
     or a list), allow (list of "host[:port]"), key (bytes >= 16), state_rate_hz, send_forces,
     send_excitation, input_timeout, channels, rx_budget_us, max_activation ({name: value} of elements,
     muscles or groups, or one value per element, in [0, 1]: paralysis and weakness; every excitation,
-    and the excitations streamed with send_excitation, are capped at it). Bad values raise ValueError
-    naming the option.
+    and the excitations streamed with send_excitation, are capped at it), stimulation (a map: "per_muscle",
+    a .json/.toml path or a dict, docs/fes.md; stimulation packets then drive its channels, clamped to their
+    limits and counted, zeroed when the session ends; state packets carry the applied stimulation and the
+    fatigue). Bad values raise ValueError naming the option.
     """
 
     def __init__(self, **config):
@@ -82,8 +86,28 @@ class RealtimeSession:
         if "key" in config:
             config["key"] = _key_bytes(config["key"]) or b""
         self.config = dict(config)
-        self._loop = _rt.RtLoop(**config)
+        stim = config.pop("stimulation", None)
+        if isinstance(stim, Mapping):  # the runner reads files: a dict goes through one, read at construction
+            with tempfile.NamedTemporaryFile("w", suffix=".json") as f:
+                try:
+                    json.dump(stim, f)
+                except TypeError as exc:
+                    raise ValueError(f"stimulation map: not JSON-serialisable: {exc}") from None
+                f.flush()
+                try:
+                    self._loop = _rt.RtLoop(stimulation=f.name, **config)
+                except ValueError as exc:
+                    raise ValueError(str(exc).replace(f.name, "the stimulation dict")) from None
+        elif stim is not None:
+            self._loop = _rt.RtLoop(stimulation=os.fspath(stim), **config)
+        else:
+            self._loop = _rt.RtLoop(**config)
         self._started = False
+
+    @property
+    def channel_names(self) -> list[str]:
+        """The stimulation map's channels, in packet order ([] without stimulation)."""
+        return list(self._loop.stimulation_channels)
 
     @property
     def port(self) -> int:
