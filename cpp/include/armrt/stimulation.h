@@ -92,6 +92,13 @@ struct StimulationMap {
   std::array<StimChannel, kMaxChannels> channels{};
   std::array<StimEntry, kMaxStimEntries> entries{};  // sorted by channel
   std::array<std::uint8_t, kMaxElements> driven{};   // 1: an element some channel reaches (stimulation drives it)
+  std::array<double, kMaxElements> inv_weight_sum{};  // 1 / the element's summed weights (data_set_stimulation_map)
+  // The channels' parameters the stage's SIMD pass reads, one array per parameter (data_set_stimulation_map fills
+  // them from channels[k].ding and .derived): s, s, 1, 1/s, 1/s, 1/s, and the fatigue rates (1/s per unit f).
+  struct Lanes {
+    std::array<double, kMaxChannels> tau1_s, tau2_s, km, inv_tau_c, inv_ref_tau, inv_tau_fat, rate_a, rate_tau1,
+        rate_km;
+  } lanes{};
 };
 
 // Per-channel values of Data::stimulation (the inputs, held over the steps): kStimInputs per channel.
