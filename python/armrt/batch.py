@@ -285,6 +285,11 @@ class ArmBatch:
                 cmd = np.broadcast_to(one, (self.n, nc, 3))
         self._raw.set_stimulation(np.ascontiguousarray(cmd, dtype=float).reshape(self.n, 3 * nc))
 
+    def stimulation_map(self) -> dict:
+        """The map every arm shares, with every default explicit (as Arm.stimulation_map(): channel names,
+        kinds, elements and weights, limits in SI units, recruitment and Ding parameters); {} without a map."""
+        return self._arm.stimulation_map()
+
     @property
     def stimulation(self) -> np.ndarray:
         """(n, channels, 3) held commands (a copy)."""
