@@ -160,7 +160,7 @@ def test_fatigue_is_one_number_per_channel():
     for k in range(1500):
         env.step(np.full(7, 1.0 if k < 1000 else 0.3, np.float32))   # stimulation then lower: drift and recovery
         if k % 250 == 249:
-            st = env.batch._raw.stimulation_state[0]
+            st = env.batch.stimulation_state[0]
             drift_a = 1.0 - st[:, STATE_COLUMNS["fatigue_A"]]
             ratios.append(np.stack([(st[:, STATE_COLUMNS["fatigue_tau1"]] - 1.0) / drift_a,
                                     (st[:, STATE_COLUMNS["fatigue_Km"]] - 1.0) / drift_a]))

@@ -296,6 +296,12 @@ class ArmBatch:
         return self._raw.get_snapshot(int(StatePart.STIMULATION)).reshape(self.n, -1, 3)
 
     @property
+    def stimulation_state(self) -> np.ndarray:
+        """(n, channels, armrt.stimulation.STATE_SIZE) each arm's chain memory, as Arm.stimulation_state (columns:
+        armrt.stimulation.STATE_COLUMNS; a copy)."""
+        return np.array(self._raw.stimulation_state)
+
+    @property
     def fatigue(self) -> np.ndarray:
         """(n, channels): 1 - A/A_rest per arm and channel (docs/fes.md)."""
         from .stimulation import STATE_COLUMNS

@@ -3,7 +3,8 @@ single environment is the n = 1 case, the vector environment any n, so both run 
 
 Each env step holds the action for `env_dt` seconds (frame_skip control steps of the arm). Actions
 are excitations in [0, 1] of the task's channels (muscles, or elements); a channel drives all the
-elements of its muscle. Observations are float32; units below.
+elements of its muscle. FESElbowStimTask's actions are instead fractions in [0, 1] of its stimulation
+map's channel commands (amplitude, pulse width or both with frequency). Observations are float32; units below.
 """
 from __future__ import annotations
 
