@@ -313,7 +313,9 @@ class FESElbowStimTask(FESElbowTask):
         width where the charge would exceed it (the engine's clamp_stimulation_command rule).
     pulse_width (s), amplitude (A), frequency (Hz): a number or one value per channel; ValueError naming
     the channel for one beyond its limits. No action maps beyond a channel's limits, so the engine never
-    refuses one. `commands(action)` gives the (n, channels, 3) commands an action holds.
+    refuses one. `commands(action)` gives the (n, channels, 3) commands an action holds; the attributes
+    pulse_width (s), amplitude (A), frequency (Hz), each (channels,), are the command at action 1 (before
+    "all"'s charge rule).
     Observation (float32): q (dofs, rad) | qdot (dofs, rad/s) | activation of each channel (mean of the
     elements it reaches) | target elbow angle (1, rad) | elbow error (1, rad) | with observe_fatigue,
     each channel's fatigue 1 - A/A_rest in [0, 1] (channels). Fatigue is hidden by default: no sensor
