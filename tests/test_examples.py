@@ -36,3 +36,15 @@ def test_random_search_over_the_vector_env_beats_doing_nothing():
     best, best_score, reference = ex.search(candidates=6, rounds=1, targets_deg=(90.0,))
     assert best_score >= reference["hand_tuned"] > reference["no_stimulation"]
     assert np.all(best >= ex.LOW) and np.all(best <= ex.HIGH)
+
+
+def test_fes_stim_fatigue_force_falls_and_reset_restores(capsys):
+    ex = load("fes_stim_fatigue")
+    out = ex.main(["--duration", "25", "--observe-fatigue"])
+    first = out["first"]
+    assert out["same"]
+    # max_activation 0.7 holds the force while the fibres' force is above it; from 20 s it falls.
+    assert first["force"][-1] < 0.9 * first["force"][199]
+    assert np.all(np.diff(first["fatigue"]) > 0) and first["fatigue"][-1] > 0.5
+    assert np.array_equal(first["obs"][-1][-7:], np.full(7, first["fatigue"][-1], np.float32))
+    assert "the first episode's exactly: True" in capsys.readouterr().out

@@ -99,3 +99,97 @@ def test_mot_round_trip_in_opensim(result, tmp_path):
     act = opensim.Storage(str(sto))
     assert act.getColumnLabels().get(1) == "delt_scap_1"
     assert act.getSize() == len(result.time)
+
+
+# ------------------------------------------------------------------ stimulation .sto (issue 27)
+@pytest.fixture(scope="module")
+def stim_result():
+    arm = armrt.Arm(model="das2", stimulation="per_muscle")
+    arm.set_stimulation({"bicl": (200e-6, 0.012, 30.0), "triclat": (150e-6, 0.020, 50.0)})
+    return arm.simulate(np.zeros(arm.n_elements), 0.5, record_every=10)
+
+
+def _printed(a):
+    """The values as the file prints them (10 significant digits)."""
+    return np.vectorize(lambda v: float(f"{v:.10g}"))(np.asarray(a, dtype=float))
+
+
+def test_stimulation_sto_round_trip(stim_result, tmp_path):
+    r = stim_result
+    path = opensim_io.write_stimulation_sto(r, tmp_path / "stim.sto")
+    header, labels, data = opensim_io.read_storage(path)
+    names = r.channel_names
+    assert names == armrt.Arm(model="das2", stimulation="per_muscle").channel_names
+    assert labels[:6] == ["time", f"{names[0]}/pulse_width", f"{names[0]}/amplitude", f"{names[0]}/frequency",
+                          f"{names[0]}/recruitment", f"{names[0]}/fatigue"]
+    assert len(labels) == 1 + 5 * len(names) and int(header["nColumns"]) == len(labels)
+    text = path.read_text()
+    assert "units: pulse_width s, amplitude A, frequency Hz" in text.split("endheader")[0]
+    col = {n: k for k, n in enumerate(labels)}
+    assert np.array_equal(data[:, 0], _printed(r.time))
+    for k, n in enumerate(names):
+        assert np.array_equal(data[:, [col[f"{n}/{v}"] for v in ("pulse_width", "amplitude", "frequency")]],
+                              _printed(r.stimulation[:, k]))
+        assert np.array_equal(data[:, col[f"{n}/recruitment"]], _printed(r.recruitment[:, k]))
+        assert np.array_equal(data[:, col[f"{n}/fatigue"]], _printed(r.fatigue[:, k]))
+    # Not a table of zeros: the two stimulated channels recruit and fatigue.
+    assert data[1, col["bicl/amplitude"]] == 0.012 and data[1, col["triclat/frequency"]] == 50.0
+    assert data[-1, col["bicl/recruitment"]] > 0 and data[-1, col["bicl/fatigue"]] > 0
+    assert np.all(data[:, col["deltscap/recruitment"]] == 0)
+
+
+def test_stimulation_sto_kept_through_save_and_bad_input(stim_result, result, tmp_path):
+    stim_result.save(tmp_path / "r.npz")
+    back = armrt.Result.load(tmp_path / "r.npz")
+    assert back.channel_names == stim_result.channel_names
+    a = opensim_io.write_stimulation_sto(back, tmp_path / "a.sto").read_text().splitlines()
+    b = opensim_io.write_stimulation_sto(stim_result, tmp_path / "b.sto").read_text().splitlines()
+    assert a[1:] == b[1:]       # the first line is the file's name
+    with pytest.raises(ValueError, match="the result has no stimulation"):
+        opensim_io.write_stimulation_sto(result, tmp_path / "none.sto")
+    with pytest.raises(ValueError, match="the result has no stimulation"):
+        opensim_io.export(result, stimulation_path=tmp_path / "none.sto")
+    assert not (tmp_path / "none.sto").exists()
+    unnamed = armrt.Result.load(tmp_path / "r.npz")
+    unnamed.channel_names = []          # a result saved before results kept the names
+    with pytest.raises(ValueError, match="does not name its stimulation channels"):
+        opensim_io.write_stimulation_sto(unnamed, tmp_path / "c.sto")
+    names = list(stim_result.channel_names)
+    opensim_io.write_stimulation_sto(unnamed, tmp_path / "c.sto", channel_names=names)
+    with pytest.raises(ValueError, match="3 channel names for 22"):
+        opensim_io.write_stimulation_sto(unnamed, tmp_path / "d.sto", channel_names=names[:3])
+    with pytest.raises(ValueError, match="whitespace"):
+        opensim_io.write_stimulation_sto(unnamed, tmp_path / "d.sto", channel_names=["bi cl"] + names[1:])
+    with pytest.raises(ValueError, match="repeated channel names: \\['bicl'\\]"):
+        opensim_io.write_stimulation_sto(unnamed, tmp_path / "d.sto", channel_names=["bicl"] + names[1:])
+
+
+def test_export_command_writes_the_stimulation(stim_result, result, tmp_path, capsys):
+    from armrt.cli import main
+    stim_result.save(tmp_path / "s.npz")
+    assert main(["export", str(tmp_path / "s.npz"), "--stimulation", str(tmp_path / "s.sto")]) == 0
+    assert opensim_io.read_storage(tmp_path / "s.sto")[1][1] == "deltscap/pulse_width"
+    result.save(tmp_path / "e.npz")
+    capsys.readouterr()
+    rc = main(["export", str(tmp_path / "e.npz"), "--mot", str(tmp_path / "e.mot"), "--stimulation",
+               str(tmp_path / "e.sto")])
+    err = capsys.readouterr().err
+    assert rc == 2 and "has no stimulation" in err and "Traceback" not in err
+    assert not (tmp_path / "e.mot").exists()     # refused before anything is written
+
+
+@pytest.mark.opensim
+def test_stimulation_sto_reads_in_opensim(stim_result, tmp_path):
+    opensim = pytest.importorskip("opensim", reason="the opensim package is not installed")
+    path = str(opensim_io.write_stimulation_sto(stim_result, tmp_path / "stim.sto"))
+    _, labels, data = opensim_io.read_storage(path)
+    storage = opensim.Storage(path)
+    got = [storage.getColumnLabels().get(i) for i in range(storage.getColumnLabels().getSize())]
+    assert got == labels and storage.getSize() == len(stim_result.time)
+    table = opensim.TimeSeriesTable(path)
+    assert list(table.getColumnLabels()) == labels[1:]
+    assert table.getNumRows() == len(stim_result.time)
+    k = labels.index("bicl/amplitude") - 1
+    column = table.getDependentColumnAtIndex(k)
+    assert [column[i] for i in range(table.getNumRows())] == list(data[:, k + 1])
+    assert list(table.getIndependentColumn()) == list(data[:, 0])

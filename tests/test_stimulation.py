@@ -269,6 +269,8 @@ def test_batch_arms_follow_their_own_commands_bit_for_bit_as_lone_arms():
     lone.step(300)
     assert np.array_equal(b.get_state_vector()[1], lone.get_state_vector())
     assert b.fatigue.shape == (3, 22) and b.fatigue[0].max() > 0 and b.fatigue[2].max() == 0
+    assert np.array_equal(b.stimulation_state[1], lone.stimulation_state)
+    assert b.stimulation_map() == lone.stimulation_map()
     bad = b.stimulation
     bad[2, 0] = (300e-6, 0.01, 20.0)
     with pytest.raises(ValueError, match="arm 2: channel 'deltscap': pulse width 300 us exceeds"):

@@ -600,7 +600,7 @@ class Arm:
         if "stimulation" in out:  # (T, 3 x channels) -> (T, channels, 3)
             out["stimulation"] = out["stimulation"].reshape(rows, -1, 3)
         return Result(**out, dof_names=list(self.dof_names), element_names=list(self.element_names),
-                      integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model_name,
+                      channel_names=self.channel_names, integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model_name,
                       model_hash=self.model.source_hash)
 
     # ------------------------------------------------------------------ outputs

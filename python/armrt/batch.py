@@ -285,10 +285,21 @@ class ArmBatch:
                 cmd = np.broadcast_to(one, (self.n, nc, 3))
         self._raw.set_stimulation(np.ascontiguousarray(cmd, dtype=float).reshape(self.n, 3 * nc))
 
+    def stimulation_map(self) -> dict:
+        """The map every arm shares, with every default explicit (as Arm.stimulation_map(): channel names,
+        kinds, elements and weights, limits in SI units, recruitment and Ding parameters); {} without a map."""
+        return self._arm.stimulation_map()
+
     @property
     def stimulation(self) -> np.ndarray:
         """(n, channels, 3) held commands (a copy)."""
         return self._raw.get_snapshot(int(StatePart.STIMULATION)).reshape(self.n, -1, 3)
+
+    @property
+    def stimulation_state(self) -> np.ndarray:
+        """(n, channels, armrt.stimulation.STATE_SIZE) each arm's chain memory, as Arm.stimulation_state (columns:
+        armrt.stimulation.STATE_COLUMNS; a copy)."""
+        return np.array(self._raw.stimulation_state)
 
     @property
     def fatigue(self) -> np.ndarray:

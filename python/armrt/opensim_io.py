@@ -13,7 +13,11 @@ Controls `.sto` (`write_excitation_sto`): the excitations the dynamics used (aft
 and capping at max_activation), one column per element with its OpenSim force name: an OpenSim
 controls file.
 
-Both: tab-separated, header ending in `endheader`, first column `time`.
+Stimulation `.sto` (`write_stimulation_sto`): for an arm with a stimulation map, five columns per
+channel, `<channel>/pulse_width` (s), `<channel>/amplitude` (A), `<channel>/frequency` (Hz) of the held
+command, `<channel>/recruitment` and `<channel>/fatigue` (1 - A/A_rest), both fractions in [0, 1].
+
+All: tab-separated, header ending in `endheader`, first column `time`.
 
 Import: `read_motion(path)` reads a `.mot`/`.sto` of joint angles (OpenSim coordinate names or armrt
 DOF names, `inDegrees=yes` converted to radians) into a `Motion`: a start posture for `Arm.reset`
@@ -150,9 +154,58 @@ def write_excitation_sto(result, path, model: str | None = None, model_file=None
     return Path(path)
 
 
+# Per channel, in this order: the command's three values, then what the chain made of it (docs/fes.md).
+STIMULATION_COLUMNS = (("pulse_width", "s"), ("amplitude", "A"), ("frequency", "Hz"), ("recruitment", "1"),
+                       ("fatigue", "1"))
+
+
+def write_stimulation_sto(result, path, channel_names=None) -> Path:
+    """The stimulation of a Result to an OpenSim storage file: per channel, in the map's order, columns
+    `<channel>/pulse_width` (s), `/amplitude` (A), `/frequency` (Hz) from result.stimulation (T, channels, 3),
+    `/recruitment` from result.recruitment (T, channels) and `/fatigue` (1 - A/A_rest) from result.fatigue
+    (T, channels); the header states the units. Values are written to 10 significant digits.
+    channel_names: the channels' names (default result.channel_names; needed for a result saved before
+    results kept them). Returns the path. Raises ValueError if the result has no stimulation (an arm
+    without a stimulation map), if the channel names are missing, repeated, contain whitespace (the format
+    splits on it) or do not match the arrays' channel count, or if a value is NaN or infinite."""
+    if result.stimulation is None or result.recruitment is None or result.fatigue is None:
+        raise ValueError("the result has no stimulation (its arm had no stimulation map): simulate with "
+                         "armrt.Arm(model, stimulation=...) to record pulse width, amplitude, frequency, "
+                         "recruitment and fatigue")
+    stim = np.asarray(result.stimulation, dtype=float)
+    rec, fat = np.asarray(result.recruitment, dtype=float), np.asarray(result.fatigue, dtype=float)
+    T = len(result.time)
+    if stim.ndim != 3 or stim.shape[0] != T or stim.shape[2] != 3:
+        raise ValueError(f"result.stimulation must have shape ({T}, channels, 3), got {stim.shape}")
+    nc = stim.shape[1]
+    for what, a in (("recruitment", rec), ("fatigue", fat)):
+        if a.shape != (T, nc):
+            raise ValueError(f"result.{what} must have shape ({T}, {nc}) (time, channels), got {a.shape}")
+    names = list(result.channel_names if channel_names is None else channel_names)
+    if not names:
+        raise ValueError("the result does not name its stimulation channels (saved before results kept "
+                         "channel_names): pass channel_names=arm.channel_names")
+    if len(names) != nc:
+        raise ValueError(f"{len(names)} channel names for {nc} stimulation channels")
+    if len(set(names)) != nc:
+        raise ValueError(f"repeated channel names: {sorted({n for n in names if names.count(n) > 1})}")
+    spaced = [n for n in names if not n or any(c.isspace() for c in n)]
+    if spaced:
+        raise ValueError(f"channel names {spaced!r} are empty or contain whitespace, which a storage file's "
+                         "columns cannot hold")
+    labels = [f"{n}/{v}" for n in names for v, _ in STIMULATION_COLUMNS]
+    data = np.concatenate([stim, rec[:, :, None], fat[:, :, None]], axis=2).reshape(T, 5 * nc)
+    units = ", ".join(f"{v} {u}" for v, u in STIMULATION_COLUMNS)
+    comment = (f"stimulation per channel ({nc} channels); units: {units} (1: a fraction); "
+               "fatigue: 1 - A/A_rest of Ding et al. 2003 (armrt docs/fes.md)")
+    _write_storage(path, Path(path).stem, labels, result.time, data, comment=comment)
+    return Path(path)
+
+
 def export(result, mot_path=None, sto_path=None, model_file=None, state_paths: bool = False,
-           controls_path=None) -> list[Path]:
-    """The files asked for (.mot angles, .sto activations, controls .sto excitations); the paths written."""
+           controls_path=None, stimulation_path=None) -> list[Path]:
+    """The files asked for (.mot angles, .sto activations, controls .sto excitations, stimulation .sto); the
+    paths written. ValueError from write_stimulation_sto for a result without stimulation."""
     out = []
     if mot_path is not None:
         out.append(write_mot(result, mot_path, model_file=model_file))
@@ -160,6 +213,8 @@ def export(result, mot_path=None, sto_path=None, model_file=None, state_paths: b
         out.append(write_activation_sto(result, sto_path, model_file=model_file, state_paths=state_paths))
     if controls_path is not None:
         out.append(write_excitation_sto(result, controls_path, model_file=model_file))
+    if stimulation_path is not None:
+        out.append(write_stimulation_sto(result, stimulation_path))
     return out
 
 

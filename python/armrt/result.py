@@ -64,8 +64,10 @@ class _ResultMethods:
     The optional arrays ({optional}) are None where they do not apply: the girdle arrays exist for models
     whose scapula moves (das3), the stimulation arrays for arms with a stimulation map (stimulation: pulse
     width s, amplitude A, frequency Hz per channel; recruitment and fatigue per channel).
-    Metadata: dof_names, element_names, integrator, dt (control step, s), substeps, model, model_hash (SHA-256
-    of the model file: reopens a model built on demand from the cache)."""
+    Metadata: dof_names, element_names, channel_names (the stimulation map's channels in the order of the
+    stimulation arrays' second axis; [] without a map, or for a result saved before they were kept),
+    integrator, dt (control step, s), substeps, model, model_hash (SHA-256 of the model file: reopens a model
+    built on demand from the cache)."""
 
     ARRAYS = tuple(c[0] for c in CHANNELS if not _optional(c))
     OPTIONAL_ARRAYS = tuple(c[0] for c in CHANNELS if _optional(c))
@@ -186,7 +188,7 @@ class _ResultMethods:
         np.savez_compressed(path, **{k: getattr(self, k) for k in self.ARRAYS},
                             **{k: getattr(self, k) for k in self.OPTIONAL_ARRAYS if getattr(self, k) is not None},
                             dof_names=np.array(self.dof_names), element_names=np.array(self.element_names),
-                            integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model,
+                            channel_names=np.array(self.channel_names, dtype=str), integrator=self.integrator, dt=self.dt, substeps=self.substeps, model=self.model,
                             model_hash=self.model_hash)
 
     @classmethod
@@ -214,6 +216,8 @@ class _ResultMethods:
                 fields.update({k: np.asarray(z[k], dtype=float) for k in cls.OPTIONAL_ARRAYS if k in z.files})
                 meta = dict(dof_names=[str(s) for s in z["dof_names"]],
                             element_names=[str(s) for s in z["element_names"]],
+                            channel_names=([str(s) for s in z["channel_names"]] if "channel_names" in z.files
+                                           else []),
                             integrator=str(z["integrator"]) if "integrator" in z.files else "",
                             dt=float(z["dt"]) if "dt" in z.files else 0.0,
                             substeps=int(z["substeps"]) if "substeps" in z.files else 1, model=str(z["model"]),
@@ -265,6 +269,7 @@ Result = make_dataclass(
     "Result",
     [(c[0], np.ndarray) for c in CHANNELS if not _optional(c)]
     + [("dof_names", list, field(default_factory=list)), ("element_names", list, field(default_factory=list)),
+       ("channel_names", list, field(default_factory=list)),
        ("integrator", str, field(default="")), ("dt", float, field(default=0.0)), ("substeps", int, field(default=1)),
        ("model", str, field(default="")), ("model_hash", str, field(default=""))]
     + [(c[0], "np.ndarray | None", field(default=None)) for c in CHANNELS if _optional(c)],

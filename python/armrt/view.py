@@ -636,19 +636,24 @@ def _cmd_animate(args) -> int:
 def _cmd_export(args) -> int:
     from .arm import Result
     from .cli_common import CliError, check_suffix
-    from .opensim_io import write_activation_sto, write_excitation_sto, write_mot
-    if not (args.mot or args.sto or args.controls):
-        raise CliError("give --mot FILE, --sto FILE and/or --controls FILE")
+    from .opensim_io import write_activation_sto, write_excitation_sto, write_mot, write_stimulation_sto
+    if not (args.mot or args.sto or args.controls or args.stimulation):
+        raise CliError("give --mot FILE, --sto FILE, --controls FILE and/or --stimulation FILE")
     check_suffix(args.mot, (".mot",), "--mot")
     check_suffix(args.sto, (".sto",), "--sto")
     check_suffix(args.controls, (".sto",), "--controls")
+    check_suffix(args.stimulation, (".sto",), "--stimulation")
     res = Result.load(args.result)
+    if args.stimulation and res.stimulation is None:   # before any file is written
+        raise CliError(f"--stimulation: {args.result} has no stimulation (its arm had no stimulation map)")
     if args.mot:
         print(f"wrote {write_mot(res, args.mot, model_file=args.model_file)}")
     if args.sto:
         print(f"wrote {write_activation_sto(res, args.sto, model_file=args.model_file, state_paths=args.state_paths)}")
     if args.controls:
         print(f"wrote {write_excitation_sto(res, args.controls, model_file=args.model_file)}")
+    if args.stimulation:
+        print(f"wrote {write_stimulation_sto(res, args.stimulation)}")
     return 0
 
 
@@ -686,13 +691,16 @@ def add_cli(subparsers, formatter_class=None) -> None:
     p.add_argument("--no-progress", dest="progress", action="store_false", help="no progress bar on a terminal")
     p.set_defaults(func=_cmd_animate)
 
-    p = subparsers.add_parser("export", help="OpenSim files: joint angles (.mot), activations and excitations (.sto)",
+    p = subparsers.add_parser("export", help="OpenSim files: joint angles (.mot), activations, excitations and stimulation (.sto)",
                               **kw)
     p.add_argument("result", help="saved result (.npz)")
     p.add_argument("--mot", metavar="FILE.mot", help="joint angles, OpenSim motion file (rad)")
     p.add_argument("--sto", metavar="FILE.sto", help="activations, OpenSim storage file (force names)")
     p.add_argument("--controls", metavar="FILE.sto",
                    help="excitations the dynamics used (capped at max_activation), OpenSim controls file")
+    p.add_argument("--stimulation", metavar="FILE.sto",
+                   help="per stimulation channel: pulse width (s), amplitude (A), frequency (Hz), recruitment and "
+                        "fatigue, OpenSim storage file (a result of an arm with a stimulation map)")
     p.add_argument("--state-paths", action="store_true", help="name .sto columns /forceset/<muscle>/activation")
     p.add_argument("--model-file", help="models/<name>.json (default: found beside the package)")
     p.set_defaults(func=_cmd_export)

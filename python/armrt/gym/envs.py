@@ -22,7 +22,7 @@ def _split(kwargs: dict) -> tuple[dict, dict]:
 
 
 class ArmEnv(gym.Env):
-    """One arm on a task ("reach" or "fes_elbow"; see armrt.gym.tasks for observation, action,
+    """One arm on a task ("reach", "fes_elbow" or "fes_elbow_stim"; see armrt.gym.tasks for observation, action,
     reward and termination). Keyword arguments: model, integrator, dt, substeps (as armrt.Arm) and
     the task's own (env_dt, episode_duration, ...). render_mode="rgb_array": render() returns the
     `armrt animate` figure of the episode so far as an (H, W, 3) uint8 array."""
@@ -35,6 +35,7 @@ class ArmEnv(gym.Env):
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
             raise ValueError(f"render_mode must be one of {self.metadata['render_modes']} or None, got {render_mode!r}")
         arm_kw, task_kw = _split(dict(kwargs))
+        arm_kw.update(TASKS[task].batch_options(arm_kw, task_kw))
         self.batch = ArmBatch(1, threads=1, **arm_kw)
         self.task = TASKS[task](self.batch, **task_kw)
         self.task_name = task
@@ -97,6 +98,7 @@ class ArmVectorEnv(VectorEnv):
         if task not in TASKS:
             raise ValueError(f"unknown task {task!r}; expected one of {sorted(TASKS)}")
         arm_kw, task_kw = _split(dict(kwargs))
+        arm_kw.update(TASKS[task].batch_options(arm_kw, task_kw))
         self.batch = ArmBatch(num_envs, threads=threads, **arm_kw)
         self.task = TASKS[task](self.batch, **task_kw)
         self.num_envs = self.batch.n
@@ -171,3 +173,7 @@ ReachVectorEnv = _fixed("reach", True)
 ReachVectorEnv.__name__ = ReachVectorEnv.__qualname__ = "ReachVectorEnv"
 FESElbowVectorEnv = _fixed("fes_elbow", True)
 FESElbowVectorEnv.__name__ = FESElbowVectorEnv.__qualname__ = "FESElbowVectorEnv"
+FESElbowStimEnv = _fixed("fes_elbow_stim", False)
+FESElbowStimEnv.__name__ = FESElbowStimEnv.__qualname__ = "FESElbowStimEnv"
+FESElbowStimVectorEnv = _fixed("fes_elbow_stim", True)
+FESElbowStimVectorEnv.__name__ = FESElbowStimVectorEnv.__qualname__ = "FESElbowStimVectorEnv"

@@ -3,7 +3,8 @@ single environment is the n = 1 case, the vector environment any n, so both run 
 
 Each env step holds the action for `env_dt` seconds (frame_skip control steps of the arm). Actions
 are excitations in [0, 1] of the task's channels (muscles, or elements); a channel drives all the
-elements of its muscle. Observations are float32; units below.
+elements of its muscle. FESElbowStimTask's actions are instead fractions in [0, 1] of its stimulation
+map's channel commands (amplitude, pulse width or both with frequency). Observations are float32; units below.
 """
 from __future__ import annotations
 
@@ -50,7 +51,8 @@ class Task:
         # Per-element channel and per-channel elements: indexing, not matrix products, so each arm's
         # numbers do not depend on how many arms are stacked (BLAS may sum in another order).
         self.driven = np.flatnonzero(self.channel_matrix.any(axis=0))
-        self.driven_channel = self.channel_matrix[:, self.driven].argmax(axis=0)
+        self.driven_channel = (self.channel_matrix[:, self.driven].argmax(axis=0) if len(channels)
+                               else np.zeros(0, dtype=np.int64))   # a task without excitation channels
         self.channel_elements = [np.flatnonzero(row) for row in self.channel_matrix]
         self.action_space = spaces.Box(0.0, 1.0, (len(channels),), np.float32)
         self.steps = np.zeros(self.n, dtype=np.int64)
@@ -58,6 +60,11 @@ class Task:
 
     # -- to be provided by a task
     observation_space: spaces.Box
+
+    @classmethod
+    def batch_options(cls, arm_kw: dict, task_kw: dict) -> dict:
+        """ArmBatch keyword arguments the task needs beyond the arm's (popped from task_kw); none here."""
+        return {}
 
     def _reset_arm(self, i: int, rng: np.random.Generator, options: dict) -> np.ndarray:
         """Samples arm i's task and start posture (values in `options` override the samples, which
@@ -87,11 +94,10 @@ class Task:
     def step(self, action):
         """Applies (n, channels) actions for env_dt; returns obs, reward, terminated, truncated, info."""
         a = np.clip(np.asarray(action, dtype=np.float64).reshape(self.n, -1), 0.0, 1.0)
-        if a.shape[1] != len(self.channels):
-            raise ValueError(f"action must have {len(self.channels)} values per arm ({', '.join(self.channels)}), got {a.shape[1]}")
-        u = np.tile(self.background, (self.n, 1))
-        u[:, self.driven] = a[:, self.driven_channel]
-        self.batch.set_excitation(u)
+        if a.shape[1] != self.action_space.shape[0]:
+            raise ValueError(f"action must have {self.action_space.shape[0]} values per arm ({self._action_layout()}), "
+                             f"got {a.shape[1]}")
+        self._apply(a)
         self.batch.step(self.frame_skip, warn=False)
         self.steps += 1
         reward, terminated, info = self._reward(a)
@@ -101,6 +107,15 @@ class Task:
         truncated = (self.steps >= self.max_steps) & ~terminated
         info["diverged"] = diverged
         return self.observe(), reward, terminated, truncated, info
+
+    def _apply(self, a: np.ndarray) -> None:
+        """Holds the (n, action size) clipped actions as the arms' inputs for the next env step."""
+        u = np.tile(self.background, (self.n, 1))
+        u[:, self.driven] = a[:, self.driven_channel]
+        self.batch.set_excitation(u)
+
+    def _action_layout(self) -> str:
+        return ", ".join(self.channels)
 
     def _effort(self, a: np.ndarray) -> np.ndarray:
         return np.mean(a * a, axis=1)
@@ -263,4 +278,182 @@ class FESElbowTask(Task):
         return reward, np.zeros(self.n, dtype=bool), {"elbow_error": error}
 
 
-TASKS = {"reach": ReachTask, "fes_elbow": FESElbowTask}
+# Hz: the default train rate of the stimulation env: fused (ripple under 5 % from 20 Hz, docs/fes.md) and inside
+# the 20-40 Hz clinicians use, below the 50 Hz device limit, since a higher rate fatigues faster for little force.
+DEFAULT_FREQUENCY_HZ = 30.0
+MODULATIONS = ("amplitude", "pulse_width", "all")
+
+
+def elbow_stimulation_map(muscles=FES_ELBOW_MUSCLES, kind: str = "intramuscular", fatigue: bool = True) -> dict:
+    """The stimulation env's default map: one channel per muscle of `muscles`, named after it, reaching all
+    its elements with weight 1, the kind's default limits and parameters (docs/fes.md), fatigue on."""
+    return {"fatigue": bool(fatigue),
+            "channels": [{"name": m, "kind": kind, "elements": [m]} for m in muscles]}
+
+
+class FESElbowStimTask(FESElbowTask):
+    """FES elbow by stimulation: the fes_elbow task (target, start, weakened arm, background tone, reward)
+    with per-channel stimulation commands as the action and the muscles' fatigue (Ding et al. 2003) on.
+
+    stimulation: the map (docs/fes.md): None (default: one intramuscular channel per muscle of
+    FES_ELBOW_MUSCLES, `elbow_stimulation_map()`), "per_muscle" (all 22 muscles: the shoulder then follows
+    the stimulation too and the background tone is ignored), a .json/.toml file or a dict. fatigue: True
+    (default) turns the map's fatigue on whatever the map says; False off (a control run).
+    Action (float32 Box in [0, 1], clipped there as every armrt env does; NaN raises ValueError), per
+    channel in the map's order, with `modulation`:
+      "amplitude" (default, as surface FES controllers modulate): a -> amplitude a * amp_max at a fixed
+        pulse width (`pulse_width`, default the channel's recruitment reference pulse width, 200 us
+        intramuscular, 300 us surface) and frequency (`frequency`, default 30 Hz); amp_max is the
+        channel's max_amplitude_A, lowered to max_charge_C / pulse width where the charge cap binds;
+      "pulse_width" (as implanted systems modulate): a -> pulse width a * pw_max at a fixed amplitude
+        (`amplitude`, default the channel's saturation current, capped at its limit) and frequency;
+        pw_max: max_pulse_width_s, lowered likewise to max_charge_C / amplitude;
+      "all": three values per channel, [pulse width, amplitude, frequency] for channel 0, then channel 1,
+        ...: each a fraction of the channel's limit, the amplitude then lowered to max_charge_C / pulse
+        width where the charge would exceed it (the engine's clamp_stimulation_command rule).
+    pulse_width (s), amplitude (A), frequency (Hz): a number or one value per channel; ValueError naming
+    the channel for one beyond its limits. No action maps beyond a channel's limits, so the engine never
+    refuses one. `commands(action)` gives the (n, channels, 3) commands an action holds; the attributes
+    pulse_width (s), amplitude (A), frequency (Hz), each (channels,), are the command at action 1 (before
+    "all"'s charge rule).
+    Observation (float32): q (dofs, rad) | qdot (dofs, rad/s) | activation of each channel (mean of the
+    elements it reaches) | target elbow angle (1, rad) | elbow error (1, rad) | with observe_fatigue,
+    each channel's fatigue 1 - A/A_rest in [0, 1] (channels). Fatigue is hidden by default: no sensor
+    measures it in a person, so a deployable controller must infer it from the response's decline;
+    observe_fatigue=True is the privileged setting (a teacher, an asymmetric critic, an upper bound).
+    The one number per channel is the whole fatigue state: Ding's A, tau1 and Km drift by linear
+    equations with the same tau_fat and the same force drive, so from rest their drifts stay
+    proportional (tests/test_gym_fes.py checks it).
+    Reward: -|elbow - target| (rad) - effort_weight * mean(action^2), as fes_elbow. info adds
+    "mean_fatigue" (mean over channels). reset() rests every channel of the arms it resets and zeroes
+    their commands.
+    """
+
+    def __init__(self, batch: ArmBatch, modulation: str = "amplitude", pulse_width=None, amplitude=None,
+                 frequency=None, observe_fatigue: bool = False, **kwargs):
+        if not batch.channel_names:
+            raise ValueError("the stimulation task needs an ArmBatch with a stimulation map "
+                             "(ArmBatch(n, model, stimulation=...); the env builds it)")
+        if modulation not in MODULATIONS:
+            raise ValueError(f"modulation must be one of {MODULATIONS}, got {modulation!r}")
+        if "stimulated" in kwargs:
+            raise ValueError("the stimulation task's channels are its map's: pass stimulation=..., not stimulated=")
+        # No excitation channels: the map's channels replace them (they may overlap, with spill-over).
+        super().__init__(batch, stimulated=(), **kwargs)
+        self.modulation = modulation
+        self.observe_fatigue = bool(observe_fatigue)
+        self.channels = list(batch.channel_names)
+        nc = len(self.channels)
+        by_name = {c["name"]: c for c in batch.stimulation_map()["channels"]}
+        spec = [by_name[c] for c in self.channels]
+        self.reached = [np.unique(np.concatenate([batch.indices(e) for e in c["elements"]])) for c in spec]
+        self.channel_elements = self.reached
+        reached = np.unique(np.concatenate(self.reached))
+        self.background[reached] = 0.0   # the engine ignores excitation there; kept out of the reset activation
+        lim = {k: np.array([c["limits"][k] for c in spec]) for k in
+               ("max_pulse_width_s", "max_amplitude_A", "max_frequency_Hz", "max_charge_C")}
+        self.limits = lim
+        self.frequency = self._fixed(frequency, np.minimum(DEFAULT_FREQUENCY_HZ, lim["max_frequency_Hz"]),
+                                     lim["max_frequency_Hz"], "frequency", "Hz")
+        if modulation == "amplitude":
+            ref = np.array([c["recruitment"]["reference_pulse_width_s"] for c in spec])
+            self.pulse_width = self._fixed(pulse_width, np.minimum(ref, lim["max_pulse_width_s"]),
+                                           lim["max_pulse_width_s"], "pulse_width", "s")
+            self.amplitude = np.minimum(lim["max_amplitude_A"], lim["max_charge_C"] / self.pulse_width)
+        elif modulation == "pulse_width":
+            sat = np.array([c["recruitment"]["saturation_A"] for c in spec])
+            self.amplitude = self._fixed(amplitude, np.minimum(sat, lim["max_amplitude_A"]),
+                                         lim["max_amplitude_A"], "amplitude", "A")
+            self.pulse_width = np.minimum(lim["max_pulse_width_s"], lim["max_charge_C"] / self.amplitude)
+        else:
+            unused = [k for k, v in (("pulse_width", pulse_width), ("amplitude", amplitude), ("frequency", frequency))
+                      if v is not None]
+            if unused:
+                raise ValueError(f"modulation='all' takes every value from the action; {unused} cannot be fixed")
+            self.pulse_width, self.amplitude = lim["max_pulse_width_s"], lim["max_amplitude_A"]
+            self.frequency = lim["max_frequency_Hz"]
+        self.action_space = spaces.Box(0.0, 1.0, ((3 if modulation == "all" else 1) * nc,), np.float32)
+        nd = batch.n_dofs
+        a, v = ANGLE_BOUND, batch.max_joint_speed
+        self.observation_space = _box([(nd, -a, a), (nd, -v, v), (nc, 0.0, 1.0), (1, -a, a), (1, -2 * a, 2 * a)]
+                                      + ([(nc, 0.0, 1.0)] if self.observe_fatigue else []))
+
+    @classmethod
+    def batch_options(cls, arm_kw: dict, task_kw: dict) -> dict:
+        """Pops `stimulation` and `fatigue` from the task's keyword arguments; returns the ArmBatch keyword
+        arguments they make: {"stimulation": the map as a dict, fatigue set}."""
+        stimulation = task_kw.pop("stimulation", None)
+        fatigue = task_kw.pop("fatigue", True)
+        if not isinstance(fatigue, (bool, np.bool_)):
+            raise TypeError(f"fatigue must be True or False, got {fatigue!r}")
+        if stimulation is None:
+            return {"stimulation": elbow_stimulation_map(fatigue=fatigue)}
+        from ..arm import Arm
+        # A file or "per_muscle" is read by the engine once here (errors name the field), so that the
+        # fatigue switch applies to any map.
+        kw = {"model": arm_kw["model"]} if "model" in arm_kw else {}
+        m = Arm(stimulation=stimulation, **kw).stimulation_map()
+        m["fatigue"] = bool(fatigue)
+        return {"stimulation": m}
+
+    def _fixed(self, value, default: np.ndarray, limit: np.ndarray, what: str, unit: str) -> np.ndarray:
+        """(channels,) a fixed command value (a number or one per channel) checked against each limit."""
+        if value is None:
+            return default
+        v = np.broadcast_to(np.asarray(value, dtype=float), default.shape) if np.ndim(value) == 0 else \
+            np.asarray(value, dtype=float)
+        if v.shape != default.shape:
+            raise ValueError(f"{what} must be a number or {len(default)} values (one per channel: "
+                             f"{', '.join(self.channels)}), got shape {v.shape}")
+        for k, (x, hi) in enumerate(zip(v, limit)):
+            if not (np.isfinite(x) and 0.0 < x <= hi):
+                raise ValueError(f"{what} of channel {self.channels[k]!r} must lie in (0, {hi:g}] {unit} "
+                                 f"(its limit), got {x!r}")
+        return v.copy()
+
+    def commands(self, action) -> np.ndarray:
+        """(n, channels, 3) [pulse width s, amplitude A, frequency Hz] that (n, action size) actions in
+        [0, 1] hold (clipped there first)."""
+        a = np.clip(np.asarray(action, dtype=np.float64).reshape(self.n, -1), 0.0, 1.0)
+        nc = len(self.channels)
+        cmd = np.empty((self.n, nc, 3))
+        if self.modulation == "amplitude":
+            cmd[:, :, 0], cmd[:, :, 1], cmd[:, :, 2] = self.pulse_width, a * self.amplitude, self.frequency
+        elif self.modulation == "pulse_width":
+            cmd[:, :, 0], cmd[:, :, 1], cmd[:, :, 2] = a * self.pulse_width, self.amplitude, self.frequency
+        else:
+            a = a.reshape(self.n, nc, 3)
+            pw = a[:, :, 0] * self.pulse_width
+            with np.errstate(divide="ignore"):   # a zero pulse width carries no charge: no cap
+                cap = np.where(pw > 0, self.limits["max_charge_C"] / np.where(pw > 0, pw, 1.0), np.inf)
+            cmd[:, :, 0], cmd[:, :, 1] = pw, np.minimum(a[:, :, 1] * self.amplitude, cap)
+            cmd[:, :, 2] = a[:, :, 2] * self.frequency
+        return cmd
+
+    def _apply(self, a):
+        self.batch.set_stimulation(self.commands(a))
+
+    def _action_layout(self):
+        if self.modulation == "all":
+            return f"[pulse width, amplitude, frequency] of each channel: {', '.join(self.channels)}"
+        return f"the {self.modulation.replace('_', ' ')} of each channel: {', '.join(self.channels)}"
+
+    def reset(self, idx, rngs, options=None):
+        super().reset(idx, rngs, options)   # ArmBatch.reset rests the channels of these arms only
+        cmd = self.batch.stimulation
+        cmd[np.asarray(idx)] = 0.0           # the held command survives a reset: an episode starts unstimulated
+        self.batch.set_stimulation(cmd)
+
+    def observe(self):
+        b = self.batch
+        elbow = b.q[:, self.elbow]
+        parts = [b.q, b.qdot, self._channel_activation(), self.target[:, None], (elbow - self.target)[:, None]]
+        return self._finite(np.concatenate(parts + ([b.fatigue] if self.observe_fatigue else []), axis=1))
+
+    def _reward(self, a):
+        reward, terminated, info = super()._reward(a)
+        info["mean_fatigue"] = self.batch.fatigue.mean(axis=1)
+        return reward, terminated, info
+
+
+TASKS = {"reach": ReachTask, "fes_elbow": FESElbowTask, "fes_elbow_stim": FESElbowStimTask}
