@@ -87,3 +87,11 @@ def test_default_is_refused_for_a_model_that_ships_no_map():
         armrt.Arm("das2", stimulation="default")
     with pytest.raises(ValueError, match="ships no default stimulation map"):
         stim.default_map_path("participant_A")
+
+
+def test_a_batch_takes_the_default_map_too():
+    b = armrt.ArmBatch(2, str(FES_MODEL), stimulation="default", threads=1)
+    assert b.channel_names == ["triclong", "tricmed", "triclat"]
+    b.set_stimulation({c: FULL for c in b.channel_names})
+    b.step(500)
+    assert b.fatigue.shape == (2, 3) and np.all(b.fatigue > 0)
