@@ -7,8 +7,9 @@ until recruitment saturates and the forearm starts to drop.
     python examples/fes_elbow_hold_pi.py --out docs/figures/fes_elbow_hold_pi --duration 120
 
 Why pulse width: implanted systems (the Cleveland FES systems the paper's group builds on) hold the amplitude at
-about 20 mA and modulate the pulse width (docs/fes.md "Recruitment"); at 20 mA recruitment starts at 37.5 us
-(the Weiss-Lapicque threshold for a 5 mA rheobase-at-200 us, chronaxie 0.45 ms) and saturates at 200 us.
+about 20 mA and modulate the pulse width (docs/fes.md "Recruitment", where the 20 mA saturation is marked an
+assumption); at 20 mA recruitment starts at 37.5 us (the Weiss-Lapicque shift of the 5 mA threshold at 200 us,
+chronaxie 0.45 ms) and saturates at 200 us.
 Why 20 Hz: the lowest rate at which Ding 2003's force fuses (ripple below 5 %, docs/fes.md validation table),
 so the angle does not tremble and the fibres fire no faster than needed.
 

@@ -8,7 +8,7 @@
 Every run is on das2 (the chain does not depend on the model) with Ding et al. 2003's parameters, the
 engine's defaults (docs/fes.md "Equations and parameters"); nothing here is fitted to a published figure.
 
-Endurance (after PMC6370345, Lau et al.'s protocol as its abstract gives it): hold 20 % of the maximal force
+Endurance (after PMC6370345, its protocol as the abstract gives it): hold 20 % of the maximal force
 with feedback-controlled 25 Hz stimulation until it can no longer be held. What the abstract does not give
 (the per-electrode rate, the controller, the fraction of the muscle one electrode reaches) is a parameter of
 `endurance`, and docs/fes.md says which value each figure uses and why.
