@@ -1,6 +1,10 @@
 """participant_A_FES's default stimulation map (models/participant_A_FES.stimulation.toml): it stimulates
 exactly the muscles the participant files mark for FES, and full stimulation reaches the file's maxact."""
 import json
+import os
+import re
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -95,3 +99,15 @@ def test_a_batch_takes_the_default_map_too():
     b.set_stimulation({c: FULL for c in b.channel_names})
     b.step(500)
     assert b.fatigue.shape == (2, 3) and np.all(b.fatigue > 0)
+
+
+def test_the_fes_model_by_name_points_to_its_shipped_file_then_works_once_loaded(fes_arm_factory):
+    # In a fresh process participant_A_FES is a model file, not a registered model: the error says where the
+    # file is. Once built from its file the name is registered, and the name takes the default map too.
+    code = ("import armrt\ntry:\n    armrt.Arm('participant_A_FES', stimulation='default')\n"
+            "except ValueError as e:\n    print(e)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120,
+                         env={**os.environ, "PYTHONPATH": os.pathsep.join(sys.path)}).stdout
+    assert re.search(r"unknown model 'participant_A_FES'.*ships at .*participant_A_FES\.json", out), out
+    fes_arm_factory()
+    assert armrt.Arm("participant_A_FES", stimulation="default").channel_names == ["triclong", "tricmed", "triclat"]
