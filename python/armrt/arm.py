@@ -61,7 +61,8 @@ class Arm:
         large: for offline runs at dt = 2 ms, not for hard real time.
 
         stimulation: None (excitation drives every element), "per_muscle" (one intramuscular channel per
-        muscle, named after it), or a stimulation map (a .json/.toml path or a dict; armrt.stimulation,
+        muscle, named after it), "default" (the map the model ships, models/<model>.stimulation.toml, e.g.
+        participant_A_FES's triceps; ValueError for a model without one), or a stimulation map (a .json/.toml path or a dict; armrt.stimulation,
         docs/fes.md): the elements it reaches then follow the stimulation (set_stimulation) and ignore
         their excitation.
 
@@ -92,7 +93,7 @@ class Arm:
         self.n_elements = len(self.element_names)
         self.n_dofs = len(self.dof_names)
         if stimulation is not None:
-            _stimulation.install_map(self._sim, stimulation)
+            _stimulation.install_map(self._sim, stimulation, self.model_name)
         # The state views are Data's, from the engine's state layout (data.h via model_info).
         self._views = self.data._views
         # What Arm itself sets; anything else on an arm is the user's, carried by copies and pickles.
@@ -150,7 +151,7 @@ class Arm:
         """Installs a stimulation map (None, "per_muscle", a .json/.toml path or a dict; see __init__):
         commands zero, every channel rested. ValueError naming the field for a map the engine refuses."""
         with self._exclusive():
-            _stimulation.install_map(self._sim, stimulation)
+            _stimulation.install_map(self._sim, stimulation, self.model_name)
 
     @property
     def channel_names(self) -> list[str]:

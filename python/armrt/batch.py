@@ -114,7 +114,8 @@ class ArmBatch:
         integrator, dt (control step, s) and substeps: as for `Arm`
         (None: Arm's defaults). threads: OpenMP threads for step() (None: OMP_NUM_THREADS if set,
         else the cores available).
-        stimulation: one stimulation map for every arm, as for `Arm` (None, "per_muscle", a file or a dict);
+        stimulation: one stimulation map for every arm, as for `Arm` (None, "per_muscle", "default", a file or
+        a dict);
         commands per arm with set_stimulation, fatigue per arm and channel in `fatigue`.
         Raises ValueError for a bad n, integrator, dt, substeps, threads or stimulation map."""
         if int(n) != n or n < 1:

@@ -63,8 +63,14 @@ class Model:
                              f"got {type(model).__name__}")
         d = _core.find_model(model)
         if d is None:
+            try:
+                shipped = find_model_file(model)
+            except ValueError:
+                shipped = None
+            hint = (f"; a model file of that name ships at {shipped}: Arm({str(shipped)!r}) builds it"
+                    if shipped is not None else "")
             raise ValueError(f"unknown model {model!r} (registered models: {', '.join(models())}; "
-                             f"or give a model file path, e.g. models/das2.json)")
+                             f"or give a model file path, e.g. models/das2.json){hint}")
         return cls._of(d)
 
     @classmethod
