@@ -196,6 +196,12 @@ def _plt():
     return plt
 
 
+def _save(plt, fig, path: Path) -> None:
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
 def plot_twitch(res: dict, path: Path) -> None:
     plt = _plt()
     fig, ax = plt.subplots(figsize=(6, 3.4))
@@ -207,9 +213,7 @@ def plot_twitch(res: dict, path: Path) -> None:
     ax.set_title(f"Twitch (Ding 2003 parameters): time to peak {1e3 * ttp:.0f} ms, half-relaxation "
                  f"{1e3 * res['half_relaxation_s']:.0f} ms\nDing 2003 model 78.4 ms; human motor units median "
                  "58 ms (47-102), PMC1779696", fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    _save(plt, fig, path)
 
 
 def plot_force_frequency(res: dict, path: Path) -> None:
@@ -225,9 +229,7 @@ def plot_force_frequency(res: dict, path: Path) -> None:
     ax2.set_ylabel("ripple (%)", color="C2")
     ax.set_title("Force-frequency curve and fusion (1 s saturating trains)", fontsize=9)
     ax.legend(fontsize=8, loc="center right")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    _save(plt, fig, path)
 
 
 def plot_recruitment(res: dict, path: Path) -> None:
@@ -240,9 +242,7 @@ def plot_recruitment(res: dict, path: Path) -> None:
     ax.set_title("Intramuscular recruitment: 5 mA threshold, 20 mA saturation at 200 us,\n"
                  "Weiss-Lapicque shift with pulse width (chronaxie 0.45 ms)", fontsize=9)
     ax.legend(title="pulse width", fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    _save(plt, fig, path)
 
 
 def plot_fatigue_recovery(res: dict, path: Path) -> None:
@@ -254,9 +254,7 @@ def plot_fatigue_recovery(res: dict, path: Path) -> None:
     ax.set_title(f"Continuous 33 Hz for 60 s, 60 s rest, 1 s test train: end {res['end_of_stimulation']:.3f}, "
                  f"after rest {res['after_rest']:.3f} of the start\n(Ding 2003 model 0.233 and 0.697)", fontsize=8)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    _save(plt, fig, path)
 
 
 def plot_endurance(runs: dict, path: Path) -> None:
@@ -286,9 +284,7 @@ def plot_endurance(runs: dict, path: Path) -> None:
     ax[1].legend(fontsize=7, loc="upper left")
     fig.suptitle("Endurance at 20 % MVC, 25 Hz, feedback-controlled amplitude (das2 brachialis, Ding 2003 "
                  "parameters, nothing fitted)", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    _save(plt, fig, path)
 
 
 def main(argv=None) -> int:
