@@ -211,3 +211,19 @@ def test_vector_env_autoreset_rests_only_that_arms_fatigue():
     assert np.all(after[1] == 0.0) and np.all(vec.batch.stimulation[1] == 0.0)
     assert np.all(after[[0, 2]] > before[[0, 2]])   # the others go on fatiguing
     assert vec.batch.time[1] == 0.0 and vec.batch.time[0] > 3.0
+
+
+def test_infinite_actions_are_refused_like_nan_and_nothing_is_applied():
+    import gymnasium as gym
+    import armrt.gym  # noqa: F401
+    env = gym.make("armrt/FESElbowStim-v0")
+    env.reset(seed=0)
+    n = env.action_space.shape[0]
+    before = env.unwrapped.batch.stimulation.copy()
+    for bad in (np.inf, -np.inf, np.nan):
+        a = np.zeros(n, np.float32)
+        a[2] = bad
+        with pytest.raises(ValueError, match="arm 0 is not finite"):
+            env.step(a)
+        np.testing.assert_array_equal(env.unwrapped.batch.stimulation, before)
+    env.step(np.full(n, 5.0, np.float32))  # finite and outside the Box: clipped, as documented

@@ -92,8 +92,15 @@ class Task:
         self.steps[idx] = 0
 
     def step(self, action):
-        """Applies (n, channels) actions for env_dt; returns obs, reward, terminated, truncated, info."""
-        a = np.clip(np.asarray(action, dtype=np.float64).reshape(self.n, -1), 0.0, 1.0)
+        """Applies (n, channels) actions for env_dt; returns obs, reward, terminated, truncated, info. Values
+        outside the Box are clipped to it; a NaN or an infinity is a broken policy, not a large command: ValueError
+        naming the arm (nothing is applied)."""
+        raw = np.asarray(action, dtype=np.float64).reshape(self.n, -1)
+        bad = ~np.isfinite(raw).all(axis=1)
+        if bad.any():
+            raise ValueError(f"action of arm {int(np.flatnonzero(bad)[0])} is not finite (NaN or infinity); "
+                             "nothing was applied")
+        a = np.clip(raw, 0.0, 1.0)
         if a.shape[1] != self.action_space.shape[0]:
             raise ValueError(f"action must have {self.action_space.shape[0]} values per arm ({self._action_layout()}), "
                              f"got {a.shape[1]}")
