@@ -1061,3 +1061,18 @@ def test_state_channels_with_stimulation_have_units_per_value():
         for v, u in (("pulse_width", "s"), ("amplitude", "A"), ("frequency", "Hz"), ("fatigue", "1")):
             assert units[labels.index(f"{c}/{v}")] == u
     assert labels[-1] == "extensors/fatigue" and len(labels) == len(state_channels("das2")[0]) + 8
+
+
+def test_client_refuses_nan_and_out_of_range_excitation_before_sending():
+    """UdpClient.send refuses what the runner would drop or clip, naming the values; nothing reaches the runner."""
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=100) as s, rt.UdpClient(s.port, mapping="groups") as c:
+        for bad, shown in (({"elbow_flexors": float("nan")}, "elbow_flexors=nan"),
+                           ({"elbow_flexors": 1.5}, "elbow_flexors=1.5"),
+                           ({"rotator_cuff": -0.1}, "rotator_cuff=-0.1"),
+                           ({"deltoid": float("inf")}, "deltoid=inf")):
+            with pytest.raises(ValueError, match=shown):
+                c.send(bad)
+        assert c.session == 0  # refused before joining: no hello, no packet
+        time.sleep(0.02)
+        stats = s.stop()
+    assert stats["packets"]["received"] == 0

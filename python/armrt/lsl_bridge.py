@@ -4,7 +4,8 @@ It publishes the runner's state packets as an LSL stream (channel labels, units 
 stream description, a stable source_id) and forwards the samples of one LSL excitation stream to the
 runner as UDP excitation packets, as the owner of the runner's session (armrt.realtime.UdpClient).
 It only forwards new samples: when the LSL controller goes silent the runner's input timeout sets
-the excitation to zero, as with a direct UDP controller.
+the excitation to zero, as with a direct UDP controller. An excitation sample with a NaN, an infinity or a value
+outside [0, 1] is not forwarded (counted in .refused, warned about once), as UdpClient.send refuses it.
 
 With --mapping stimulation and the runner's --stimulation map, the input stream is a stimulator's: channels
 labelled "<channel>/pulse_width" (s), "<channel>/amplitude" (A) and "<channel>/frequency" (Hz), any subset of
@@ -172,7 +173,7 @@ class LslBridge:
         # What the input stream's labels are matched against: the mapping's names, or the stimulation labels.
         self.mapping = self.client.stimulation if self.stimulating else self.client.mapping
         self.input_names = list(self.mapping.labels if self.stimulating else self.mapping.names)
-        self.refused = 0  # stimulation samples not forwarded (the Python API would refuse them)
+        self.refused = 0  # input samples not forwarded (the Python API would refuse them)
         self.state_port = self.client.local_port
         self.source_id = source_id or f"armrt-{model}"
         self.excitation_name = excitation_name
@@ -266,9 +267,10 @@ class LslBridge:
                     self.forwarded += 1
                 except TimeoutError as e:
                     self.warn("no-session", f"the runner gives this bridge no session: {e}")
-                except ValueError as e:  # a stimulation sample beyond the limits: never sent
+                except ValueError as e:  # NaN, out of range, beyond a channel's limits: never sent
                     self.refused += 1
-                    self.warn("refused", f"stimulation samples refused, not forwarded (counted in .refused): {e}")
+                    kind = "stimulation" if self.stimulating else "excitation"
+                    self.warn("refused", f"{kind} samples refused, not forwarded (counted in .refused): {e}")
         bad0 = self.client.bad_packets + self.client.foreign_packets
         if self.client.poll(0.002):  # the bridge's pace: at most 2 ms idle, then drain without waiting
             while self.client.poll(0.0):

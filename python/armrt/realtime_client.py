@@ -239,13 +239,20 @@ class UdpClient:
 
     def send(self, excitation, seq: int | None = None) -> int:
         """Sends one excitation packet (array or dict through the mapping); returns its sequence number.
-        Joins the session first if none is known (TimeoutError if that fails)."""
+        ValueError (nothing sent) for a NaN, an infinity or a value outside [0, 1], naming the values: the runner
+        would drop or clip them, and a controller that computes them has a bug the lab should see. Joins the
+        session first if none is known (TimeoutError if that fails)."""
+        values = self.mapping.values(excitation)
+        bad = ~np.isfinite(values) | (values < 0.0) | (values > 1.0)
+        if bad.any():
+            which = [f"{self.mapping.names[k]}={float(values[k])!r}" for k in np.flatnonzero(bad)[:5]]
+            raise ValueError(f"excitation must be finite and in [0, 1]; got {', '.join(which)}"
+                             f"{' ...' if bad.sum() > 5 else ''} (nothing sent)")
         if self.session == 0:
             self.join()
         if seq is None:
             seq = self._next_seq()
-        data = encode_packet(self.mapping.packet_type, seq, self.mapping.values(excitation),
-                             session=self.session, key=self.key)
+        data = encode_packet(self.mapping.packet_type, seq, values, session=self.session, key=self.key)
         self.sock.sendto(data, self.address)
         return seq
 
