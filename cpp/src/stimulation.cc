@@ -166,17 +166,34 @@ void stimulation_advance(const Model& m, Data& d, double h) {
   // Most channels have no pulse inside the step (one every 25-50 steps at 20-40 Hz): their one segment of length h
   // runs below in SIMD lanes over channels; a channel with a pulse inside the step (or a step longer than
   // kMaxSegment) takes its segments here, one channel at a time.
-  int whole[kMaxChannels];
-  int num_whole = 0;
-  for (int k = 0; k < map.num_channels; ++k) {
-    const StimChannel& ch = map.channels[k];
-    const double* input = d.stimulation.data() + k * kStimInputs;
-    double* st = channel_state(d, k);
+  const int nc = map.num_channels;
+  const StimulationMap::Lanes& l = map.lanes;
+  // Which channels take the SIMD pass, decided in lanes too: no train pulse due before t_end ((t_end - t_last) f
+  // below 1, with a margin far above rounding), nothing queued, a step within kMaxSegment, exponents below 0.1.
+  unsigned char in_lanes[kMaxChannels];
+  const bool short_step = t0 + kMaxSegment >= t_end;
+#pragma omp simd
+  for (int k = 0; k < nc; ++k) {
+    const double* st = d.stimulation_state.data() + k * kStimStateSize;
+    const double f = d.stimulation[k * kStimInputs + kStimFrequency];
     // What the step starts from (recorded with the step's start state).
     d.recruitment[k] = st[kStimRecruitment];
     d.fatigue[k] = 1.0 - st[kStimFatigueA];
+    const bool train_due = f > 0.0 && (t_end - st[kStimLastPulse]) * f >= 1.0 - 1e-9;
+    const bool small = 0.5 * h * l.inv_tau_c[k] < 0.1 && h < 0.1 * l.tau1_s[k] * st[kStimFatigueTau1];
+    in_lanes[k] = short_step && !train_due && !(st[kStimQueued] > 0) && small;
+  }
+  int whole[kMaxChannels];
+  int num_whole = 0;
+  for (int k = 0; k < nc; ++k) {
+    if (in_lanes[k]) {
+      whole[num_whole++] = k;
+      continue;
+    }
+    const StimChannel& ch = map.channels[k];
+    const double* input = d.stimulation.data() + k * kStimInputs;
+    double* st = channel_state(d, k);
     double t = t0, z = 0.0;
-    bool first = true;
     while (t < t_end) {
       double stop = std::min(t_end, t + kMaxSegment);
       const double event = next_pulse(input, st, t, stop);
@@ -186,12 +203,6 @@ void stimulation_advance(const Model& m, Data& d, double h) {
         continue;
       }
       if (event != kNoPulse && event < stop) stop = event;
-      const bool small = 0.5 * h * ch.derived.inv_tau_c < 0.1 && h < 0.1 * ch.ding.tau1_s * st[kStimFatigueTau1];
-      if (first && stop == t_end && small) {  // one whole-step segment: the SIMD pass's
-        whole[num_whole++] = k;
-        break;
-      }
-      first = false;
       z += advance_segment(ch, map.fatigue, st, stop - t);
       t = (stop == t_end) ? t_end : stop;
     }
@@ -207,7 +218,6 @@ void stimulation_advance(const Model& m, Data& d, double h) {
       S[j] = st[kStimCalciumSum], CN[j] = st[kStimCalcium], f[j] = st[kStimForce];
       A[j] = st[kStimFatigueA], T1[j] = st[kStimFatigueTau1], KM[j] = st[kStimFatigueKm], R[j] = st[kStimRecruitment];
     }
-    const StimulationMap::Lanes& l = map.lanes;
     auto params = [&](int k) {
       return SegmentParams{l.tau1_s[k], l.tau2_s[k], l.km[k], l.inv_tau_c[k], l.inv_ref_tau[k], l.inv_tau_fat[k],
                            l.rate_a[k], l.rate_tau1[k], l.rate_km[k]};

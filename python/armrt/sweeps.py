@@ -10,7 +10,6 @@ submits one task per item, shows a progress bar (tqdm) and gathers results in it
 """
 from __future__ import annotations
 
-import importlib.metadata
 import sys
 from typing import Any, Callable, Iterable, Sequence
 
@@ -112,6 +111,7 @@ def _ship_local_module(fn) -> None:
     name = getattr(fn, "__module__", None)
     if not name or name == "__main__" or name not in sys.modules:
         return
+    import importlib.metadata  # here, not at import: it costs `import armrt` about 50 ms (bench.first_step)
     top = name.split(".")[0]
     if top in sys.stdlib_module_names or top in importlib.metadata.packages_distributions():
         return
