@@ -1076,3 +1076,20 @@ def test_client_refuses_nan_and_out_of_range_excitation_before_sending():
         time.sleep(0.02)
         stats = s.stop()
     assert stats["packets"]["received"] == 0
+
+
+def test_runner_takes_the_models_default_map_as_the_python_api_does():
+    """stimulation="default" means the model's shipped map in the runner too (RealtimeSession and the armrt-rt
+    entry point), with the Python API's error for a model without one."""
+    model_file = Path(__file__).resolve().parents[1] / "models" / "participant_A_FES.json"
+    expected = armrt.Arm(str(model_file), stimulation="default").channel_names
+    with rt.RealtimeSession(model=str(model_file), stimulation="default") as s:
+        assert s.channel_names == expected
+    args = rt.runner_args(["--model", str(model_file), "--stimulation", "default", "--no-rt"])
+    i = args.index("--stimulation")
+    assert args[i + 1].endswith("participant_A_FES.stimulation.toml") and args[-1] == "--no-rt"
+    assert rt.runner_args(["--model=das2", "--stimulation=x.toml"]) == ["--model=das2", "--stimulation=x.toml"]
+    with pytest.raises(ValueError, match="ships no default stimulation map"):
+        rt.RealtimeSession(stimulation="default")
+    with pytest.raises(ValueError, match="ships no default stimulation map"):
+        rt.runner_args(["--stimulation", "default"])

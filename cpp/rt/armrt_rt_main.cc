@@ -115,7 +115,8 @@ int main(int argc, char** argv) {
   app.add_option("--max-activation", cfg.max_activation, "paralysis/weakness: NAME=V caps the activation of "
                                                        "element, muscle or group NAME at V in [0, 1] (comma-separated)")
       ->delimiter(',');
-  app.add_option("--stimulation", cfg.stimulation, "stimulation map (docs/fes.md): FILE.toml / FILE.json, or per_muscle; "
+  app.add_option("--stimulation", cfg.stimulation, "stimulation map (docs/fes.md): FILE.toml / FILE.json, per_muscle, or default (the model's shipped "
+                                                 "map, resolved by the armrt-rt entry point); "
                                                  "packet type 7 then carries pulse width s, amplitude A, frequency Hz "
                                                  "per channel (beyond a channel's limits: clamped and counted)");
   app.add_option("--rx-budget", cfg.rx_budget_us, "receive work per cycle, us (default: min(150, period / 4))");

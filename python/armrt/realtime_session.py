@@ -53,7 +53,7 @@ class RealtimeSession:
     send_excitation, input_timeout, channels, rx_budget_us, max_activation ({name: value} of elements,
     muscles or groups, or one value per element, in [0, 1]: paralysis and weakness; every excitation,
     and the excitations streamed with send_excitation, are capped at it), stimulation (a map: "per_muscle",
-    a .json/.toml path or a dict, docs/fes.md; stimulation packets then drive its channels, clamped to their
+    "default" (the model's shipped map), a .json/.toml path or a dict, docs/fes.md; stimulation packets then drive its channels, clamped to their
     limits and counted, zeroed when the session ends; state packets carry the applied stimulation and the
     fatigue). Bad values raise ValueError naming the option.
     """
@@ -87,6 +87,9 @@ class RealtimeSession:
             config["key"] = _key_bytes(config["key"]) or b""
         self.config = dict(config)
         stim = config.pop("stimulation", None)
+        if isinstance(stim, str) and stim == "default":  # the model's shipped map, as Arm(model, stimulation=...)
+            from .stimulation import default_map_path
+            stim = default_map_path(config.get("model", "das2"))
         if isinstance(stim, Mapping):  # the runner reads files: a dict goes through one, read at construction
             with tempfile.NamedTemporaryFile("w", suffix=".json") as f:
                 try:
@@ -168,21 +171,44 @@ def runner_path() -> str:
     raise FileNotFoundError("armrt-rt not found: install armrt (pip install .) or build it with CMake (target armrt-rt)")
 
 
+def _option_value(argv: list[str], k: int, name: str) -> tuple[str | None, int]:
+    """(value, arguments it takes) of `--name VALUE` or `--name=VALUE` at argv[k]; (None, 0) for anything else."""
+    a = argv[k]
+    if a.startswith(f"--{name}="):
+        return a.split("=", 1)[1], 1
+    if a == f"--{name}" and k + 1 < len(argv):
+        return argv[k + 1], 2
+    return None, 0
+
+
 def runner_args(argv: list[str]) -> list[str]:
     """The runner's arguments: `--model FILE.json` (or --model=FILE.json) becomes the model built on demand
-    (armrt.Model.load, cached) as `--model-library LIB --model NAME`; everything else is passed as is."""
-    out, k = [], 0
+    (armrt.Model.load, cached) as `--model-library LIB --model NAME`; `--stimulation default` becomes the map the
+    model ships (armrt.stimulation.default_map_path, as Arm(model, stimulation="default"); ValueError for a model
+    without one); everything else is passed as is."""
+    out, k, model, stimulation_at = [], 0, "das2", None
     while k < len(argv):
-        a = argv[k]
-        value = a.split("=", 1)[1] if a.startswith("--model=") else argv[k + 1] if a == "--model" and k + 1 < len(argv) else None
-        if value is not None and (value.endswith(".json") or os.sep in value):
-            from .model_build import build
-            res = build(value)
-            out += ["--model-library", str(res.library), "--model", res.name]
-            k += 1 if a.startswith("--model=") else 2
+        value, taken = _option_value(argv, k, "model")
+        if value is not None:
+            model = value
+            if value.endswith(".json") or os.sep in value:
+                from .model_build import build
+                res = build(value)
+                model = res.name
+                out += ["--model-library", str(res.library), "--model", res.name]
+                k += taken
+                continue
+        value, taken = _option_value(argv, k, "stimulation")
+        if value == "default":
+            stimulation_at = len(out)
+            out += ["--stimulation", "default"]
+            k += taken
             continue
-        out.append(a)
+        out.append(argv[k])
         k += 1
+    if stimulation_at is not None:
+        from .stimulation import default_map_path
+        out[stimulation_at + 1] = str(default_map_path(model))
     return out
 
 
