@@ -121,8 +121,10 @@ class StimulationChannels:
         from .arm import Arm  # one reader of maps: the engine's (cpp/src/stimulation_map.cc)
         self._arm = Arm(model, stimulation=stimulation)
         self.names: list[str] = list(self._arm.channel_names)
-        #: The labels of a stimulation stream's channels (LSL), in packet order: "<channel>/pulse_width", ...
-        self.labels: list[str] = [f"{c}/{v}" for c in self.names for v in ("pulse_width", "amplitude", "frequency")]
+        #: The labels of a stimulation stream's channels (LSL), in packet order: "<channel>/pulse_width", ... (the
+        #: packet table's stimulation row, cpp/rt/packet.h, which labels the state packets' values the same way).
+        self.labels: list[str] = next(r["labels"] for r in state_packet_fields(model, self.names)
+                                      if r["name"] == "stimulation")
 
     def values(self, stimulation) -> np.ndarray:
         """{channel: (pulse_width_s, amplitude_A, frequency_Hz)} (channels not named: 0, off) or a (channels, 3)
