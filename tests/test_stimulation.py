@@ -187,6 +187,29 @@ def test_snapshot_continues_bit_for_bit_and_pickles():
         a.set_state_vector(bad)
 
 
+def test_snapshot_holds_the_memory_per_channel_whatever_order_the_engine_stores():
+    # The engine stores the chain's memory by column (SIMD lanes over channels); the snapshot, States and pickles
+    # keep it per channel, the order they had before, so that a vector saved then still reads the same.
+    a = armrt.Arm("das2", stimulation="per_muscle")
+    a.set_stimulation({"bicl": (200e-6, 0.02, 25.0), "tricmed": (150e-6, 0.015, 33.0)})
+    a.queue_pulses("deltscap", [0.0305, 0.0411])
+    a.step(37)
+    mem = a.stimulation_state
+    assert mem.shape == (22, stim.STATE_SIZE)
+    k = a.channel_names.index("deltscap")
+    assert mem[k, COL["queued"]] == 1 and mem[k, COL["queued"] + 1] == 0.0411  # the first has pulsed, at 30.5 ms
+    assert mem[a.channel_names.index("bicl"), COL["force"]] > 0
+    part = a.get_state_vector()[a.state_vector_slices()["stimulation_state"]]
+    assert np.array_equal(part.reshape(22, stim.STATE_SIZE), mem)
+    assert np.array_equal(a.get_state().stimulation_state.reshape(22, stim.STATE_SIZE), mem)
+    b = armrt.Arm("das2", stimulation="per_muscle")
+    b.set_state_vector(a.get_state_vector())
+    assert np.array_equal(b.stimulation_state, mem)
+    a.step(100)
+    b.step(100)
+    assert np.array_equal(a.get_state_vector(), b.get_state_vector())
+
+
 def test_recording_holds_stimulation_recruitment_and_fatigue(tmp_path):
     a = armrt.Arm("das2", stimulation="per_muscle")
     a.set_stimulation({"bicl": (200e-6, 0.02, 30.0)})

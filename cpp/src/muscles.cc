@@ -54,11 +54,21 @@ void muscle_dynamics(const Model& m, const MuscleArrays& mc, const double* excit
                      double* lce_dot, double* force, double* tau, StepJacobian* jac, const ActivationDrive* drive) {
   const int n = m.num_elements;
   const double b = m.fibre_damping;
+  // Elements a stimulation map drives follow the stimulation stage's target and rate, da/dt = rate (target - a);
+  // the others their excitation, da/dt = (c1 u + c2)(u - a). Selected per element inside the one pass, so that a
+  // map costs no pass of its own (without a map no element is driven).
+  static const double kNoneDriven[kMaxElements] = {};
+  const double* driven = drive ? drive->driven : kNoneDriven;
+  const double* drive_target = drive ? drive->target : kNoneDriven;
+  const double* drive_rate = drive ? drive->rate : kNoneDriven;
   if (!jac) {
 #pragma omp simd
     for (int i = 0; i < n; ++i) {
-      const double u = capped_excitation(excitation[i], mc.max_activation[i]);
-      act_dot[i] = (mc.c1[i] * u + mc.c2[i]) * (u - act[i]);
+      const double u_exc = capped_excitation(excitation[i], mc.max_activation[i]);
+      const bool by_drive = driven[i] != 0.0;
+      const double u = by_drive ? drive_target[i] : u_exc;
+      const double rate = by_drive ? drive_rate[i] : mc.c1[i] * u_exc + mc.c2[i];
+      act_dot[i] = rate * (u - act[i]);
       muscle_kernel(mc.fmax[i], mc.inv_lceopt[i], mc.lslack[i], mc.thickness[i], mc.min_lce[i], mc.vmax[i],
                     mc.k_see[i], mc.k_pee[i], mc.pee_slack[i], mc.compress_length[i], mc.k_compress[i], mc.ecc_c[i], mc.damping_slope[i], b,
                     muscle_length[i], lce[i], act[i], &force[i], &lce_dot[i]);
@@ -67,8 +77,10 @@ void muscle_dynamics(const Model& m, const MuscleArrays& mc, const double* excit
     // The same loop with the kernel's derivatives (one pass: the Jacobian costs no second sweep).
 #pragma omp simd
     for (int i = 0; i < n; ++i) {
-      const double u = capped_excitation(excitation[i], mc.max_activation[i]);
-      const double rate = mc.c1[i] * u + mc.c2[i];
+      const double u_exc = capped_excitation(excitation[i], mc.max_activation[i]);
+      const bool by_drive = driven[i] != 0.0;
+      const double u = by_drive ? drive_target[i] : u_exc;
+      const double rate = by_drive ? drive_rate[i] : mc.c1[i] * u_exc + mc.c2[i];
       act_dot[i] = rate * (u - act[i]);
       jac->act_rate[i] = rate;
       MuscleDerivatives der;
@@ -87,15 +99,6 @@ void muscle_dynamics(const Model& m, const MuscleArrays& mc, const double* excit
       jac->inv_cos_pennation[i] = der.inv_cos_pennation;
       jac->pee_force[i] = der.pee_force;
       jac->compress_force[i] = der.compress_force;
-    }
-  }
-  // Elements a stimulation map drives: their activation ODE's target and rate come from the stimulation stage
-  // (a pass of its own, so that the loops above stay the same with and without stimulation).
-  if (drive) {
-    for (int i = 0; i < n; ++i) {
-      if (!drive->driven[i]) continue;
-      act_dot[i] = drive->rate[i] * (drive->target[i] - act[i]);
-      if (jac) jac->act_rate[i] = drive->rate[i];
     }
   }
   generalised_force(moment_arm, force, n, m.num_dofs, tau, m.dof_elements_begin.data(), m.dof_elements_end.data());

@@ -241,7 +241,7 @@ StimulationMap stimulation_map_from_json(const ModelDef& def, const std::string&
         fail(where + ".elements", "the map reaches more than " + std::to_string(kMaxStimEntries) +
                                       " (channel, element) pairs");
       map.entries[map.num_entries++] = {static_cast<int>(k), i, weight[i]};
-      map.driven[i] = 1;
+      map.driven[i] = 1.0;
     }
     ch.entry_end = map.num_entries;
     map.num_channels = static_cast<int>(k) + 1;

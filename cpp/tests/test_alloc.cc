@@ -90,7 +90,7 @@ TEST_CASE("no heap allocation during 1000 steps driven by stimulation (22 channe
     const double pulses[3] = {0.0105, 0.0207, 0.0309};
     stimulation_queue_pulses(sim->model, sim->data, 3, pulses, 3);
     check_1000_steps_allocate_nothing(*sim, {});
-    CHECK(sim->data.stimulation_state[kStimForce] > 0.0);  // the first channel's fibres pull
+    CHECK(sim->data.stimulation_state[stim_state_index(kStimForce, 0, sim->data.stimulation_map.num_channels)] > 0.0);  // the first channel's fibres pull
   }
 }
 

@@ -408,11 +408,13 @@ PYBIND11_MODULE(_core, mod) {
       .def("queue_pulses", [](Arm& s, int channel, const Array& times) {
         stimulation_queue_pulses(s.model, s.data, channel, times.data(), static_cast<int>(times.size()));
       }, py::arg("channel"), py::arg("times"))
-      // The chain's memory (channels, kStimStateSize) as a copy: columns as stimulation.h StimState.
+      // The chain's memory (channels, kStimStateSize) as a copy, one row per channel (Data stores it by column).
       .def_property_readonly("stimulation_state", [](const Arm& s) {
         const int nc = s.data.stimulation_map.num_channels;
         Array out({nc, static_cast<int>(kStimStateSize)});
-        std::copy(s.data.stimulation_state.begin(), s.data.stimulation_state.begin() + nc * kStimStateSize, out.mutable_data());
+        double* o = out.mutable_data();
+        for (int k = 0; k < nc; ++k)
+          for (int c = 0; c < kStimStateSize; ++c) o[k * kStimStateSize + c] = s.data.stimulation_state[stim_state_index(c, k, nc)];
         return out;
       })
       .def("recruitment_fraction", [](const Arm& s, int channel, double pw, double amp) {

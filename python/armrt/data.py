@@ -60,7 +60,8 @@ class State:
     path_anchor_steps: tuple = (0, 0)       # (steps between the anchors, steps from the newest to this state)
     previous_step: float = 0.0              # s, the size of the steps that led here
     # An arm with a stimulation map (armrt.stimulation): per channel [pulse width s, amplitude A, frequency Hz]
-    # flattened (3 x channels,), and the chain's memory (STIM_STATE_SIZE x channels,); empty without a map.
+    # flattened (3 x channels,), and the chain's memory per channel, flattened (channels x STIM_STATE_SIZE,);
+    # empty without a map.
     stimulation: np.ndarray = field(default_factory=lambda: np.zeros(0))
     stimulation_state: np.ndarray = field(default_factory=lambda: np.zeros(0))
     # armrt before 2026-11-30 saved ROS2's memory as previous_q: accepted when read back, and dropped (below).

@@ -59,7 +59,7 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
 // Elements a stimulation map drives (drive != nullptr and drive->driven[i]) follow drive's target and rate instead
 // (stimulation.cc): da/dt = rate (target - a).
 struct ActivationDrive {
-  const std::uint8_t* driven;  // num_elements flags
+  const double* driven;        // num_elements: 1.0 where the map drives the element, else 0.0
   const double* target;        // [0, max_activation]
   const double* rate;          // 1/s
 };

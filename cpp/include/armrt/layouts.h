@@ -130,7 +130,7 @@ inline constexpr int kNumChannels = static_cast<int>(Channel::kCount);
 // The stimulation chain's memory per channel (stimulation.h StimState): calcium sum, CN, force level, fatigue
 // (A, tau1, Km over their rested values), last pulse time, last recruitment, queued pulse count and times.
 #define ARMRT_SNAPSHOT_STIMULATION(X) \
-  X(stimulation_state, kChannelState, "", "per channel: the stimulation chain's memory (stimulation.h StimState)")
+  X(stimulation_state, kChannelState, "", "per channel: the stimulation chain's memory (stimulation.h StimState; Data stores it by column)")
 #define ARMRT_SNAPSHOT_INTEGRATOR(X)                                                                  \
   X(ros2_path_history, kPathHistory, "",                                                              \
     "ROS2's memory: step size h (s), anchors (0-2), anchor spacing and steps since the newest anchor " \

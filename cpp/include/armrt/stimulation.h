@@ -91,10 +91,13 @@ struct StimulationMap {
   bool fatigue = true;  // whether A, tau1, Km drift under stimulation (false: a fresh muscle forever)
   std::array<StimChannel, kMaxChannels> channels{};
   std::array<StimEntry, kMaxStimEntries> entries{};  // sorted by channel
-  std::array<std::uint8_t, kMaxElements> driven{};   // 1: an element some channel reaches (stimulation drives it)
+  // 1.0: an element some channel reaches (stimulation drives it), else 0.0 (a double, so that the muscles stage
+  // selects on it in SIMD lanes).
+  std::array<double, kMaxElements> driven{};
   std::array<double, kMaxElements> inv_weight_sum{};  // 1 / the element's summed weights (data_set_stimulation_map)
-  // The channels' parameters the stage's SIMD pass reads, one array per parameter (data_set_stimulation_map fills
-  // them from channels[k].ding and .derived): s, s, 1, 1/s, 1/s, 1/s, and the fatigue rates (1/s per unit f).
+  // The channels' parameters the stage reads, one array per parameter so that it reads them in SIMD lanes
+  // (data_set_stimulation_map fills them from channels[k].ding and .derived): s, s, 1, 1/s, 1/s, 1/s, and the
+  // fatigue rates (1/s per unit f). A map with fatigue off has inv_tau_fat and the rates zero.
   struct Lanes {
     std::array<double, kMaxChannels> tau1_s, tau2_s, km, inv_tau_c, inv_ref_tau, inv_tau_fat, rate_a, rate_tau1,
         rate_km;
@@ -103,7 +106,9 @@ struct StimulationMap {
 
 // Per-channel values of Data::stimulation (the inputs, held over the steps): kStimInputs per channel.
 enum StimInput { kStimPulseWidth = 0, kStimAmplitude = 1, kStimFrequency = 2, kStimInputs = 3 };
-// Per-channel values of Data::stimulation_state (the chain's memory, part of the snapshot).
+// The columns of Data::stimulation_state (the chain's memory, part of the snapshot). It is stored by column:
+// column c of channel k at stim_state_index(c, k, num_channels), every channel's value of a column contiguous, so
+// that the stage reads a column over channels in SIMD lanes. The snapshot holds it per channel (snapshot.cc).
 enum StimState {
   kStimCalciumSum = 0,  // S = sum_i R_i exp(-(t - t_i)/tau_c) over past pulses (carried recursively)
   kStimCalcium,         // CN
@@ -118,6 +123,9 @@ enum StimState {
   kStimStateSize = kStimQueue + kMaxQueuedPulses
 };
 inline constexpr double kNoPulse = -1e9;  // a time long before any simulation
+inline constexpr int stim_state_index(int column, int channel, int num_channels) {
+  return column * num_channels + channel;
+}
 
 // The map from a JSON text (docs/fes.md "Stimulation maps"): channels with names, kinds, elements by
 // element, muscle, group or OpenSim names with weights, limits and model parameters. Throws
