@@ -64,19 +64,6 @@ double* data_field(Data& d, SnapshotPart p) {
 }
 #undef ARMRT_X
 
-// The stimulation chain's memory: per channel in the snapshot (the order users, States and pickles have always
-// had), by column in Data (stimulation.h stim_state_index, so that the stage reads a column in SIMD lanes).
-void pack_stimulation_state(const Data& d, double* out) {
-  const int nc = d.stimulation_map.num_channels;
-  for (int k = 0; k < nc; ++k)
-    for (int c = 0; c < kStimStateSize; ++c) out[k * kStimStateSize + c] = d.stimulation_state[stim_state_index(c, k, nc)];
-}
-void unpack_stimulation_state(Data& d, const double* in) {
-  const int nc = d.stimulation_map.num_channels;
-  for (int k = 0; k < nc; ++k)
-    for (int c = 0; c < kStimStateSize; ++c) d.stimulation_state[stim_state_index(c, k, nc)] = in[k * kStimStateSize + c];
-}
-
 // ROS2's packed path history (the ros2_path_history row): h, anchors, spacing, steps since the newest, then
 // two rows of q.
 enum { kHistH = 0, kHistAnchors = 1, kHistSpacing = 2, kHistSince = 3, kHistQ = 4 };
@@ -193,7 +180,8 @@ void get_snapshot(const Model& m, const Data& d, const Stepper& s, unsigned sign
   const int count = signature_parts(def, signature, parts, d.stimulation_map.num_channels);
   for (int k = 0; k < count; ++k) {
     const auto [p, o, n] = parts[k];
-    if (p == SnapshotPart::stimulation_state) pack_stimulation_state(d, out + o);
+    // The chain's memory per channel here (the order States and pickles have always had), by column in Data.
+    if (p == SnapshotPart::stimulation_state) stimulation_state_by_channel(d, out + o);
     else if (const double* field = data_field(d, p)) std::copy(field, field + n, out + o);
     else if (p == SnapshotPart::ros2_path_history) pack_path_history(m, d, s.ros2.path_history, out + o);
     else std::copy(d.x.begin() + state_block_offset(def, p), d.x.begin() + state_block_offset(def, p) + n, out + o);
@@ -272,7 +260,7 @@ void set_snapshot(const Model& m, Data& d, Stepper& s, unsigned signature, const
     const auto [p, o, n] = parts[k];
     if (p == SnapshotPart::excitation) data_set_excitation(m, d, in + o);
     else if (p == SnapshotPart::ros2_path_history) hist = in + o;
-    else if (p == SnapshotPart::stimulation_state) unpack_stimulation_state(d, in + o);
+    else if (p == SnapshotPart::stimulation_state) set_stimulation_state_by_channel(d, in + o);
     else if (double* field = data_field(d, p)) std::copy(in + o, in + o + n, field);
     else std::copy(in + o, in + o + n, d.x.begin() + state_block_offset(def, p));
   }

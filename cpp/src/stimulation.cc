@@ -38,6 +38,13 @@ Memory memory(Data& d) {
           col(kStimFatigueKm), col(kStimLastPulse), col(kStimRecruitment), col(kStimQueued), col(kStimQueue), nc};
 }
 
+// Whether a frequency train's next pulse (1/f after the last) may come before `horizon`: a product, not the
+// division 1/f, with a margin far above rounding, so that every pulse that comes is found at its exact time.
+// Bitwise and, so that it runs in SIMD lanes too.
+[[gnu::always_inline]] inline bool train_pulse_due(double f, double last_pulse, double horizon) {
+  return (f > 0.0) & ((horizon - last_pulse) * f >= 1.0 - 1e-9);
+}
+
 // exp(-z) by its Taylor polynomial of degree 7, for 0 <= z < 0.1 (relative error < 3e-13). Constants as products:
 // a division by 5040 is a division (the compiler may not turn it into a product), and divisions are what cost.
 inline double exp_neg_small(double z) {
@@ -115,12 +122,10 @@ void pulse(const StimChannel& ch, const double* input, const Memory& mem, int k,
 
 // Time of channel k's next pulse at or after t if it may come before `horizon` (kNoPulse if none does): the
 // earlier of its frequency train (1/f after the last pulse, at once if that is past) and its first queued pulse.
-// Most steps have no pulse: a product tells that without the division 1/f (with a margin far above rounding, so
-// every pulse that comes is found at its exact time).
 double next_pulse(const double* input, const Memory& mem, int k, double t, double horizon) {
   double next = kNoPulse;
   const double f = input[kStimFrequency];
-  if (f > 0.0 && (horizon - mem.last[k]) * f >= 1.0 - 1e-9) next = std::max(t, mem.last[k] + 1.0 / f);
+  if (train_pulse_due(f, mem.last[k], horizon)) next = std::max(t, mem.last[k] + 1.0 / f);
   if (mem.queued[k] > 0 && (next == kNoPulse || mem.queue_at(0, k) < next)) next = std::max(t, mem.queue_at(0, k));
   return next;
 }
@@ -156,10 +161,10 @@ void data_set_stimulation_map(const Model& m, Data& d, const StimulationMap& map
   std::array<double, kMaxElements> w_sum{};
   for (int e = 0; e < installed.num_entries; ++e) w_sum[installed.entries[e].element] += installed.entries[e].weight;
   for (int i = 0; i < kMaxElements; ++i) installed.inv_weight_sum[i] = w_sum[i] > 0 ? 1.0 / w_sum[i] : 0.0;
+  const double on = installed.fatigue ? 1.0 : 0.0;  // without fatigue: no drift and no recovery
+  StimulationMap::Lanes& l = installed.lanes;
   for (int k = 0; k < installed.num_channels; ++k) {
     const StimChannel& ch = installed.channels[k];
-    const double on = installed.fatigue ? 1.0 : 0.0;  // without fatigue: no drift and no recovery
-    StimulationMap::Lanes& l = installed.lanes;
     l.tau1_s[k] = ch.ding.tau1_s, l.tau2_s[k] = ch.ding.tau2_s, l.km[k] = ch.ding.km;
     l.inv_tau_c[k] = ch.derived.inv_tau_c, l.inv_ref_tau[k] = ch.derived.inv_ref_tau;
     l.inv_tau_fat[k] = on * ch.derived.inv_tau_fat;
@@ -183,9 +188,8 @@ void stimulation_advance(const Model& m, Data& d, double h) {
   std::int64_t whole_step[kMaxChannels];
   // Most channels have no pulse inside the step (one every 25-50 steps at 20-40 Hz): one segment of length h
   // advances them, in SIMD lanes over every channel (the memory is stored by column for this). The segment is
-  // computed for every channel and kept where it is the whole step: no train pulse due before t_end ((t_end -
-  // t_last) f below 1, with a margin far above rounding), nothing queued, a step within kMaxSegment and exponents
-  // below 0.1. A channel with a pulse inside the step takes its segments one at a time in the loop after.
+  // computed for every channel and kept where it is the whole step: no train pulse due before t_end, nothing
+  // queued, a step within kMaxSegment and exponents below 0.1. A channel with a pulse inside the step takes its segments one at a time in the loop after.
   // The exponents' bound, and none for a step longer than kMaxSegment (a number, not a bool: the lanes' tests are
   // bitwise ands of comparisons, which the vectoriser takes where it refuses a branch on a bool).
   const double small_z = t0 + kMaxSegment >= t_end ? 0.1 : -1.0;
@@ -197,7 +201,7 @@ void stimulation_advance(const Model& m, Data& d, double h) {
     d.recruitment[k] = R;
     d.fatigue[k] = 1.0 - A0;
     const double freq = d.stimulation[k * kStimInputs + kStimFrequency];
-    const bool train_due = (freq > 0.0) & ((t_end - mem.last[k]) * freq >= 1.0 - 1e-9);
+    const bool train_due = train_pulse_due(freq, mem.last[k], t_end);
     const bool small = (0.5 * h * l.inv_tau_c[k] < small_z) & (h < small_z * l.tau1_s[k] * T10);
     const bool keep = !train_due & !(mem.queued[k] > 0) & small;
     double S = S0, CN = CN0, f = f0, A = A0, T1 = T10, KM = KM0;
@@ -297,6 +301,18 @@ void stimulation_queue_pulses(const Model&, Data& d, int channel, const double* 
 
 double channel_fatigue(const Data& d, int k) {
   return 1.0 - d.stimulation_state[stim_state_index(kStimFatigueA, k, d.stimulation_map.num_channels)];
+}
+
+void stimulation_state_by_channel(const Data& d, double* out) {
+  const int nc = d.stimulation_map.num_channels;
+  for (int k = 0; k < nc; ++k)
+    for (int c = 0; c < kStimStateSize; ++c) out[k * kStimStateSize + c] = d.stimulation_state[stim_state_index(c, k, nc)];
+}
+
+void set_stimulation_state_by_channel(Data& d, const double* in) {
+  const int nc = d.stimulation_map.num_channels;
+  for (int k = 0; k < nc; ++k)
+    for (int c = 0; c < kStimStateSize; ++c) d.stimulation_state[stim_state_index(c, k, nc)] = in[k * kStimStateSize + c];
 }
 
 }  // namespace armrt

@@ -139,11 +139,7 @@ PYBIND11_MODULE(_batch, mod) {
       .def_property_readonly("stimulation_state", [](Batch& b) {
         const int nc = b.arm(0).data.stimulation_map.num_channels;
         Array out({b.size(), nc, static_cast<int>(kStimStateSize)});
-        double* o = out.mutable_data();
-        for (int i = 0; i < b.size(); ++i)
-          for (int k = 0; k < nc; ++k)
-            for (int c = 0; c < kStimStateSize; ++c)
-              o[(i * nc + k) * kStimStateSize + c] = b.arm(i).data.stimulation_state[stim_state_index(c, k, nc)];
+        for (int i = 0; i < b.size(); ++i) stimulation_state_by_channel(b.arm(i).data, out.mutable_data() + i * nc * kStimStateSize);
         return out;
       })
       // Snapshots by signature (snapshot.h), one row per arm.

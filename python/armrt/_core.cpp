@@ -412,9 +412,7 @@ PYBIND11_MODULE(_core, mod) {
       .def_property_readonly("stimulation_state", [](const Arm& s) {
         const int nc = s.data.stimulation_map.num_channels;
         Array out({nc, static_cast<int>(kStimStateSize)});
-        double* o = out.mutable_data();
-        for (int k = 0; k < nc; ++k)
-          for (int c = 0; c < kStimStateSize; ++c) o[k * kStimStateSize + c] = s.data.stimulation_state[stim_state_index(c, k, nc)];
+        stimulation_state_by_channel(s.data, out.mutable_data());
         return out;
       })
       .def("recruitment_fraction", [](const Arm& s, int channel, double pw, double amp) {

@@ -173,5 +173,9 @@ void stimulation_advance(const Model& m, Data& d, double h);
 void stimulation_queue_pulses(const Model& m, Data& d, int channel, const double* times, int count);
 // 1 - A/A_rest of channel k now.
 double channel_fatigue(const Data& d, int k);
+// The chain's memory one row of kStimStateSize per channel (the snapshot's and the Python API's order), out of
+// Data's by-column storage (stimulation.h stim_state_index), and back in.
+void stimulation_state_by_channel(const Data& d, double* out);
+void set_stimulation_state_by_channel(Data& d, const double* in);
 
 }  // namespace armrt
