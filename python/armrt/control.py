@@ -262,7 +262,7 @@ class StaticOptimizer:
             qp = proxqp.dense.QP(nv, nq, n_in, True)
             qp.settings.eps_abs = 1e-9
             qp.settings.eps_rel = 0.0
-            qp.settings.max_iter = 1000
+            qp.settings.max_iter = 300 if slack else 1000
             qp.settings.verbose = False
             qp.settings.primal_infeasibility_solving = False
             qp.settings.initial_guess = proxqp.InitialGuess.WARM_START_WITH_PREVIOUS_RESULT
@@ -319,8 +319,9 @@ class StaticOptimizer:
 
     def _sqp(self, a, L, v, R, P, f0, tau_req, amax, slack: bool):
         """Sequential QP on the linearised muscle model; returns (a, iterations, converged). With slack the
-        moment rows get free residuals s (ndof,) and the objective is 1e6 |s|^2 + 1e-6 sum w a^2: the
-        closest the muscles can come (the infeasible case's report)."""
+        moment rows get free residuals s (ndof,) and the objective is |s|^2 + 1e-4 sum w a^2: about the
+        closest the muscles can come (the infeasible case's report; the small activation term keeps the QP's
+        conditioning at 1e4, a 1e12 ratio stalled ProxQP)."""
         n, nq = self.model.n_elements, self.model.n_dofs
         C_rows = self._gh_rows
         n_in = C_rows.shape[0]
@@ -355,7 +356,7 @@ class StaticOptimizer:
                 break
             if qps == self.max_iterations:
                 break
-            if qps > 1 and resid > 0.5 * last_resid:
+            if qps > 1 and resid > MOMENT_TOLERANCE and resid > 0.5 * last_resid:
                 mu = 1.0 if mu == 0.0 else 4.0 * mu
             last_resid = resid
             # Linearised moments: R^T (F + dF (a' - a)) = tau_req.
@@ -366,8 +367,8 @@ class StaticOptimizer:
             ug = -(C_rows @ (f0 + P @ F - (P * dF) @ a))
             if slack:
                 H = np.zeros((n + nq, n + nq))
-                H[np.arange(n), np.arange(n)] = 2e-6 * w
-                H[np.arange(n, n + nq), np.arange(n, n + nq)] = 2e6
+                H[np.arange(n), np.arange(n)] = 2e-4 * w
+                H[np.arange(n, n + nq), np.arange(n, n + nq)] = 2.0
                 g = np.zeros(n + nq)
                 A_ = np.hstack([A, np.eye(nq)])
                 C_ = np.hstack([Cg, np.zeros((n_in, nq))])
@@ -438,7 +439,10 @@ class StaticOptimizer:
             lines.append(f"  elements at their upper bound (max_activation): {len(upper)}"
                          + (f" ({', '.join(upper[:12])}{', ...' if len(upper) > 12 else ''})" if upper else ""))
             if self.gh_stab_max is not None:
-                lines.append(f"  GH bound {'binding' if gh_active else 'not binding'} (GHstab {stab:.4g})")
+                lines.append(f"  GH bound {'binding' if gh_active else 'not binding'} (GHstab of this solution {stab:.4g}, "
+                             f"bound {self.gh_stab_max:g}"
+                             + ("; not even the bound can be met: the GH force of the loads and passive forces "
+                                "alone leaves it" if stab > self.gh_stab_max + 1e-9 else "") + ")")
             report = "\n".join(lines)
         return StaticOptimizationResult(
             activation=a, lce=np.asarray(lce), force=np.asarray(F), tau_required=tau_req, tau_muscle=tau,
