@@ -333,11 +333,12 @@ class StaticOptimizer:
         squared_first = self.criterion == "cubed" and self.last_activation is None and not slack
         # The element's force is piecewise smooth in a: with the fibre moving, the damper's low-activation floor
         # (muscle.cc) puts a kink at a f(lce) = 0.02, where Newton's linearisation can cycle between its two
-        # sides. Once the moment residual stops halving, a proximal term mu sum w (a' - a)^2 is added to the
-        # QP's objective and mu grows by 4 each time the residual fails to halve again: the steps shrink, the
-        # residual with them (a proximal-point SQP). The linearisation passes through F(a), so a fixed point
-        # balances the moments; the proximal term only moves where on the kink the iterates settle.
+        # sides. Once the moment residual stops halving, the slopes are taken over +-1e-3 in activation (a
+        # kink inside gets the mean of its sides); if it stalls again a proximal term mu sum w (a' - a)^2 is
+        # added to the QP's objective, mu growing by 4 at each further stall. The linearisation still passes
+        # through F(a), so a fixed point balances the moments exactly; these only change how it is reached.
         mu = 0.0
+        stalls = 0
         last_resid = np.inf
         step = np.inf
         qps = 0
@@ -357,8 +358,21 @@ class StaticOptimizer:
             if qps == self.max_iterations:
                 break
             if qps > 1 and resid > MOMENT_TOLERANCE and resid > 0.5 * last_resid:
-                mu = 1.0 if mu == 0.0 else 4.0 * mu
+                stalls += 1
+                if stalls > 1:
+                    mu = 1.0 if mu == 0.0 else 4.0 * mu
             last_resid = resid
+            if stalls and self.tendon == "elastic":
+                # Slopes over +-1e-3 in activation (one-sided at a bound): a kink within that width gets the
+                # mean of its two sides, so the iterates stop jumping across it.
+                h = 1e-3
+                lo_a, hi_a = np.maximum(a - h, 0.0), a + h
+                guess = self._lce_guess
+                _, F_hi, _ = self._sim.steady_forces(L, v, hi_a, lce)
+                _, F_lo, _ = self._sim.steady_forces(L, v, lo_a, lce)
+                self._lce_guess = guess
+                wide = hi_a > lo_a
+                dF = np.where(wide, (F_hi - F_lo) / np.where(wide, hi_a - lo_a, 1.0), dF)
             # Linearised moments: R^T (F + dF (a' - a)) = tau_req.
             A = R.T * dF                      # (ndof, n)
             b = tau_req - R.T @ F + A @ a
