@@ -37,16 +37,19 @@ def motion(arm: armrt.Arm, q0: np.ndarray, frames: int, dt: float = 1e-3, amplit
 
 
 def run_case(arm, q, qd, qdd, hand, warm: bool, **kw) -> dict:
-    times, iters, resid, stab, elastic = [], [], [], [], []
+    times, iters, resid, stab, elastic, failed = [], [], [], [], [], []
     so = armrt.StaticOptimizer(arm, **kw)
-    so.solve(q[0], qd[0], qdd[0], hand)  # the solver's set-up and first factorisation are not timed
+    so.solve(q[0], qd[0], qdd[0], hand, on_infeasible="return")  # the solver's set-up and first factorisation are not timed
     for k in range(len(q)):
         if not warm:
             so = armrt.StaticOptimizer(arm, **kw)
         t0 = time.perf_counter()
-        r = so.solve(q[k], qd[k], qdd[k], hand)
+        r = so.solve(q[k], qd[k], qdd[k], hand, on_infeasible="return")
         times.append(time.perf_counter() - t0)
         iters.append(r.iterations)
+        if not r.feasible:  # no convergence to 1e-6 N m in max_iterations QPs: counted, kept out of the residual
+            failed.append(k)
+            continue
         resid.append(float(np.abs(r.residual).max()))
         stab.append(r.gh_stab)
         if r.elastic_residual is not None:
@@ -54,7 +57,8 @@ def run_case(arm, q, qd, qdd, hand, warm: bool, **kw) -> dict:
     t = np.array(times) * 1e3
     out = {"median_ms": float(np.median(t)), "p99_ms": float(np.percentile(t, 99)), "max_ms": float(t.max()),
            "iterations_median": float(np.median(iters)), "iterations_max": int(max(iters)),
-           "moment_residual_max_Nm": float(max(resid)), "gh_stab_max": float(max(stab)), "frames": len(q)}
+           "moment_residual_max_Nm": float(max(resid)),
+           "frames_not_converged": len(failed), "frames_not_converged_at": failed[:20], "gh_stab_max": float(max(stab)), "frames": len(q)}
     if elastic:
         out["rigid_tendon_error_vs_elastic_max_Nm"] = float(max(elastic))
         out["rigid_tendon_error_vs_elastic_median_Nm"] = float(np.median(elastic))
@@ -82,7 +86,9 @@ def main(argv=None) -> dict:
         print(name, {k: round(v, 4) if isinstance(v, float) else v for k, v in cases[name].items()}, flush=True)
     arm3 = armrt.Arm("das3")
     arm3.settle()
-    q3, qd3, qdd3 = motion(arm3, arm3.q, args.das3_frames, amplitude=0.02)
+    q3, qd3, qdd3 = motion(arm3, arm3.q, args.das3_frames, amplitude=0.1)
+    held = np.array([j in arm3.model.girdle_dofs for j in range(arm3.n_dofs)])
+    q3[:, held], qd3[:, held], qdd3[:, held] = arm3.q[held], 0.0, 0.0  # the girdle held at its settled pose
     cases["das3 elastic, warm"] = run_case(arm3, q3, qd3, qdd3, hand, True)
     print("das3 elastic, warm", cases["das3 elastic, warm"], flush=True)
     load_after = os.getloadavg()
@@ -96,11 +102,11 @@ def main(argv=None) -> dict:
              f"`{out['command'].strip()}` (proxsuite {out['proxsuite']}, ProxQP dense). "
              f"1-min load average {load_before[0]:.2f} before, {load_after[0]:.2f} after, {out['cpus']} CPUs: times "
              f"scale with the load.", "",
-             "| case | frames | median ms | p99 ms | QPs median (max) | moment residual max N m | GHstab max | "
-             "rigid-tendon error vs elastic, max N m |", "|---|---|---|---|---|---|---|---|"]
+             "| case | frames | not converged | median ms | p99 ms | QPs median (max) | moment residual max N m | "
+             "GHstab max | rigid-tendon error vs elastic, max N m |", "|---|---|---|---|---|---|---|---|---|"]
     for name, c in cases.items():
         rig = c.get("rigid_tendon_error_vs_elastic_max_Nm")
-        lines.append(f"| {name} | {c['frames']} | {c['median_ms']:.2f} | {c['p99_ms']:.2f} | "
+        lines.append(f"| {name} | {c['frames']} | {c['frames_not_converged']} | {c['median_ms']:.2f} | {c['p99_ms']:.2f} | "
                      f"{c['iterations_median']:.0f} ({c['iterations_max']}) | {c['moment_residual_max_Nm']:.1e} | "
                      f"{c['gh_stab_max']:.3f} | {'' if rig is None else f'{rig:.3g}'} |")
     (RESULTS / "static_optimization.md").write_text("\n".join(lines) + "\n")

@@ -260,3 +260,38 @@ def test_bad_input_names_the_problem():
         armrt.static_optimization(arm, q, tendon="stiff")
     with pytest.raises(ValueError, match="degrees"):
         armrt.static_optimization(arm, np.degrees(q) + 50)
+
+
+# ---------------------------------------------------------------------------- along a motion (item 3)
+def test_motion_from_arrays_and_from_a_mot_file(tmp_path):
+    arm = armrt.Arm("das2")
+    t = np.arange(0.0, 0.3, 0.01)
+    q = np.radians([20, 40, 0, 60, 60]) + np.outer(0.2 * (1 - np.cos(np.pi * t / t[-1])) / 2, [1, 1, -1, 1, 1])
+    out = armrt.static_optimization_motion(arm, q, time=t, hand_load=[0, -5, 0])
+    assert out.activation.shape == (t.size, arm.n_elements) and out.feasible.all()
+    assert np.abs(out.residual).max() < BALANCE
+    # qddot by finite differences: the motion's analytic acceleration at an interior frame.
+    w = np.pi / t[-1]
+    k = t.size // 2
+    np.testing.assert_allclose(out.qddot[k], 0.1 * w * w * np.cos(w * t[k]) * np.array([1, 1, -1, 1, 1]), rtol=2e-2)
+    # A frame solved on its own reaches the same optimum up to where the SQP stops on the damper floor's kink
+    # (moving fibres, docs/control.md): the same objective within 1 % (single activations can differ by a few
+    # hundredths: the elastic problem is not convex and the two starts end on different sides of a kink).
+    one = armrt.static_optimization(arm, q[k], out.qdot[k], out.qddot[k], hand_load=[0, -5, 0])
+    assert abs(np.sum(out.activation[k] ** 2) - one.objective) < 0.01 * one.objective
+    # The same motion through an OpenSim .mot (OpenSim coordinate names).
+    res = arm.simulate(lambda tt: {}, duration=0.05)
+    mot = tmp_path / "m.mot"
+    from armrt.opensim_io import write_mot
+    write_mot(res, mot)
+    from_file = armrt.static_optimization_motion(arm, mot, on_infeasible="return")
+    np.testing.assert_allclose(from_file.q, res.q, atol=1e-6)
+    assert from_file.activation.shape == (res.time.size, arm.n_elements)
+    with pytest.raises(ValueError, match="time"):
+        armrt.static_optimization_motion(arm, q)
+    with pytest.raises(ValueError, match=r"shape \(T, 5\)"):
+        armrt.static_optimization_motion(arm, q[:, :3], time=t)
+    with pytest.raises(ValueError, match="strictly increasing"):
+        armrt.static_optimization_motion(arm, q, time=t[::-1])
+    with pytest.raises(armrt.StaticOptimizationInfeasible, match=r"frame 0 \(t = 0 s\)"):
+        armrt.static_optimization_motion(arm, q, time=t, hand_load=[0, -3000, 0])

@@ -307,6 +307,8 @@ class StaticOptimizer:
             a, it2, _ = self._sqp(a0, L, v, R, P, f0, tau_req, amax, slack=True)
             it += it2
         lce, F, _ = self._forces(L, v, a)
+        # Feasible only if the forces returned balance the moments (the SQP's own test was on its last evaluation).
+        ok = ok and float(np.abs(R.T @ F - tau_req).max()) < 1e-6
         res = self._result(a, lce, F, L, v, R, P, f0, tau_req, amax, it, feasible=ok)
         if ok:
             self.last_activation = a
