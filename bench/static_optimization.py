@@ -86,7 +86,8 @@ def main(argv=None) -> dict:
         print(name, {k: round(v, 4) if isinstance(v, float) else v for k, v in cases[name].items()}, flush=True)
     arm3 = armrt.Arm("das3")
     arm3.settle()
-    q3, qd3, qdd3 = motion(arm3, arm3.q, args.das3_frames, amplitude=0.1)
+    # das3's frames spread over 0.5 s (a 60 ms move of 0.1 rad would ask for ~140 rad/s^2).
+    q3, qd3, qdd3 = motion(arm3, arm3.q, args.das3_frames, dt=0.5 / args.das3_frames, amplitude=0.1)
     held = np.array([j in arm3.model.girdle_dofs for j in range(arm3.n_dofs)])
     q3[:, held], qd3[:, held], qdd3[:, held] = arm3.q[held], 0.0, 0.0  # the girdle held at its settled pose
     cases["das3 elastic, warm"] = run_case(arm3, q3, qd3, qdd3, hand, True)
