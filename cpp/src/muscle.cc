@@ -1,4 +1,6 @@
 // Hill-type muscle element (paper II-D; McLean et al. 2003 form, as in the DAS3 real-time code).
+// (L, lce, a) -> tendon force, CE velocity; and for control (static optimisation, docs/control.md) the force as a
+// function of activation: at the CE length of a given fibre velocity (muscle_steady_force) or with a rigid tendon.
 //
 // Contractile element (CE) in parallel with a quadratic parallel elastic element (PEE) and a linear
 // damper, pennated, in series with a quadratic series elastic element (SEE, the tendon). The state is
@@ -86,6 +88,63 @@ double muscle_equilibrium_lce(const ElementConstants& e, double b, double L, dou
   lce_rest = lce_rest > e.compress_length ? lce_rest : e.compress_length;
   if (lce_rest < lce && muscle_element(e, b, L, lce_rest, 0.0).fibre_velocity == 0.0) return lce_rest;
   return lce;
+}
+
+double muscle_lce_at_velocity(const ElementConstants& e, double b, double L, double a, double fibre_velocity,
+                              double lce_guess) {
+  if (e.fmax == 0.0) return e.pee_slack;
+  // The CE velocity falls monotonically as lce grows (muscle_equilibrium_lce's bracket). Newton's steps on
+  // v(lce) - fibre_velocity with the kernel's dv/dlce from lce_guess, kept inside the bracket that each
+  // evaluation narrows; a bisection step where Newton's would leave it or the slope vanishes (a slack unit's
+  // force-free range, the kinks of the slack points). Stops when the bracket or the step is below 1e-13 m.
+  double lo = e.min_lce, hi = (L > lo ? L : lo) + e.pee_slack + e.lceopt;
+  double x = lce_guess > lo && lce_guess < hi ? lce_guess : 0.5 * (lo + hi);
+  for (int it = 0; it < 200; ++it) {
+    MuscleDerivatives der;
+    const double g = muscle_element_derivatives(e, b, L, x, a, &der).fibre_velocity - fibre_velocity;
+    if (g == 0.0) return x;
+    if (g > 0) lo = x; else hi = x;
+    if (hi - lo < 1e-13) break;
+    const double newton = der.dvel_dlce < 0.0 ? x - g / der.dvel_dlce : lo - 1.0;
+    const double next = newton > lo && newton < hi ? newton : 0.5 * (lo + hi);
+    if (std::fabs(next - x) < 1e-13) return next;
+    x = next;
+  }
+  return 0.5 * (lo + hi);
+}
+
+SteadyForce muscle_steady_force(const ElementConstants& e, double b, double L, double a, double fibre_velocity,
+                                double lce_guess) {
+  SteadyForce out;
+  out.lce = muscle_lce_at_velocity(e, b, L, a, fibre_velocity, lce_guess);
+  MuscleDerivatives der;
+  out.force = muscle_element_derivatives(e, b, L, out.lce, a, &der).force;
+  // Implicit function theorem on v(L, lce, a) = fibre_velocity at fixed L: dlce/da = -(dv/da) / (dv/dlce).
+  // Where the velocity does not depend on lce (a relaxed slack unit, the fibre at its floor) the force does
+  // not change with a small change of activation: 0.
+  out.dforce_da = der.dvel_dlce != 0.0 ? -der.dforce_dlce * der.dvel_da / der.dvel_dlce : 0.0;
+  return out;
+}
+
+RigidTendonForce muscle_rigid_tendon_force(const ElementConstants& e, double b, double L, double dL_dt) {
+  RigidTendonForce out;
+  const double along = L - e.lslack;  // the fibre's projection on the path, the tendon at its slack length
+  double lce = std::sqrt((along > 0 ? along * along : 0.0) + e.thickness * e.thickness);
+  lce = lce > e.min_lce ? lce : e.min_lce;
+  out.lce = lce;
+  if (along <= 0.0 || e.fmax == 0.0) return out;  // the unit is shorter than its tendon: no force either way
+  const double cos_pen = std::sqrt(lce * lce - e.thickness * e.thickness) / lce;
+  const double v = dL_dt * cos_pen;  // d lce / dt of lce = sqrt(along^2 + thickness^2), d along/dt = dL/dt
+  const double x = (lce * e.inv_lceopt - 1.0) / kForceLengthWidth;
+  const double fl = std::exp(-x * x);
+  // The force-velocity factor g(v) of muscle.cc's header (concentric / eccentric), 0 below -vmax.
+  double g = v <= 0.0 ? (e.vmax + v) / (e.vmax - v / kHillA) : (kEccentricFmax * v + e.ecc_c) / (v + e.ecc_c);
+  g = g > 0.0 ? g : 0.0;
+  const double pee = lce > e.pee_slack ? e.k_pee * (lce - e.pee_slack) * (lce - e.pee_slack) : 0.0;
+  const double compress = lce < e.compress_length ? e.k_compress * (e.compress_length - lce) * (e.compress_length - lce) : 0.0;
+  out.force_per_activation = e.fmax * fl * g * cos_pen;
+  out.passive_force = (pee - compress + b * v) * cos_pen;
+  return out;
 }
 
 }  // namespace armrt

@@ -7,8 +7,10 @@ from ._version import __version__
 from .arm import Arm
 from .batch import ArmBatch
 from .checks import deg, rad
+from .control import StaticOptimizationResult, StaticOptimizer, inverse_dynamics, static_optimization
+from .control_motion import static_optimization_motion
 from .data import Data, State
-from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
+from .errors import ConcurrentUseError, SimulationError, StaticOptimizationInfeasible, StepSizeWarning
 from .model import Model, models
 from .model_build import CompilerNotFoundError, ModelBuildError, ModelFileError
 from .result import Result
@@ -17,7 +19,8 @@ from .stepper import Stepper, forward, step
 from .sweeps import sweep
 
 __all__ = ["Arm", "Stepper", "step", "forward", "Result", "SimulationError", "StepSizeWarning", "ConcurrentUseError", "deg", "rad", "ArmBatch",
-           "sweep", "Model", "Data", "State", "StatePart", "models", "ModelFileError", "ModelBuildError", "CompilerNotFoundError",
+           "sweep", "inverse_dynamics", "static_optimization", "static_optimization_motion", "StaticOptimizer", "StaticOptimizationResult",
+           "StaticOptimizationInfeasible", "Model", "Data", "State", "StatePart", "models", "ModelFileError", "ModelBuildError", "CompilerNotFoundError",
            "RealtimeSession", "UdpClient"]
 try:  # the packet layout comes from armrt._rt: without that extension the rest of armrt still works
     from .realtime import RealtimeSession, UdpClient

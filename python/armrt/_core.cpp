@@ -173,6 +173,8 @@ class InterruptCheck {
 
 }  // namespace
 
+py::dict inverse_dynamics_dict(const Model& m, const double* gravity, const double* q, const double* qd,
+                               const double* qdd, const double* hand_force, const double* hand_moment);  // _core_model.cpp
 void bind_model(py::module_& mod);  // _core_model.cpp
 
 PYBIND11_MODULE(_core, mod) {
@@ -595,5 +597,46 @@ PYBIND11_MODULE(_core, mod) {
       .def("gh_stability", [](const Arm& s, const Array& f) {
         const GHStability g = gh_stability(*s.model.def, checked(f, 3, "force"));
         return py::make_tuple(g.theta, g.phi, g.stab);
-      });
+      })
+      // inverse_dynamics.cc with this arm's gravity: a dict of tau_muscle and its parts (ndof,) and the GH force
+      // of the non-muscle loads (3,).
+      .def("inverse_dynamics", [](const Arm& s, const Array& q, const Array& qd, const Array& qdd, const Array& hf,
+                                  const Array& hm) {
+        return inverse_dynamics_dict(s.model, s.data.settings.gravity.data(), checked(q, s.model.num_dofs, "q"),
+                                     checked(qd, s.model.num_dofs, "qdot"), checked(qdd, s.model.num_dofs, "qddot"),
+                                     checked(hf, 3, "hand force"), checked(hm, 3, "hand moment"));
+      }, py::arg("q"), py::arg("qdot"), py::arg("qddot"), py::arg("hand_force"), py::arg("hand_moment"))
+      // Every element at once with this arm's constants (strength, maximum activation): muscle_steady_force at
+      // lengths L (n,), fibre velocities v (n,) and activations a (n,) from CE lengths lce_guess (n,) (NaN: none)
+      // -> (lce, F, dF/da), each (n,).
+      .def("steady_forces", [](const Arm& s, const Array& L, const Array& v, const Array& a, const Array& guess) {
+        const int n = s.model.num_elements;
+        const double *Lp = checked(L, n, "L"), *vp = checked(v, n, "fibre velocity"), *ap = checked(a, n, "activation");
+        const double* gp = checked(guess, n, "lce guess");
+        Array lce({n}), F({n}), dF({n});
+        {
+          py::gil_scoped_release release;
+          for (int i = 0; i < n; ++i) {
+            const SteadyForce o = muscle_steady_force(data_element(s.model, s.data, i), s.model.fibre_damping, Lp[i], ap[i], vp[i], gp[i]);
+            lce.mutable_data()[i] = o.lce;
+            F.mutable_data()[i] = o.force;
+            dF.mutable_data()[i] = o.dforce_da;
+          }
+        }
+        return py::make_tuple(lce, F, dF);
+      }, py::arg("L"), py::arg("fibre_velocity"), py::arg("activation"), py::arg("lce_guess"))
+      // muscle_rigid_tendon_force of every element at lengths L (n,) and rates dL/dt (n,) -> (lce, F per unit
+      // activation, passive F), each (n,).
+      .def("rigid_tendon_forces", [](const Arm& s, const Array& L, const Array& Ldot) {
+        const int n = s.model.num_elements;
+        const double *Lp = checked(L, n, "L"), *vp = checked(Ldot, n, "dL/dt");
+        Array lce({n}), Fa({n}), Fp({n});
+        for (int i = 0; i < n; ++i) {
+          const RigidTendonForce o = muscle_rigid_tendon_force(data_element(s.model, s.data, i), s.model.fibre_damping, Lp[i], vp[i]);
+          lce.mutable_data()[i] = o.lce;
+          Fa.mutable_data()[i] = o.force_per_activation;
+          Fp.mutable_data()[i] = o.passive_force;
+        }
+        return py::make_tuple(lce, Fa, Fp);
+      }, py::arg("L"), py::arg("dL_dt"));
 }

@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -71,6 +72,23 @@ std::vector<Array> per_pose(const ModelDef& def, const Array& q, const std::vect
 
 }  // namespace
 
+// inverse_dynamics.cc's result as a dict of arrays (ndof,), gh_force_without_muscles (3,).
+py::dict inverse_dynamics_dict(const Model& m, const double* gravity, const double* q, const double* qd,
+                               const double* qdd, const double* hand_force, const double* hand_moment) {
+  InverseDynamics r;
+  inverse_dynamics(m, gravity, q, qd, qdd, hand_force, hand_moment, &r);
+  const int nq = m.num_dofs;
+  auto arr = [](const double* p, int n) {
+    Array a({n});
+    std::copy(p, p + n, a.mutable_data());
+    return a;
+  };
+  return py::dict(py::arg("tau_muscle") = arr(r.tau_muscle, nq), py::arg("mass_times_qddot") = arr(r.mass_times_qdd, nq),
+                  py::arg("bias") = arr(r.bias, nq), py::arg("passive") = arr(r.passive, nq),
+                  py::arg("external") = arr(r.external, nq), py::arg("girdle") = arr(r.girdle, nq),
+                  py::arg("gh_force_without_muscles") = arr(r.gh_force_without_muscles, 3));
+}
+
 void bind_model(py::module_& mod) {
   py::class_<ModelDef, std::unique_ptr<ModelDef, py::nodelete>>(mod, "ModelDef",
       "A generated model's tables and functions (engine side of armrt.Model).")
@@ -131,7 +149,18 @@ void bind_model(py::module_& mod) {
         if (qd.size() != d.num_dofs || g.size() != 3 || q.ndim() != 1)
           throw py::value_error("bias_force takes one pose: q and qdot of " + std::to_string(d.num_dofs) + ", gravity of 3");
         return per_pose(d, q, {{d.num_dofs}}, [&](const double* qk, double** out) { d.bias_force(qk, qd.data(), g.data(), out[0]); })[0];
-      }, py::arg("q"), py::arg("qdot"), py::arg("gravity_base"));
+      }, py::arg("q"), py::arg("qdot"), py::arg("gravity_base"))
+      .def("inverse_dynamics", [](const ModelDef& d, const Array& q, const Array& qd, const Array& qdd, const Array& g,
+                                  const Array& hf, const Array& hm) {
+        auto need = [&](const Array& a, py::ssize_t n, const char* what) {
+          if (a.size() != n) throw py::value_error(std::string(what) + ": expected " + std::to_string(n) + " values");
+          return a.data();
+        };
+        const int nq = d.num_dofs;
+        return inverse_dynamics_dict(shared_model(d), need(g, 3, "gravity"), need(q, nq, "q"), need(qd, nq, "qdot"),
+                                     need(qdd, nq, "qddot"), need(hf, 3, "hand force"), need(hm, 3, "hand moment"));
+      }, py::arg("q"), py::arg("qdot"), py::arg("qddot"), py::arg("gravity_base"), py::arg("hand_force"),
+         py::arg("hand_moment"));
 
   mod.attr("MODEL_ABI_VERSION") = kModelDefAbiVersion;
   mod.def("find_model", [](const std::string& name) -> const ModelDef* { return find_model(name); },

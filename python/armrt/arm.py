@@ -24,6 +24,7 @@ from .model import Model
 from .profile import profile_values
 from .progress import bar as progress_bar
 from . import stimulation as _stimulation
+from .control import inverse_dynamics as _inverse_dynamics
 from .result import Result, _recorded_rows, _row_bytes
 from .result import _rim_of_recorded_angles  # noqa: F401 (armrt.arm._rim_of_recorded_angles, as before)
 
@@ -215,6 +216,13 @@ class Arm:
         if channel not in names:
             raise ValueError(f"unknown stimulation channel {channel!r}; channels: {', '.join(names) or 'none'}")
         return float(self._sim.recruitment_fraction(names.index(channel), float(pulse_width), float(amplitude)))
+
+    def inverse_dynamics(self, q, qdot=0.0, qddot=0.0, hand_load=None, parts: bool = False):
+        """(ndof,) N m: the generalised forces the muscles must supply for accelerations qddot at (q, qdot),
+        with this arm's gravity and (hand_load=None) its present hand load; passive joint moments, the hand
+        load and das3's girdle contact and conoid forces accounted for (armrt.inverse_dynamics has the details
+        and parts=True)."""
+        return _inverse_dynamics(self, q, qdot, qddot, hand_load, parts)
 
     def set_hand_load(self, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> None:
         """External force (N) at the hand point and moment (N m) on the hand, thorax frame

@@ -23,3 +23,14 @@ def simulation_error(exc: RuntimeError) -> SimulationError:
     # A step the integrator cannot take fails again after reset(): the message says what to change.
     hint = "" if msg.startswith("step too large") else "; call reset() to continue"
     return SimulationError(msg + hint)
+
+
+class StaticOptimizationInfeasible(ValueError):
+    """No activations within [0, max_activation] supply the required moments (with the GH bound, if asked):
+    the message is the report (residual moment per DOF, binding constraints); .result is the closest
+    solution (armrt.control.StaticOptimizationResult, feasible False)."""
+
+    def __init__(self, report: str, result=None):
+        super().__init__(report)
+        self.report = report
+        self.result = result

@@ -22,6 +22,7 @@ import numpy as np
 
 from . import _core
 from .checks import joint_range, joint_range_rows, real_array
+from .control import inverse_dynamics as _inverse_dynamics
 from .model_build import BuildResult, build, cached_library
 from .model_files import LOADED as _LOADED
 from .model_files import find_model_file
@@ -338,6 +339,11 @@ class Model:
     def mass_matrix(self, q) -> np.ndarray:
         """(ndof, ndof) kg m^2 (symmetric positive definite); (k, ndof, ndof) for q (k, ndof)."""
         return self._def.mass_matrix(self._q(q))
+
+    def inverse_dynamics(self, q, qdot=0.0, qddot=0.0, hand_load=None, parts: bool = False):
+        """(ndof,) N m the muscles must supply for accelerations qddot at (q, qdot) with the model's default
+        gravity and hand_load (None: none); armrt.inverse_dynamics has the details."""
+        return _inverse_dynamics(self, q, qdot, qddot, hand_load, parts)
 
     # Keys of gh_rim, in the order the engine's gh_stability returns them; the names of the Arm properties.
     GH_RIM_KEYS = ("gh_theta", "gh_phi", "gh_stab", "gh_rim_margin", "gh_rim_direction")

@@ -7,6 +7,7 @@
 //     girdle.cc          q -> tau_girdle (scapulothoracic contact, conoid ligament; das3)
 //     skeleton.cc        q, qd, tau -> M(q), qdd
 //     gh_reaction.cc     q, qd, qdd, forces, hand load -> GH force and stability
+//   inverse_dynamics.cc q, qd, qdd, hand load -> tau_muscle the muscles must supply (forward's equation solved for it)
 //   stepper.cc       step(model, data, stepper, n): control steps, substeps, TET; error messages
 //   integrate.cc     one integration step: explicit Euler and RK4, ROS2 (ros2.cc); the state check
 //   ros2.cc          the linearly implicit ROS2 step: its two stages, the step-halving mode
@@ -42,6 +43,29 @@ MuscleOut muscle_element_derivatives(const ElementConstants& e, double fibre_dam
 // Contractile-element length at which the element is in static equilibrium (zero fibre velocity)
 // at muscle-tendon length L and activation a; used to start simulations without transients.
 double muscle_equilibrium_lce(const ElementConstants& e, double fibre_damping, double L, double a);
+// CE length (m) at which the element's fibre velocity is fibre_velocity (m/s) at muscle-tendon length L (m) and
+// activation a: the control side's model of a muscle's force as a function of its activation (static
+// optimisation, docs/control.md). Safeguarded Newton from lce_guess (m; outside the bracket or NaN: its middle).
+// Unlike muscle_equilibrium_lce, a relaxed slack unit's fibre may end anywhere in its force-free range.
+double muscle_lce_at_velocity(const ElementConstants& e, double fibre_damping, double L, double a, double fibre_velocity,
+                              double lce_guess);
+// The tendon force (N) at that CE length and its derivative with respect to a along that family of states.
+struct SteadyForce {
+  double lce = 0;        // m
+  double force = 0;      // N
+  double dforce_da = 0;  // N per unit activation
+};
+SteadyForce muscle_steady_force(const ElementConstants& e, double fibre_damping, double L, double a, double fibre_velocity,
+                                double lce_guess);
+// The rigid-tendon approximation of the same element (tendon at its slack length, lce from L and the
+// thickness, the fibre velocity from dL/dt): tendon force = a force_per_activation + passive_force (N), linear
+// in a. The damper's low-activation floor (muscle.cc) is left out (it multiplies the fibre velocity).
+struct RigidTendonForce {
+  double lce = 0;                   // m
+  double force_per_activation = 0;  // N: fmax f(lce) g(v) cos(pennation)
+  double passive_force = 0;         // N: (PEE - compressive element + damper) cos(pennation)
+};
+RigidTendonForce muscle_rigid_tendon_force(const ElementConstants& e, double fibre_damping, double L, double dL_dt);
 
 // ---- forward.cc (the pipeline) and its stage files
 // Evaluates dx/dt at state x into xdot. With record = true also fills the outputs of d (the q they
@@ -121,6 +145,22 @@ GHStability gh_stability(const ModelDef& def, const double* force);
 // Rim direction psi and margin (rad) of the angles theta, phi (rad) on a rim of half-angles theta_a, phi_a:
 // the part of gh_stability that needs no glenoid basis (a recorded result's angles are enough).
 void gh_rim(double theta, double phi, double theta_a, double phi_a, double* direction, double* margin);
+
+// inverse_dynamics.cc. (q, qd, qdd, hand load, gravity) -> the generalised forces the muscles must supply,
+// tau_muscle = M(q) qdd - b(q, qd, g) - tau_passive - tau_ext - tau_girdle (N m), forward()'s equation solved
+// for tau_muscle; with its parts and the GH force (N, scapula frame) of everything but the muscles (hand load,
+// weight, minus the arm's momentum rate): the GH force is that plus sum_i F_i dir_i.
+struct InverseDynamics {
+  double tau_muscle[kMaxDofs];
+  double mass_times_qdd[kMaxDofs];
+  double bias[kMaxDofs];     // b(q, qd, g): gravity and velocity products, on the right-hand side
+  double passive[kMaxDofs];
+  double external[kMaxDofs];
+  double girdle[kMaxDofs];
+  double gh_force_without_muscles[3];
+};
+void inverse_dynamics(const Model& m, const double* gravity, const double* q, const double* qd, const double* qdd,
+                      const double* hand_force, const double* hand_moment, InverseDynamics* out);
 
 // ---- integrate.cc
 // Where a state vector x leaves the physical domain (model.h) of an arm with d's settings: kOk, or the status

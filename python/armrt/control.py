@@ -1,0 +1,483 @@
+"""Inverse dynamics and static optimisation with a gleno-humeral stability bound (docs/control.md).
+
+    tau = armrt.inverse_dynamics(arm, q, qdot, qddot, hand_load=None)      # (ndof,) N m the muscles must supply
+    res = armrt.static_optimization(arm, q, gh_stab_max=0.5)               # activations (n,) in [0, max_activation]
+    so = armrt.StaticOptimizer(arm, gh_stab_max=0.5); so.solve(q, ...)      # warm-started, for a loop
+    armrt.static_optimization_motion(arm, "trial.mot")                      # activations per frame
+
+The inverse dynamics is the engine's (inverse_dynamics.cc): forward()'s equation of motion solved for the muscles'
+generalised forces. Static optimisation minimises the sum of (weighted) squared or cubed activations subject to
+those moments, the activation bounds of the arm's settings and, optionally, GHstab <= gh_stab_max as a polygon of
+linear constraints on the GH force; the muscle force as a function of activation is the engine's element at the
+CE length where its fibre velocity equals the path's lengthening speed (elastic tendon, solved by sequential QP),
+or the rigid-tendon approximation (linear, one QP). The QP solver is ProxQP (proxsuite, dense backend).
+
+This module imports no other armrt module but checks, errors and _core: Arm and Model call into it.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .checks import hand_load as _checked_hand_load
+from .checks import joint_range, real_array, real_scalar
+from .errors import StaticOptimizationInfeasible
+
+# Below |theta| tan|theta| = 1/2 (|theta| < 0.6533 rad), atan(u)^2 is convex in u = tan(theta), so the set of
+# GH force directions with GHstab <= s is convex while both rim half-angles times sqrt(s) stay below it.
+CONVEX_HALF_ANGLE = 0.6532711870  # rad, the root of x tan x = 1/2
+# Beyond this (rad) the bound's ellipse approaches the glenoid plane (theta -> pi/2): refused.
+MAX_BOUND_HALF_ANGLE = 1.45
+POLYGON_SIDES = 24
+MOMENT_TOLERANCE = 1e-7  # N m, the SQP's stop on the moment residual (|.|_inf), below the 1e-6 acceptance
+_INF = 1e20
+
+
+# ---------------------------------------------------------------------------------------------- inputs
+def _target(arm_or_model):
+    """(core arm with the settings to use, Model, hand load (force, moment) when None is given)."""
+    sim = getattr(arm_or_model, "_sim", None)
+    if sim is not None:  # armrt.Arm
+        return sim, arm_or_model.model, (np.array(sim.hand_force), np.array(sim.hand_moment))
+    d = getattr(arm_or_model, "_def", None)
+    if d is None:
+        raise TypeError(f"expected an armrt.Arm or armrt.Model, got {type(arm_or_model).__name__}")
+    return _default_arm(arm_or_model), arm_or_model, (np.zeros(3), np.zeros(3))
+
+
+_DEFAULT_ARMS: dict[int, object] = {}
+
+
+def _default_arm(model):
+    """A private engine arm of a Model with the default settings (intact strength, max_activation 1, the
+    model's gravity): what a Model's static optimisation uses."""
+    from . import _core  # noqa: PLC0415 (the extension, not an armrt module: no cycle)
+    key = model._def.address
+    if key not in _DEFAULT_ARMS:
+        _DEFAULT_ARMS[key] = _core.Arm(model._def, "rk4", 1e-3)
+    return _DEFAULT_ARMS[key]
+
+
+def _dof_vector(model, v, what: str, allow_scalar_zero: bool = False) -> np.ndarray:
+    nd = model.n_dofs
+    if allow_scalar_zero and np.isscalar(v) and not isinstance(v, (str, bytes)):
+        x = real_scalar(v, what)
+        if x != 0:
+            raise ValueError(f"{what}: a scalar must be 0 (for every DOF); give an array of shape ({nd},) otherwise")
+        return np.zeros(nd)
+    a = real_array(v, what)
+    if a.shape != (nd,):
+        raise ValueError(f"{what} must have shape ({nd},) ({', '.join(model.dof_names)}), got {a.shape}")
+    if not np.all(np.isfinite(a)):
+        bad = [model.dof_names[j] for j in np.flatnonzero(~np.isfinite(a))]
+        raise ValueError(f"{what} contains NaN or infinite values (at {', '.join(bad)})")
+    return np.ascontiguousarray(a, dtype=float)
+
+
+def _hand_load(hand_load, default) -> tuple[np.ndarray, np.ndarray]:
+    """None -> default; a force (3,) N; (force (3,), moment (3,)); or a (6,) [force, moment] (thorax frame)."""
+    if hand_load is None:
+        return default
+    if isinstance(hand_load, dict):
+        return _checked_hand_load(hand_load.get("force", np.zeros(3)), hand_load.get("moment", np.zeros(3)))
+    if isinstance(hand_load, tuple) and len(hand_load) == 2:
+        return _checked_hand_load(*hand_load)
+    a = real_array(hand_load, "hand_load")
+    if a.shape == (3,):
+        return _checked_hand_load(a, np.zeros(3))
+    if a.shape == (6,):
+        return _checked_hand_load(a[:3], a[3:])
+    raise ValueError(f"hand_load must be a force (3,) N, (force, moment) or a (6,) [force, moment] (thorax frame), "
+                     f"got shape {a.shape}")
+
+
+def _state(model, q, qdot, qddot):
+    q = joint_range(_dof_vector(model, q, "q"), model.dof_names, model.dof_ranges, warn=False)
+    return q, _dof_vector(model, qdot, "qdot", True), _dof_vector(model, qddot, "qddot", True)
+
+
+# ---------------------------------------------------------------------------------------------- inverse dynamics
+def inverse_dynamics(arm_or_model, q, qdot=0.0, qddot=0.0, hand_load=None, parts: bool = False):
+    """The generalised forces tau_muscle (ndof,) N m the muscles must supply for the arm to have the joint
+    accelerations qddot at (q, qdot): forward()'s M(q) qddot = tau_muscle + tau_passive + tau_ext + tau_girdle +
+    b(q, qdot, g) solved for tau_muscle (cpp/src/inverse_dynamics.cc). Passive joint moments, gravity (the arm's
+    setting, a Model's default), the hand load's generalised force and, for das3, the scapulothoracic contact and
+    conoid forces are accounted for: they are not in tau_muscle. Every DOF is returned; in das2 and das3 every
+    DOF is crossed by muscle elements, so each is actuated (das3's girdle DOFs by the trapezius, serratus,
+    levator scapulae, rhomboids, pectoralis minor... together with its contact and ligament forces).
+
+    q, qdot, qddot: (ndof,) rad, rad/s, rad/s^2 (qdot, qddot may be 0). hand_load: None (an Arm's present
+    hand load, zero for a Model), a force (3,) N, (force, moment) or a (6,) [force, moment] in the thorax frame.
+    parts=True returns a dict: tau_muscle, mass_times_qddot, bias (b), passive, external, girdle (ndof,) and
+    gh_force_without_muscles (3,) N, scapula frame. ValueError for NaN, wrong shapes or q far beyond range."""
+    sim, model, default_load = _target(arm_or_model)
+    q, qd, qdd = _state(model, q, qdot, qddot)
+    f, m = _hand_load(hand_load, default_load)
+    if hasattr(arm_or_model, "_sim"):
+        out = sim.inverse_dynamics(q, qd, qdd, f, m)
+    else:
+        out = model._def.inverse_dynamics(q, qd, qdd, np.ascontiguousarray(model.gravity_base), f, m)
+    return out if parts else out["tau_muscle"]
+
+
+# ---------------------------------------------------------------------------------------------- GH polygon
+def gh_polygon(theta_a: float, phi_a: float, bound: float, sides: int = POLYGON_SIDES) -> np.ndarray:
+    """Rows c (sides, 3) of linear constraints c . (F.normal, F.major, F.minor) <= 0 on a GH force F that
+    imply GHstab(F) <= bound (paper eq. 5; F.normal >= 0 is a separate row): the edges of a polygon inscribed in
+    {(u, v) = (F.major, F.minor) / F.normal : (atan(u)/theta_a)^2 + (atan(v)/phi_a)^2 <= bound}.
+
+    That set is convex while theta_a sqrt(bound) and phi_a sqrt(bound) stay below CONVEX_HALF_ANGLE, and the
+    polygon of its boundary points is then inside it. Beyond that the set is still star-shaped about the
+    origin (the function grows along every ray), so a polygon is inside it exactly when its edges are: the
+    edges are checked at 64 points each and the polygon shrunk (its vertices' angles scaled by 0.99) until
+    they are, which keeps the constraint conservative at the price of a bound tighter than asked
+    (docs/control.md). ValueError for a bound <= 0 or one whose ellipse reaches MAX_BOUND_HALF_ANGLE."""
+    bound = float(bound)
+    if not (bound > 0 and math.isfinite(bound)):
+        raise ValueError(f"gh_stab_max must be a finite number > 0, got {bound}")
+    r = math.sqrt(bound)
+    if max(theta_a, phi_a) * r >= MAX_BOUND_HALF_ANGLE:
+        lim = (MAX_BOUND_HALF_ANGLE / max(theta_a, phi_a)) ** 2
+        raise ValueError(f"gh_stab_max = {bound:g} puts the bound's ellipse beyond {MAX_BOUND_HALF_ANGLE} rad from "
+                         f"the glenoid normal (towards the glenoid plane); give gh_stab_max < {lim:.3g}")
+    psi = np.linspace(0.0, 2 * np.pi, sides, endpoint=False)
+    t = np.linspace(0.0, 1.0, 64)
+    scale = 1.0
+    for _ in range(200):
+        u = np.tan(theta_a * r * scale * np.cos(psi))
+        v = np.tan(phi_a * r * scale * np.sin(psi))
+        un, vn = np.roll(u, -1), np.roll(v, -1)
+        eu = u[:, None] + (un - u)[:, None] * t
+        ev = v[:, None] + (vn - v)[:, None] * t
+        stab = (np.arctan(eu) / theta_a) ** 2 + (np.arctan(ev) / phi_a) ** 2
+        if stab.max() <= bound:
+            break
+        scale *= 0.99
+    # Counter-clockwise vertices: the outward normal of edge k is (dv, -du); n . (u, v) <= n . p_k.
+    nu, nv = vn - v, -(un - u)
+    d = nu * u + nv * v
+    return np.column_stack([-d, nu, nv])
+
+
+# ---------------------------------------------------------------------------------------------- static optimisation
+@dataclass
+class StaticOptimizationResult:
+    """One static optimisation. Arrays: activation, lce (m), force (N), by element (n,); moments (N m) by DOF
+    (ndof,): tau_required (inverse dynamics), tau_muscle (R^T force of the muscle model at the activations),
+    residual (tau_muscle - tau_required); gh_force (N, scapula frame) and gh_stab of those forces.
+    For tendon="rigid", elastic_residual is what the same activations leave with the elastic element (its force
+    at the CE length of the same fibre velocity): the rigid-tendon approximation's error. feasible False with
+    report naming the DOFs with residual moments and the binding constraints."""
+    activation: np.ndarray
+    lce: np.ndarray
+    force: np.ndarray
+    tau_required: np.ndarray
+    tau_muscle: np.ndarray
+    residual: np.ndarray
+    gh_force: np.ndarray
+    gh_stab: float
+    feasible: bool
+    iterations: int
+    objective: float
+    criterion: str
+    tendon: str
+    gh_stab_max: float | None
+    at_upper_bound: tuple[str, ...] = ()
+    gh_bound_active: bool = False
+    elastic_residual: np.ndarray | None = None
+    report: str = ""
+    fibre_velocity: np.ndarray | None = field(default=None, repr=False)
+
+    def __repr__(self) -> str:
+        return (f"StaticOptimizationResult(feasible={self.feasible}, criterion={self.criterion}, tendon={self.tendon}, "
+                f"|residual|max={np.abs(self.residual).max():.2e} N m, gh_stab={self.gh_stab:.3f}, "
+                f"iterations={self.iterations})")
+
+
+class StaticOptimizer:
+    """Static optimisation of one arm (or a Model's default settings), keeping the ProxQP problem and the last
+    activations between solves so that a controller's consecutive solves are warm started.
+
+    criterion: "squared" (sum w_i a_i^2, Anderson & Pandy 2001) or "cubed" (sum w_i a_i^3, Crowninshield & Brand
+    1981). tendon: "elastic" (the engine's element at the CE length where its fibre velocity equals the path's
+    dL/dt, solved by sequential QP until the moments balance to MOMENT_TOLERANCE) or "rigid" (linear in a, one QP).
+    gh_stab_max: None or a bound > 0 on GHstab (paper eq. 5) as gh_polygon's linear constraints on the GH force.
+    weights: None (1) or (n,) > 0. Bounds [0, max_activation] come from the arm's settings at each solve."""
+
+    def __init__(self, arm_or_model, gh_stab_max=None, weights=None, criterion: str = "squared",
+                 tendon: str = "elastic", polygon_sides: int = POLYGON_SIDES, max_iterations: int = 50):
+        self._sim, self.model, self._default_load = _target(arm_or_model)
+        self._arm_or_model = arm_or_model
+        n = self.model.n_elements
+        if criterion not in ("squared", "cubed"):
+            raise ValueError(f"criterion must be 'squared' or 'cubed', got {criterion!r}")
+        if tendon not in ("elastic", "rigid"):
+            raise ValueError(f"tendon must be 'elastic' or 'rigid', got {tendon!r}")
+        self.criterion, self.tendon, self.max_iterations = criterion, tendon, int(max_iterations)
+        if weights is None:
+            self.weights = np.ones(n)
+        else:
+            w = real_array(weights, "weights")
+            if w.shape != (n,):
+                raise ValueError(f"weights must have shape ({n},) (one per element), got {w.shape}")
+            if not np.all(np.isfinite(w)) or np.any(w <= 0):
+                raise ValueError("weights must be finite and > 0")
+            self.weights = np.ascontiguousarray(w, dtype=float)
+        g = self.model.glenoid
+        self._axes = np.array([g["glenoid_normal"], g["glenoid_major_axis"], g["glenoid_minor_axis"]])
+        self.gh_stab_max = None
+        self._gh_rows = np.zeros((0, 3))
+        if gh_stab_max is not None:
+            s = real_scalar(gh_stab_max, "gh_stab_max")
+            self._gh_rows = np.vstack([gh_polygon(g["rim_half_angle_major"], g["rim_half_angle_minor"], s, polygon_sides),
+                                       [-1.0, 0.0, 0.0]])  # F.normal >= 0
+            self.gh_stab_max = float(s)
+        self._qp = None
+        self._qp_slack = None
+        self._initialised = {}
+        self.last_activation = None
+        self._lce_guess = None
+        self._last_L = None
+
+    # -------------------------------------------------------------- the muscle model
+    def _forces(self, L, v, a):
+        """(lce, F, dF/da) of every element at activations a."""
+        if self.tendon == "elastic":
+            lce, F, dF = self._sim.steady_forces(L, v, a, self._lce_guess)
+            self._lce_guess = lce
+            return lce, F, dF
+        lce, Fa, Fp = self._rigid
+        return lce, Fa * a + Fp, Fa
+
+    def _qp_object(self, slack: bool, n_in: int):
+        from proxsuite import proxqp  # noqa: PLC0415 (a dependency, imported where the solver is built)
+        n, nq = self.model.n_elements, self.model.n_dofs
+        nv = n + (nq if slack else 0)
+        key = "_qp_slack" if slack else "_qp"
+        qp = getattr(self, key)
+        if qp is None or qp.model.n_in != n_in:
+            qp = proxqp.dense.QP(nv, nq, n_in, True)
+            qp.settings.eps_abs = 1e-9
+            qp.settings.eps_rel = 0.0
+            qp.settings.max_iter = 300 if slack else 1000
+            qp.settings.verbose = False
+            qp.settings.primal_infeasibility_solving = False
+            qp.settings.initial_guess = proxqp.InitialGuess.WARM_START_WITH_PREVIOUS_RESULT
+            self._initialised[key] = False
+            setattr(self, key, qp)
+        return qp
+
+    # -------------------------------------------------------------- one solve
+    def solve(self, q, qdot=0.0, qddot=0.0, hand_load=None, on_infeasible: str = "raise") -> StaticOptimizationResult:
+        """Activations for the state (q, qdot, qddot) (ndof,) and hand load (as inverse_dynamics). Warm started
+        from the previous solve's activations. on_infeasible: "raise" (StaticOptimizationInfeasible, with the
+        result as .result) or "return" (the result with feasible False). ValueError for bad input."""
+        if on_infeasible not in ("raise", "return"):
+            raise ValueError(f"on_infeasible must be 'raise' or 'return', got {on_infeasible!r}")
+        model, sim = self.model, self._sim
+        q, qd, qdd = _state(model, q, qdot, qddot)
+        f_hand, m_hand = _hand_load(hand_load, self._default_load if not hasattr(self._arm_or_model, "_sim") else
+                                    (np.array(sim.hand_force), np.array(sim.hand_moment)))
+        if hasattr(self._arm_or_model, "_sim"):
+            idyn = sim.inverse_dynamics(q, qd, qdd, f_hand, m_hand)
+        else:
+            idyn = model._def.inverse_dynamics(q, qd, qdd, np.ascontiguousarray(model.gravity_base), f_hand, m_hand)
+        tau_req = idyn["tau_muscle"]
+        L, R = sim.muscle_paths(q)          # (n,), (n, ndof)
+        v = np.ascontiguousarray(-(R @ qd))  # dL/dt: moment arms are -dL/dq
+        P = self._axes @ sim.gh_directions(q).T  # (3, n): GH force (normal, major, minor) per unit tendon force
+        f0 = self._axes @ idyn["gh_force_without_muscles"]
+        amax = sim.get_max_activation()
+        self._rigid = sim.rigid_tendon_forces(L, v)
+        # CE lengths to start the elastic element's Newton solves from: the last solve's if the paths moved
+        # little since (a controller's next step), else the rigid tendon's.
+        if self._lce_guess is None or self._last_L is None or np.abs(L - self._last_L).max() > 0.01:
+            self._lce_guess = self._rigid[0].copy()
+        self._last_L = L
+        a0 = self.last_activation
+        if a0 is None or a0.shape != amax.shape:
+            a0 = np.minimum(0.05, amax)
+        a0 = np.clip(a0, 0.0, amax)
+
+        a, it, ok = self._sqp(a0, L, v, R, P, f0, tau_req, amax, slack=False)
+        if not ok:
+            a, it2, _ = self._sqp(a0, L, v, R, P, f0, tau_req, amax, slack=True)
+            it += it2
+        lce, F, _ = self._forces(L, v, a)
+        # Feasible only if the forces returned balance the moments (the SQP's own test was on its last evaluation).
+        ok = ok and float(np.abs(R.T @ F - tau_req).max()) < 1e-6
+        res = self._result(a, lce, F, L, v, R, P, f0, tau_req, amax, it, feasible=ok)
+        if ok:
+            self.last_activation = a
+        elif on_infeasible == "raise":
+            raise StaticOptimizationInfeasible(res.report, res)
+        return res
+
+    def _objective(self, a):
+        return float(self.weights @ (a ** 2 if self.criterion == "squared" else a ** 3))
+
+    def _sqp(self, a, L, v, R, P, f0, tau_req, amax, slack: bool):
+        """Sequential QP on the linearised muscle model; returns (a, iterations, converged). With slack the
+        moment rows get free residuals s (ndof,) and the objective is |s|^2 + 1e-4 sum w a^2: about the
+        closest the muscles can come (the infeasible case's report; the small activation term keeps the QP's
+        conditioning at 1e4, a 1e12 ratio stalled ProxQP)."""
+        n, nq = self.model.n_elements, self.model.n_dofs
+        C_rows = self._gh_rows
+        n_in = C_rows.shape[0]
+        qp = self._qp_object(slack, n_in)
+        w = self.weights
+        a = a.copy()
+        lin = self.tendon == "rigid" and self.criterion == "squared" and not slack
+        converged = False
+        squared_first = self.criterion == "cubed" and self.last_activation is None and not slack
+        # The element's force is piecewise smooth in a: with the fibre moving, the damper's low-activation floor
+        # (muscle.cc) puts a kink at a f(lce) = 0.02, where Newton's linearisation can cycle between its two
+        # sides. Once the moment residual stops halving, the slopes are taken over +-1e-3 in activation (a
+        # kink inside gets the mean of its sides); if it stalls again a proximal term mu sum w (a' - a)^2 is
+        # added to the QP's objective, mu growing by 4 at each further stall. The linearisation still passes
+        # through F(a), so a fixed point balances the moments exactly; these only change how it is reached.
+        mu = 0.0
+        stalls = 0
+        last_resid = np.inf
+        step = np.inf
+        qps = 0
+        from proxsuite import proxqp  # noqa: PLC0415 (a dependency, imported where the solver runs)
+        for _ in range(self.max_iterations + 1):
+            lce, F, dF = self._forces(L, v, a)
+            resid = float(np.abs(R.T @ F - tau_req).max())
+            if slack:
+                if step < 1e-9:
+                    break
+            elif lin and qps:
+                converged = resid < 1e-6
+                break
+            elif not squared_first and resid < MOMENT_TOLERANCE and step < 1e-6:
+                converged = True
+                break
+            if qps == self.max_iterations:
+                break
+            if qps > 1 and resid > MOMENT_TOLERANCE and resid > 0.5 * last_resid:
+                stalls += 1
+                if stalls > 1:
+                    mu = 1.0 if mu == 0.0 else 4.0 * mu
+            last_resid = resid
+            if stalls and self.tendon == "elastic":
+                # Slopes over +-1e-3 in activation (one-sided at a bound): a kink within that width gets the
+                # mean of its two sides, so the iterates stop jumping across it.
+                h = 1e-3
+                lo_a, hi_a = np.maximum(a - h, 0.0), a + h
+                guess = self._lce_guess
+                _, F_hi, _ = self._sim.steady_forces(L, v, hi_a, lce)
+                _, F_lo, _ = self._sim.steady_forces(L, v, lo_a, lce)
+                self._lce_guess = guess
+                wide = hi_a > lo_a
+                dF = np.where(wide, (F_hi - F_lo) / np.where(wide, hi_a - lo_a, 1.0), dF)
+            # Linearised moments: R^T (F + dF (a' - a)) = tau_req.
+            A = R.T * dF                      # (ndof, n)
+            b = tau_req - R.T @ F + A @ a
+            # Linearised GH force (normal, major, minor) = f0 + P (F + dF (a' - a)).
+            Cg = (C_rows @ P) * dF            # (n_in, n)
+            ug = -(C_rows @ (f0 + P @ F - (P * dF) @ a))
+            if slack:
+                H = np.zeros((n + nq, n + nq))
+                H[np.arange(n), np.arange(n)] = 2e-4 * w
+                H[np.arange(n, n + nq), np.arange(n, n + nq)] = 2.0
+                g = np.zeros(n + nq)
+                A_ = np.hstack([A, np.eye(nq)])
+                C_ = np.hstack([Cg, np.zeros((n_in, nq))])
+                lbox = np.concatenate([np.zeros(n), -_INF * np.ones(nq)])
+                ubox = np.concatenate([amax, _INF * np.ones(nq)])
+            else:
+                if self.criterion == "squared" or squared_first:
+                    h = 2.0 * w
+                    g = np.zeros(n)
+                else:  # cubed: Newton's quadratic of sum w a^3 about a (its Hessian floored; fixed point unchanged)
+                    h = 6.0 * w * np.maximum(a, 1e-3)
+                    g = 3.0 * w * a ** 2 - h * a
+                if mu:
+                    h = h + 2.0 * mu * w
+                    g = g - 2.0 * mu * w * a
+                H = np.diag(h)
+                A_, C_, lbox, ubox = A, Cg, np.zeros(n), amax
+            l_in = np.full(n_in, -_INF)
+            key = "_qp_slack" if slack else "_qp"
+            if not self._initialised[key]:
+                qp.init(H, g, A_, b, C_ if n_in else None, l_in if n_in else None, ug if n_in else None, lbox, ubox)
+                self._initialised[key] = True
+            else:
+                qp.update(H, g, A_, b, C_ if n_in else None, l_in if n_in else None, ug if n_in else None, lbox, ubox,
+                          update_preconditioner=False)
+            qp.solve()
+            qps += 1
+            if qp.results.info.status != proxqp.PROXQP_SOLVED and not slack:
+                return a, qps, False
+            a_new = np.clip(qp.results.x[:n], 0.0, amax)
+            step = float(np.abs(a_new - a).max())
+            a = a_new
+            if squared_first:  # cubed from a cold start: the squared optimum first, then Newton on the cubes
+                squared_first = False
+                step = np.inf
+        if not slack and not converged:
+            _, F1, _ = self._forces(L, v, a)
+            converged = float(np.abs(R.T @ F1 - tau_req).max()) < 1e-6
+        it = qps
+        return a, it, converged
+
+    def _result(self, a, lce, F, L, v, R, P, f0, tau_req, amax, it, feasible):
+        model = self.model
+        tau = R.T @ F
+        resid = tau - tau_req
+        gh_local = f0 + P @ F              # (normal, major, minor)
+        gh_force = self._axes.T @ gh_local  # scapula frame (orthonormal axes)
+        stab = float(model.gh_rim(gh_force)["gh_stab"])
+        names = model.element_names
+        upper = tuple(names[i] for i in np.flatnonzero((amax > 0) & (a >= amax - 1e-6)))
+        gh_active = bool(self._gh_rows.shape[0] and np.max(self._gh_rows[:-1] @ gh_local) > -1e-6 * max(1.0, abs(gh_local[0])))
+        elastic_resid = None
+        if self.tendon == "rigid":
+            _, Fe, _ = self._sim.steady_forces(L, v, a, self._rigid[0])
+            elastic_resid = R.T @ Fe - tau_req
+        report = ""
+        if not feasible:
+            bad = [(model.dof_names[j], resid[j]) for j in np.flatnonzero(np.abs(resid) > 1e-6)]
+            lines = [f"static optimisation infeasible: the muscles cannot supply the required moments"
+                     + (f" with GHstab <= {self.gh_stab_max:g}" if self.gh_stab_max is not None else "")
+                     + f" (closest solution after {it} iterations):",
+                     "  residual moment (achieved - required) per DOF: "
+                     + (", ".join(f"{d} {r:+.4g} N m" for d, r in bad) or "none above 1e-6 N m")]
+            paralysed_dofs = [model.dof_names[j] for j in range(model.n_dofs)
+                              if not np.any((np.abs(R[:, j]) > 1e-9) & (amax > 0))]
+            if paralysed_dofs:
+                lines.append(f"  no active element crosses {', '.join(paralysed_dofs)} (all paralysed)")
+            lines.append(f"  elements at their upper bound (max_activation): {len(upper)}"
+                         + (f" ({', '.join(upper[:12])}{', ...' if len(upper) > 12 else ''})" if upper else ""))
+            if self.gh_stab_max is not None:
+                lines.append(f"  GH bound {'binding' if gh_active else 'not binding'} (GHstab of this solution {stab:.4g}, "
+                             f"bound {self.gh_stab_max:g}"
+                             + ("; not even the bound can be met: the GH force of the loads and passive forces "
+                                "alone leaves it" if stab > self.gh_stab_max + 1e-9 else "") + ")")
+            report = "\n".join(lines)
+        return StaticOptimizationResult(
+            activation=a, lce=np.asarray(lce), force=np.asarray(F), tau_required=tau_req, tau_muscle=tau,
+            residual=resid, gh_force=gh_force, gh_stab=stab, feasible=feasible, iterations=it,
+            objective=self._objective(a), criterion=self.criterion, tendon=self.tendon, gh_stab_max=self.gh_stab_max,
+            at_upper_bound=upper, gh_bound_active=gh_active, elastic_residual=elastic_resid, report=report,
+            fibre_velocity=v)
+
+
+def static_optimization(arm_or_model, q, qdot=0.0, qddot=0.0, hand_load=None, gh_stab_max=None, weights=None,
+                        criterion: str = "squared", tendon: str = "elastic", on_infeasible: str = "raise"):
+    """Per-element activations (n,) in [0, max_activation] whose muscle forces supply the inverse dynamics'
+    moments at (q, qdot, qddot) with the hand load, minimising sum w_i a_i^2 (criterion="cubed": sum w_i a_i^3),
+    with GHstab <= gh_stab_max if given (StaticOptimizer has the details and a warm-started loop).
+
+    Returns a StaticOptimizationResult (activation, lce, force, moments, residual, gh_stab...). Raises
+    StaticOptimizationInfeasible (a ValueError, .result holds the closest solution and .report names the DOFs
+    with residual moments and the binding constraints) when no activations within the bounds supply the moments,
+    unless on_infeasible="return". ValueError for NaN or wrongly shaped q/qdot/qddot, gh_stab_max <= 0, bad
+    weights. Sources: docs/control.md."""
+    so = StaticOptimizer(arm_or_model, gh_stab_max=gh_stab_max, weights=weights, criterion=criterion, tendon=tendon)
+    return so.solve(q, qdot, qddot, hand_load, on_infeasible=on_infeasible)
