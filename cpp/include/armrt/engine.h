@@ -17,6 +17,7 @@
 //   stimulation.cc   FES channels -> recruitment, Ding calcium/force/fatigue -> element activation targets
 //   stimulation_map.cc a lab's stimulation map (JSON/TOML) -> StimulationMap, the electrode kinds' defaults
 //   kinematics.cc    outputs derived from q: thorax-humerus angles
+//   linearize.cc     df/dx, df/du of forward() and A = dx+/dx, B = dx+/du of one ROS2 step
 #pragma once
 
 #include <cstdint>
@@ -155,6 +156,35 @@ int step_ros2_adaptive(const Model& m, Data& d, Ros2Workspace& w, double h, bool
 // forward(m, d, x, xdot, ..., &jac) at the same x: it reads what that evaluation left in jac. Adds the
 // element-steps it changed to d.limited_fibre_steps.
 void limit_fibre_overshoot(const Model& m, Data& d, StepJacobian& jac, const double* x, const double* xdot, double h);
+
+// ---- linearize.cc
+// The full tangent of forward() at one state: the structured Jacobian (jac, as forward() fills it: no fibre
+// limiter) and the mechanical terms it leaves out.
+struct ForwardTangent {
+  StepJacobian jac;
+  std::array<double, kMaxElements> force{};                     // N, tendon forces at the state
+  std::array<double, kMaxDofs * kMaxDofs> dqdd_dq{};            // 1/s^2, full d qdd/dq, nq x nq row-major
+  std::array<double, kMaxDofs * kMaxDofs> dqdd_dqd{};           // 1/s, full d qdd/d qd
+  std::array<double, kMaxDofs * kMaxElements> accel_per_force{};  // rad/s^2/N, M^-1 R^T by DOF (stride kMaxElements)
+  std::array<double, kMaxElements> act_rate_du{};               // 1/s, d(da/dt)/du
+  std::array<double, kMaxElements> act_rate_dlag{};             // 1/s, d(c1 u + c2)/du
+  std::array<double, kMaxDofs * kMaxElements> scratch_moment_arm{};  // m, paths at the difference points
+};
+// What linearize() works in: fixed size (about 0.3 MB), so no call allocates.
+struct LinearizeWorkspace {
+  ForwardTangent at_x, at_x2;  // the tangent at x and at the second stage x2 = x + h k1
+  StepJacobian step_jacobian;  // the step's own J (fibre limiter applied) and its factorisation
+  StateVec f{}, k1{}, x2{}, f2{}, k2{};  // the step's stages, as ros2.cc forms them
+  StateVec r{}, dk1{}, dk2{}, y{};       // one column's right-hand side and stage derivatives
+};
+// At d.x with d's excitation u (num_elements, as the dynamics use it) and loads: df/dx (ns x ns, row-major,
+// ns = state_size) and df/du (ns x num_elements) of forward(); with A non-null also A = dx+/dx (ns x ns) and
+// B = dx+/du (ns x num_elements) of one ROS2 step of h (s) taken with exact paths at both stages (a step from a
+// state set from outside), its matrix W = I - h gamma J frozen, the fibre limiter's stiffening included in W.
+// d's state, inputs and statistics are unchanged. Throws std::invalid_argument when d has a stimulation map (the
+// driven elements follow the stimulation stage's memory, not part of x) or for h <= 0.
+void linearize(const Model& m, Data& d, LinearizeWorkspace& w, double h, double* dfdx, double* dfdu, double* A,
+               double* B);
 
 // ---- kinematics.cc
 // Thorax-humerus angles (rad): plane of elevation, elevation, axial rotation (Y-Z-Y sequence in the

@@ -1,0 +1,235 @@
+// linearize.cc: (model, data at x with its excitation u and loads, h) -> df/dx, df/du of forward() at x and
+// A = dx+/dx, B = dx+/du of one ROS2 step of h from x (exact paths at both stages, as a step from a state set
+// from outside takes), with the step's matrix W = I - h gamma J frozen (a W-method's view of it).
+// df/dx is the structured Jacobian's exact per-element blocks plus the mechanical terms the step leaves out
+// (gravity, Coriolis, dM/dq, moment-arm derivatives, the hand load's J^T F), taken by central differences of the
+// skeleton and path stages with the tendon forces held; docs/linearize.md derives A, B and states the kinks.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "armrt/engine.h"
+#include "armrt/step_jacobian.h"
+#include "dof_dispatch.h"
+#include "moment_arm_dot.h"
+
+namespace armrt {
+
+using detail::moment_arm_dot;
+
+namespace {
+
+// Central-difference steps of the mechanical block: small enough that the truncation error (eps^2 times the
+// third derivative) is below round-off, large enough that round-off (1e-16 qdd / eps) stays near 1e-10 relative.
+constexpr double kJointAngleStep = 1e-6;     // rad
+constexpr double kJointVelocityStep = 1e-6;  // rad/s
+
+// qdd (rad/s^2) at (q, qd) with the tendon forces F (N) held, paths L, R at q given (R by DOF): the skeleton stage
+// with every q-dependent generalised force (R^T F, passive joints, hand load, girdle) as forward() sums them.
+void held_force_acceleration(const Model& m, const Data& d, const double* q, const double* qd, const double* R,
+                             const double* force, double* qdd) {
+  const int nq = m.num_dofs, n = m.num_elements;
+  double tau_muscle[kMaxDofs], tau_passive[kMaxDofs], tau_ext[kMaxDofs], tau_girdle[kMaxDofs];
+  double f_ext[3], t_ext[3];
+  generalised_force(R, force, n, nq, tau_muscle, m.dof_elements_begin.data(), m.dof_elements_end.data());
+  passive_joint_torque(*m.def, q, qd, tau_passive);
+  external_load(m, q, d.hand_force.data(), d.hand_moment.data(), f_ext, t_ext, tau_ext);
+  if (m.def->girdle) girdle_forces(m, q, tau_girdle, nullptr, nullptr);
+  else std::fill(tau_girdle, tau_girdle + nq, 0.0);
+  double tau[kMaxDofs], M[kMaxDofs * kMaxDofs];
+  for (int j = 0; j < nq; ++j) tau[j] = tau_muscle[j] + tau_passive[j] + tau_ext[j] + tau_girdle[j];
+  skeleton_dynamics(m, d.settings.gravity.data(), q, qd, tau, M, qdd);
+}
+
+// The full tangent of forward() at x into t (xdot: forward()'s derivative there).
+void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, double* xdot) {
+  const int nq = m.num_dofs, n = m.num_elements;
+  const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
+  StepJacobian& jac = t.jac;
+  forward(m, d, x, xdot, false, &jac);
+  // The tendon forces at x: the muscle stage again, without its derivatives (forward() keeps them local).
+  double act_dot[kMaxElements], lce_dot[kMaxElements], tau_muscle[kMaxDofs];
+  muscle_dynamics(m, d.muscles, d.excitation.data(), jac.muscle_length.data(), jac.moment_arm.data(), x + ia, x + il,
+                  act_dot, lce_dot, t.force.data(), tau_muscle, nullptr, nullptr);
+  const double* q = x + iq;
+  const double* qd = x + iqd;
+  const double* R = jac.moment_arm.data();
+  // d qdd/dq with the forces held (gravity, Coriolis, dM/dq, dR/dq^T F, passive, hand load, girdle) and
+  // d qdd/dqd (passive damping, Coriolis), by central differences; column k at [j * nq + k].
+  double qp[kMaxDofs], qdp[kMaxDofs], ap[kMaxDofs], am[kMaxDofs];
+  double Lp[kMaxElements];
+  double* Rp = t.scratch_moment_arm.data();
+  for (int k = 0; k < nq; ++k) {
+    std::copy(q, q + nq, qp);
+    qp[k] = q[k] + kJointAngleStep;
+    m.def->muscle_paths(qp, Lp, Rp);
+    held_force_acceleration(m, d, qp, qd, Rp, t.force.data(), ap);
+    qp[k] = q[k] - kJointAngleStep;
+    m.def->muscle_paths(qp, Lp, Rp);
+    held_force_acceleration(m, d, qp, qd, Rp, t.force.data(), am);
+    for (int j = 0; j < nq; ++j) t.dqdd_dq[j * nq + k] = (ap[j] - am[j]) / (2 * kJointAngleStep);
+    std::copy(qd, qd + nq, qdp);
+    qdp[k] = qd[k] + kJointVelocityStep;
+    held_force_acceleration(m, d, q, qdp, R, t.force.data(), ap);
+    qdp[k] = qd[k] - kJointVelocityStep;
+    held_force_acceleration(m, d, q, qdp, R, t.force.data(), am);
+    for (int j = 0; j < nq; ++j) t.dqdd_dqd[j * nq + k] = (ap[j] - am[j]) / (2 * kJointVelocityStep);
+  }
+  // G = M^-1 R^T (by DOF, stride kMaxElements): how a tendon force moves qdd. M^-1 column by column.
+  double Minv[kMaxDofs * kMaxDofs], e[kMaxDofs], col[kMaxDofs];
+  for (int k = 0; k < nq; ++k) {
+    std::fill(e, e + nq, 0.0);
+    e[k] = 1.0;
+    solve_spd(jac.mass_matrix.data(), e, nq, col);
+    for (int j = 0; j < nq; ++j) Minv[j * nq + k] = col[j];
+  }
+  double* G = t.accel_per_force.data();
+  std::fill(t.accel_per_force.begin(), t.accel_per_force.end(), 0.0);
+  for (int j = 0; j < nq; ++j)
+    for (int k = 0; k < nq; ++k) {
+      const double c = Minv[j * nq + k];
+      const double* rk = R + k * kMaxElements;
+      double* gj = G + j * kMaxElements;
+      for (int i = 0; i < n; ++i) gj[i] += c * rk[i];
+    }
+  // The tendon forces' own dependence on q through L (dL/dq = -R): - G diag(dF/dL) R^T.
+  for (int j = 0; j < nq; ++j)
+    for (int k = 0; k < nq; ++k) {
+      const double* gj = G + j * kMaxElements;
+      const double* rk = R + k * kMaxElements;
+      double s = 0;
+      for (int i = 0; i < n; ++i) s += gj[i] * jac.dforce_dL[i] * rk[i];
+      t.dqdd_dq[j * nq + k] -= s;
+    }
+  // d(activation rate)/du = d/du [(c1 u + c2)(u - a)] = c1 (u - a) + c1 u + c2, u capped at [0, max_activation]:
+  // zero where the cap holds u, and the derivative from inside the range at its ends (u = 0 included).
+  const MuscleArrays& mc = d.muscles;
+  for (int i = 0; i < n; ++i) {
+    const double u_raw = d.excitation[i];
+    const double u = capped_excitation(u_raw, mc.max_activation[i]);
+    const bool held = u_raw < 0.0 || u_raw > mc.max_activation[i] ||
+                      (u_raw == mc.max_activation[i] && mc.max_activation[i] <= 0.0);
+    t.act_rate_du[i] = held ? 0.0 : mc.c1[i] * (u - x[ia + i]) + mc.c1[i] * u + mc.c2[i];
+    t.act_rate_dlag[i] = held ? 0.0 : mc.c1[i];  // d(c1 u + c2)/du: how W's activation rows move with u
+  }
+}
+
+// out = J v for the full tangent t (state vectors).
+template <int nq>
+void tangent_apply(const Model& m, const ForwardTangent& t, const double* v, double* out) {
+  const int n = m.num_elements;
+  const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
+  const StepJacobian& jac = t.jac;
+  double Rv[kMaxElements], fl[kMaxElements];
+  moment_arm_dot<nq>(m, jac.moment_arm.data(), v + iq, Rv);
+#pragma omp simd
+  for (int i = 0; i < n; ++i) {
+    out[il + i] = -jac.dvel_dL[i] * Rv[i] + jac.dvel_dlce[i] * v[il + i] + jac.dvel_da[i] * v[ia + i];
+    out[ia + i] = -jac.act_rate[i] * v[ia + i];
+    fl[i] = jac.dforce_dlce[i] * v[il + i];
+  }
+  double tau[nq];
+  generalised_force(t.accel_per_force.data(), fl, n, nq, tau);
+  for (int j = 0; j < nq; ++j) {
+    double s = tau[j];
+    for (int k = 0; k < nq; ++k) s += t.dqdd_dq[j * nq + k] * v[iq + k] + t.dqdd_dqd[j * nq + k] * v[iqd + k];
+    out[iqd + j] = s;
+  }
+  for (int j = 0; j < nq; ++j) out[iq + j] = v[iqd + j];
+}
+
+// df/dx (ns x ns) and df/du (ns x num_elements), row-major, from the tangent t.
+void write_dense(const Model& m, const ForwardTangent& t, double* dfdx, double* dfdu) {
+  const int nq = m.num_dofs, n = m.num_elements, ns = state_size(m);
+  const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
+  const StepJacobian& jac = t.jac;
+  std::fill(dfdx, dfdx + static_cast<long>(ns) * ns, 0.0);
+  std::fill(dfdu, dfdu + static_cast<long>(ns) * n, 0.0);
+  for (int j = 0; j < nq; ++j) {
+    dfdx[(iq + j) * ns + iqd + j] = 1.0;
+    double* row = dfdx + static_cast<long>(iqd + j) * ns;
+    for (int k = 0; k < nq; ++k) {
+      row[iq + k] = t.dqdd_dq[j * nq + k];
+      row[iqd + k] = t.dqdd_dqd[j * nq + k];
+    }
+    for (int i = 0; i < n; ++i) row[il + i] = t.accel_per_force[j * kMaxElements + i] * jac.dforce_dlce[i];
+  }
+  for (int i = 0; i < n; ++i) {
+    double* row = dfdx + static_cast<long>(il + i) * ns;
+    for (int k = 0; k < nq; ++k) row[iq + k] = -jac.dvel_dL[i] * jac.moment_arm[k * kMaxElements + i];
+    row[il + i] = jac.dvel_dlce[i];
+    row[ia + i] = jac.dvel_da[i];
+    dfdx[static_cast<long>(ia + i) * ns + ia + i] = -jac.act_rate[i];
+    dfdu[static_cast<long>(ia + i) * n + i] = t.act_rate_du[i];
+  }
+}
+
+template <int nq>
+void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, const double* dfdx, double* A,
+                      double* B) {
+  const int n = m.num_elements, ns = state_size(m);
+  const int ia = act_offset(m);
+  const double hg = kRos2Gamma * h;
+  const double* x = d.x.data();
+  // The step itself: W from the tangent at x, stiffened as the step stiffens it (its count of limited steps kept),
+  // k1, x2 = x + h k1, the tangent at x2, k2.
+  StepJacobian& W = w.step_jacobian;
+  W = w.at_x.jac;
+  const long limited = d.limited_fibre_steps;
+  limit_fibre_overshoot(m, d, W, x, w.f.data(), h);
+  d.limited_fibre_steps = limited;
+  jacobian_factor(m, W, hg);
+  jacobian_solve(m, W, w.f.data(), w.k1.data());
+  for (int k = 0; k < ns; ++k) w.x2[k] = x[k] + h * w.k1[k];
+  tangent_at(m, d, w.x2.data(), w.at_x2, w.f2.data());
+  for (int k = 0; k < ns; ++k) w.f2[k] -= 2.0 * w.k1[k];
+  jacobian_solve(m, W, w.f2.data(), w.k2.data());
+  // Column by column (W frozen): dk1 = W^-1 (J(x) e), dk2 = W^-1 (J(x2) (e + h dk1) - 2 dk1),
+  // A e = e + h (3/2 dk1 + 1/2 dk2).
+  double* r = w.r.data();
+  double* dk1 = w.dk1.data();
+  double* dk2 = w.dk2.data();
+  double* y = w.y.data();
+  for (int c = 0; c < ns; ++c) {
+    for (int k = 0; k < ns; ++k) r[k] = dfdx[static_cast<long>(k) * ns + c];
+    jacobian_solve(m, W, r, dk1);
+    for (int k = 0; k < ns; ++k) y[k] = h * dk1[k];
+    y[c] += 1.0;
+    tangent_apply<nq>(m, w.at_x2, y, r);
+    for (int k = 0; k < ns; ++k) r[k] -= 2.0 * dk1[k];
+    jacobian_solve(m, W, r, dk2);
+    for (int k = 0; k < ns; ++k) A[static_cast<long>(k) * ns + c] = h * (1.5 * dk1[k] + 0.5 * dk2[k]);
+    A[static_cast<long>(c) * ns + c] += 1.0;
+  }
+  // B: u enters f through the activation rows and W through their rate c1 u + c2 (d W_aa/du = hg c1):
+  // dk1 = W^-1 (df/du - dW/du k1), dk2 = W^-1 (J(x2) h dk1 + df/du(x2) - 2 dk1 - dW/du k2), B = h (3/2 dk1 + 1/2 dk2).
+  for (int i = 0; i < n; ++i) {
+    std::fill(r, r + ns, 0.0);
+    r[ia + i] = w.at_x.act_rate_du[i] - hg * w.at_x.act_rate_dlag[i] * w.k1[ia + i];
+    jacobian_solve(m, W, r, dk1);
+    for (int k = 0; k < ns; ++k) y[k] = h * dk1[k];
+    tangent_apply<nq>(m, w.at_x2, y, r);
+    for (int k = 0; k < ns; ++k) r[k] -= 2.0 * dk1[k];
+    r[ia + i] += w.at_x2.act_rate_du[i] - hg * w.at_x2.act_rate_dlag[i] * w.k2[ia + i];
+    jacobian_solve(m, W, r, dk2);
+    for (int k = 0; k < ns; ++k) B[static_cast<long>(k) * n + i] = h * (1.5 * dk1[k] + 0.5 * dk2[k]);
+  }
+}
+
+}  // namespace
+
+void linearize(const Model& m, Data& d, LinearizeWorkspace& w, double h, double* dfdx, double* dfdu, double* A,
+               double* B) {
+  if (d.stimulation_map.num_channels > 0)
+    throw std::invalid_argument(
+        "linearize: the arm has a stimulation map; the elements it drives follow the stimulation stage's memory, "
+        "which is not part of the state x, so dx+/dx over x alone would leave it out");
+  tangent_at(m, d, d.x.data(), w.at_x, w.f.data());
+  write_dense(m, w.at_x, dfdx, dfdu);
+  if (!A) return;
+  if (!(h > 0.0)) throw std::invalid_argument("linearize: the step h must be > 0 s");
+  detail::dispatch_dofs(m.num_dofs, [&](auto N) { linearize_step_n<N>(m, d, w, h, dfdx, A, B); });
+}
+
+}  // namespace armrt
