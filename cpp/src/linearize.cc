@@ -1,6 +1,7 @@
 // linearize.cc: (model, data at x with its excitation u and loads, h) -> df/dx, df/du of forward() at x and
 // A = dx+/dx, B = dx+/du of one ROS2 step of h from x (exact paths at both stages, as a step from a state set
-// from outside takes), with the step's matrix W = I - h gamma J frozen (a W-method's view of it).
+// from outside takes), differentiated with its matrix W = I - h gamma J moving too (J's own derivatives by central
+// differences: per element all at once, per joint one by one).
 // df/dx is the structured Jacobian's exact per-element blocks plus the mechanical terms the step leaves out
 // (gravity, Coriolis, dM/dq, moment-arm derivatives, the hand load's J^T F), taken by central differences of the
 // skeleton and path stages with the tendon forces held; docs/linearize.md derives A, B and states the kinks.
@@ -165,6 +166,94 @@ void write_dense(const Model& m, const ForwardTangent& t, double* dfdx, double* 
   }
 }
 
+// The step's own J at x: forward()'s Jacobian stiffened by the fibre limiter as ros2.cc does (d's count of limited
+// steps kept); xdot = f(x).
+void step_jacobian_at(const Model& m, Data& d, const double* x, double h, StepJacobian& jac, double* xdot) {
+  forward(m, d, x, xdot, false, &jac);
+  const auto limited = d.limited_fibre_steps;
+  limit_fibre_overshoot(m, d, jac, x, xdot, h);
+  d.limited_fibre_steps = limited;
+}
+
+// out = J v for a step's structured J (the matrix ros2.cc solves with: moment-arm derivatives, gravity, Coriolis and
+// dM/dq left out).
+template <int nq>
+void structured_apply(const Model& m, const StepJacobian& jac, const double* v, double* out) {
+  const int n = m.num_elements;
+  const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
+  double Rv[kMaxElements], fl[kMaxElements];
+  moment_arm_dot<nq>(m, jac.moment_arm.data(), v + iq, Rv);
+  for (int i = 0; i < n; ++i) {
+    out[il + i] = -jac.dvel_dL[i] * Rv[i] + jac.dvel_dlce[i] * v[il + i] + jac.dvel_da[i] * v[ia + i];
+    out[ia + i] = -jac.act_rate[i] * v[ia + i];
+    fl[i] = jac.dforce_dlce[i] * v[il + i] - jac.dforce_dL[i] * Rv[i];
+  }
+  double tau[nq];
+  generalised_force(jac.moment_arm.data(), fl, n, nq, tau, m.dof_elements_begin.data(), m.dof_elements_end.data());
+  for (int j = 0; j < nq; ++j) tau[j] += jac.dtau_passive_dq[j] * v[iq + j] + jac.dtau_passive_dqd[j] * v[iqd + j];
+  if (m.def->girdle)
+    for (int j = 0; j < nq; ++j)
+      for (int k = 0; k < nq; ++k) tau[j] += jac.dtau_girdle_dq[j * nq + k] * v[iq + k];
+  solve_spd(jac.mass_matrix.data(), tau, nq, out + iqd);
+  for (int j = 0; j < nq; ++j) out[iq + j] = v[iqd + j];
+}
+
+// The five per-element entries of J that move with the state (and u, through the fibre limiter).
+constexpr int kElementEntries = 5;
+void element_entries(const StepJacobian& jac, int i, double* e) {
+  e[0] = jac.dvel_dL[i];
+  e[1] = jac.dvel_dlce[i];
+  e[2] = jac.dvel_da[i];
+  e[3] = jac.dforce_dL[i];
+  e[4] = jac.dforce_dlce[i];
+}
+
+// d(entries)/dz_i for z = lce (block 0), activation (1) or excitation (2) of every element at once: element i's
+// entries depend on its own L, lce, a, u (and on q, qd), so one perturbation of all elements gives every diagonal.
+// Central differences for lce and a; one-sided into the range for u (capped at [0, max_activation]).
+void element_derivatives(const Model& m, Data& d, LinearizeWorkspace& w, double h, int block,
+                         std::array<std::array<double, kMaxElements>, kElementEntries>& out) {
+  const int n = m.num_elements, ns = state_size(m);
+  const int off = block == 0 ? lce_offset(m) : act_offset(m);
+  const MuscleArrays& mc = d.muscles;
+  double eps[kMaxElements];
+  for (int i = 0; i < n; ++i)
+    eps[i] = block == 0 ? 1e-6 / mc.inv_lceopt[i]
+                        : (block == 1 ? 1e-6 : (d.excitation[i] < 0.5 * mc.max_activation[i] ? 1e-6 : -1e-6));
+  const double* x = d.x.data();
+  if (block < 2) {
+    for (int sgn = 0; sgn < 2; ++sgn) {
+      std::copy(x, x + ns, w.x_shift.begin());
+      for (int i = 0; i < n; ++i) w.x_shift[off + i] += sgn == 0 ? eps[i] : -eps[i];
+      step_jacobian_at(m, d, w.x_shift.data(), h, sgn == 0 ? w.jac_plus : w.jac_minus, w.f_shift.data());
+    }
+  } else {
+    double u_held[kMaxElements];
+    std::copy(d.excitation.begin(), d.excitation.begin() + n, u_held);
+    for (int i = 0; i < n; ++i) d.excitation[i] = u_held[i] + eps[i];
+    step_jacobian_at(m, d, x, h, w.jac_plus, w.f_shift.data());
+    std::copy(u_held, u_held + n, d.excitation.begin());
+  }
+  for (int i = 0; i < n; ++i) {
+    double ep[kElementEntries], em[kElementEntries];
+    element_entries(w.jac_plus, i, ep);
+    element_entries(block < 2 ? w.jac_minus : w.step_jacobian, i, em);
+    const double step = block < 2 ? 2 * eps[i] : eps[i];
+    for (int k = 0; k < kElementEntries; ++k) out[k][i] = (ep[k] - em[k]) / step;
+  }
+}
+
+// r += hg (dJ/dz_i) k for element i's derivatives dJ (element_derivatives) and a stage vector k (R_k = R k_q):
+// the element's CE-velocity row and, through its tendon force, the joint accelerations (G = M^-1 R^T).
+void add_element_term(const Model& m, const ForwardTangent& t,
+                      const std::array<std::array<double, kMaxElements>, kElementEntries>& dJ, int i, double hg,
+                      const double* k, const double* R_k, double* r) {
+  const int nq = m.num_dofs, iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
+  r[il + i] += hg * (-dJ[0][i] * R_k[i] + dJ[1][i] * k[il + i] + dJ[2][i] * k[ia + i]);
+  const double df = hg * (-dJ[3][i] * R_k[i] + dJ[4][i] * k[il + i]);
+  for (int j = 0; j < nq; ++j) r[iqd + j] += t.accel_per_force[j * kMaxElements + i] * df;
+}
+
 template <int nq>
 void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, const double* dfdx, double* A,
                       double* B) {
@@ -176,7 +265,7 @@ void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, 
   // k1, x2 = x + h k1, the tangent at x2, k2.
   StepJacobian& W = w.step_jacobian;
   W = w.at_x.jac;
-  const long limited = d.limited_fibre_steps;
+  const auto limited = d.limited_fibre_steps;
   limit_fibre_overshoot(m, d, W, x, w.f.data(), h);
   d.limited_fibre_steps = limited;
   jacobian_factor(m, W, hg);
@@ -185,33 +274,73 @@ void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, 
   tangent_at(m, d, w.x2.data(), w.at_x2, w.f2.data());
   for (int k = 0; k < ns; ++k) w.f2[k] -= 2.0 * w.k1[k];
   jacobian_solve(m, W, w.f2.data(), w.k2.data());
-  // Column by column (W frozen): dk1 = W^-1 (J(x) e), dk2 = W^-1 (J(x2) (e + h dk1) - 2 dk1),
-  // A e = e + h (3/2 dk1 + 1/2 dk2).
+  // How J moves: per element with its lce, a and u; with each joint angle and velocity, applied to k1 and k2.
+  element_derivatives(m, d, w, h, 0, w.dJ_dlce);
+  element_derivatives(m, d, w, h, 1, w.dJ_da);
+  element_derivatives(m, d, w, h, 2, w.dJ_du);
+  moment_arm_dot<nq>(m, W.moment_arm.data(), w.k1.data() + q_offset(m), w.R_k1.data());
+  moment_arm_dot<nq>(m, W.moment_arm.data(), w.k2.data() + q_offset(m), w.R_k2.data());
+  for (int c = 0; c < 2 * nq; ++c) {
+    const double eps = c < nq ? kJointAngleStep : kJointVelocityStep;
+    double p1[kMaxState], p2[kMaxState], m1[kMaxState], m2[kMaxState];
+    for (int sgn = 0; sgn < 2; ++sgn) {
+      std::copy(x, x + ns, w.x_shift.begin());
+      w.x_shift[c] += sgn == 0 ? eps : -eps;
+      StepJacobian& J = sgn == 0 ? w.jac_plus : w.jac_minus;
+      step_jacobian_at(m, d, w.x_shift.data(), h, J, w.f_shift.data());
+      structured_apply<nq>(m, J, w.k1.data(), sgn == 0 ? p1 : m1);
+      structured_apply<nq>(m, J, w.k2.data(), sgn == 0 ? p2 : m2);
+    }
+    for (int k = 0; k < ns; ++k) {
+      w.dJ_k1[c][k] = (p1[k] - m1[k]) / (2 * eps);
+      w.dJ_k2[c][k] = (p2[k] - m2[k]) / (2 * eps);
+    }
+  }
+  // Column by column: W k = f gives dk = W^-1 (df - dW k) with dW = -hg dJ:
+  // dk1 = W^-1 (J(x) e + hg dJ_e k1), dk2 = W^-1 (J(x2) (e + h dk1) - 2 dk1 + hg dJ_e k2), A e = e + h (3/2 dk1 + 1/2 dk2).
+  const int il = lce_offset(m);
   double* r = w.r.data();
   double* dk1 = w.dk1.data();
   double* dk2 = w.dk2.data();
   double* y = w.y.data();
   for (int c = 0; c < ns; ++c) {
     for (int k = 0; k < ns; ++k) r[k] = dfdx[static_cast<long>(k) * ns + c];
+    if (c < 2 * nq) {
+      for (int k = 0; k < ns; ++k) r[k] += hg * w.dJ_k1[c][k];
+    } else if (c < ia) {
+      add_element_term(m, w.at_x, w.dJ_dlce, c - il, hg, w.k1.data(), w.R_k1.data(), r);
+    } else {
+      add_element_term(m, w.at_x, w.dJ_da, c - ia, hg, w.k1.data(), w.R_k1.data(), r);
+    }
     jacobian_solve(m, W, r, dk1);
     for (int k = 0; k < ns; ++k) y[k] = h * dk1[k];
     y[c] += 1.0;
     tangent_apply<nq>(m, w.at_x2, y, r);
     for (int k = 0; k < ns; ++k) r[k] -= 2.0 * dk1[k];
+    if (c < 2 * nq) {
+      for (int k = 0; k < ns; ++k) r[k] += hg * w.dJ_k2[c][k];
+    } else if (c < ia) {
+      add_element_term(m, w.at_x, w.dJ_dlce, c - il, hg, w.k2.data(), w.R_k2.data(), r);
+    } else {
+      add_element_term(m, w.at_x, w.dJ_da, c - ia, hg, w.k2.data(), w.R_k2.data(), r);
+    }
     jacobian_solve(m, W, r, dk2);
     for (int k = 0; k < ns; ++k) A[static_cast<long>(k) * ns + c] = h * (1.5 * dk1[k] + 0.5 * dk2[k]);
     A[static_cast<long>(c) * ns + c] += 1.0;
   }
-  // B: u enters f through the activation rows and W through their rate c1 u + c2 (d W_aa/du = hg c1):
-  // dk1 = W^-1 (df/du - dW/du k1), dk2 = W^-1 (J(x2) h dk1 + df/du(x2) - 2 dk1 - dW/du k2), B = h (3/2 dk1 + 1/2 dk2).
+  // B: u enters f through the activation rows, W through their rate c1 u + c2 (d W_aa/du = hg c1) and through the
+  // fibre limiter (dJ_du): dk1 = W^-1 (df/du - dW/du k1), dk2 = W^-1 (J(x2) h dk1 + df/du(x2) - 2 dk1 - dW/du k2),
+  // B = h (3/2 dk1 + 1/2 dk2).
   for (int i = 0; i < n; ++i) {
     std::fill(r, r + ns, 0.0);
     r[ia + i] = w.at_x.act_rate_du[i] - hg * w.at_x.act_rate_dlag[i] * w.k1[ia + i];
+    add_element_term(m, w.at_x, w.dJ_du, i, hg, w.k1.data(), w.R_k1.data(), r);
     jacobian_solve(m, W, r, dk1);
     for (int k = 0; k < ns; ++k) y[k] = h * dk1[k];
     tangent_apply<nq>(m, w.at_x2, y, r);
     for (int k = 0; k < ns; ++k) r[k] -= 2.0 * dk1[k];
     r[ia + i] += w.at_x2.act_rate_du[i] - hg * w.at_x2.act_rate_dlag[i] * w.k2[ia + i];
+    add_element_term(m, w.at_x, w.dJ_du, i, hg, w.k2.data(), w.R_k2.data(), r);
     jacobian_solve(m, W, r, dk2);
     for (int k = 0; k < ns; ++k) B[static_cast<long>(k) * n + i] = h * (1.5 * dk1[k] + 0.5 * dk2[k]);
   }

@@ -176,11 +176,21 @@ struct LinearizeWorkspace {
   StepJacobian step_jacobian;  // the step's own J (fibre limiter applied) and its factorisation
   StateVec f{}, k1{}, x2{}, f2{}, k2{};  // the step's stages, as ros2.cc forms them
   StateVec r{}, dk1{}, dk2{}, y{};       // one column's right-hand side and stage derivatives
+  // How the step's J moves with x and u (W is not frozen: A and B differentiate the real step). Per element, the
+  // derivatives of (dvel_dL, dvel_dlce, dvel_da, dforce_dL, dforce_dlce) with the element's own lce, activation and
+  // excitation (each depends on its element's alone, so all elements are perturbed at once); per joint angle and
+  // velocity, dJ/dx_c k1 and dJ/dx_c k2 (central differences of the whole J, limiter included).
+  std::array<std::array<double, kMaxElements>, 5> dJ_dlce{}, dJ_da{}, dJ_du{};
+  std::array<StateVec, 2 * kMaxDofs> dJ_k1{}, dJ_k2{};
+  std::array<double, kMaxElements> R_k1{}, R_k2{};  // m/s, R k_q of the two stages per element
+  StepJacobian jac_plus, jac_minus;                 // J at the difference points
+  StateVec x_shift{}, f_shift{};
 };
 // At d.x with d's excitation u (num_elements, as the dynamics use it) and loads: df/dx (ns x ns, row-major,
 // ns = state_size) and df/du (ns x num_elements) of forward(); with A non-null also A = dx+/dx (ns x ns) and
 // B = dx+/du (ns x num_elements) of one ROS2 step of h (s) taken with exact paths at both stages (a step from a
-// state set from outside), its matrix W = I - h gamma J frozen, the fibre limiter's stiffening included in W.
+// state set from outside), W = I - h gamma J differentiated too (J's own derivatives by central differences, the
+// fibre limiter's stiffening included).
 // d's state, inputs and statistics are unchanged. Throws std::invalid_argument when d has a stimulation map (the
 // driven elements follow the stimulation stage's memory, not part of x) or for h <= 0.
 void linearize(const Model& m, Data& d, LinearizeWorkspace& w, double h, double* dfdx, double* dfdu, double* A,
