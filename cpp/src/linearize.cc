@@ -85,6 +85,7 @@ void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, dou
     solve_spd(jac.mass_matrix.data(), e, nq, col);
     for (int j = 0; j < nq; ++j) Minv[j * nq + k] = col[j];
   }
+  std::copy(Minv, Minv + nq * nq, t.inv_mass_matrix.begin());
   double* G = t.accel_per_force.data();
   std::fill(t.accel_per_force.begin(), t.accel_per_force.end(), 0.0);
   for (int j = 0; j < nq; ++j)
@@ -114,30 +115,6 @@ void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, dou
     t.act_rate_du[i] = held ? 0.0 : mc.c1[i] * (u - x[ia + i]) + mc.c1[i] * u + mc.c2[i];
     t.act_rate_dlag[i] = held ? 0.0 : mc.c1[i];  // d(c1 u + c2)/du: how W's activation rows move with u
   }
-}
-
-// out = J v for the full tangent t (state vectors).
-template <int nq>
-void tangent_apply(const Model& m, const ForwardTangent& t, const double* v, double* out) {
-  const int n = m.num_elements;
-  const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
-  const StepJacobian& jac = t.jac;
-  double Rv[kMaxElements], fl[kMaxElements];
-  moment_arm_dot<nq>(m, jac.moment_arm.data(), v + iq, Rv);
-#pragma omp simd
-  for (int i = 0; i < n; ++i) {
-    out[il + i] = -jac.dvel_dL[i] * Rv[i] + jac.dvel_dlce[i] * v[il + i] + jac.dvel_da[i] * v[ia + i];
-    out[ia + i] = -jac.act_rate[i] * v[ia + i];
-    fl[i] = jac.dforce_dlce[i] * v[il + i];
-  }
-  double tau[nq];
-  generalised_force(t.accel_per_force.data(), fl, n, nq, tau);
-  for (int j = 0; j < nq; ++j) {
-    double s = tau[j];
-    for (int k = 0; k < nq; ++k) s += t.dqdd_dq[j * nq + k] * v[iq + k] + t.dqdd_dqd[j * nq + k] * v[iqd + k];
-    out[iqd + j] = s;
-  }
-  for (int j = 0; j < nq; ++j) out[iq + j] = v[iqd + j];
 }
 
 // df/dx (ns x ns) and df/du (ns x num_elements), row-major, from the tangent t.
@@ -243,15 +220,211 @@ void element_derivatives(const Model& m, Data& d, LinearizeWorkspace& w, double 
   }
 }
 
-// r += hg (dJ/dz_i) k for element i's derivatives dJ (element_derivatives) and a stage vector k (R_k = R k_q):
-// the element's CE-velocity row and, through its tendon force, the joint accelerations (G = M^-1 R^T).
-void add_element_term(const Model& m, const ForwardTangent& t,
-                      const std::array<std::array<double, kMaxElements>, kElementEntries>& dJ, int i, double hg,
-                      const double* k, const double* R_k, double* r) {
-  const int nq = m.num_dofs, iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
-  r[il + i] += hg * (-dJ[0][i] * R_k[i] + dJ[1][i] * k[il + i] + dJ[2][i] * k[ia + i]);
-  const double df = hg * (-dJ[3][i] * R_k[i] + dJ[4][i] * k[il + i]);
-  for (int j = 0; j < nq; ++j) r[iqd + j] += t.accel_per_force[j * kMaxElements + i] * df;
+// ---- The column phase in tiles of kT columns: T[k * kT + t] is state entry k of the tile's column t.
+constexpr int kT = LinearizeWorkspace::kTile;
+
+// (I - hg J) k = r for a tile of right-hand sides: jacobian_solve's algebra (step_jacobian.cc) column-parallel, the
+// moment-arm sums over each element run's DOFs only (R is zero outside them).
+template <int nq>
+void solve_tile(const Model& m, const StepJacobian& jac, const double* r, double* k) {
+  const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
+  const double hg = jac.hg;
+  const double* R = jac.moment_arm.data();
+  double rhs[nq][kT] = {};
+  for (int a = 0; a < nq; ++a)
+    for (int b = 0; b < nq; ++b) {
+      const double mab = jac.mass_matrix[a * nq + b], kab = hg * jac.stiffness[a * nq + b];
+#pragma omp simd
+      for (int t = 0; t < kT; ++t) rhs[a][t] += mab * r[(iqd + b) * kT + t] + kab * r[(iq + b) * kT + t];
+    }
+  for (int run = 0; run < m.num_element_runs; ++run) {
+    const Model::ElementRun& er = m.element_runs[run];
+    for (int i = er.begin; i < std::min(er.end, m.num_elements); ++i) {
+      const double ia_i = jac.inv_act[i], il_i = jac.inv_lce[i], dvda = hg * jac.dvel_da[i];
+      const double fs = hg * jac.dforce_dlce[i];
+      double* ka = k + (ia + i) * kT;
+      double* p = k + (il + i) * kT;  // p until k_q is known
+      const double* ra = r + (ia + i) * kT;
+      const double* rl = r + (il + i) * kT;
+      double f[kT];
+#pragma omp simd
+      for (int t = 0; t < kT; ++t) {
+        ka[t] = ra[t] * ia_i;
+        p[t] = il_i * (rl[t] + dvda * ka[t]);
+        f[t] = fs * p[t];
+      }
+      for (int j = er.dof_lo; j <= er.dof_hi; ++j) {
+        const double rji = R[j * kMaxElements + i];
+#pragma omp simd
+        for (int t = 0; t < kT; ++t) rhs[j][t] += rji * f[t];
+      }
+    }
+  }
+  // LU solve of the Schur complement, column-parallel.
+  double y[nq][kT];
+  for (int a = 0; a < nq; ++a)
+    for (int t = 0; t < kT; ++t) y[a][t] = rhs[jac.schur_perm[a]][t];
+  const double* lu = jac.schur_lu.data();
+  for (int c = 0; c < nq; ++c)
+    for (int a = c + 1; a < nq; ++a) {
+      const double l = lu[a * nq + c];
+#pragma omp simd
+      for (int t = 0; t < kT; ++t) y[a][t] -= l * y[c][t];
+    }
+  double kq[nq][kT];
+  for (int c = nq - 1; c >= 0; --c) {
+    const double inv = jac.schur_inv_diag[c];
+    double* kqd = k + (iqd + c) * kT;
+#pragma omp simd
+    for (int t = 0; t < kT; ++t) kqd[t] = y[c][t] * inv;
+    for (int a = 0; a < c; ++a) {
+      const double u = lu[a * nq + c];
+#pragma omp simd
+      for (int t = 0; t < kT; ++t) y[a][t] -= u * kqd[t];
+    }
+  }
+  for (int a = 0; a < nq; ++a)
+#pragma omp simd
+    for (int t = 0; t < kT; ++t) {
+      kq[a][t] = r[(iq + a) * kT + t] + hg * k[(iqd + a) * kT + t];
+      k[(iq + a) * kT + t] = kq[a][t];
+    }
+  for (int run = 0; run < m.num_element_runs; ++run) {
+    const Model::ElementRun& er = m.element_runs[run];
+    for (int i = er.begin; i < std::min(er.end, m.num_elements); ++i) {
+      double rk[kT] = {};
+      for (int j = er.dof_lo; j <= er.dof_hi; ++j) {
+        const double rji = R[j * kMaxElements + i];
+#pragma omp simd
+        for (int t = 0; t < kT; ++t) rk[t] += rji * kq[j][t];
+      }
+      const double lq = jac.lce_from_q[i];
+      double* p = k + (il + i) * kT;
+#pragma omp simd
+      for (int t = 0; t < kT; ++t) p[t] -= lq * rk[t];
+    }
+  }
+}
+
+// out = J v for the full tangent t, a tile of columns (tangent_apply's algebra, column-parallel).
+template <int nq>
+void apply_tile(const Model& m, const ForwardTangent& tg, const double* v, double* out) {
+  const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
+  const StepJacobian& jac = tg.jac;
+  const double* R = jac.moment_arm.data();
+  double tau[nq][kT] = {};
+  for (int run = 0; run < m.num_element_runs; ++run) {
+    const Model::ElementRun& er = m.element_runs[run];
+    for (int i = er.begin; i < std::min(er.end, m.num_elements); ++i) {
+      double rv[kT] = {};
+      for (int j = er.dof_lo; j <= er.dof_hi; ++j) {
+        const double rji = R[j * kMaxElements + i];
+#pragma omp simd
+        for (int t = 0; t < kT; ++t) rv[t] += rji * v[(iq + j) * kT + t];
+      }
+      const double dvl = jac.dvel_dL[i], dvc = jac.dvel_dlce[i], dva = jac.dvel_da[i], ar = jac.act_rate[i];
+      const double dfc = jac.dforce_dlce[i];
+      const double* vl = v + (il + i) * kT;
+      const double* va = v + (ia + i) * kT;
+      double* ol = out + (il + i) * kT;
+      double* oa = out + (ia + i) * kT;
+      double fl[kT];
+#pragma omp simd
+      for (int t = 0; t < kT; ++t) {
+        ol[t] = -dvl * rv[t] + dvc * vl[t] + dva * va[t];
+        oa[t] = -ar * va[t];
+        fl[t] = dfc * vl[t];
+      }
+      for (int j = er.dof_lo; j <= er.dof_hi; ++j) {
+        const double rji = R[j * kMaxElements + i];
+#pragma omp simd
+        for (int t = 0; t < kT; ++t) tau[j][t] += rji * fl[t];
+      }
+    }
+  }
+  for (int a = 0; a < nq; ++a) {
+    double s[kT] = {};
+    for (int b = 0; b < nq; ++b) {
+      const double mi = tg.inv_mass_matrix[a * nq + b], dq = tg.dqdd_dq[a * nq + b], dqd = tg.dqdd_dqd[a * nq + b];
+#pragma omp simd
+      for (int t = 0; t < kT; ++t) s[t] += mi * tau[b][t] + dq * v[(iq + b) * kT + t] + dqd * v[(iqd + b) * kT + t];
+    }
+    std::copy(s, s + kT, out + (iqd + a) * kT);
+  }
+  for (int a = 0; a < nq; ++a) std::copy(v + (iqd + a) * kT, v + (iqd + a) * kT + kT, out + (iq + a) * kT);
+}
+
+// Column c's part of a stage's right-hand side that the column adds: hg dJ_c k (k the stage vector, R_k = R k_q) for
+// column c of [A | B] (c < ns: state entry c; else excitation c - ns), written into tile column t of r.
+void add_column_term(const Model& m, const LinearizeWorkspace& w, int c, int stage, double hg, double* r, int t) {
+  const int nq = m.num_dofs, ns = state_size(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
+  const double* k = stage == 1 ? w.k1.data() : w.k2.data();
+  const double* R_k = stage == 1 ? w.R_k1.data() : w.R_k2.data();
+  const std::array<std::array<double, kMaxElements>, kElementEntries>* dJ;
+  int i;
+  if (c < 2 * nq) {
+    const StateVec& d = stage == 1 ? w.dJ_k1[c] : w.dJ_k2[c];
+    for (int s = 0; s < ns; ++s) r[s * kT + t] += hg * d[s];
+    return;
+  } else if (c < ia) {
+    dJ = &w.dJ_dlce, i = c - il;
+  } else if (c < ns) {
+    dJ = &w.dJ_da, i = c - ia;
+  } else {
+    dJ = &w.dJ_du, i = c - ns;
+  }
+  r[(il + i) * kT + t] += hg * (-(*dJ)[0][i] * R_k[i] + (*dJ)[1][i] * k[il + i] + (*dJ)[2][i] * k[ia + i]);
+  const double df = hg * (-(*dJ)[3][i] * R_k[i] + (*dJ)[4][i] * k[il + i]);
+  for (int j = 0; j < nq; ++j) r[(iqd + j) * kT + t] += w.at_x.accel_per_force[j * kMaxElements + i] * df;
+}
+
+// The columns of A and B, kT at a time (see linearize_step_n for the algebra).
+template <int nq>
+void step_columns(const Model& m, LinearizeWorkspace& w, double h, const double* dfdx, double* A, double* B) {
+  const int n = m.num_elements, ns = state_size(m), ia = act_offset(m);
+  const double hg = kRos2Gamma * h;
+  const StepJacobian& W = w.step_jacobian;
+  double* r = w.tile_r.data();
+  double* dk1 = w.tile_dk1.data();
+  double* y = w.tile_y.data();
+  double* dk2 = w.tile_dk2.data();
+  const int total = ns + n;
+  for (int c0 = 0; c0 < total; c0 += kT) {
+    const int width = std::min(kT, total - c0);
+    std::fill(r, r + ns * kT, 0.0);
+    for (int t = 0; t < width; ++t) {
+      const int c = c0 + t;
+      if (c < ns) {
+        for (int s = 0; s < ns; ++s) r[s * kT + t] = dfdx[static_cast<long>(s) * ns + c];
+      } else {
+        const int i = c - ns;
+        r[(ia + i) * kT + t] = w.at_x.act_rate_du[i] - hg * w.at_x.act_rate_dlag[i] * w.k1[ia + i];
+      }
+      add_column_term(m, w, c, 1, hg, r, t);
+    }
+    solve_tile<nq>(m, W, r, dk1);
+    for (int s = 0; s < ns * kT; ++s) y[s] = h * dk1[s];
+    for (int t = 0; t < width; ++t)
+      if (c0 + t < ns) y[(c0 + t) * kT + t] += 1.0;
+    apply_tile<nq>(m, w.at_x2, y, r);
+    for (int s = 0; s < ns * kT; ++s) r[s] -= 2.0 * dk1[s];
+    for (int t = 0; t < width; ++t) {
+      const int c = c0 + t;
+      if (c >= ns) {
+        const int i = c - ns;
+        r[(ia + i) * kT + t] += w.at_x2.act_rate_du[i] - hg * w.at_x2.act_rate_dlag[i] * w.k2[ia + i];
+      }
+      add_column_term(m, w, c, 2, hg, r, t);
+    }
+    solve_tile<nq>(m, W, r, dk2);
+    for (int s = 0; s < ns; ++s)
+      for (int t = 0; t < width; ++t) {
+        const int c = c0 + t;
+        const double v = h * (1.5 * dk1[s * kT + t] + 0.5 * dk2[s * kT + t]);
+        if (c < ns) A[static_cast<long>(s) * ns + c] = v + (s == c ? 1.0 : 0.0);
+        else B[static_cast<long>(s) * n + (c - ns)] = v;
+      }
+  }
 }
 
 template <int nq>
@@ -298,52 +471,10 @@ void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, 
   }
   // Column by column: W k = f gives dk = W^-1 (df - dW k) with dW = -hg dJ:
   // dk1 = W^-1 (J(x) e + hg dJ_e k1), dk2 = W^-1 (J(x2) (e + h dk1) - 2 dk1 + hg dJ_e k2), A e = e + h (3/2 dk1 + 1/2 dk2).
-  const int il = lce_offset(m);
-  double* r = w.r.data();
-  double* dk1 = w.dk1.data();
-  double* dk2 = w.dk2.data();
-  double* y = w.y.data();
-  for (int c = 0; c < ns; ++c) {
-    for (int k = 0; k < ns; ++k) r[k] = dfdx[static_cast<long>(k) * ns + c];
-    if (c < 2 * nq) {
-      for (int k = 0; k < ns; ++k) r[k] += hg * w.dJ_k1[c][k];
-    } else if (c < ia) {
-      add_element_term(m, w.at_x, w.dJ_dlce, c - il, hg, w.k1.data(), w.R_k1.data(), r);
-    } else {
-      add_element_term(m, w.at_x, w.dJ_da, c - ia, hg, w.k1.data(), w.R_k1.data(), r);
-    }
-    jacobian_solve(m, W, r, dk1);
-    for (int k = 0; k < ns; ++k) y[k] = h * dk1[k];
-    y[c] += 1.0;
-    tangent_apply<nq>(m, w.at_x2, y, r);
-    for (int k = 0; k < ns; ++k) r[k] -= 2.0 * dk1[k];
-    if (c < 2 * nq) {
-      for (int k = 0; k < ns; ++k) r[k] += hg * w.dJ_k2[c][k];
-    } else if (c < ia) {
-      add_element_term(m, w.at_x, w.dJ_dlce, c - il, hg, w.k2.data(), w.R_k2.data(), r);
-    } else {
-      add_element_term(m, w.at_x, w.dJ_da, c - ia, hg, w.k2.data(), w.R_k2.data(), r);
-    }
-    jacobian_solve(m, W, r, dk2);
-    for (int k = 0; k < ns; ++k) A[static_cast<long>(k) * ns + c] = h * (1.5 * dk1[k] + 0.5 * dk2[k]);
-    A[static_cast<long>(c) * ns + c] += 1.0;
-  }
   // B: u enters f through the activation rows, W through their rate c1 u + c2 (d W_aa/du = hg c1) and through the
   // fibre limiter (dJ_du): dk1 = W^-1 (df/du - dW/du k1), dk2 = W^-1 (J(x2) h dk1 + df/du(x2) - 2 dk1 - dW/du k2),
   // B = h (3/2 dk1 + 1/2 dk2).
-  for (int i = 0; i < n; ++i) {
-    std::fill(r, r + ns, 0.0);
-    r[ia + i] = w.at_x.act_rate_du[i] - hg * w.at_x.act_rate_dlag[i] * w.k1[ia + i];
-    add_element_term(m, w.at_x, w.dJ_du, i, hg, w.k1.data(), w.R_k1.data(), r);
-    jacobian_solve(m, W, r, dk1);
-    for (int k = 0; k < ns; ++k) y[k] = h * dk1[k];
-    tangent_apply<nq>(m, w.at_x2, y, r);
-    for (int k = 0; k < ns; ++k) r[k] -= 2.0 * dk1[k];
-    r[ia + i] += w.at_x2.act_rate_du[i] - hg * w.at_x2.act_rate_dlag[i] * w.k2[ia + i];
-    add_element_term(m, w.at_x, w.dJ_du, i, hg, w.k2.data(), w.R_k2.data(), r);
-    jacobian_solve(m, W, r, dk2);
-    for (int k = 0; k < ns; ++k) B[static_cast<long>(k) * n + i] = h * (1.5 * dk1[k] + 0.5 * dk2[k]);
-  }
+  step_columns<nq>(m, w, h, dfdx, A, B);
 }
 
 }  // namespace

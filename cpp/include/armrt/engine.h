@@ -165,6 +165,7 @@ struct ForwardTangent {
   std::array<double, kMaxElements> force{};                     // N, tendon forces at the state
   std::array<double, kMaxDofs * kMaxDofs> dqdd_dq{};            // 1/s^2, full d qdd/dq, nq x nq row-major
   std::array<double, kMaxDofs * kMaxDofs> dqdd_dqd{};           // 1/s, full d qdd/d qd
+  std::array<double, kMaxDofs * kMaxDofs> inv_mass_matrix{};    // 1/(kg m^2), M^-1
   std::array<double, kMaxDofs * kMaxElements> accel_per_force{};  // rad/s^2/N, M^-1 R^T by DOF (stride kMaxElements)
   std::array<double, kMaxElements> act_rate_du{};               // 1/s, d(da/dt)/du
   std::array<double, kMaxElements> act_rate_dlag{};             // 1/s, d(c1 u + c2)/du
@@ -185,6 +186,10 @@ struct LinearizeWorkspace {
   std::array<double, kMaxElements> R_k1{}, R_k2{};  // m/s, R k_q of the two stages per element
   StepJacobian jac_plus, jac_minus;                 // J at the difference points
   StateVec x_shift{}, f_shift{};
+  // The columns of A and B are formed kLinearizeTile at a time, each tile a (state, column) array with the columns
+  // side by side, so that every operation runs over the tile's columns in SIMD lanes.
+  static constexpr int kTile = 16;
+  std::array<double, kMaxState * kTile> tile_r{}, tile_dk1{}, tile_y{}, tile_dk2{};
 };
 // At d.x with d's excitation u (num_elements, as the dynamics use it) and loads: df/dx (ns x ns, row-major,
 // ns = state_size) and df/du (ns x num_elements) of forward(); with A non-null also A = dx+/dx (ns x ns) and
