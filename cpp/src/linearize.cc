@@ -292,8 +292,13 @@ void solve_tile(const Model& m, const StepJacobian& jac, const double* r, double
   for (int run = 0; run < m.num_element_runs; ++run) {
     const Model::ElementRun& er = m.element_runs[run];
     for (int i = er.begin; i < std::min(er.end, m.num_elements); ++i) {
-      double rk[kT] = {};
-      for (int j = er.dof_lo; j <= er.dof_hi; ++j) {
+      double rk[kT];
+      {
+        const double r0 = R[er.dof_lo * kMaxElements + i];
+#pragma omp simd
+        for (int t = 0; t < kT; ++t) rk[t] = r0 * kq[er.dof_lo][t];
+      }
+      for (int j = er.dof_lo + 1; j <= er.dof_hi; ++j) {
         const double rji = R[j * kMaxElements + i];
 #pragma omp simd
         for (int t = 0; t < kT; ++t) rk[t] += rji * kq[j][t];
@@ -316,8 +321,13 @@ void apply_tile(const Model& m, const ForwardTangent& tg, const double* v, doubl
   for (int run = 0; run < m.num_element_runs; ++run) {
     const Model::ElementRun& er = m.element_runs[run];
     for (int i = er.begin; i < std::min(er.end, m.num_elements); ++i) {
-      double rv[kT] = {};
-      for (int j = er.dof_lo; j <= er.dof_hi; ++j) {
+      double rv[kT];
+      {
+        const double r0 = R[er.dof_lo * kMaxElements + i];
+#pragma omp simd
+        for (int t = 0; t < kT; ++t) rv[t] = r0 * v[(iq + er.dof_lo) * kT + t];
+      }
+      for (int j = er.dof_lo + 1; j <= er.dof_hi; ++j) {
         const double rji = R[j * kMaxElements + i];
 #pragma omp simd
         for (int t = 0; t < kT; ++t) rv[t] += rji * v[(iq + j) * kT + t];
@@ -378,9 +388,34 @@ void add_column_term(const Model& m, const LinearizeWorkspace& w, int c, int sta
   for (int j = 0; j < nq; ++j) r[(iqd + j) * kT + t] += w.at_x.accel_per_force[j * kMaxElements + i] * df;
 }
 
+// Column c of df/dx (write_dense's entries, from the tangent's structure rather than the dense matrix, whose columns
+// are strided in memory) into tile column t of r (zero there before).
+void tangent_column(const Model& m, const ForwardTangent& tg, int c, double* r, int t) {
+  const int nq = m.num_dofs, n = m.num_elements, iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m),
+            ia = act_offset(m);
+  const StepJacobian& jac = tg.jac;
+  if (c < iqd) {
+    const int k = c - iq;
+    for (int j = 0; j < nq; ++j) r[(iqd + j) * kT + t] = tg.dqdd_dq[j * nq + k];
+    for (int i = 0; i < n; ++i) r[(il + i) * kT + t] = -jac.dvel_dL[i] * jac.moment_arm[k * kMaxElements + i];
+  } else if (c < il) {
+    const int k = c - iqd;
+    r[(iq + k) * kT + t] = 1.0;
+    for (int j = 0; j < nq; ++j) r[(iqd + j) * kT + t] = tg.dqdd_dqd[j * nq + k];
+  } else if (c < ia) {
+    const int i = c - il;
+    for (int j = 0; j < nq; ++j) r[(iqd + j) * kT + t] = tg.accel_per_force[j * kMaxElements + i] * jac.dforce_dlce[i];
+    r[(il + i) * kT + t] = jac.dvel_dlce[i];
+  } else {
+    const int i = c - ia;
+    r[(il + i) * kT + t] = jac.dvel_da[i];
+    r[(ia + i) * kT + t] = -jac.act_rate[i];
+  }
+}
+
 // The columns of A and B, kT at a time (see linearize_step_n for the algebra).
 template <int nq>
-void step_columns(const Model& m, LinearizeWorkspace& w, double h, const double* dfdx, double* A, double* B) {
+void step_columns(const Model& m, LinearizeWorkspace& w, double h, double* A, double* B) {
   const int n = m.num_elements, ns = state_size(m), ia = act_offset(m);
   const double hg = kRos2Gamma * h;
   const StepJacobian& W = w.step_jacobian;
@@ -395,7 +430,7 @@ void step_columns(const Model& m, LinearizeWorkspace& w, double h, const double*
     for (int t = 0; t < width; ++t) {
       const int c = c0 + t;
       if (c < ns) {
-        for (int s = 0; s < ns; ++s) r[s * kT + t] = dfdx[static_cast<long>(s) * ns + c];
+        tangent_column(m, w.at_x, c, r, t);
       } else {
         const int i = c - ns;
         r[(ia + i) * kT + t] = w.at_x.act_rate_du[i] - hg * w.at_x.act_rate_dlag[i] * w.k1[ia + i];
@@ -417,18 +452,21 @@ void step_columns(const Model& m, LinearizeWorkspace& w, double h, const double*
       add_column_term(m, w, c, 2, hg, r, t);
     }
     solve_tile<nq>(m, W, r, dk2);
-    for (int s = 0; s < ns; ++s)
-      for (int t = 0; t < width; ++t) {
-        const int c = c0 + t;
-        const double v = h * (1.5 * dk1[s * kT + t] + 0.5 * dk2[s * kT + t]);
-        if (c < ns) A[static_cast<long>(s) * ns + c] = v + (s == c ? 1.0 : 0.0);
-        else B[static_cast<long>(s) * n + (c - ns)] = v;
-      }
+    // dk1 <- h (3/2 dk1 + 1/2 dk2), then row by row into A (columns < ns) and B (the rest), contiguous runs.
+#pragma omp simd
+    for (int s = 0; s < ns * kT; ++s) dk1[s] = h * (1.5 * dk1[s] + 0.5 * dk2[s]);
+    const int in_A = std::max(0, std::min(width, ns - c0));
+    for (int s = 0; s < ns; ++s) {
+      const double* v = dk1 + s * kT;
+      if (in_A > 0) std::copy(v, v + in_A, A + static_cast<long>(s) * ns + c0);
+      if (in_A < width) std::copy(v + in_A, v + width, B + static_cast<long>(s) * n + (c0 + in_A - ns));
+    }
+    for (int t = 0; t < in_A; ++t) A[static_cast<long>(c0 + t) * ns + c0 + t] += 1.0;
   }
 }
 
 template <int nq>
-void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, const double* dfdx, double* A,
+void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, double* A,
                       double* B) {
   const int n = m.num_elements, ns = state_size(m);
   const int ia = act_offset(m);
@@ -453,20 +491,21 @@ void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, 
   element_derivatives(m, d, w, h, 2, w.dJ_du);
   moment_arm_dot<nq>(m, W.moment_arm.data(), w.k1.data() + q_offset(m), w.R_k1.data());
   moment_arm_dot<nq>(m, W.moment_arm.data(), w.k2.data() + q_offset(m), w.R_k2.data());
+  // Per joint angle and velocity by forward differences (J at x is W before its factorisation): a term that is
+  // itself O(h) in A, so their O(eps) error is far below the central differences' of the tests.
+  double p1[kMaxState], p2[kMaxState], m1[kMaxState], m2[kMaxState];
+  structured_apply<nq>(m, W, w.k1.data(), m1);
+  structured_apply<nq>(m, W, w.k2.data(), m2);
   for (int c = 0; c < 2 * nq; ++c) {
     const double eps = c < nq ? kJointAngleStep : kJointVelocityStep;
-    double p1[kMaxState], p2[kMaxState], m1[kMaxState], m2[kMaxState];
-    for (int sgn = 0; sgn < 2; ++sgn) {
-      std::copy(x, x + ns, w.x_shift.begin());
-      w.x_shift[c] += sgn == 0 ? eps : -eps;
-      StepJacobian& J = sgn == 0 ? w.jac_plus : w.jac_minus;
-      step_jacobian_at(m, d, w.x_shift.data(), h, J, w.f_shift.data());
-      structured_apply<nq>(m, J, w.k1.data(), sgn == 0 ? p1 : m1);
-      structured_apply<nq>(m, J, w.k2.data(), sgn == 0 ? p2 : m2);
-    }
+    std::copy(x, x + ns, w.x_shift.begin());
+    w.x_shift[c] += eps;
+    step_jacobian_at(m, d, w.x_shift.data(), h, w.jac_plus, w.f_shift.data());
+    structured_apply<nq>(m, w.jac_plus, w.k1.data(), p1);
+    structured_apply<nq>(m, w.jac_plus, w.k2.data(), p2);
     for (int k = 0; k < ns; ++k) {
-      w.dJ_k1[c][k] = (p1[k] - m1[k]) / (2 * eps);
-      w.dJ_k2[c][k] = (p2[k] - m2[k]) / (2 * eps);
+      w.dJ_k1[c][k] = (p1[k] - m1[k]) / eps;
+      w.dJ_k2[c][k] = (p2[k] - m2[k]) / eps;
     }
   }
   // Column by column: W k = f gives dk = W^-1 (df - dW k) with dW = -hg dJ:
@@ -474,7 +513,7 @@ void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, 
   // B: u enters f through the activation rows, W through their rate c1 u + c2 (d W_aa/du = hg c1) and through the
   // fibre limiter (dJ_du): dk1 = W^-1 (df/du - dW/du k1), dk2 = W^-1 (J(x2) h dk1 + df/du(x2) - 2 dk1 - dW/du k2),
   // B = h (3/2 dk1 + 1/2 dk2).
-  step_columns<nq>(m, w, h, dfdx, A, B);
+  step_columns<nq>(m, w, h, A, B);
 }
 
 }  // namespace
@@ -489,7 +528,7 @@ void linearize(const Model& m, Data& d, LinearizeWorkspace& w, double h, double*
   write_dense(m, w.at_x, dfdx, dfdu);
   if (!A) return;
   if (!(h > 0.0)) throw std::invalid_argument("linearize: the step h must be > 0 s");
-  detail::dispatch_dofs(m.num_dofs, [&](auto N) { linearize_step_n<N>(m, d, w, h, dfdx, A, B); });
+  detail::dispatch_dofs(m.num_dofs, [&](auto N) { linearize_step_n<N>(m, d, w, h, A, B); });
 }
 
 }  // namespace armrt
