@@ -4,7 +4,8 @@ which also allocates the numpy outputs) for the continuous df/dx, df/du alone an
 step. Interleaved repetitions in one run, best of each, the machine's load recorded.
 
     python -m bench.linearize [--repeats 7] [--instructions]
-Writes bench/results/linearize.json and .md. With --instructions it also counts the instructions of the engine's
+    python -m bench.linearize --residuals     # the finite-difference residuals of tests/test_linearize.py's states
+Writes bench/results/linearize.json and .md (--residuals: linearize_residuals.json and .md). With --instructions it also counts the instructions of the engine's
 linearize() and step() under valgrind's callgrind (load-independent): each process runs twice, calling 0 and
 --instruction-calls times after the same set-up, with only the engine function collected
 (--toggle-collect='armrt::linearize(*' or 'armrt::step(*'), and the difference divided by the calls.
@@ -64,6 +65,47 @@ def instructions(model: str, what: str, calls: int) -> float:
     return (counts[1] - counts[0]) / calls
 
 
+def residuals() -> None:
+    """Largest block-relative residual |A - A_fd| / max|A_fd| (and of B, dfdx, dfdu) over each (row block, column
+    block) at the states of tests/test_linearize.py (run from the repository root: it imports the test's helpers),
+    the kinked columns left out as there; also how many columns had a kink."""
+    sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+    from tests.test_linearize import differences, random_arm
+    rows = []
+    for model, seed in (("das2", 1), ("das2", 2), ("das2", 3), ("das3", 1)):
+        arm = random_arm(model, seed)
+        lin = arm.linearize()
+        A, B, J, Ju, _, kinks = differences(arm, lin)
+        keep = np.setdiff1d(np.arange(lin.x0.size), kinks)
+        worst = {}
+        for name, got, ref, by_cols in (("A", lin.A, A, True), ("dfdx", lin.dfdx, J, True), ("B", lin.B, B, False),
+                                        ("dfdu", lin.dfdu, Ju, False)):
+            w = 0.0
+            for rs in lin.slices.values():
+                for cs in (lin.slices.values() if by_cols else [slice(None)]):
+                    cols = np.intersect1d(np.arange(lin.x0.size)[cs], keep) if by_cols else np.arange(ref.shape[1])
+                    r, g = ref[rs][:, cols], got[rs][:, cols]
+                    scale = np.abs(r).max(initial=0.0)
+                    if scale > 1e-6 * np.abs(ref[rs]).max(initial=0.0) and scale > 0:
+                        w = max(w, float(np.abs(g - r).max() / scale))
+            worst[name] = w
+        rows.append({"model": model, "seed": seed, "state_size": int(lin.x0.size), "kinked_columns": len(kinks),
+                     "kinked": [lin.state_names[k] for k in kinks], "worst_block_relative": worst})
+    RESULTS.mkdir(exist_ok=True)
+    (RESULTS / "linearize_residuals.json").write_text(json.dumps({"command": "python -m bench.linearize --residuals",
+                                                                  "states": rows}, indent=2) + "\n")
+    md = ("# Linearisation residuals (`python -m bench.linearize --residuals`)\n\n"
+          "Largest |X - X_fd| / max|X_fd| over the (row block, column block) pairs, central differences of the real "
+          "step (A, B) and of forward() (dfdx, dfdu); kinked columns left out.\n\n"
+          "| model | seed | ns | kinked columns | A | B | dfdx | dfdu |\n|---|---|---|---|---|---|---|---|\n")
+    for r in rows:
+        w = r["worst_block_relative"]
+        md += (f"| {r['model']} | {r['seed']} | {r['state_size']} | {r['kinked_columns']} | {w['A']:.1e} | "
+               f"{w['B']:.1e} | {w['dfdx']:.1e} | {w['dfdu']:.1e} |\n")
+    (RESULTS / "linearize_residuals.md").write_text(md)
+    print(md)
+
+
 def timed(fn, calls: int) -> float:
     t0 = time.perf_counter()
     for _ in range(calls):
@@ -76,11 +118,15 @@ def main() -> None:
     ap.add_argument("--repeats", type=int, default=7)
     ap.add_argument("--instructions", action="store_true", help="also count instructions (valgrind)")
     ap.add_argument("--instruction-calls", type=int, default=20)
+    ap.add_argument("--residuals", action="store_true", help="finite-difference residuals instead of the cost")
     ap.add_argument("--child", nargs=3, metavar=("MODEL", "WHAT", "CALLS"), help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.child:
         arm = moving_arm(args.child[0])
         workload(arm, args.child[1], int(args.child[2]))
+        return
+    if args.residuals:
+        residuals()
         return
     load_before = os.getloadavg()
     out = {"command": "python -m bench.linearize" + (" --instructions" if args.instructions else ""),
