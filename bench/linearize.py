@@ -89,6 +89,23 @@ def residuals() -> None:
                     if scale > 1e-6 * np.abs(ref[rs]).max(initial=0.0) and scale > 0:
                         w = max(w, float(np.abs(g - r).max() / scale))
             worst[name] = w
+        # At the kinked columns: how far the linearisation is from the central difference and from the nearer of the
+        # one-sided ones (the side it belongs to), relative to the column's largest entry.
+        kink_central = kink_one_sided = 0.0
+        for k in kinks:
+            e = np.zeros(lin.x0.size)
+            block = next(i for i, s in enumerate(lin.slices.values()) if s.start <= k < s.stop)
+            eps = (1e-6, 1e-5, 1e-7, 1e-6)[block]  # the test's steps: rad, rad/s, m, 1
+            e[k] = eps
+            step = lambda x: (arm.set_state_vector(x, armrt.StatePart.PHYSICS), arm.set_excitation(lin.u0),
+                              arm.step(1), arm.get_state_vector(armrt.StatePart.PHYSICS))[-1]
+            p, m, x1 = step(lin.x0 + e), step(lin.x0 - e), lin.x0_next
+            scale = np.abs(A[:, k]).max()
+            kink_central = max(kink_central, np.abs(lin.A[:, k] - A[:, k]).max() / scale)
+            kink_one_sided = max(kink_one_sided, min(np.abs(lin.A[:, k] - (p - x1) / eps).max(),
+                                                     np.abs(lin.A[:, k] - (x1 - m) / eps).max()) / scale)
+        arm.set_state_vector(lin.x0, armrt.StatePart.PHYSICS)
+        worst["A_kinked_central"], worst["A_kinked_one_sided"] = kink_central, kink_one_sided
         rows.append({"model": model, "seed": seed, "state_size": int(lin.x0.size), "kinked_columns": len(kinks),
                      "kinked": [lin.state_names[k] for k in kinks], "worst_block_relative": worst})
     RESULTS.mkdir(exist_ok=True)
@@ -97,11 +114,15 @@ def residuals() -> None:
     md = ("# Linearisation residuals (`python -m bench.linearize --residuals`)\n\n"
           "Largest |X - X_fd| / max|X_fd| over the (row block, column block) pairs, central differences of the real "
           "step (A, B) and of forward() (dfdx, dfdu); kinked columns left out.\n\n"
-          "| model | seed | ns | kinked columns | A | B | dfdx | dfdu |\n|---|---|---|---|---|---|---|---|\n")
+          "The last two columns: A at the kinked columns against the central and the nearer one-sided difference, "
+          "relative to the column's largest entry.\n\n"
+          "| model | seed | ns | kinked columns | A | B | dfdx | dfdu | A kinked: central | one-sided |\n"
+          "|---|---|---|---|---|---|---|---|---|---|\n")
     for r in rows:
         w = r["worst_block_relative"]
         md += (f"| {r['model']} | {r['seed']} | {r['state_size']} | {r['kinked_columns']} | {w['A']:.1e} | "
-               f"{w['B']:.1e} | {w['dfdx']:.1e} | {w['dfdu']:.1e} |\n")
+               f"{w['B']:.1e} | {w['dfdx']:.1e} | {w['dfdu']:.1e} | {w['A_kinked_central']:.1e} | "
+               f"{w['A_kinked_one_sided']:.1e} |\n")
     (RESULTS / "linearize_residuals.md").write_text(md)
     print(md)
 

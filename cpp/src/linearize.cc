@@ -468,8 +468,7 @@ void step_columns(const Model& m, LinearizeWorkspace& w, double h, double* A, do
 template <int nq>
 void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, double* A,
                       double* B) {
-  const int n = m.num_elements, ns = state_size(m);
-  const int ia = act_offset(m);
+  const int ns = state_size(m);
   const double hg = kRos2Gamma * h;
   const double* x = d.x.data();
   // The step itself: W from the tangent at x, stiffened as the step stiffens it (its count of limited steps kept),
