@@ -48,3 +48,17 @@ def test_fes_stim_fatigue_force_falls_and_reset_restores(capsys):
     assert np.all(np.diff(first["fatigue"]) > 0) and first["fatigue"][-1] > 0.5
     assert np.array_equal(first["obs"][-1][-7:], np.full(7, first["fatigue"][-1], np.float32))
     assert "the first episode's exactly: True" in capsys.readouterr().out
+
+
+def test_lqr_posture_holds_against_a_push():
+    """examples/lqr_posture.py, short: the baseline holds the posture (an equilibrium of forward()), open loop the push
+    throws the arm off, the LQR on Arm.linearize()'s (A, B) keeps the hand within a fraction of that, u in [0, 1]."""
+    ex = load("lqr_posture")
+    out = ex.main(["--duration", "0.6"])
+    runs = out["runs"]
+    assert out["qdd0"] < 1e-5 and out["rho"] < 1.0
+    assert runs["open loop, no push"]["joint_dev_deg"] < 0.01
+    assert runs["LQR"]["hand_dev_mm"] < 0.2 * runs["open loop"]["hand_dev_mm"]
+    assert runs["LQR"]["joint_dev_deg"] < 0.2 * runs["open loop"]["joint_dev_deg"]
+    lo, hi = runs["LQR"]["u_range"]
+    assert 0.0 <= lo and hi <= 1.0

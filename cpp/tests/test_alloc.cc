@@ -7,6 +7,7 @@
 #include <initializer_list>
 #include <new>
 #include <utility>
+#include <vector>
 
 #include "armrt/registry.h"
 #include "armrt/arm.h"
@@ -75,6 +76,18 @@ TEST_CASE("no heap allocation during 1000 steps (euler, rk4, ros2, ros2_adaptive
     auto sim = std::make_unique<Arm>(armrt_test::das2(), integ, dt);
     check_1000_steps_allocate_nothing(*sim, {{"elbow_flexors", 0.3}, {"rotator_cuff", 0.05}});
   }
+}
+
+TEST_CASE("no heap allocation in linearize() after its workspace exists (das2, A and B of one ROS2 step)") {
+  auto sim = std::make_unique<Arm>(armrt_test::das2(), Integrator::kRos2, 1e-3);
+  armrt_test::set_group_excitation(*sim, "elbow_flexors", 0.3);
+  for (int k = 0; k < 20; ++k) REQUIRE(sim->step(false));
+  const int ns = state_size(sim->model), n = sim->model.num_elements;
+  std::vector<double> dfdx(ns * ns), dfdu(ns * n), A(ns * ns), B(ns * n);
+  auto w = std::make_unique<LinearizeWorkspace>();
+  const long before = g_allocations.load();
+  for (int k = 0; k < 3; ++k) linearize(sim->model, sim->data, *w, 1e-3, dfdx.data(), dfdu.data(), A.data(), B.data());
+  CHECK(g_allocations.load() - before == 0);
 }
 
 TEST_CASE("no heap allocation during 1000 steps driven by stimulation (22 channels pulsing, fatigue on)") {

@@ -266,6 +266,10 @@ PYBIND11_MODULE(_core, mod) {
         return close_matches(require_model(model), name, dofs ? NameKind::kDofs : NameKind::kElementsMusclesGroups);
       }, py::arg("model"), py::arg("name"), py::arg("dofs") = false);
 
+  // linearize()'s workspace (engine.h), held by a Python Arm and reused, so that no call after the first allocates in
+  // the engine.
+  py::class_<LinearizeWorkspace>(mod, "LinearizeWorkspace").def(py::init([]() { return std::make_unique<LinearizeWorkspace>(); }));
+
   py::class_<Arm>(mod, "Arm")
       .def(py::init([](const std::string& model, const std::string& integrator, double dt, int substeps) {
              return std::make_unique<Arm>(require_model(model), parse_integrator(integrator), dt, substeps);
@@ -526,6 +530,34 @@ PYBIND11_MODULE(_core, mod) {
         out["steps"] = steps_done;
         return out;
       }, py::arg("excitation"), py::arg("n_steps"), py::arg("record_every") = 1)
+      // linearize (engine.h) at the current state and inputs: (dfdx, dfdu) or, with step, (dfdx, dfdu, A, B) of one
+      // ROS2 step of dt / substeps.
+      .def("linearize", [](Arm& s, LinearizeWorkspace& w, bool step) -> py::tuple {
+        const int ns = state_size(s.model), n = s.model.num_elements;
+        Array dfdx({ns, ns}), dfdu({ns, n});
+        if (!step) {
+          {
+            py::gil_scoped_release release;
+            linearize(s.model, s.data, w, 0.0, dfdx.mutable_data(), dfdu.mutable_data(), nullptr, nullptr);
+          }
+          return py::make_tuple(dfdx, dfdu);
+        }
+        Array A({ns, ns}), B({ns, n});
+        {
+          py::gil_scoped_release release;
+          linearize(s.model, s.data, w, s.stepper.dt / s.stepper.substeps, dfdx.mutable_data(), dfdu.mutable_data(),
+                    A.mutable_data(), B.mutable_data());
+        }
+        return py::make_tuple(dfdx, dfdu, A, B);
+      }, py::arg("workspace"), py::arg("step"))
+      // forward()'s dx/dt (state_size) at the current state and inputs, without outputs (linearize's tests difference it).
+      .def("state_derivative", [](Arm& s) {
+        Array xdot({state_size(s.model)});
+        StateVec scratch{};
+        forward(s.model, s.data, s.data.x.data(), scratch.data(), false);
+        std::copy(scratch.begin(), scratch.begin() + state_size(s.model), xdot.mutable_data());
+        return xdot;
+      })
       // Model functions at any pose.
       .def("muscle_paths", [](const Arm& s, const Array& q) {
         const int nq = s.model.num_dofs;

@@ -19,6 +19,8 @@ from .data import Data, State, _snapshot_from_state
 from .snapshot import StatePart
 from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
 from .errors import simulation_error as _simulation_error
+from .linearization import STATE_UNITS, Linearization
+from .linearization import state_names as linearization_state_names
 from .integrators import DEFAULT_INTEGRATOR, DEFAULT_MAX_STEP, INTEGRATORS, MAX_DT, MAX_SUBSTEPS, control_step
 from .model import Model
 from .profile import profile_values
@@ -97,6 +99,7 @@ class Arm:
             _stimulation.install_map(self._sim, stimulation, self.model_name)
         # The state views are Data's, from the engine's state layout (data.h via model_info).
         self._views = self.data._views
+        self._linearize_workspace = None  # linearize()'s engine workspace, made on first use
         # What Arm itself sets; anything else on an arm is the user's, carried by copies and pickles.
         self._base_attributes = frozenset(self.__dict__) | {"_base_attributes"}
 
@@ -662,6 +665,53 @@ class Arm:
     def tet(self) -> dict:
         """Task execution time statistics of the steps so far (ns): count, mean, min, max, last."""
         return self._sim.tet_stats()
+
+    # ------------------------------------------------------------------ linearisation
+    def linearize(self, continuous: bool = False) -> Linearization:
+        """The dynamics linearised at the current state x0 = [q | qdot | lce | activation] and excitation u0, hand load
+        and settings as set (armrt.linearization.Linearization: A, B, dfdx, dfdu, slices by block name, units).
+
+        continuous=False (default): A = dx+/dx (ns, ns) and B = dx+/du (ns, n_elements) of one ROS2 step of dt taken
+        from x0 as a step from a state set from outside takes it (muscle paths evaluated at both stages), the step
+        differentiated exactly (its matrix I - h gamma J too, J's own derivatives by central differences), plus dfdx,
+        dfdu. continuous=True: dfdx = d(dx/dt)/dx and dfdu = d(dx/dt)/du of forward() only (A, B None): the
+        structured Jacobian's exact per-element blocks and the mechanical terms the step leaves out (gravity,
+        Coriolis, dM/dq, moment-arm derivatives, the hand load's J^T F) by central differences of the skeleton and
+        path stages with the tendon forces held (docs/linearize.md). The state and inputs are unchanged.
+
+        Kinks (docs/linearize.md): at u = 0 or u = max_activation dfdu/B are the derivatives from inside [0, max];
+        the muscle kernel's one-sided points (CE floor, damping floor), the fibre limiter's on/off conditions and the
+        passive joint limits make A one-sided or discontinuous there.
+
+        Raises ValueError for an arm with a stimulation map (the elements it drives follow the stimulation stage's
+        memory, which is not part of x), for an integrator other than "ros2" or substeps != 1 (continuous=False
+        only), and SimulationError for an arm whose last step failed."""
+        if not isinstance(continuous, (bool, np.bool_)):
+            raise TypeError(f"continuous must be True or False, got {continuous!r}")
+        with self._exclusive():
+            if len(self._sim.channel_names) > 0:
+                raise ValueError("linearize: this arm has a stimulation map; the elements it drives follow the "
+                                 "stimulation stage's memory, which is not part of the state x (clear the map first)")
+            if not continuous and (self.integrator != "ros2" or self.substeps != 1):
+                raise ValueError(f"linearize: A and B are of one ROS2 step (integrator 'ros2', substeps 1); this arm "
+                                 f"has integrator {self.integrator!r} with substeps {self.substeps} "
+                                 f"(continuous=True gives df/dx, df/du for any integrator)")
+            if self._linearize_workspace is None:
+                self._linearize_workspace = _core.LinearizeWorkspace()
+            x0 = self.data.get_state_vector(StatePart.PHYSICS)
+            u0 = self.excitation.copy()
+            out = self._sim.linearize(self._linearize_workspace, not continuous)
+        x_next = None
+        if not continuous:  # the step itself, on a copy (the same step: paths evaluated at both stages)
+            probe = copy.deepcopy(self)
+            probe.set_state_vector(x0, StatePart.PHYSICS)
+            probe.step(1)
+            x_next = probe.get_state_vector(StatePart.PHYSICS)
+        slices = {k: slice(o, o + n) for k, (o, n) in self.model.state_layout.items()}
+        return Linearization(A=None if continuous else out[2], B=None if continuous else out[3], dfdx=out[0],
+                             dfdu=out[1], x0=x0, u0=u0, x0_next=x_next, dt=self.dt, slices=slices,
+                             units=dict(STATE_UNITS), state_names=linearization_state_names(self),
+                             input_names=list(self.element_names))
 
     # ------------------------------------------------------------------ model at any pose
     def moment_arms(self, q) -> np.ndarray:

@@ -18,6 +18,7 @@
 //   stimulation.cc   FES channels -> recruitment, Ding calcium/force/fatigue -> element activation targets
 //   stimulation_map.cc a lab's stimulation map (JSON/TOML) -> StimulationMap, the electrode kinds' defaults
 //   kinematics.cc    outputs derived from q: thorax-humerus angles
+//   linearize.cc     df/dx, df/du of forward() and A = dx+/dx, B = dx+/du of one ROS2 step
 #pragma once
 
 #include <cstdint>
@@ -195,6 +196,50 @@ int step_ros2_adaptive(const Model& m, Data& d, Ros2Workspace& w, double h, bool
 // forward(m, d, x, xdot, ..., &jac) at the same x: it reads what that evaluation left in jac. Adds the
 // element-steps it changed to d.limited_fibre_steps.
 void limit_fibre_overshoot(const Model& m, Data& d, StepJacobian& jac, const double* x, const double* xdot, double h);
+
+// ---- linearize.cc
+// The full tangent of forward() at one state: the structured Jacobian (jac, as forward() fills it: no fibre
+// limiter) and the mechanical terms it leaves out.
+struct ForwardTangent {
+  StepJacobian jac;
+  std::array<double, kMaxElements> force{};                     // N, tendon forces at the state
+  std::array<double, kMaxDofs * kMaxDofs> dqdd_dq{};            // 1/s^2, full d qdd/dq, nq x nq row-major
+  std::array<double, kMaxDofs * kMaxDofs> dqdd_dqd{};           // 1/s, full d qdd/d qd
+  std::array<double, kMaxDofs * kMaxDofs> inv_mass_matrix{};    // 1/(kg m^2), M^-1
+  std::array<double, kMaxDofs * kMaxElements> accel_per_force{};  // rad/s^2/N, M^-1 R^T by DOF (stride kMaxElements)
+  std::array<double, kMaxElements> act_rate_du{};               // 1/s, d(da/dt)/du
+  std::array<double, kMaxElements> act_rate_dlag{};             // 1/s, d(c1 u + c2)/du
+  std::array<double, kMaxDofs * kMaxElements> scratch_moment_arm{};  // m, paths at the difference points
+};
+// What linearize() works in: fixed size (about 0.8 MB: hold it on the heap), so no call allocates.
+struct LinearizeWorkspace {
+  ForwardTangent at_x, at_x2;  // the tangent at x and at the second stage x2 = x + h k1
+  StepJacobian step_jacobian;  // the step's own J (fibre limiter applied) and its factorisation
+  StateVec f{}, k1{}, x2{}, f2{}, k2{};  // the step's stages, as ros2.cc forms them
+  StateVec r{}, dk1{}, dk2{}, y{};       // one column's right-hand side and stage derivatives
+  // How the step's J moves with x and u (W is not frozen: A and B differentiate the real step). Per element, the
+  // derivatives of (dvel_dL, dvel_dlce, dvel_da, dforce_dL, dforce_dlce) with the element's own lce, activation and
+  // excitation (each depends on its element's alone, so all elements are perturbed at once); per joint angle and
+  // velocity, dJ/dx_c k1 and dJ/dx_c k2 (central differences of the whole J, limiter included).
+  std::array<std::array<double, kMaxElements>, 5> dJ_dlce{}, dJ_da{}, dJ_du{};
+  std::array<StateVec, 2 * kMaxDofs> dJ_k1{}, dJ_k2{};
+  std::array<double, kMaxElements> R_k1{}, R_k2{};  // m/s, R k_q of the two stages per element
+  StepJacobian jac_plus, jac_minus;                 // J at the difference points
+  StateVec x_shift{}, f_shift{};
+  // The columns of A and B are formed kLinearizeTile at a time, each tile a (state, column) array with the columns
+  // side by side, so that every operation runs over the tile's columns in SIMD lanes.
+  static constexpr int kTile = 16;
+  std::array<double, kMaxState * kTile> tile_r{}, tile_dk1{}, tile_y{}, tile_dk2{};
+};
+// At d.x with d's excitation u (num_elements, as the dynamics use it) and loads: df/dx (ns x ns, row-major,
+// ns = state_size) and df/du (ns x num_elements) of forward(); with A non-null also A = dx+/dx (ns x ns) and
+// B = dx+/du (ns x num_elements) of one ROS2 step of h (s) taken with exact paths at both stages (a step from a
+// state set from outside), W = I - h gamma J differentiated too (J's own derivatives by central differences, the
+// fibre limiter's stiffening included).
+// d's state, inputs and statistics are unchanged. Throws std::invalid_argument when d has a stimulation map (the
+// driven elements follow the stimulation stage's memory, not part of x) or for h <= 0.
+void linearize(const Model& m, Data& d, LinearizeWorkspace& w, double h, double* dfdx, double* dfdu, double* A,
+               double* B);
 
 // ---- kinematics.cc
 // Thorax-humerus angles (rad): plane of elevation, elevation, axial rotation (Y-Z-Y sequence in the
