@@ -1093,3 +1093,35 @@ def test_runner_takes_the_models_default_map_as_the_python_api_does():
         rt.RealtimeSession(stimulation="default")
     with pytest.raises(ValueError, match="ships no default stimulation map"):
         rt.runner_args(["--stimulation", "default"])
+
+
+def test_runner_refuses_a_start_pose_as_arm_reset_does_with_its_words():
+    """--q0 between Arm.reset's bound (0.2 rad beyond a range) and the domain's (0.35) used to start the runner where
+    Arm.reset refuses; now both refuse with the same description (snapshot.h start_pose_error, checks.joint_range),
+    and both accept a pose within the bound."""
+    import re
+    import warnings
+
+    import armrt
+    arm = armrt.Arm()
+    lo, hi = arm.model.dof_ranges[:, 0], arm.model.dof_ranges[:, 1]
+    q = arm.model.rest_posture.copy()
+    q[3] = hi[3] + 0.3  # ELx 0.3 rad beyond: inside the physical domain, outside reset's bound
+    q[1] = lo[1] - 0.25  # GHz too
+    with pytest.raises(ValueError) as py_error:
+        arm.reset(q=q)
+    r = subprocess.run([runner(), "--q0", ",".join(repr(float(v)) for v in q), "--duration", "0.05", "--no-rt",
+                        "--no-mlock"], capture_output=True, text=True, timeout=20)
+    assert r.returncode == 2, (r.returncode, r.stderr)
+    desc = re.search(r"q beyond the joint limits: (.*? deg)\.(?: |$)", str(py_error.value)).group(1)
+    assert "GHz" in desc and "ELx" in desc
+    assert f"--q0 (rad): q beyond the joint limits: {desc}" in r.stderr, (desc, r.stderr)
+    # Within the bound: Arm.reset warns and starts, so does the runner.
+    q_ok = arm.model.rest_posture.copy()
+    q_ok[3] = hi[3] + 0.1
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        arm.reset(q=q_ok)
+    r = subprocess.run([runner(), "--q0", ",".join(repr(float(v)) for v in q_ok), "--duration", "0.05", "--no-rt",
+                        "--no-mlock"], capture_output=True, text=True, timeout=20)
+    assert r.returncode == 0, r.stderr

@@ -44,7 +44,9 @@ void RtLoop::make_simulator(const ModelDef& def, const Schedule& sched) {
     // The engine's snapshot check, as Arm.set_state applies it: finite, within the physical domain (joints at
     // most kJointRangeMargin beyond their range, with a hint when the values look like degrees; no girdle
     // contact point deep in the thorax), so a bad --q0 is refused here instead of diverging in the first cycle.
-    const std::string error = snapshot_error(sim_->model, sim_->data, snapshot_bit(SnapshotPart::q), cfg_.q0.data());
+    // Then Arm.reset's own bound, tighter than the domain's: the runner refuses what the Python API refuses.
+    std::string error = snapshot_error(sim_->model, sim_->data, snapshot_bit(SnapshotPart::q), cfg_.q0.data());
+    if (error.empty()) error = start_pose_error(def, cfg_.q0.data());
     if (!error.empty()) throw std::invalid_argument("--q0 (rad): " + error);
     sim_->reset(cfg_.q0.data(), nullptr, nullptr);
   }

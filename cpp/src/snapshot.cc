@@ -250,6 +250,23 @@ std::string snapshot_error(const Model& m, const Data& d, unsigned signature, co
   return "";
 }
 
+std::string start_pose_error(const ModelDef& def, const double* q) {
+  std::string desc;
+  bool far = false, degrees = true;
+  for (int j = 0; j < def.num_dofs; ++j) {
+    const double lo = def.dofs[j].range_min, hi = def.dofs[j].range_max, r = q[j] * (M_PI / 180.0);
+    degrees &= r >= lo - kStartRangeMargin && r <= hi + kStartRangeMargin;
+    if (q[j] >= lo && q[j] <= hi) continue;
+    far |= !(q[j] >= lo - kStartRangeMargin && q[j] <= hi + kStartRangeMargin);  // NaN too
+    char buf[192];
+    std::snprintf(buf, sizeof buf, "%s%s = %.4g rad (%.1f deg) outside [%.1f, %.1f] deg", desc.empty() ? "" : "; ",
+                  def.dofs[j].name, q[j], q[j] * (180.0 / M_PI), lo * (180.0 / M_PI), hi * (180.0 / M_PI));
+    desc += buf;
+  }
+  if (!far) return "";
+  return "q beyond the joint limits: " + desc + "." + (degrees ? " These look like degrees: q is in radians." : "");
+}
+
 void set_snapshot(const Model& m, Data& d, Stepper& s, unsigned signature, const double* in) {
   const ModelDef& def = *m.def;
   snapshot_size(def, signature, d.stimulation_map.num_channels);  // refuses unknown bits

@@ -201,6 +201,7 @@ PYBIND11_MODULE(_core, mod) {
   mod.def("snapshot_rows", []() { return table_rows(snapshot_rows(), kNumSnapshotParts); },
           "The snapshot's parts in order, part k being signature bit 1 << k: (name, size rule, unit, stage, "
           "girdle_only, description)");
+  mod.attr("START_RANGE_MARGIN") = kStartRangeMargin;  // rad, model.h: Arm.reset's and armrt-rt --q0's bound
   mod.attr("JOINT_RANGE_MARGIN") = kJointRangeMargin;  // rad, model.h: the physical domain's joint bound
   mod.attr("SNAPSHOT_TIME") = kSnapshotTime;
   mod.attr("SNAPSHOT_PHYSICS") = kSnapshotPhysics;

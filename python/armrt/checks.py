@@ -13,8 +13,9 @@ from . import _core
 
 # Largest step count or record interval the engine counts (C++ long on every supported platform).
 MAX_COUNT = 2**63 - 1
-# reset(q=...) refuses a joint further than this (rad, ~11 deg) beyond its range.
-RANGE_MARGIN = 0.2
+# reset(q=...) refuses a joint further than this (rad, ~11 deg) beyond its range (model.h kStartRangeMargin, which
+# armrt-rt --q0 applies with the same words: snapshot.h start_pose_error).
+RANGE_MARGIN = _core.START_RANGE_MARGIN
 # rad: the engine's physical domain (model.h kJointRangeMargin, 0.35): a step stops beyond it, and the engine's
 # snapshot check refuses a state beyond it.
 STATE_MARGIN = _core.JOINT_RANGE_MARGIN

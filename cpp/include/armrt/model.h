@@ -36,6 +36,9 @@ inline constexpr double kMaxPeeForce = 9.0;
 inline constexpr double kRestTendonSlack = 0.002;
 inline constexpr double kActivationTolerance = 1e-6;
 inline constexpr double kJointRangeMargin = 0.35;  // rad (20 deg)
+// A start pose (Arm.reset, armrt-rt --q0) is refused more than this beyond a joint's range (rad, ~11 deg): a state
+// may end there (the passive limits are springs), a start so far out is a mistake (often degrees for radians).
+inline constexpr double kStartRangeMargin = 0.2;
 // A scapula contact point (TS, AI) 2 cm inside the thorax ellipsoid carries about 3 kN of contact force
 // (das3; docs/das3.md): no physiological load gets there, so the state is refused as out of domain.
 inline constexpr double kMaxContactPenetration = 0.02;  // m

@@ -27,6 +27,10 @@ void get_snapshot(const Model& m, const Data& d, const Stepper& s, unsigned sign
 // excitation outside [0, 1], or a path history no run of steps leaves (path_history_error; anchors farther
 // from q than max_joint_speed allows over their steps). Parts not in the signature are d's own.
 std::string snapshot_error(const Model& m, const Data& d, unsigned signature, const double* in);
+// Why q (num_dofs, rad) is no start pose, or "": a joint more than kStartRangeMargin beyond its range, each named
+// with its value in rad and deg and its range in deg, with a hint when every joint is in range once read as
+// degrees; the words of Python's checks.joint_range (Arm.reset), which tests/test_realtime_parity.py compares.
+std::string start_pose_error(const ModelDef& def, const double* q);
 // Writes the parts of `signature` from in (check snapshot_error first; an arm's copy writes even a diverged
 // state as it was). The excitation is capped at max_activation (data_set_excitation). Any physics or
 // integrator part restarts the integrator's memory: ROS2's path history is rebuilt from the snapshot's, if it
