@@ -1,4 +1,4 @@
-"""What Arm.linearize costs against the step it differentiates (issue 28 item 4; docs/linearize.md "Cost"): das2 and
+"""What Arm.linearize costs against the step it differentiates (issue 28 item 4; docs/control.md "Linearised dynamics", "Cost"): das2 and
 das3 at the default ROS2 1 ms step, at a moving, co-contracted state, the engine's linearize() (through the binding,
 which also allocates the numpy outputs) for the continuous df/dx, df/du alone and for A, B of one step, against one
 step. Interleaved repetitions in one run, best of each, the machine's load recorded.

@@ -1,5 +1,5 @@
 """LQR posture holding: das2 held at a posture with some co-contraction against a push at the hand, by discrete
-linear-quadratic feedback on Arm.linearize()'s (A, B) (docs/linearize.md).
+linear-quadratic feedback on Arm.linearize()'s (A, B) (docs/control.md "Linearised dynamics").
 
     python examples/lqr_posture.py                      # prints the deviations with and without feedback
     python examples/lqr_posture.py --push 40 --push-duration 0.1

@@ -6,7 +6,7 @@ Kinks: a column whose forward and backward differences disagree (a muscle kernel
 joint limit or das3's thorax contact within the difference step) is left out of the comparison, and the test
 requires that most columns are compared. Tolerance: per (row block, column block), 1e-3 of the block's largest
 entry (the frozen-W linearisation was up to 1.4e-2 off, this one 1.3e-4 at worst on the states below,
-docs/linearize.md) plus 1e-9 of the row block's largest entry (round-off of entries that are zero)."""
+docs/control.md "Linearised dynamics") plus 1e-9 of the row block's largest entry (round-off of entries that are zero)."""
 from __future__ import annotations
 
 import warnings

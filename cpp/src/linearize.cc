@@ -4,7 +4,7 @@
 // differences: per element all at once, per joint one by one).
 // df/dx is the structured Jacobian's exact per-element blocks plus the mechanical terms the step leaves out
 // (gravity, Coriolis, dM/dq, moment-arm derivatives, the hand load's J^T F), taken by central differences of the
-// skeleton and path stages with the tendon forces held; docs/linearize.md derives A, B and states the kinks.
+// skeleton and path stages with the tendon forces held; docs/control.md "Linearised dynamics" derives A, B and states the kinks.
 #include <algorithm>
 #include <cmath>
 #include <cstring>

@@ -677,9 +677,9 @@ class Arm:
         dfdu. continuous=True: dfdx = d(dx/dt)/dx and dfdu = d(dx/dt)/du of forward() only (A, B None): the
         structured Jacobian's exact per-element blocks and the mechanical terms the step leaves out (gravity,
         Coriolis, dM/dq, moment-arm derivatives, the hand load's J^T F) by central differences of the skeleton and
-        path stages with the tendon forces held (docs/linearize.md). The state and inputs are unchanged.
+        path stages with the tendon forces held (docs/control.md "Linearised dynamics"). The state and inputs are unchanged.
 
-        Kinks (docs/linearize.md): at u = 0 or u = max_activation dfdu/B are the derivatives from inside [0, max];
+        Kinks (docs/control.md "Linearised dynamics"): at u = 0 or u = max_activation dfdu/B are the derivatives from inside [0, max];
         the muscle kernel's one-sided points (CE floor, damping floor), the fibre limiter's on/off conditions and the
         passive joint limits make A one-sided or discontinuous there.
 

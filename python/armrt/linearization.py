@@ -2,7 +2,7 @@
 
 x = [q | qdot | lce | activation] (rad, rad/s, m, 1), u = excitation (1, one per element). The continuous
 linearisation dx/dt ~ f(x0, u0) + dfdx dx + dfdu du is forward()'s tangent; the discrete one
-x+ ~ x0+ + A dx + B du is the derivative of one ROS2 step of dt (docs/linearize.md: method, residuals, kinks).
+x+ ~ x0+ + A dx + B du is the derivative of one ROS2 step of dt (docs/control.md "Linearised dynamics": method, residuals, kinks).
 """
 from __future__ import annotations
 
