@@ -112,21 +112,29 @@ def markdown(results: list, command: str) -> str:
     return "\n".join(lines) + "\n"
 
 
-def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def callgrind_bench_args(doc: str, name: str, default_reps: int, argv=None):
+    """(args, armrt_bench path, the command line to quote) of a callgrind benchmark over armrt_bench's steps
+    (this one and bench/roofline.py): --build, --models, --reps, --json, --md with results/<name>.{json,md}."""
+    ap = argparse.ArgumentParser(description=doc.splitlines()[0])
     ap.add_argument("--build", default=str(REPO / "build" / "dev"), help="a CMake build dir with armrt_bench built")
     ap.add_argument("--models", default="das2,das3")
-    ap.add_argument("--reps", type=int, default=300, help="armrt_bench --reps under callgrind (default 300)")
-    ap.add_argument("--json", default=str(HERE / "results" / "profile_step.json"))
-    ap.add_argument("--md", default=str(HERE / "results" / "profile_step.md"))
+    ap.add_argument("--reps", type=int, default=default_reps,
+                    help=f"armrt_bench --reps under callgrind (default {default_reps})")
+    ap.add_argument("--json", default=str(HERE / "results" / f"{name}.json"))
+    ap.add_argument("--md", default=str(HERE / "results" / f"{name}.md"))
     args = ap.parse_args(argv)
     bench = Path(args.build) / "cpp" / "tools" / "armrt_bench"
     if not bench.is_file():
         ap.error(f"no {bench}: cmake --build {args.build} --target armrt_bench")
+    command = f"python -m bench.{name} " + " ".join(f"--{k} {v}" for k, v in
+                                                    (("build", os.path.relpath(args.build, REPO)),
+                                                     ("models", args.models), ("reps", args.reps)))
+    return args, bench, command
+
+
+def main(argv=None) -> int:
+    args, bench, command = callgrind_bench_args(__doc__, "profile_step", 300, argv)
     results = [profile(bench, m, args.reps) for m in args.models.split(",")]
-    command = "python -m bench.profile_step " + " ".join(f"--{k} {v}" for k, v in
-                                                           (("build", os.path.relpath(args.build, REPO)),
-                                                            ("models", args.models), ("reps", args.reps)))
     Path(args.json).write_text(json.dumps({"command": command, "results": results}, indent=1) + "\n")
     Path(args.md).write_text(markdown(results, command))
     print(markdown(results, command))

@@ -27,7 +27,6 @@ Writes bench/results/roofline.json and .md.
 """
 from __future__ import annotations
 
-import argparse
 import json
 import os
 import re
@@ -35,6 +34,8 @@ import subprocess
 import tempfile
 from collections import defaultdict
 from pathlib import Path
+
+from bench.profile_step import callgrind_bench_args
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parent
@@ -227,20 +228,8 @@ def markdown(results: list, command: str) -> str:
 
 
 def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--build", default=str(REPO / "build" / "dev"), help="a CMake build dir with armrt_bench built")
-    ap.add_argument("--models", default="das2,das3")
-    ap.add_argument("--reps", type=int, default=100, help="armrt_bench --reps under callgrind (default 100)")
-    ap.add_argument("--json", default=str(HERE / "results" / "roofline.json"))
-    ap.add_argument("--md", default=str(HERE / "results" / "roofline.md"))
-    args = ap.parse_args(argv)
-    bench = Path(args.build) / "cpp" / "tools" / "armrt_bench"
-    if not bench.is_file():
-        ap.error(f"no {bench}: cmake --build {args.build} --target armrt_bench")
+    args, bench, command = callgrind_bench_args(__doc__, "roofline", 100, argv)
     results = [measure(bench, m, args.reps) for m in args.models.split(",")]
-    command = "python -m bench.roofline " + " ".join(f"--{k} {v}" for k, v in
-                                                      (("build", os.path.relpath(args.build, REPO)),
-                                                       ("models", args.models), ("reps", args.reps)))
     Path(args.json).write_text(json.dumps({"command": command, "cpu": cpu_name(), "results": results}, indent=1)
                                + "\n")
     text = markdown(results, command)
