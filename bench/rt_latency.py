@@ -31,6 +31,7 @@ ROOT = Path(__file__).resolve().parents[1]
 def controller(port: int, stop: threading.Event, counts: dict, model: str = "das2") -> None:
     from armrt import realtime as rt
     with rt.UdpClient(port, mapping="groups", model=model) as c:
+        c.join()
         t_next = time.monotonic()
         k = 0
         while not stop.is_set():

@@ -305,6 +305,7 @@ def test_runner_runs_das3_over_udp_and_fails_safe(tmp_path):
         m = armrt.Model("das3")
         serrant = list(m.indices("serratus_anterior"))
         with rt.UdpClient(port, mapping="groups", model="das3") as c:
+            c.join()
             states = []
             t_end = time.monotonic() + 1.0
             while time.monotonic() < t_end:

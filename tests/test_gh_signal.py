@@ -159,6 +159,7 @@ def test_state_packet_carries_the_gh_values():
     assert fields[k:k + 5] == ["gh_stab", *rt.GH_RIM_FIELDS] and rt.VERSION == 3
     with rt.RealtimeSession(listen="127.0.0.1:0", rate_hz=1000, state_rate_hz=200) as s:
         with rt.UdpClient(s.port, mapping="groups") as c:
+            c.join()
             t_end = time.monotonic() + 3
             st = None
             while time.monotonic() < t_end and (st is None or st.time < 0.2):

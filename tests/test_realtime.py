@@ -147,6 +147,7 @@ def test_closed_loop_elbow_to_target_through_udp():
     target = np.radians(70.0)
     with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=0.2) as s, \
             rt.UdpClient(s.port, mapping="groups") as c:
+        c.join()
         c.send({"rotator_cuff": 0.03})
         errors = []
         t_end = time.monotonic() + 3.0
@@ -168,6 +169,7 @@ def test_closed_loop_elbow_to_target_through_udp():
 def test_silence_falls_to_zero_and_held_before():
     with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=0.15) as s, \
             rt.UdpClient(s.port, mapping="groups") as c:
+        c.join()
         seq = c.send({"elbow_flexors": 0.1})
         st = c.latest_state(timeout=0.5)
         time.sleep(0.05)
@@ -328,6 +330,8 @@ def test_runner_warns_on_non_loopback_without_key(tmp_path):
 
 # ---------------------------------------------------------------------------------------- sessions
 def _drive(c, u, n, period=0.005):
+    if c.session == 0:
+        c.join()
     st = None
     for _ in range(n):
         c.send(u)
@@ -394,6 +398,7 @@ def test_one_packet_does_not_bring_the_state_stream_back_for_good():
     indefinitely. Now a packet that claims the session gets state only while its session lasts."""
     with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=100, input_timeout=0.1) as s, \
             rt.UdpClient(s.port, mapping="groups") as c:
+        c.join()
         c.send({"rotator_cuff": 0.03})             # hello, offer, one excitation: a session of one packet
         time.sleep(0.5)
         got = []
@@ -717,6 +722,7 @@ def test_paralysis_holds_in_the_real_time_loop():
     with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, integrator=arm.integrator,
                             send_excitation=True, max_activation={"elbow_flexors": 0.0, "triceps": 0.25}) as s, \
             rt.UdpClient(s.port, mapping="groups") as c:
+        c.join()
         st = None
         for _ in range(40):
             c.send({"elbow_flexors": 1.0, "triceps": 0.0})
@@ -826,6 +832,7 @@ def test_udp_overlapping_channels_most_specific_wins_in_either_order():
         with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=100, send_excitation=True, channels=channels,
                                 input_timeout=1.0) as s, \
                 rt.UdpClient(s.port, mapping="channels", channels=channels) as c:
+            c.join()
             u = {"rotator_cuff": 0.3, "infra": 0.05}
             assert np.allclose(c.mapping.to_elements(u)[infra], 0.05)
             st = None
@@ -911,6 +918,7 @@ def test_runner_max_activation_overlapping_names_most_specific_wins_in_either_or
         with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, send_excitation=True,
                                 max_activation=cap) as s, \
                 rt.UdpClient(s.port, mapping="groups") as c:
+            c.join()
             st = None
             t_end = time.monotonic() + 3
             while time.monotonic() < t_end:
@@ -934,6 +942,7 @@ def test_stimulation_through_udp_flexes_the_elbow_fatigues_and_times_out_to_zero
     with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=0.2,
                             stimulation="per_muscle") as s, \
             rt.UdpClient(s.port, stimulation="per_muscle") as c:
+        c.join()
         names = s.channel_names
         assert names == c.stimulation.names and set(flexors) <= set(names)
         # What the Python API refuses is refused before it is sent (the message names the channel).
@@ -988,6 +997,7 @@ def test_runner_stimulation_option_and_its_errors(tmp_path):
     p, port = start_runner("--stimulation", str(m), "--no-rt", "--no-mlock", "--timeout", "0.2")
     try:
         with rt.UdpClient(port, stimulation=m) as c:
+            c.join()
             c.send_stimulation({"flexors": (200e-6, 0.015, 25.0)})
             time.sleep(0.05)
     finally:
@@ -1125,3 +1135,19 @@ def test_runner_refuses_a_start_pose_as_arm_reset_does_with_its_words():
     r = subprocess.run([runner(), "--q0", ",".join(repr(float(v)) for v in q_ok), "--duration", "0.05", "--no-rt",
                         "--no-mlock"], capture_output=True, text=True, timeout=20)
     assert r.returncode == 0, r.stderr
+
+
+def test_client_send_never_waits_for_a_session():
+    """UdpClient.send used to join on its first call, blocking up to 1 s (a second client in the same loop silenced
+    the owner that long): without a session it now raises at once, naming join(), and sends nothing."""
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=100) as s, rt.UdpClient(s.port, mapping="groups") as c:
+        for send in (lambda: c.send({"rotator_cuff": 0.03}),
+                     lambda: c.send(np.zeros(len(c.mapping.names)))):
+            with pytest.raises(RuntimeError, match=r"join\(timeout\)"):
+                send()
+        time.sleep(0.05)
+        assert s.stats()["packets"]["applied"] == 0
+        c.join()
+        c.send({"rotator_cuff": 0.03})
+        time.sleep(0.05)
+        assert s.stats()["packets"]["applied"] == 1

@@ -417,6 +417,7 @@ def test_realtime_page_in_headless_chromium(tmp_path):
         with realtime.RealtimeSession(listen="127.0.0.1:0", state_to=f"127.0.0.1:{src.port}", state_rate_hz=100,
                                       send_excitation=True, input_timeout=0.5, realtime=False) as s, \
                 realtime.UdpClient(s.port, mapping="groups") as c:
+            c.join()
             def control():
                 while not stop.is_set():
                     c.send({"rotator_cuff": 0.03, **level})

@@ -259,6 +259,8 @@ class LslBridge:
                 v = np.zeros(len(self.input_names))
                 v[self.channel_index] = np.asarray(samples[-1], dtype=float)
                 try:
+                    if self.client.session == 0:  # the bridge's own, timed claim (UdpClient.send never waits)
+                        self.client.join()
                     if self.stimulating:
                         self.client.send_stimulation(v.reshape(-1, 3))
                     else:

@@ -6,6 +6,7 @@ or muscle / group / channel values through a named mapping) and receives state p
 
     with RealtimeSession(listen="127.0.0.1:0", duration=5) as s:
         with UdpClient(s.port, mapping="groups") as c:
+            c.join(timeout=1.0)  # explicit: send() never waits for a session
             c.send({"elbow_flexors": 0.2})
             print(c.recv_state(timeout=0.1).q)
     print(s.stats()["latency_ns"])

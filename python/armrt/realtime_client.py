@@ -143,8 +143,8 @@ class UdpClient:
     """A controller's end of the link: owns a session of the runner, sends excitations, receives state.
 
     port, host: the runner's --listen address. key: the runner's shared key (bytes, >= 16; see
-    read_key_file), or None. The first send() asks for the session (hello -> offer, join()); packets
-    carry the session id and, with a key, an HMAC-SHA256 tag. Incoming datagrams are accepted only
+    read_key_file), or None. join(timeout) asks for the session (hello -> offer) before the first send(),
+    which never waits for one (RuntimeError without a session); packets carry the session id and, with a key, an HMAC-SHA256 tag. Incoming datagrams are accepted only
     from the runner's address and, with a key, only with a valid tag: anything else is dropped and
     counted (.foreign_packets, .bad_packets), never raised. When a session ends (silence longer than
     the runner's --timeout) the runner offers a new id on the next packet, and the client adopts it
@@ -239,19 +239,27 @@ class UdpClient:
             self._pump(min(0.01, t_end - now))
         return self.session
 
+    def _require_session(self) -> None:
+        # The first send used to join, blocking up to a second inside a caller's control loop (a second client in
+        # the loop silenced the owner that long): joining is the caller's explicit, timed step.
+        if self.session == 0:
+            raise RuntimeError(f"no session with the runner at {self.address[0]}:{self.address[1]}: call "
+                               "join(timeout) first (send never waits; after release() or a session that ended, "
+                               "join again)")
+
     def send(self, excitation, seq: int | None = None) -> int:
         """Sends one excitation packet (array or dict through the mapping); returns its sequence number.
         ValueError (nothing sent) for a NaN, an infinity or a value outside [0, 1], naming the values: the runner
-        would drop or clip them, and a controller that computes them has a bug the lab should see. Joins the
-        session first if none is known (TimeoutError if that fails)."""
+        would drop or clip them, and a controller that computes them has a bug the lab should see. RuntimeError
+        without a session (join(timeout) first): send never waits for the runner, so a control loop never stalls on
+        it."""
         values = self.mapping.values(excitation)
         bad = ~np.isfinite(values) | (values < 0.0) | (values > 1.0)
         if bad.any():
             which = [f"{self.mapping.names[k]}={float(values[k])!r}" for k in np.flatnonzero(bad)[:5]]
             raise ValueError(f"excitation must be finite and in [0, 1]; got {', '.join(which)}"
                              f"{' ...' if bad.sum() > 5 else ''} (nothing sent)")
-        if self.session == 0:
-            self.join()
+        self._require_session()
         if seq is None:
             seq = self._next_seq()
         data = encode_packet(self.mapping.packet_type, seq, values, session=self.session, key=self.key)
@@ -262,13 +270,12 @@ class UdpClient:
         """Sends one stimulation packet: {channel: (pulse_width_s, amplitude_A, frequency_Hz)} (channels not
         named are off) or a (channels, 3) array, in the map's channel order; returns its sequence number.
         ValueError (nothing sent) for a value the Python API refuses: NaN, negative, beyond a channel's limits;
-        RuntimeError without stimulation= (the runner's map). Joins the session first if none is known."""
+        RuntimeError without stimulation= (the runner's map) or without a session (join(timeout) first)."""
         if self.stimulation is None:
             raise RuntimeError("this client has no stimulation map: UdpClient(..., stimulation=<the runner's "
                                "--stimulation map>)")
         values = self.stimulation.values(stimulation)
-        if self.session == 0:
-            self.join()
+        self._require_session()
         if seq is None:
             seq = self._next_seq()
         self.sock.sendto(encode_packet(STIMULATION, seq, values, session=self.session, key=self.key), self.address)
