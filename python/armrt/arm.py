@@ -14,7 +14,7 @@ from typing import Mapping
 import numpy as np
 
 from . import _core
-from .checks import MAX_COUNT, RANGE_MARGIN, count, deg, joint_range, known_model, named_items, per_element, rad, real_array, real_scalar
+from .checks import MAX_COUNT, RANGE_MARGIN, count, deg, dof_vector, joint_range, known_model, named_items, per_element, rad, real_array, real_scalar
 from .data import Data, State, _snapshot_from_state
 from .snapshot import StatePart
 from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
@@ -384,12 +384,7 @@ class Arm:
             for name, x in v.items():
                 out[self.dof_index(name)] = real_scalar(x, f"{what}[{name!r}]")
             v = out
-        a = real_array(v, what)
-        if a.shape != (self.n_dofs,):
-            raise ValueError(f"{what} must have shape ({self.n_dofs},) ({', '.join(self.dof_names)}), got {a.shape}")
-        if not np.all(np.isfinite(a)):
-            raise ValueError(f"{what} contains NaN or infinite values")
-        return a
+        return dof_vector(v, what, self.dof_names)
 
     # ------------------------------------------------------------------ snapshots
     def get_state(self):

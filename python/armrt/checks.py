@@ -176,6 +176,19 @@ def per_element(model_name: str, element_names, values, what: str, lo: float, hi
     return out
 
 
+def dof_vector(v, what: str, dof_names) -> np.ndarray:
+    """v as a (ndof,) real array, one value per DOF of dof_names: ValueError for another shape (naming the DOFs)
+    or NaN/infinite values (naming where)."""
+    a = real_array(v, what)
+    nd = len(dof_names)
+    if a.shape != (nd,):
+        raise ValueError(f"{what} must have shape ({nd},) ({', '.join(dof_names)}), got {a.shape}")
+    if not np.all(np.isfinite(a)):
+        bad = [dof_names[j] for j in np.flatnonzero(~np.isfinite(a))]
+        raise ValueError(f"{what} contains NaN or infinite values (at {', '.join(bad)})")
+    return a
+
+
 def hand_load(force, moment) -> tuple[np.ndarray, np.ndarray]:
     """(force (3,) N, moment (3,) N m) checked: ValueError for another shape or NaN/infinite values."""
     values = []

@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from .checks import hand_load as _checked_hand_load
-from .checks import joint_range, real_array, real_scalar
+from .checks import dof_vector, joint_range, real_array, real_scalar
 from .errors import StaticOptimizationInfeasible
 
 # Below |theta| tan|theta| = 1/2 (|theta| < 0.6533 rad), atan(u)^2 is convex in u = tan(theta), so the set of
@@ -68,13 +68,7 @@ def _dof_vector(model, v, what: str, allow_scalar_zero: bool = False) -> np.ndar
         if x != 0:
             raise ValueError(f"{what}: a scalar must be 0 (for every DOF); give an array of shape ({nd},) otherwise")
         return np.zeros(nd)
-    a = real_array(v, what)
-    if a.shape != (nd,):
-        raise ValueError(f"{what} must have shape ({nd},) ({', '.join(model.dof_names)}), got {a.shape}")
-    if not np.all(np.isfinite(a)):
-        bad = [model.dof_names[j] for j in np.flatnonzero(~np.isfinite(a))]
-        raise ValueError(f"{what} contains NaN or infinite values (at {', '.join(bad)})")
-    return np.ascontiguousarray(a, dtype=float)
+    return np.ascontiguousarray(dof_vector(v, what, model.dof_names), dtype=float)
 
 
 def _hand_load(hand_load, default) -> tuple[np.ndarray, np.ndarray]:
