@@ -20,6 +20,10 @@
 namespace py = pybind11;
 using namespace armrt;
 
+// An array's values when it has n of them; ValueError naming `what` otherwise (also used by _core_model.cpp).
+const double* checked(const py::array_t<double, py::array::c_style | py::array::forcecast>& a, py::ssize_t n,
+                      const char* what);
+
 namespace {
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
@@ -35,11 +39,6 @@ Array view(double* ptr, std::vector<py::ssize_t> shape, py::handle owner) {
   return Array(shape, strides, ptr, owner);
 }
 
-const double* checked(const Array& a, py::ssize_t n, const char* what) {
-  if (a.size() != n) throw py::value_error(std::string(what) + ": expected " + std::to_string(n) +
-                                           " values, got " + std::to_string(a.size()));
-  return a.data();
-}
 
 // One output row's values as Python sees them: a float for a kOne row, else a copy of the model's values.
 py::object output_value(const double* p, SizeRule size, const ModelDef& def) {
@@ -172,6 +171,12 @@ class InterruptCheck {
 };
 
 }  // namespace
+
+const double* checked(const Array& a, py::ssize_t n, const char* what) {
+  if (a.size() != n) throw py::value_error(std::string(what) + ": expected " + std::to_string(n) +
+                                           " values, got " + std::to_string(a.size()));
+  return a.data();
+}
 
 py::dict inverse_dynamics_dict(const Model& m, const double* gravity, const double* q, const double* qd,
                                const double* qdd, const double* hand_force, const double* hand_moment);  // _core_model.cpp

@@ -17,6 +17,9 @@
 namespace py = pybind11;
 using namespace armrt;
 
+const double* checked(const py::array_t<double, py::array::c_style | py::array::forcecast>& a, py::ssize_t n,
+                      const char* what);  // _core.cpp
+
 namespace {
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
@@ -152,13 +155,10 @@ void bind_model(py::module_& mod) {
       }, py::arg("q"), py::arg("qdot"), py::arg("gravity_base"))
       .def("inverse_dynamics", [](const ModelDef& d, const Array& q, const Array& qd, const Array& qdd, const Array& g,
                                   const Array& hf, const Array& hm) {
-        auto need = [&](const Array& a, py::ssize_t n, const char* what) {
-          if (a.size() != n) throw py::value_error(std::string(what) + ": expected " + std::to_string(n) + " values");
-          return a.data();
-        };
         const int nq = d.num_dofs;
-        return inverse_dynamics_dict(shared_model(d), need(g, 3, "gravity"), need(q, nq, "q"), need(qd, nq, "qdot"),
-                                     need(qdd, nq, "qddot"), need(hf, 3, "hand force"), need(hm, 3, "hand moment"));
+        return inverse_dynamics_dict(shared_model(d), checked(g, 3, "gravity"), checked(q, nq, "q"),
+                                     checked(qd, nq, "qdot"), checked(qdd, nq, "qddot"), checked(hf, 3, "hand force"),
+                                     checked(hm, 3, "hand moment"));
       }, py::arg("q"), py::arg("qdot"), py::arg("qddot"), py::arg("gravity_base"), py::arg("hand_force"),
          py::arg("hand_moment"));
 
