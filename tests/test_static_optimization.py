@@ -295,3 +295,6 @@ def test_motion_from_arrays_and_from_a_mot_file(tmp_path):
         armrt.static_optimization_motion(arm, q, time=t[::-1])
     with pytest.raises(armrt.StaticOptimizationInfeasible, match=r"frame 0 \(t = 0 s\)"):
         armrt.static_optimization_motion(arm, q, time=t, hand_load=[0, -3000, 0])
+    # A misspelt option is refused, not taken as "return" (the frames are solved with "return" inside).
+    with pytest.raises(ValueError, match="on_infeasible"):
+        armrt.static_optimization_motion(arm, q, time=t, hand_load=[0, -3000, 0], on_infeasible="Raise")

@@ -93,6 +93,12 @@ def _state(model, q, qdot, qddot):
     return q, _dof_vector(model, qdot, "qdot", True), _dof_vector(model, qddot, "qddot", True)
 
 
+def check_on_infeasible(on_infeasible) -> None:
+    """ValueError unless on_infeasible is "raise" or "return"."""
+    if on_infeasible not in ("raise", "return"):
+        raise ValueError(f"on_infeasible must be 'raise' or 'return', got {on_infeasible!r}")
+
+
 # ---------------------------------------------------------------------------------------------- inverse dynamics
 def inverse_dynamics(arm_or_model, q, qdot=0.0, qddot=0.0, hand_load=None, parts: bool = False):
     """The generalised forces tau_muscle (ndof,) N m the muscles must supply for the arm to have the joint
@@ -269,8 +275,7 @@ class StaticOptimizer:
         """Activations for the state (q, qdot, qddot) (ndof,) and hand load (as inverse_dynamics). Warm started
         from the previous solve's activations. on_infeasible: "raise" (StaticOptimizationInfeasible, with the
         result as .result) or "return" (the result with feasible False). ValueError for bad input."""
-        if on_infeasible not in ("raise", "return"):
-            raise ValueError(f"on_infeasible must be 'raise' or 'return', got {on_infeasible!r}")
+        check_on_infeasible(on_infeasible)
         model, sim = self.model, self._sim
         q, qd, qdd = _state(model, q, qdot, qddot)
         f_hand, m_hand = _hand_load(hand_load, self._default_load if not hasattr(self._arm_or_model, "_sim") else

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .checks import real_array
-from .control import StaticOptimizer
+from .control import StaticOptimizer, check_on_infeasible
 from .errors import StaticOptimizationInfeasible
 
 
@@ -36,16 +36,17 @@ def static_optimization_motion(arm_or_model, motion, time=None, hand_load=None, 
     from the previous one (StaticOptimizer's options). on_infeasible="raise" raises StaticOptimizationInfeasible
     at the first infeasible frame, its time in the message; "return" keeps going and marks the frame
     (feasible False, its report in reports). ValueError for a bad motion (shapes, NaN, time not increasing)."""
+    check_on_infeasible(on_infeasible)  # the frames are solved with "return": a misspelt "raise" must not pass
+    model = arm_or_model.model if hasattr(arm_or_model, "_sim") else arm_or_model
     if isinstance(motion, (str, bytes)) or hasattr(motion, "__fspath__"):
         from .opensim_io import read_motion  # noqa: PLC0415 (opensim_io imports arm, which imports control)
-        m = read_motion(motion, model=arm_or_model.model.name if hasattr(arm_or_model, "_sim") else arm_or_model.name)
+        m = read_motion(motion, model=model.name)
         time, q = m.time, m.q
     else:
         q = real_array(motion, "motion")
         if time is None:
             raise ValueError("time (T,) s is needed with a motion given as an array")
         time = real_array(time, "time")
-    model = arm_or_model.model if hasattr(arm_or_model, "_sim") else arm_or_model
     if q.ndim != 2 or q.shape[1] != model.n_dofs:
         raise ValueError(f"motion must have shape (T, {model.n_dofs}) ({', '.join(model.dof_names)}), got {q.shape}")
     if time.shape != (q.shape[0],):
