@@ -9,6 +9,7 @@ from .batch import ArmBatch
 from .checks import deg, rad
 from .control import StaticOptimizationResult, StaticOptimizer, inverse_dynamics, static_optimization
 from .control_motion import static_optimization_motion
+from .control_tracking import TrackingResult, track_motion
 from .data import Data, State
 from .errors import ConcurrentUseError, SimulationError, StaticOptimizationInfeasible, StepSizeWarning
 from .model import Model, models
@@ -19,7 +20,7 @@ from .stepper import Stepper, forward, step
 from .sweeps import sweep
 
 __all__ = ["Arm", "Stepper", "step", "forward", "Result", "SimulationError", "StepSizeWarning", "ConcurrentUseError", "deg", "rad", "ArmBatch",
-           "sweep", "inverse_dynamics", "static_optimization", "static_optimization_motion", "StaticOptimizer", "StaticOptimizationResult",
+           "sweep", "inverse_dynamics", "static_optimization", "static_optimization_motion", "track_motion", "TrackingResult", "StaticOptimizer", "StaticOptimizationResult",
            "StaticOptimizationInfeasible", "Model", "Data", "State", "StatePart", "models", "ModelFileError", "ModelBuildError", "CompilerNotFoundError",
            "RealtimeSession", "UdpClient"]
 try:  # the packet layout comes from armrt._rt: without that extension the rest of armrt still works

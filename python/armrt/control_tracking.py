@@ -1,0 +1,139 @@
+"""Computed muscle control (issue 28 item 3; docs/control.md): a reference motion (T, ndof) -> excitations per control
+interval that make the forward simulation track it, with the tracking error per DOF.
+
+Thelen, Anderson & Delp 2003 (J Biomech 36:321, "Generating dynamic simulations of movement using computed muscle
+control") and Thelen & Anderson 2006 (J Biomech 39:1107): every control interval T the desired accelerations are
+the reference's plus PD feedback on the tracking error,
+
+    qddot_des = qddot_ref(t+T) + kv (qdot_ref(t+T) - qdot) + kp (q_ref(t+T) - q),
+
+static optimisation gives the activations a* that produce qddot_des, and the excitation held over the interval is
+the one whose activation dynamics reach a* at t+T. Their gains, kp = 100 s^-2 and kv = 20 s^-1 (= 2 sqrt(kp),
+critically damped), and T = 10 ms, are the defaults. The state the accelerations are asked at is the arm's own at
+t, its position extrapolated to t+T with its velocity (q + T qdot), a first-order stand-in for CMC's integration
+over the interval."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .checks import real_array, real_scalar
+from .control import StaticOptimizer
+
+KP_THELEN_2003 = 100.0  # s^-2, Thelen et al. 2003
+KV_THELEN_2003 = 20.0  # s^-1, 2 sqrt(kp)
+CONTROL_INTERVAL_THELEN_2003 = 0.010  # s
+
+
+@dataclass
+class TrackingResult:
+    """Per control interval (K rows, at the end of each): time (K,) s, q and q_ref (K, ndof) rad, excitation (K, n)
+    held over the interval, target_activation (K, n) from static optimisation, feasible (K,) bool (False where the
+    static optimisation found no exact solution and its best effort was used: counted, never silent), gh_stab
+    (K,). error_rms_deg and error_max_deg: {DOF name: deg} of q - q_ref over the intervals."""
+    time: np.ndarray
+    q: np.ndarray
+    q_ref: np.ndarray
+    excitation: np.ndarray
+    target_activation: np.ndarray
+    feasible: np.ndarray
+    gh_stab: np.ndarray
+    error_rms_deg: dict
+    error_max_deg: dict
+
+
+def excitation_reaching(a0, a_target, c1, c2, interval: float, u_max):
+    """Constant excitations u (n,) in [0, u_max] with which the activation dynamics da/dt = (c1 u + c2)(u - a)
+    (He et al. 1991, the model's; c2 = 1/tdeact, c1 = 1/tact - c2) take a from a0 to a_target in `interval` s;
+    clamped to the bound where a_target is out of reach. Solved by bisection: a(interval) = u + (a0 - u)
+    exp(-(c1 u + c2) interval) rises with u above a0 but need not below it, so each side is bracketed on its own."""
+    a0, at = np.asarray(a0, float), np.asarray(a_target, float)
+    c1, c2, u_max = np.asarray(c1, float), np.asarray(c2, float), np.asarray(u_max, float)
+    at = np.clip(at, 0.0, u_max)
+
+    def reached(u):
+        return u + (a0 - u) * np.exp(-(c1 * u + c2) * interval)
+
+    up = at >= a0
+    lo = np.where(up, at, 0.0)
+    hi = np.where(up, u_max, at)
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        below = reached(mid) < at
+        lo = np.where(below, mid, lo)
+        hi = np.where(below, hi, mid)
+    u = 0.5 * (lo + hi)
+    u = np.where(up & (reached(u_max) < at), u_max, u)
+    u = np.where(~up & (reached(np.zeros_like(u)) > at), 0.0, u)
+    return np.clip(u, 0.0, u_max)
+
+
+def track_motion(arm, q_ref, time, kp: float = KP_THELEN_2003, kv: float = KV_THELEN_2003,
+                 control_interval: float = CONTROL_INTERVAL_THELEN_2003, gh_stab_max=None,
+                 weights=None, criterion: str = "squared", tendon: str = "elastic") -> TrackingResult:
+    """Computed muscle control of `arm` (an armrt.Arm, its settings: strength, max_activation, hand load (arm.set_hand_load), integrator)
+    along q_ref (T, ndof) rad at time (T,) s (strictly increasing, at least 4 frames; interpolated by a cubic spline,
+    whose derivatives are the reference velocities and accelerations). The arm is reset to q_ref[0] with the
+    reference velocity and the static-optimisation activations there, then simulated for one control interval at a
+    time (a whole number of the arm's steps). kp (s^-2), kv (s^-1) >= 0: the feedback gains (kp = kv = 0 plays the
+    feedforward alone). gh_stab_max, weights, criterion, tendon: as armrt.StaticOptimizer.
+    ValueError for bad input (shapes, NaN, gains, an interval shorter than the arm's step)."""
+    from scipy.interpolate import CubicSpline  # noqa: PLC0415 (scipy is a dependency; only this needs it)
+
+    if not hasattr(arm, "_sim"):
+        raise TypeError("track_motion needs an armrt.Arm (it simulates the arm), got " + type(arm).__name__)
+    model = arm.model
+    q_ref = real_array(q_ref, "q_ref")
+    time = real_array(time, "time")
+    if q_ref.ndim != 2 or q_ref.shape[1] != model.n_dofs:
+        raise ValueError(f"q_ref must have shape (T, {model.n_dofs}) ({', '.join(model.dof_names)}), got {q_ref.shape}")
+    if time.shape != (q_ref.shape[0],) or q_ref.shape[0] < 4:
+        raise ValueError(f"time must have shape ({q_ref.shape[0]},) and the motion at least 4 frames")
+    if not (np.all(np.isfinite(q_ref)) and np.all(np.isfinite(time))):
+        raise ValueError("q_ref or time contains NaN or infinite values")
+    if np.any(np.diff(time) <= 0):
+        raise ValueError("time must be strictly increasing")
+    kp, kv = real_scalar(kp, "kp"), real_scalar(kv, "kv")
+    if kp < 0 or kv < 0:
+        raise ValueError(f"kp and kv must be >= 0, got kp={kp:g}, kv={kv:g}")
+    interval = real_scalar(control_interval, "control_interval")
+    steps = int(round(interval / arm.dt))
+    if steps < 1 or abs(steps * arm.dt - interval) > 1e-9 * max(1.0, interval):
+        raise ValueError(f"control_interval must be a whole number (>= 1) of the arm's step {arm.dt:g} s, "
+                         f"got {interval:g} s")
+
+    spline = CubicSpline(time, q_ref, axis=0)
+    ref_v, ref_a = spline.derivative(1), spline.derivative(2)
+    so = StaticOptimizer(arm, gh_stab_max=gh_stab_max, weights=weights, criterion=criterion, tendon=tendon)
+    t0 = float(time[0])
+    start = so.solve(q_ref[0], ref_v(t0), ref_a(t0), on_infeasible="return")
+    arm.reset(q=q_ref[0], qdot=ref_v(t0), activation=np.minimum(start.activation, arm.max_activation), time=t0)
+
+    p = model.parameters
+    c2 = 1.0 / np.asarray(p["tdeact"])
+    c1 = 1.0 / np.asarray(p["tact"]) - c2
+    k_total = int(np.floor((time[-1] - t0) / interval + 1e-9))
+    nq, n = model.n_dofs, model.n_elements
+    out_t, out_q, out_r = np.empty(k_total), np.empty((k_total, nq)), np.empty((k_total, nq))
+    out_u, out_a = np.empty((k_total, n)), np.empty((k_total, n))
+    feasible, gh = np.empty(k_total, bool), np.empty(k_total)
+    for k in range(k_total):
+        t = arm.time
+        t_next = t + interval
+        q, qd = arm.q, arm.qdot
+        q_pred = q + interval * qd
+        qdd_des = ref_a(t_next) + kv * (ref_v(t_next) - qd) + kp * (spline(t_next) - q_pred)
+        res = so.solve(q_pred, qd, qdd_des, on_infeasible="return")
+        amax = arm.max_activation
+        u = excitation_reaching(arm.activation, res.activation, c1, c2, interval, amax)
+        arm.set_excitation(u)
+        arm.step(steps)
+        out_t[k], out_q[k], out_r[k] = arm.time, arm.q, spline(arm.time)
+        out_u[k], out_a[k], feasible[k], gh[k] = u, res.activation, res.feasible, arm.gh_stab
+    err = np.degrees(out_q - out_r)
+    names = model.dof_names
+    return TrackingResult(time=out_t, q=out_q, q_ref=out_r, excitation=out_u, target_activation=out_a,
+                          feasible=feasible, gh_stab=gh,
+                          error_rms_deg={d: float(np.sqrt(np.mean(err[:, j] ** 2))) for j, d in enumerate(names)},
+                          error_max_deg={d: float(np.abs(err[:, j]).max()) for j, d in enumerate(names)})

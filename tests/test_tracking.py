@@ -1,0 +1,86 @@
+"""Computed muscle control (armrt.track_motion; docs/control.md "Computed muscle control")."""
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+import armrt
+from armrt.control_tracking import excitation_reaching
+
+TACT, TDEACT = 0.0264, 0.0835  # s, das2's elements (Model.parameters)
+C2 = 1.0 / TDEACT
+C1 = 1.0 / TACT - C2
+
+
+@pytest.mark.parametrize("a0, target", [(0.0, 0.2), (0.2, 0.4), (0.8, 0.72), (0.6, 0.55), (0.4, 0.4)])
+def test_excitation_reaching_takes_the_activation_to_its_target_by_an_independent_integration(a0, target):
+    u = float(excitation_reaching(np.array([a0]), np.array([target]), C1, C2, 0.010, np.array([1.0]))[0])
+    sol = solve_ivp(lambda t, a: (C1 * u + C2) * (u - a), (0.0, 0.010), [a0], rtol=1e-11, atol=1e-13)
+    assert sol.y[0, -1] == pytest.approx(target, abs=1e-8)
+
+
+def test_excitation_reaching_clamps_what_one_interval_cannot_reach():
+    # From 0, full excitation reaches 1 - exp(-(c1 + c2) T); from 1, zero excitation decays only to exp(-c2 T).
+    up_most = 1.0 - np.exp(-(C1 + C2) * 0.010)
+    down_most = np.exp(-C2 * 0.010)
+    u = excitation_reaching(np.array([0.0, 1.0, 0.0]), np.array([0.99, 0.0, 0.5]), C1, C2, 0.010,
+                            np.array([1.0, 1.0, 0.3]))
+    assert u[0] == 1.0 and u[1] == 0.0
+    assert u[2] == 0.3  # the target 0.5 is above this element's max_activation 0.3: held at the cap
+    assert up_most < 0.99 and down_most > 0.0
+
+
+def test_the_engine_follows_the_activation_dynamics_the_excitations_are_computed_for():
+    arm = armrt.Arm("das2")
+    p = arm.model.parameters
+    c2 = 1.0 / np.asarray(p["tdeact"])
+    c1 = 1.0 / np.asarray(p["tact"]) - c2
+    arm.reset(activation=np.full(arm.model.n_elements, 0.2))
+    target = np.linspace(0.0, 0.6, arm.model.n_elements)
+    u = excitation_reaching(arm.activation, target, c1, c2, 0.010, arm.max_activation)
+    arm.set_excitation(u)
+    arm.step(10)
+    reachable = (target >= 0.2 * np.exp(-c2 * 0.010))
+    assert np.abs(arm.activation - target)[reachable].max() < 2e-3  # the ROS2 step's error over 10 steps
+
+
+def _elbow_flexion(arm):
+    q0 = arm.q.copy()
+    t = np.linspace(0.0, 0.6, 61)
+    q = np.tile(q0, (t.size, 1))
+    j = arm.model.dof_names.index("ELx")
+    q[:, j] = q0[j] + 0.2 * (1.0 - np.cos(np.pi * t / 0.6))
+    return q, t
+
+
+def test_computed_muscle_control_tracks_an_elbow_flexion_and_its_feedback_matters():
+    arm = armrt.Arm("das2")
+    q, t = _elbow_flexion(arm)
+    fb = armrt.track_motion(arm, q, t)
+    ff = armrt.track_motion(arm, q, t, kp=0.0, kv=0.0)
+    assert fb.feasible.all()
+    assert fb.q.shape == (60, 5) and fb.excitation.shape == (60, arm.model.n_elements)
+    assert np.all((fb.excitation >= 0) & (fb.excitation <= 1))
+    assert max(fb.error_max_deg.values()) < 1.0
+    assert max(ff.error_max_deg.values()) > 3 * max(fb.error_max_deg.values())
+    # The errors reported are those of the recorded trajectory against the reference spline.
+    assert fb.error_max_deg["ELx"] == pytest.approx(np.degrees(np.abs(fb.q[:, 3] - fb.q_ref[:, 3]).max()))
+    np.testing.assert_allclose(fb.q_ref[-1], q[-1], atol=1e-9)
+
+
+def test_track_motion_refuses_bad_input():
+    arm = armrt.Arm("das2")
+    q, t = _elbow_flexion(arm)
+    with pytest.raises(ValueError, match="shape"):
+        armrt.track_motion(arm, q[:, :3], t)
+    with pytest.raises(ValueError, match="increasing"):
+        armrt.track_motion(arm, q, t[::-1])
+    with pytest.raises(ValueError, match="kp and kv"):
+        armrt.track_motion(arm, q, t, kp=-1.0)
+    with pytest.raises(ValueError, match="whole number"):
+        armrt.track_motion(arm, q, t, control_interval=0.0105)
+    bad = q.copy()
+    bad[3, 0] = np.nan
+    with pytest.raises(ValueError, match="NaN"):
+        armrt.track_motion(arm, bad, t)
+    with pytest.raises(TypeError, match="armrt.Arm"):
+        armrt.track_motion(arm.model, q, t)
