@@ -63,8 +63,9 @@ def excitation_vector(model: dict) -> np.ndarray:
 
 
 # ---------------------------------------------------------------------------------------------- OpenSim
-def build_opensim(osim_path: Path, model: dict):
-    """The das3.osim model reduced to our problem; returns (opensim model, initialised state, info)."""
+def build_opensim(osim_path: Path, model: dict, controller: bool = True):
+    """The das3.osim model reduced to our problem; returns (opensim model, initialised state, info). controller
+    False: no PrescribedController (for tools that compute the controls, such as StaticOptimization)."""
     import opensim as osim
 
     t0 = time.perf_counter()
@@ -102,12 +103,16 @@ def build_opensim(osim_path: Path, model: dict):
         s.setViscosity(damp)
         m.addForce(s)
 
+    muscles = m.getMuscles()
+    n_muscles = muscles.getSize()
+    if not controller:
+        m.setUseVisualizer(False)
+        state = m.initSystem()
+        return m, state, {"n_muscles": n_muscles, "removed_forces": removed, "build_s": time.perf_counter() - t0}
     u = excitation_vector(model)
     by_osim = {e["osim_name"]: u[i] for i, e in enumerate(model["elements"])}
     ctrl = osim.PrescribedController()
     ctrl.setName("excitations")
-    muscles = m.getMuscles()
-    n_muscles = muscles.getSize()
     for k in range(n_muscles):
         mus = muscles.get(k)
         ctrl.addActuator(mus)
