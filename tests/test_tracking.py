@@ -84,3 +84,18 @@ def test_track_motion_refuses_bad_input():
         armrt.track_motion(arm, bad, t)
     with pytest.raises(TypeError, match="armrt.Arm"):
         armrt.track_motion(arm.model, q, t)
+
+
+def test_posture_held_with_gh_stability_under_a_limit_the_unconstrained_solution_exceeds():
+    arm = armrt.Arm("das2")
+    q_hold = arm.q.copy()
+    q_hold[0] += 0.3  # GHy: the humerus elevated, a 1 kg weight in the hand
+    t = np.linspace(0.0, 0.5, 6)
+    q = np.tile(q_hold, (t.size, 1))
+    arm.set_hand_load(force=(0.0, -9.81, 0.0))
+    free = armrt.track_motion(arm, q, t)
+    held = armrt.track_motion(arm, q, t, gh_stab_max=0.15)
+    assert free.gh_stab.max() > 0.2
+    assert held.feasible.all()
+    assert held.gh_stab.max() <= 0.15  # the engine's GHstab of the simulation, not the optimiser's prediction
+    assert max(held.error_max_deg.values()) < 0.1
