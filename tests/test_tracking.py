@@ -82,6 +82,8 @@ def test_track_motion_refuses_bad_input():
     bad[3, 0] = np.nan
     with pytest.raises(ValueError, match="NaN"):
         armrt.track_motion(arm, bad, t)
+    with pytest.raises(ValueError, match="less than one control interval"):
+        armrt.track_motion(arm, q[:4], t[:4] * 0.01)
     with pytest.raises(TypeError, match="armrt.Arm"):
         armrt.track_motion(arm.model, q, t)
 

@@ -72,13 +72,14 @@ def excitation_reaching(a0, a_target, c1, c2, interval: float, u_max):
 def track_motion(arm, q_ref, time, kp: float = KP_THELEN_2003, kv: float = KV_THELEN_2003,
                  control_interval: float = CONTROL_INTERVAL_THELEN_2003, gh_stab_max=None,
                  weights=None, criterion: str = "squared", tendon: str = "elastic") -> TrackingResult:
-    """Computed muscle control of `arm` (an armrt.Arm, its settings: strength, max_activation, hand load (arm.set_hand_load), integrator)
-    along q_ref (T, ndof) rad at time (T,) s (strictly increasing, at least 4 frames; interpolated by a cubic spline,
-    whose derivatives are the reference velocities and accelerations). The arm is reset to q_ref[0] with the
-    reference velocity and the static-optimisation activations there, then simulated for one control interval at a
-    time (a whole number of the arm's steps). kp (s^-2), kv (s^-1) >= 0: the feedback gains (kp = kv = 0 plays the
-    feedforward alone). gh_stab_max, weights, criterion, tendon: as armrt.StaticOptimizer.
-    ValueError for bad input (shapes, NaN, gains, an interval shorter than the arm's step)."""
+    """Computed muscle control of `arm` (an armrt.Arm with its settings: strength, max_activation, hand load from
+    arm.set_hand_load, integrator) along q_ref (T, ndof) rad at time (T,) s (strictly increasing, at least 4 frames;
+    interpolated by a cubic spline, whose derivatives are the reference velocities and accelerations). The arm is
+    reset to q_ref[0] with the reference velocity and the static-optimisation activations there, then simulated one
+    control interval at a time (a whole number of the arm's steps; a last part of the motion shorter than an
+    interval is not run). kp (s^-2), kv (s^-1) >= 0: the feedback gains (kp = kv = 0 plays the feedforward alone).
+    gh_stab_max, weights, criterion, tendon: as armrt.StaticOptimizer. ValueError for bad input (shapes, NaN,
+    gains, an interval not a whole number of steps, a motion shorter than one interval); TypeError for a Model."""
     from scipy.interpolate import CubicSpline  # noqa: PLC0415 (scipy is a dependency; only this needs it)
 
     if not hasattr(arm, "_sim"):
@@ -113,7 +114,9 @@ def track_motion(arm, q_ref, time, kp: float = KP_THELEN_2003, kv: float = KV_TH
     p = model.parameters
     c2 = 1.0 / np.asarray(p["tdeact"])
     c1 = 1.0 / np.asarray(p["tact"]) - c2
-    k_total = int(np.floor((time[-1] - t0) / interval + 1e-9))
+    k_total = int(np.floor((time[-1] - t0) / interval + 1e-9))  # a last part shorter than an interval is not run
+    if k_total < 1:
+        raise ValueError(f"the motion lasts {time[-1] - t0:g} s, less than one control interval ({interval:g} s)")
     nq, n = model.n_dofs, model.n_elements
     out_t, out_q, out_r = np.empty(k_total), np.empty((k_total, nq)), np.empty((k_total, nq))
     out_u, out_a = np.empty((k_total, n)), np.empty((k_total, n))
