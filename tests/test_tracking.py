@@ -101,3 +101,10 @@ def test_posture_held_with_gh_stability_under_a_limit_the_unconstrained_solution
     assert held.feasible.all()
     assert held.gh_stab.max() <= 0.15  # the engine's GHstab of the simulation, not the optimiser's prediction
     assert max(held.error_max_deg.values()) < 0.1
+
+
+def test_track_motion_refuses_an_arm_driven_by_stimulation():
+    arm = armrt.Arm("das2", stimulation="per_muscle")
+    q, t = _elbow_flexion(arm)
+    with pytest.raises(ValueError, match="stimulation map"):
+        armrt.track_motion(arm, q, t)

@@ -79,11 +79,15 @@ def track_motion(arm, q_ref, time, kp: float = KP_THELEN_2003, kv: float = KV_TH
     control interval at a time (a whole number of the arm's steps; a last part of the motion shorter than an
     interval is not run). kp (s^-2), kv (s^-1) >= 0: the feedback gains (kp = kv = 0 plays the feedforward alone).
     gh_stab_max, weights, criterion, tendon: as armrt.StaticOptimizer. ValueError for bad input (shapes, NaN,
-    gains, an interval not a whole number of steps, a motion shorter than one interval); TypeError for a Model."""
+    gains, an interval not a whole number of steps, a motion shorter than one interval, an arm with a stimulation
+    map); TypeError for a Model."""
     from scipy.interpolate import CubicSpline  # noqa: PLC0415 (scipy is a dependency; only this needs it)
 
     if not hasattr(arm, "_sim"):
         raise TypeError("track_motion needs an armrt.Arm (it simulates the arm), got " + type(arm).__name__)
+    if arm.channel_names:
+        raise ValueError("track_motion: this arm has a stimulation map; the elements it drives follow the stimulation "
+                         "channels, not the excitations computed here (clear the map: arm.set_stimulation_map(None))")
     model = arm.model
     q_ref = real_array(q_ref, "q_ref")
     time = real_array(time, "time")
