@@ -186,20 +186,64 @@ def test_silence_falls_to_zero_and_held_before():
 
 
 # ---------------------------------------------------------------------------------------- runner
+def _last_state(sub):
+    """The last state packet a subscriber socket holds (None if none)."""
+    last = None
+    sub.settimeout(0.3)
+    try:
+        while True:
+            last = rt.StatePacket.from_packet(rt.decode_packet(sub.recv(65536)))
+    except socket.timeout:
+        pass
+    return last
+
+
 def test_runner_signals_clean_shutdown_and_json(tmp_path):
-    for sig in (signal.SIGINT, signal.SIGTERM):
+    # SIGHUP (terminal / ssh session closed) and SIGQUIT end the run as SIGINT / SIGTERM do: statistics printed
+    # and written, exit status 0, and a last state packet flagged stopped (their default actions killed the
+    # runner with neither).
+    for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT):
         out_json = tmp_path / f"stats_{int(sig)}.json"
-        p, port = start_runner("--json", str(out_json))
+        sub = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        sub.bind(("127.0.0.1", 0))
+        p, port = start_runner("--json", str(out_json), "--state-rate", "50",
+                               "--state-to", f"127.0.0.1:{sub.getsockname()[1]}")
         time.sleep(0.5)
         rc, out, err = stop_runner(p, sig)
-        assert rc == 0, err
+        final = _last_state(sub)
+        sub.close()
+        assert rc == 0, (sig, rc, err)
         st = json.loads(out_json.read_text())
         assert st["stop_reason"] == "signal"
         assert st["cycles"] > 300
         for key in ("min", "median", "p99", "p999", "max"):
             assert key in st["latency_ns"] and key in st["tet_ns"]
         assert "overruns" in st
-        assert "p99.9" in out and "overruns" in out
+        assert "p99.9" in out and "overruns" in out and "stopped (signal)" in out
+        assert final is not None and final.stopped and not final.diverged, sig
+
+
+def test_runner_json_write_failure_exits_non_zero(tmp_path):
+    # The statistics asked for and lost: exit status 4 with the reason, not 0 (a script would read a stale file).
+    for path, reason in ((tmp_path / "absent_dir" / "stats.json", "No such file"), ("/dev/full", "No space")):
+        if str(path) == "/dev/full" and not os.path.exists(path):
+            continue
+        r = subprocess.run([runner(), "--duration", "0.05", "--no-rt", "--no-mlock", "--json", str(path)],
+                           capture_output=True, text=True, timeout=20)
+        assert r.returncode == 4, (path, r.returncode, r.stderr)
+        assert f"could not write the statistics to --json {path}" in r.stderr and reason in r.stderr, r.stderr
+        assert "stopped (duration)" in r.stdout  # the printed statistics are still there
+
+
+def test_runner_quiet_still_prints_the_port():
+    p, port = start_runner("--quiet")  # start_runner reads the "listening on udp port" line
+    try:
+        with rt.UdpClient(port, mapping="groups") as c:
+            c.join(timeout=5.0)
+            assert c.session != 0
+    finally:
+        rc, out, err = stop_runner(p)
+    assert rc == 0 and "stopped (signal)" in out
 
 
 def test_runner_fuzzing_with_a_legitimate_controller():
