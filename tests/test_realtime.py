@@ -339,7 +339,11 @@ def test_runner_rejects_bad_arguments():
              (["--timeout", "60"], "--timeout"), (["--q0", "0,0,nan,0,0"], "--q0"),
              # degrees, and a joint beyond its range: refused as Arm.set_state refuses them (issue 25)
              (["--q0", "25,28,16,40,80"], "look like degrees"), (["--q0", "0,0,0,4,0"], "q[ELx] = 4 rad"),
-             (["--stat-rate", "100"], "did you mean --state-rate"), (["--listen", "1.2.3.4"], "HOST:PORT")]
+             (["--stat-rate", "100"], "did you mean --state-rate"), (["--listen", "1.2.3.4"], "HOST:PORT"),
+             # the wildcards allow nobody: refused, not a session no controller can own
+             (["--listen", "127.0.0.1:0", "--allow", "0.0.0.0"], "--allow: '0.0.0.0' matches no sender"),
+             (["--listen", "127.0.0.1:0", "--allow", "::"], "IPv4 only"),
+             (["--key-file", "/dev/zero"], "not a regular file")]
     for args, msg in cases:
         r = subprocess.run([runner(), *args, "--duration", "0.05", "--no-rt", "--no-mlock"] if args[0] != "--duration"
                            else [runner(), *args], capture_output=True, text=True, timeout=20)
@@ -364,6 +368,17 @@ def test_runner_warns_on_non_loopback_without_key(tmp_path):
     assert r.returncode == 0 and "without a shared key" in r.stderr
     key = tmp_path / "key"
     key.write_bytes(b"a lab key of enough length\n")
+    for mode in (0o644, 0o640):  # readable by others or the group: refused, as ssh refuses such a private key
+        key.chmod(mode)
+        r = subprocess.run([runner(), "--key-file", str(key), "--duration", "0.05"], capture_output=True, text=True,
+                           timeout=20)
+        assert r.returncode == 2 and "chmod 600" in r.stderr, r.stderr
+        with pytest.raises(ValueError, match="chmod 600"):
+            rt.read_key_file(key)  # the Python side reads key files by the same rules
+    with pytest.raises(ValueError, match="not a regular file"):
+        rt.read_key_file("/dev/zero")
+    key.chmod(0o600)
+    assert rt.read_key_file(key) == b"a lab key of enough length"
     r = subprocess.run([runner(), "--listen", "0.0.0.0:0", "--duration", "0.05", "--no-rt", "--no-mlock",
                         "--key-file", str(key)], capture_output=True, text=True, timeout=20)
     assert r.returncode == 0 and "without a shared key" not in r.stderr

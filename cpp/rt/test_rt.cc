@@ -18,6 +18,7 @@
 #include <stddef.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/syscall.h>
 #include <ucontext.h>
 #include <unistd.h>
@@ -514,8 +515,48 @@ TEST_CASE("sessions: --allow and --state-to subscribers") {
   a2.join(loop2);
   CHECK(a2.session == 0);
   CHECK_THROWS_AS(parse_source("300.1.1.1"), std::invalid_argument);
+  // The wildcards would match no sender: refused, naming why, and the runner names the option.
+  for (const char* wildcard : {"0.0.0.0", "0.0.0.0:45100", "::", "::1", "[::]:5"})
+    CHECK_THROWS_WITH_AS(parse_source(wildcard), doctest::Contains(wildcard), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(parse_source("0.0.0.0"), doctest::Contains("matches no sender"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(parse_source("::"), doctest::Contains("IPv4 only"), std::invalid_argument);
+  CHECK(parse_source("127.0.0.1:0").addr == htonl(INADDR_LOOPBACK));
+  RtConfig c3;
+  c3.realtime = false;
+  c3.lock_memory = false;
+  c3.listen = "127.0.0.1:0";
+  c3.allow = {"127.0.0.1", "0.0.0.0"};
+  CHECK_THROWS_WITH_AS(RtLoop{c3}, doctest::Contains("--allow: '0.0.0.0' matches no sender"), std::invalid_argument);
   CHECK_THROWS_AS(parse_endpoint("127.0.0.1:0", true), std::invalid_argument);
   CHECK_THROWS_AS(parse_endpoint("127.0.0.1"), std::invalid_argument);
+}
+
+TEST_CASE("--key-file: a regular file its owner alone may read (as ssh requires of a private key)") {
+  char dir[] = "/tmp/armrt_key_XXXXXX";
+  REQUIRE(::mkdtemp(dir) != nullptr);
+  const std::string path = std::string(dir) + "/key";
+  {
+    std::ofstream f(path);
+    f << "a lab key of enough length\n";
+  }
+  REQUIRE(::chmod(path.c_str(), 0600) == 0);
+  CHECK(read_key_file(path) == "a lab key of enough length");  // one trailing newline removed
+  for (mode_t mode : {0640, 0604, 0660, 0644}) {
+    REQUIRE(::chmod(path.c_str(), mode) == 0);
+    CHECK_THROWS_WITH_AS(read_key_file(path), doctest::Contains("chmod 600"), std::invalid_argument);
+  }
+  REQUIRE(::chmod(path.c_str(), 0400) == 0);
+  CHECK(read_key_file(path) == "a lab key of enough length");
+  CHECK_THROWS_WITH_AS(read_key_file("/dev/zero"), doctest::Contains("not a regular file"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(read_key_file(dir), doctest::Contains("not a regular file"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(read_key_file(std::string(dir) + "/absent"), doctest::Contains("cannot read"),
+                       std::invalid_argument);
+  const std::string fifo = std::string(dir) + "/fifo";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);  // must not block waiting for a writer
+  CHECK_THROWS_WITH_AS(read_key_file(fifo), doctest::Contains("not a regular file"), std::invalid_argument);
+  ::unlink(fifo.c_str());
+  ::unlink(path.c_str());
+  ::rmdir(dir);
 }
 
 TEST_CASE("HMAC-SHA256: RFC 4231 test case 1, and keyed sessions refuse unsigned and forged packets") {
