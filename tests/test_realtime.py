@@ -804,6 +804,47 @@ def test_paralysis_holds_in_the_real_time_loop():
     assert np.all(capped.excitation[flexors] == 0.0)
 
 
+def test_runner_strength_by_names_matches_arm_strength():
+    """RealtimeSession(strength=) / --strength scales fmax through the names --max-activation uses (the muscle's
+    value wins over its group's, in either order): with zero excitation the streamed state and muscle forces
+    are the offline Arm's with the same Arm.strength, and not the intact arm's (passive forces scale with fmax)."""
+    import armrt
+    weak = {"bicb": 0.25, "elbow_flexors": 0.5}
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, send_forces=True,
+                            strength=weak) as s, rt.UdpClient(s.port, mapping="groups") as c:
+        c.join()
+        st = None
+        for _ in range(60):
+            c.send({"elbow_flexors": 0.0})
+            st = c.latest_state(timeout=0.2) or st
+            if st is not None and st.time > 0.3:
+                break
+        stats = s.stop()
+    assert stats["error"] == "" and st is not None and st.muscle_force is not None
+    arm, intact = armrt.Arm(), armrt.Arm()
+    arm.strength = weak
+    assert np.all(arm.strength[arm.indices("bicb")] == 0.25)
+    others = sorted(set(arm.indices("elbow_flexors")) - set(arm.indices("bicb")))
+    assert others and np.all(arm.strength[others] == 0.5)
+    n = int(round(st.time / arm.dt))
+    arm.step(n)
+    intact.step(n)
+    np.testing.assert_allclose(st.q, arm.q, atol=1e-9)
+    np.testing.assert_allclose(st.muscle_force, arm.outputs()["muscle_force"], rtol=1e-9, atol=1e-9)
+    assert np.abs(st.muscle_force - intact.outputs()["muscle_force"]).max() > 1e-6
+
+
+def test_strength_bad_values_are_refused():
+    with pytest.raises(ValueError, match=r"strength must be finite and >= 0"):
+        rt.RealtimeSession(strength={"bicb": -0.5})
+    with pytest.raises(ValueError, match=r"--strength: unknown element, muscle or group name 'bicbb' \(did you mean 'bicb'"):
+        rt.RealtimeSession(strength={"bicbb": 0.5})
+    for value in ("-1", "x", "inf", "nan"):
+        r = subprocess.run([runner(), "--strength", f"bicb=0.3,triceps={value}", "--duration", "0.1"],
+                           capture_output=True, text=True, timeout=20)
+        assert r.returncode == 2 and "strength of 'triceps' must be a finite number >= 0" in r.stderr, r.stderr
+
+
 def test_max_activation_bad_values_are_refused():
     with pytest.raises(ValueError, match=r"must lie in \[0, 1\]"):
         rt.RealtimeSession(max_activation={"bicb": 1.5})

@@ -116,6 +116,9 @@ int main(int argc, char** argv) {
   app.add_option("--max-activation", cfg.max_activation, "paralysis/weakness: NAME=V caps the activation of "
                                                        "element, muscle or group NAME at V in [0, 1] (comma-separated)")
       ->delimiter(',');
+  app.add_option("--strength", cfg.strength, "weakness: NAME=V scales the maximum isometric force (DAS3 fmax) of "
+                                           "element, muscle or group NAME by V >= 0 (1: intact; comma-separated)")
+      ->delimiter(',');
   app.add_option("--stimulation", cfg.stimulation, "stimulation map (docs/fes.md): FILE.toml / FILE.json, per_muscle, or default (the model's shipped "
                                                  "map, resolved by the armrt-rt entry point); "
                                                  "packet type 7 then carries pulse width s, amplitude A, frequency Hz "

@@ -830,6 +830,32 @@ TEST_CASE("start / stop on a thread, with statistics") {
   CHECK(loop.stats_json().find("\"overruns\"") != std::string::npos);
 }
 
+TEST_CASE("--strength: fmax scaled by element, muscle or group names, the most specific name winning") {
+  RtConfig c = test_config();
+  RtLoop intact(c);
+  c.strength = {"bicb=0.25", "elbow_flexors=0.5"};
+  RtLoop weak(c);
+  const auto* def = weak.arm().model.def;
+  int n_bicb = 0, n_flexor = 0;
+  for (int i = 0; i < def->num_elements; ++i) {
+    const double f0 = intact.arm().data.muscles.fmax[i], f = weak.arm().data.muscles.fmax[i];
+    const double s = weak.arm().data.settings.strength_scale[i];
+    CHECK(f == doctest::Approx(s * f0).epsilon(1e-12));  // the engine scaled fmax by the setting
+    if (s == 0.25) ++n_bicb;
+    if (s == 0.5) ++n_flexor;
+    CHECK((s == 1.0 || s == 0.5 || s == 0.25));
+  }
+  CHECK(n_bicb > 0);
+  CHECK(n_flexor > 0);
+  c.strength = {"bicb=-1"};
+  CHECK_THROWS_WITH_AS(RtLoop{c}, doctest::Contains("--strength: strength of 'bicb' must be a finite number >= 0"),
+                       std::invalid_argument);
+  c.strength = {"bicb=inf"};
+  CHECK_THROWS_AS(RtLoop{c}, std::invalid_argument);
+  c.strength = {"bicbb=0.5"};
+  CHECK_THROWS_WITH_AS(RtLoop{c}, doctest::Contains("--strength: unknown"), std::invalid_argument);
+}
+
 // The state packet's bytes for one fixed run, captured from the runner before its packet table
 // (ARMRT_PACKET_FIELDS) existed: the table must reproduce version 3 byte for byte. The session id
 // (random) is zeroed; lag and overruns must be 0 (a run that overran says so and compares nothing).
