@@ -186,20 +186,64 @@ def test_silence_falls_to_zero_and_held_before():
 
 
 # ---------------------------------------------------------------------------------------- runner
+def _last_state(sub):
+    """The last state packet a subscriber socket holds (None if none)."""
+    last = None
+    sub.settimeout(0.3)
+    try:
+        while True:
+            last = rt.StatePacket.from_packet(rt.decode_packet(sub.recv(65536)))
+    except socket.timeout:
+        pass
+    return last
+
+
 def test_runner_signals_clean_shutdown_and_json(tmp_path):
-    for sig in (signal.SIGINT, signal.SIGTERM):
+    # SIGHUP (terminal / ssh session closed) and SIGQUIT end the run as SIGINT / SIGTERM do: statistics printed
+    # and written, exit status 0, and a last state packet flagged stopped (their default actions killed the
+    # runner with neither).
+    for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT):
         out_json = tmp_path / f"stats_{int(sig)}.json"
-        p, port = start_runner("--json", str(out_json))
+        sub = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        sub.bind(("127.0.0.1", 0))
+        p, port = start_runner("--json", str(out_json), "--state-rate", "50",
+                               "--state-to", f"127.0.0.1:{sub.getsockname()[1]}")
         time.sleep(0.5)
         rc, out, err = stop_runner(p, sig)
-        assert rc == 0, err
+        final = _last_state(sub)
+        sub.close()
+        assert rc == 0, (sig, rc, err)
         st = json.loads(out_json.read_text())
         assert st["stop_reason"] == "signal"
         assert st["cycles"] > 300
         for key in ("min", "median", "p99", "p999", "max"):
             assert key in st["latency_ns"] and key in st["tet_ns"]
         assert "overruns" in st
-        assert "p99.9" in out and "overruns" in out
+        assert "p99.9" in out and "overruns" in out and "stopped (signal)" in out
+        assert final is not None and final.stopped and not final.diverged, sig
+
+
+def test_runner_json_write_failure_exits_non_zero(tmp_path):
+    # The statistics asked for and lost: exit status 4 with the reason, not 0 (a script would read a stale file).
+    for path, reason in ((tmp_path / "absent_dir" / "stats.json", "No such file"), ("/dev/full", "No space")):
+        if str(path) == "/dev/full" and not os.path.exists(path):
+            continue
+        r = subprocess.run([runner(), "--duration", "0.05", "--no-rt", "--no-mlock", "--json", str(path)],
+                           capture_output=True, text=True, timeout=20)
+        assert r.returncode == 4, (path, r.returncode, r.stderr)
+        assert f"could not write the statistics to --json {path}" in r.stderr and reason in r.stderr, r.stderr
+        assert "stopped (duration)" in r.stdout  # the printed statistics are still there
+
+
+def test_runner_quiet_still_prints_the_port():
+    p, port = start_runner("--quiet")  # start_runner reads the "listening on udp port" line
+    try:
+        with rt.UdpClient(port, mapping="groups") as c:
+            c.join(timeout=5.0)
+            assert c.session != 0
+    finally:
+        rc, out, err = stop_runner(p)
+    assert rc == 0 and "stopped (signal)" in out
 
 
 def test_runner_fuzzing_with_a_legitimate_controller():
@@ -295,7 +339,11 @@ def test_runner_rejects_bad_arguments():
              (["--timeout", "60"], "--timeout"), (["--q0", "0,0,nan,0,0"], "--q0"),
              # degrees, and a joint beyond its range: refused as Arm.set_state refuses them (issue 25)
              (["--q0", "25,28,16,40,80"], "look like degrees"), (["--q0", "0,0,0,4,0"], "q[ELx] = 4 rad"),
-             (["--stat-rate", "100"], "did you mean --state-rate"), (["--listen", "1.2.3.4"], "HOST:PORT")]
+             (["--stat-rate", "100"], "did you mean --state-rate"), (["--listen", "1.2.3.4"], "HOST:PORT"),
+             # the wildcards allow nobody: refused, not a session no controller can own
+             (["--listen", "127.0.0.1:0", "--allow", "0.0.0.0"], "--allow: '0.0.0.0' matches no sender"),
+             (["--listen", "127.0.0.1:0", "--allow", "::"], "IPv4 only"),
+             (["--key-file", "/dev/zero"], "not a regular file")]
     for args, msg in cases:
         r = subprocess.run([runner(), *args, "--duration", "0.05", "--no-rt", "--no-mlock"] if args[0] != "--duration"
                            else [runner(), *args], capture_output=True, text=True, timeout=20)
@@ -320,6 +368,17 @@ def test_runner_warns_on_non_loopback_without_key(tmp_path):
     assert r.returncode == 0 and "without a shared key" in r.stderr
     key = tmp_path / "key"
     key.write_bytes(b"a lab key of enough length\n")
+    for mode in (0o644, 0o640):  # readable by others or the group: refused, as ssh refuses such a private key
+        key.chmod(mode)
+        r = subprocess.run([runner(), "--key-file", str(key), "--duration", "0.05"], capture_output=True, text=True,
+                           timeout=20)
+        assert r.returncode == 2 and "chmod 600" in r.stderr, r.stderr
+        with pytest.raises(ValueError, match="chmod 600"):
+            rt.read_key_file(key)  # the Python side reads key files by the same rules
+    with pytest.raises(ValueError, match="not a regular file"):
+        rt.read_key_file("/dev/zero")
+    key.chmod(0o600)
+    assert rt.read_key_file(key) == b"a lab key of enough length"
     r = subprocess.run([runner(), "--listen", "0.0.0.0:0", "--duration", "0.05", "--no-rt", "--no-mlock",
                         "--key-file", str(key)], capture_output=True, text=True, timeout=20)
     assert r.returncode == 0 and "without a shared key" not in r.stderr
@@ -743,6 +802,47 @@ def test_paralysis_holds_in_the_real_time_loop():
     np.testing.assert_allclose(st.q, arm.q, atol=1e-9)
     assert capped is not None and np.all(capped.excitation[arm.indices("triceps")] == 0.25)
     assert np.all(capped.excitation[flexors] == 0.0)
+
+
+def test_runner_strength_by_names_matches_arm_strength():
+    """RealtimeSession(strength=) / --strength scales fmax through the names --max-activation uses (the muscle's
+    value wins over its group's, in either order): with zero excitation the streamed state and muscle forces
+    are the offline Arm's with the same Arm.strength, and not the intact arm's (passive forces scale with fmax)."""
+    import armrt
+    weak = {"bicb": 0.25, "elbow_flexors": 0.5}
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, send_forces=True,
+                            strength=weak) as s, rt.UdpClient(s.port, mapping="groups") as c:
+        c.join()
+        st = None
+        for _ in range(60):
+            c.send({"elbow_flexors": 0.0})
+            st = c.latest_state(timeout=0.2) or st
+            if st is not None and st.time > 0.3:
+                break
+        stats = s.stop()
+    assert stats["error"] == "" and st is not None and st.muscle_force is not None
+    arm, intact = armrt.Arm(), armrt.Arm()
+    arm.strength = weak
+    assert np.all(arm.strength[arm.indices("bicb")] == 0.25)
+    others = sorted(set(arm.indices("elbow_flexors")) - set(arm.indices("bicb")))
+    assert others and np.all(arm.strength[others] == 0.5)
+    n = int(round(st.time / arm.dt))
+    arm.step(n)
+    intact.step(n)
+    np.testing.assert_allclose(st.q, arm.q, atol=1e-9)
+    np.testing.assert_allclose(st.muscle_force, arm.outputs()["muscle_force"], rtol=1e-9, atol=1e-9)
+    assert np.abs(st.muscle_force - intact.outputs()["muscle_force"]).max() > 1e-6
+
+
+def test_strength_bad_values_are_refused():
+    with pytest.raises(ValueError, match=r"strength must be finite and >= 0"):
+        rt.RealtimeSession(strength={"bicb": -0.5})
+    with pytest.raises(ValueError, match=r"--strength: unknown element, muscle or group name 'bicbb' \(did you mean 'bicb'"):
+        rt.RealtimeSession(strength={"bicbb": 0.5})
+    for value in ("-1", "x", "inf", "nan"):
+        r = subprocess.run([runner(), "--strength", f"bicb=0.3,triceps={value}", "--duration", "0.1"],
+                           capture_output=True, text=True, timeout=20)
+        assert r.returncode == 2 and "strength of 'triceps' must be a finite number >= 0" in r.stderr, r.stderr
 
 
 def test_max_activation_bad_values_are_refused():

@@ -1,12 +1,13 @@
 // armrt-rt: runs the arm model at a fixed rate on a SCHED_FIFO thread, with UDP excitation input and
 // state output (docs/realtime.md). Prints TET / wake-up latency percentiles and overruns on exit
-// (end of --duration, SIGINT or SIGTERM) and writes them as JSON (--json).
+// (end of --duration, SIGINT, SIGTERM, SIGHUP or SIGQUIT) and writes them as JSON (--json).
 #include <signal.h>
 #include <time.h>
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -115,13 +116,16 @@ int main(int argc, char** argv) {
   app.add_option("--max-activation", cfg.max_activation, "paralysis/weakness: NAME=V caps the activation of "
                                                        "element, muscle or group NAME at V in [0, 1] (comma-separated)")
       ->delimiter(',');
+  app.add_option("--strength", cfg.strength, "weakness: NAME=V scales the maximum isometric force (DAS3 fmax) of "
+                                           "element, muscle or group NAME by V >= 0 (1: intact; comma-separated)")
+      ->delimiter(',');
   app.add_option("--stimulation", cfg.stimulation, "stimulation map (docs/fes.md): FILE.toml / FILE.json, per_muscle, or default (the model's shipped "
                                                  "map, resolved by the armrt-rt entry point); "
                                                  "packet type 7 then carries pulse width s, amplitude A, frequency Hz "
                                                  "per channel (beyond a channel's limits: clamped and counted)");
   app.add_option("--rx-budget", cfg.rx_budget_us, "receive work per cycle, us (default: min(150, period / 4))");
   app.add_option("--json", json_path, "write the statistics as JSON");
-  app.add_flag("--quiet", quiet, "print only the summary");
+  app.add_flag("--quiet", quiet, "print only the summary (and the bound udp port with --listen)");
   try {
     app.parse(argc, argv);
     if (!app.remaining().empty()) throw std::invalid_argument(unknown_option_message(app, app.remaining().front()));
@@ -158,8 +162,10 @@ int main(int argc, char** argv) {
   struct sigaction sa {};
   sa.sa_handler = on_signal;
   sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
+  // SIGHUP (the terminal or ssh session closed) and SIGQUIT (Ctrl-backslash) end the run as SIGINT / SIGTERM do: their
+  // default actions would kill the runner without its statistics and without the last state packet
+  // flagged stopped, which tells the controller and subscribers that the excitation is gone.
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) sigaction(sig, &sa, nullptr);
 
   try {
     loop->start();
@@ -176,7 +182,11 @@ int main(int argc, char** argv) {
                 "cpu %d\n", cfg.model.c_str(), cfg.integrator.c_str(), cfg.rate_hz, 1.0 / cfg.rate_hz,
                 loop->config().integration_step, st0.scheduler.c_str(), st0.priority,
                 st0.memory_locked ? "locked" : "not locked", st0.cpu);
-    if (!cfg.listen.empty()) std::printf("armrt-rt: listening on udp port %d\n", loop->bound_port());
+    std::fflush(stdout);
+  }
+  // The bound port is printed even with --quiet: with --listen HOST:0 it is the only way to learn it.
+  if (!cfg.listen.empty()) {
+    std::printf("armrt-rt: listening on udp port %d\n", loop->bound_port());
     std::fflush(stdout);
   }
   while (!loop->finished()) {
@@ -207,14 +217,24 @@ int main(int argc, char** argv) {
                 loop->arm().data.stimulation_map.num_channels, (unsigned long long)k.stimulation_applied,
                 (unsigned long long)k.stimulation_clamped);
   std::fflush(stdout);
+  // A run whose statistics were asked for and lost is not a success: a script reading the JSON would
+  // otherwise find an old file or none after exit status 0. The error is checked after close (a full disk
+  // shows only when the buffer is flushed).
+  bool json_failed = false;
   if (!json_path.empty()) {
+    errno = 0;
     std::ofstream f(json_path);
-    f << loop->stats_json();
-    if (!f) std::fprintf(stderr, "armrt-rt: could not write %s\n", json_path.c_str());
+    if (f) f << loop->stats_json();
+    if (f) f.close();
+    if (!f) {
+      json_failed = true;
+      std::fprintf(stderr, "armrt-rt: could not write the statistics to --json %s%s%s\n", json_path.c_str(),
+                   errno ? ": " : "", errno ? std::strerror(errno) : "");
+    }
   }
   if (st.stop_reason == "diverged" || st.stop_reason == "lag") {
     std::fprintf(stderr, "armrt-rt: %s\n", st.error.c_str());
     return 1;
   }
-  return 0;
+  return json_failed ? 4 : 0;
 }

@@ -36,10 +36,20 @@ sockaddr_in parse_endpoint(const std::string& s, bool require_port) {
 
 SourceFilter parse_source(const std::string& s) {
   SourceFilter f;
+  // "::" or any IPv6 form: the runner is IPv4 only, and "::" is a wildcard, which as a source matches nobody.
+  if (s.find(':') != s.rfind(':') || s.find('[') != std::string::npos)
+    throw std::invalid_argument("'" + s + "' is an IPv6 address; the runner listens on IPv4 only "
+                                "(HOST or HOST:PORT, e.g. 127.0.0.1)");
   const auto colon = s.rfind(':');
   const std::string host = colon == std::string::npos ? s : s.substr(0, colon);
   if (host.empty()) throw std::invalid_argument("expected HOST or HOST:PORT, got '" + s + "'");
   f.addr = parse_host(host, s).s_addr;
+  // 0.0.0.0 means "any address" to bind(), but no packet comes from it: as an allow-list entry it would
+  // silently let nobody own the session. Allowing every host is the default (no --allow).
+  if (f.addr == htonl(INADDR_ANY))
+    throw std::invalid_argument("'" + s + "' matches no sender (0.0.0.0 is the wildcard for listening, never a "
+                                "source address); name the controller's address, or give no --allow to let any "
+                                "host own the session");
   if (colon != std::string::npos) f.port = htons(parse_port(s.substr(colon + 1), s, false));
   return f;
 }

@@ -3,11 +3,15 @@
 #define OPENSSL_SUPPRESS_DEPRECATED
 #include "hmac.h"
 
+#include <fcntl.h>
 #include <openssl/crypto.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
 
 #include <cstring>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace armrt::rt {
@@ -53,11 +57,40 @@ bool HmacKey::verify(const std::uint8_t* data, long n, const std::uint8_t* tag) 
 }
 
 std::string read_key_file(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw std::invalid_argument("cannot read the key file '" + path + "'");
-  std::stringstream ss;
-  ss << f.rdbuf();
-  std::string key = ss.str();
+  // As ssh treats a private key: only a regular file (a device such as /dev/zero would be read forever,
+  // a FIFO would block) that neither the group nor others may read or write. The checks are on the opened
+  // descriptor (fstat), so the file checked is the file read. O_NONBLOCK: opening a FIFO does not wait.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+  if (fd < 0) throw std::invalid_argument("cannot read the key file '" + path + "': " + std::strerror(errno));
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw std::invalid_argument("the key file '" + path + "' is not a regular file");
+  }
+  if (st.st_mode & 077) {
+    ::close(fd);
+    char mode[8];
+    std::snprintf(mode, sizeof mode, "%04o", static_cast<unsigned>(st.st_mode & 07777));
+    throw std::invalid_argument("the key file '" + path + "' is accessible by group or others (mode " + mode +
+                                "); it must be readable by its owner only, as ssh requires of a private key: "
+                                "chmod 600 '" + path + "'");
+  }
+  constexpr off_t kMaxKeyBytes = 4096;  // a shared key, not a data file
+  if (st.st_size > kMaxKeyBytes) {
+    ::close(fd);
+    throw std::invalid_argument("the key file '" + path + "' is " + std::to_string(st.st_size) +
+                                " bytes (a key is 16 .. 4096 bytes)");
+  }
+  std::string key(static_cast<std::size_t>(st.st_size), '\0');
+  std::size_t got = 0;
+  while (got < key.size()) {
+    const ssize_t n = ::read(fd, &key[got], key.size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+  key.resize(got);
   if (!key.empty() && key.back() == '\n') key.pop_back();
   if (!key.empty() && key.back() == '\r') key.pop_back();
   if (key.size() < 16)

@@ -113,20 +113,34 @@ Schedule check_config(RtConfig& cfg) {
   return s;
 }
 
-std::vector<std::pair<std::string, double>> parse_max_activation(const std::vector<std::string>& items) {
+namespace {
+
+// "NAME=VALUE" items -> (name, value) pairs, VALUE a number in [lo, hi]; `what` and `range` word the error.
+std::vector<std::pair<std::string, double>> parse_name_values(const std::vector<std::string>& items, const char* what,
+                                                              double lo, double hi, const char* range) {
   std::vector<std::pair<std::string, double>> out;
   for (const std::string& item : items) {
     const auto eq = item.find('=');
-    if (eq == std::string::npos) throw std::invalid_argument("max activation '" + item + "' is not NAME=VALUE");
+    if (eq == std::string::npos) throw std::invalid_argument(std::string(what) + " '" + item + "' is not NAME=VALUE");
     const std::string name = item.substr(0, eq);
     char* end = nullptr;
     const double v = std::strtod(item.c_str() + eq + 1, &end);
-    if (end == item.c_str() + eq + 1 || *end != '\0' || !(v >= 0.0 && v <= 1.0))
-      throw std::invalid_argument("max activation of '" + name + "' must be a number in [0, 1], got '" +
+    if (end == item.c_str() + eq + 1 || *end != '\0' || !std::isfinite(v) || !(v >= lo && v <= hi))
+      throw std::invalid_argument(std::string(what) + " of '" + name + "' must be " + range + ", got '" +
                                   item.substr(eq + 1) + "'");
     out.emplace_back(name, v);
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, double>> parse_max_activation(const std::vector<std::string>& items) {
+  return parse_name_values(items, "max activation", 0.0, 1.0, "a number in [0, 1]");
+}
+
+std::vector<std::pair<std::string, double>> parse_strength(const std::vector<std::string>& items) {
+  return parse_name_values(items, "strength", 0.0, HUGE_VAL, "a finite number >= 0");
 }
 
 }  // namespace armrt::rt

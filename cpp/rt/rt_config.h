@@ -41,6 +41,9 @@ struct RtConfig {
   // Paralysis / weakness: "NAME=VALUE" (element, muscle or group; VALUE in [0, 1]) caps the
   // activation every excitation source can produce; later entries override earlier ones.
   std::vector<std::string> max_activation;
+  // Weakness: "NAME=VALUE" (element, muscle or group; VALUE finite, >= 0) scales the elements' DAS3 fmax, as
+  // Arm.strength does (1 = intact); the same names and overlap rule as max_activation.
+  std::vector<std::string> strength;
   // Stimulation map (docs/fes.md): a .json / .toml file or "per_muscle"; empty: none. With one, kStimulation
   // packets drive the channels (values beyond a channel's limits are clamped and counted) and state packets
   // carry the applied stimulation and each channel's fatigue.
@@ -62,6 +65,9 @@ Schedule check_config(RtConfig& cfg);
 
 // "NAME=VALUE" items of --max-activation -> (name, value) pairs, VALUE a number in [0, 1].
 std::vector<std::pair<std::string, double>> parse_max_activation(const std::vector<std::string>& items);
+// "NAME=VALUE" items of --strength -> (name, value) pairs, VALUE a finite number >= 0 (no upper bound: the
+// engine's own check, model.cc, as Arm.strength).
+std::vector<std::pair<std::string, double>> parse_strength(const std::vector<std::string>& items);
 
 // Loads a model library given with --model-library (registry.h load_model_library) after checking it against the
 // SHA-256 written beside it when `armrt model build` made it (PATH.sha256: "HEX  NAME", armrt/model_build.py): a

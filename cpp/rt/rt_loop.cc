@@ -63,6 +63,18 @@ void RtLoop::make_simulator(const ModelDef& def, const Schedule& sched) {
     std::copy(cap.begin(), cap.end(), sim_->data.settings.max_activation.begin());
     sim_->apply_settings();
   }
+  // strength scales fmax (weakness), by the same names and rule; apply_settings re-derives the muscle
+  // constants and checks the values as Arm.strength's setter does (model.cc).
+  if (!cfg_.strength.empty()) {
+    try {
+      const std::vector<double> scale =
+          values_from_names(def, parse_strength(cfg_.strength), sim_->data.settings.strength_scale.data());
+      std::copy(scale.begin(), scale.end(), sim_->data.settings.strength_scale.begin());
+      sim_->apply_settings();
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--strength: ") + e.what());
+    }
+  }
   // The stimulation map, read and checked by the engine's one reader (stimulation_map.cc), as Arm(stimulation=)
   // reads it: the channels start at zero (no pulses) until the owner's first stimulation packet.
   if (!cfg_.stimulation.empty()) {

@@ -76,7 +76,13 @@ Session::Session(const RtConfig& cfg, const ModelDef& def, const StimulationMap&
   values_.assign(kMaxValues, 0.0);
 
   if (!cfg.key.empty()) key_ = HmacKey(cfg.key);
-  for (const auto& a : cfg.allow) allow_.push_back(parse_source(a));
+  for (const auto& a : cfg.allow) {
+    try {
+      allow_.push_back(parse_source(a));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--allow: ") + e.what());
+    }
+  }
   for (const auto& d : cfg.state_to) subscribers_.push_back(parse_endpoint(d, true));
   if (::getrandom(&session_rng_, sizeof session_rng_, 0) != sizeof session_rng_)
     session_rng_ = static_cast<std::uint64_t>(now_ns());

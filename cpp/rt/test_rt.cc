@@ -18,6 +18,7 @@
 #include <stddef.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/syscall.h>
 #include <ucontext.h>
 #include <unistd.h>
@@ -514,8 +515,48 @@ TEST_CASE("sessions: --allow and --state-to subscribers") {
   a2.join(loop2);
   CHECK(a2.session == 0);
   CHECK_THROWS_AS(parse_source("300.1.1.1"), std::invalid_argument);
+  // The wildcards would match no sender: refused, naming why, and the runner names the option.
+  for (const char* wildcard : {"0.0.0.0", "0.0.0.0:45100", "::", "::1", "[::]:5"})
+    CHECK_THROWS_WITH_AS(parse_source(wildcard), doctest::Contains(wildcard), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(parse_source("0.0.0.0"), doctest::Contains("matches no sender"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(parse_source("::"), doctest::Contains("IPv4 only"), std::invalid_argument);
+  CHECK(parse_source("127.0.0.1:0").addr == htonl(INADDR_LOOPBACK));
+  RtConfig c3;
+  c3.realtime = false;
+  c3.lock_memory = false;
+  c3.listen = "127.0.0.1:0";
+  c3.allow = {"127.0.0.1", "0.0.0.0"};
+  CHECK_THROWS_WITH_AS(RtLoop{c3}, doctest::Contains("--allow: '0.0.0.0' matches no sender"), std::invalid_argument);
   CHECK_THROWS_AS(parse_endpoint("127.0.0.1:0", true), std::invalid_argument);
   CHECK_THROWS_AS(parse_endpoint("127.0.0.1"), std::invalid_argument);
+}
+
+TEST_CASE("--key-file: a regular file its owner alone may read (as ssh requires of a private key)") {
+  char dir[] = "/tmp/armrt_key_XXXXXX";
+  REQUIRE(::mkdtemp(dir) != nullptr);
+  const std::string path = std::string(dir) + "/key";
+  {
+    std::ofstream f(path);
+    f << "a lab key of enough length\n";
+  }
+  REQUIRE(::chmod(path.c_str(), 0600) == 0);
+  CHECK(read_key_file(path) == "a lab key of enough length");  // one trailing newline removed
+  for (mode_t mode : {0640, 0604, 0660, 0644}) {
+    REQUIRE(::chmod(path.c_str(), mode) == 0);
+    CHECK_THROWS_WITH_AS(read_key_file(path), doctest::Contains("chmod 600"), std::invalid_argument);
+  }
+  REQUIRE(::chmod(path.c_str(), 0400) == 0);
+  CHECK(read_key_file(path) == "a lab key of enough length");
+  CHECK_THROWS_WITH_AS(read_key_file("/dev/zero"), doctest::Contains("not a regular file"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(read_key_file(dir), doctest::Contains("not a regular file"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(read_key_file(std::string(dir) + "/absent"), doctest::Contains("cannot read"),
+                       std::invalid_argument);
+  const std::string fifo = std::string(dir) + "/fifo";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);  // must not block waiting for a writer
+  CHECK_THROWS_WITH_AS(read_key_file(fifo), doctest::Contains("not a regular file"), std::invalid_argument);
+  ::unlink(fifo.c_str());
+  ::unlink(path.c_str());
+  ::rmdir(dir);
 }
 
 TEST_CASE("HMAC-SHA256: RFC 4231 test case 1, and keyed sessions refuse unsigned and forged packets") {
@@ -787,6 +828,32 @@ TEST_CASE("start / stop on a thread, with statistics") {
   CHECK(st.tet.median > 0);
   CHECK(st.tet.median < st.tet.max + 1);
   CHECK(loop.stats_json().find("\"overruns\"") != std::string::npos);
+}
+
+TEST_CASE("--strength: fmax scaled by element, muscle or group names, the most specific name winning") {
+  RtConfig c = test_config();
+  RtLoop intact(c);
+  c.strength = {"bicb=0.25", "elbow_flexors=0.5"};
+  RtLoop weak(c);
+  const auto* def = weak.arm().model.def;
+  int n_bicb = 0, n_flexor = 0;
+  for (int i = 0; i < def->num_elements; ++i) {
+    const double f0 = intact.arm().data.muscles.fmax[i], f = weak.arm().data.muscles.fmax[i];
+    const double s = weak.arm().data.settings.strength_scale[i];
+    CHECK(f == doctest::Approx(s * f0).epsilon(1e-12));  // the engine scaled fmax by the setting
+    if (s == 0.25) ++n_bicb;
+    if (s == 0.5) ++n_flexor;
+    CHECK((s == 1.0 || s == 0.5 || s == 0.25));
+  }
+  CHECK(n_bicb > 0);
+  CHECK(n_flexor > 0);
+  c.strength = {"bicb=-1"};
+  CHECK_THROWS_WITH_AS(RtLoop{c}, doctest::Contains("--strength: strength of 'bicb' must be a finite number >= 0"),
+                       std::invalid_argument);
+  c.strength = {"bicb=inf"};
+  CHECK_THROWS_AS(RtLoop{c}, std::invalid_argument);
+  c.strength = {"bicbb=0.5"};
+  CHECK_THROWS_WITH_AS(RtLoop{c}, doctest::Contains("--strength: unknown"), std::invalid_argument);
 }
 
 // The state packet's bytes for one fixed run, captured from the runner before its packet table

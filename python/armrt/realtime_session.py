@@ -21,21 +21,28 @@ from .checks import real_array, real_scalar
 from .realtime_packets import _key_bytes
 
 
-def _max_activation_items(values, model: str) -> list[str]:
-    """{name: value} or an array of one value per element -> the runner's "NAME=VALUE" items."""
+def _name_value_items(values, model: str, what: str = "max_activation", hi: float = 1.0) -> list[str]:
+    """{name: value} or an array of one value per element -> the runner's "NAME=VALUE" items, each value
+    in [0, hi] (max_activation: [0, 1]; strength: [0, inf), finite)."""
     if isinstance(values, Mapping):
-        items = [(str(k), real_scalar(v, f"max_activation[{k!r}]")) for k, v in values.items()]
+        items = [(str(k), real_scalar(v, f"{what}[{k!r}]")) for k, v in values.items()]
     else:
         from . import _core
         names = [e["name"] for e in _core.model_info(model)["elements"]]
-        arr = real_array(values, "max_activation").ravel()
+        arr = real_array(values, what).ravel()
         if arr.size != len(names):
-            raise ValueError(f"max_activation must have {len(names)} values (one per element), got {arr.size}")
+            raise ValueError(f"{what} must have {len(names)} values (one per element), got {arr.size}")
         items = list(zip(names, arr.tolist()))
-    bad = [f"{k}={v}" for k, v in items if not 0.0 <= v <= 1.0]
+    bad = [f"{k}={v}" for k, v in items if not (0.0 <= v <= hi and np.isfinite(v))]
     if bad:
-        raise ValueError(f"max_activation must lie in [0, 1]: {bad[:5]}")
+        raise ValueError(f"{what} must lie in [0, 1]: {bad[:5]}" if hi == 1.0 else
+                         f"{what} must be finite and >= 0: {bad[:5]}")
     return [f"{k}={v!r}" for k, v in items]
+
+
+def _max_activation_items(values, model: str) -> list[str]:
+    """{name: value} or an array of one value per element -> the runner's "NAME=VALUE" items."""
+    return _name_value_items(values, model)
 
 
 # ---------------------------------------------------------------------------------------- session
@@ -52,7 +59,9 @@ class RealtimeSession:
     or a list), allow (list of "host[:port]"), key (bytes >= 16), state_rate_hz, send_forces,
     send_excitation, input_timeout, channels, rx_budget_us, max_activation ({name: value} of elements,
     muscles or groups, or one value per element, in [0, 1]: paralysis and weakness; every excitation,
-    and the excitations streamed with send_excitation, are capped at it), stimulation (a map: "per_muscle",
+    and the excitations streamed with send_excitation, are capped at it), strength ({name: value} or one
+    value per element, finite and >= 0: scales the elements' DAS3 fmax as Arm.strength does, 1 = intact),
+    stimulation (a map: "per_muscle",
     "default" (the model's shipped map), a .json/.toml path or a dict, docs/fes.md; stimulation packets then drive its channels, clamped to their
     limits and counted, zeroed when the session ends; state packets carry the applied stimulation and the
     fatigue). Bad values raise ValueError naming the option.
@@ -78,6 +87,11 @@ class RealtimeSession:
             config["max_activation"] = _max_activation_items(config["max_activation"], config.get("model", "das2"))
         else:
             config.pop("max_activation", None)
+        if config.get("strength") is not None:
+            config["strength"] = _name_value_items(config["strength"], config.get("model", "das2"), "strength",
+                                                   float("inf"))
+        else:
+            config.pop("strength", None)
         for name in ("state_to", "allow"):
             if isinstance(config.get(name), str):
                 config[name] = [config[name]] if config[name] else []
