@@ -39,6 +39,7 @@ import socket
 import sys
 import threading
 import time
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -216,6 +217,52 @@ def match_labels(labels: list[str], names: list[str], stream: str = "") -> np.nd
     return np.array([pos[lab] for lab in labels], dtype=int)
 
 
+# The endpoint-command input's channels (thorax frame, docs/conventions.md): a desired hand velocity and/or
+# position, each as a complete x, y, z triple.
+ENDPOINT_VELOCITY = ("hand_velocity_x", "hand_velocity_y", "hand_velocity_z")   # m/s
+ENDPOINT_POSITION = ("hand_position_x", "hand_position_y", "hand_position_z")   # m
+ENDPOINT_LABELS = ENDPOINT_VELOCITY + ENDPOINT_POSITION
+
+
+@dataclass(frozen=True)
+class EndpointCommand:
+    """One sample of a decoder's endpoint-command stream: its LSL timestamp (s, as the inlet delivers it), the
+    desired hand velocity (3,) m/s and position (3,) m in the thorax frame, each None when the stream has no
+    such channels."""
+    timestamp: float
+    hand_velocity: np.ndarray | None
+    hand_position: np.ndarray | None
+
+
+def endpoint_layout(labels: list[str], stream: str = "") -> tuple[bool, bool]:
+    """(has velocity, has position) of an endpoint-command stream's channel labels; ValueError naming unknown or
+    duplicate labels (match_labels) or an incomplete x, y, z triple."""
+    match_labels(labels, list(ENDPOINT_LABELS), stream)
+    where = f" of stream {stream!r}" if stream else ""
+    present = []
+    for triple in (ENDPOINT_VELOCITY, ENDPOINT_POSITION):
+        have = [lab for lab in triple if lab in labels]
+        if have and len(have) != 3:
+            raise ValueError(f"endpoint command{where}: {sorted(set(triple) - set(have))} missing "
+                             f"(a velocity or position comes as x, y and z)")
+        present.append(bool(have))
+    return present[0], present[1]
+
+
+def endpoint_stream_info(pylsl, name: str, source_id: str, rate_hz: float, labels=ENDPOINT_LABELS):
+    """A decoder's endpoint-command stream as the bridge matches it (type "EndpointCommand", float64): channels
+    labelled from ENDPOINT_LABELS (complete triples), units m/s and m, thorax frame."""
+    labels = list(labels)
+    endpoint_layout(labels)
+    info = pylsl.StreamInfo(name, "EndpointCommand", len(labels), rate_hz, pylsl.cf_double64, source_id)
+    desc = info.desc()
+    desc.append_child_value("frames", "hand velocity and position in the thorax frame (docs/conventions.md)")
+    units = ["m/s" if lab in ENDPOINT_VELOCITY else "m" for lab in labels]
+    types = ["velocity" if lab in ENDPOINT_VELOCITY else "position" for lab in labels]
+    _describe(desc, "decoder", labels, units, types)
+    return info
+
+
 class LslBridge:
     """State packets (UDP, from the runner) -> LSL outlet; LSL excitation inlet -> UDP packets.
 
@@ -231,6 +278,10 @@ class LslBridge:
     cannot be matched, or a declared channel set the runner does not fill (forces), raises from step() / run().
     Besides the state stream it publishes the GH stability stream "<source_id>-gh" (gh_name; gh_channels(), each
     with its state sample's timestamp) and the marker stream "<source_id>-markers" (marker_name; push_marker()).
+    endpoint_consumer: a callable(EndpointCommand) -> excitation (the mapping's names, or None): the input
+    stream is then a decoder's endpoint command (channels labelled from ENDPOINT_LABELS, matched by label, default
+    name "armrt_endpoint"); every sample reaches the consumer in order (a sample with a NaN or an infinity is
+    refused, counted in .refused), and the last excitation it returns in a pass is forwarded to the runner.
     """
 
     def __init__(self, runner_port: int, runner_host: str = "127.0.0.1", state_port: int = 0,
@@ -239,8 +290,15 @@ class LslBridge:
                  state_rate_hz: float = 100.0, forces: bool = False, excitation_source_id: str | None = None,
                  excitation_host: str | None = None, runner_rate_hz: float = 1000.0, key: bytes | None = None,
                  excitations: bool = False, stimulation=None, gh_name: str = "armrt_gh",
-                 marker_name: str = "armrt_markers"):
+                 marker_name: str = "armrt_markers", endpoint_consumer=None):
         self.pylsl = _pylsl()
+        if endpoint_consumer is not None and mapping == "stimulation":
+            raise ValueError("an endpoint consumer returns excitations: use an excitation mapping, not 'stimulation'")
+        if endpoint_consumer is not None and not callable(endpoint_consumer):
+            raise ValueError(f"endpoint_consumer must be callable(EndpointCommand), got {endpoint_consumer!r}")
+        self.endpoint_consumer = endpoint_consumer
+        if endpoint_consumer is not None and excitation_name == "armrt_excitation":
+            excitation_name = "armrt_endpoint"
         self.state_every = check_state_rate(state_rate_hz, runner_rate_hz)
         self.state_period = self.state_every / runner_rate_hz
         self.stimulating = mapping == "stimulation"
@@ -254,6 +312,9 @@ class LslBridge:
         # What the input stream's labels are matched against: the mapping's names, or the stimulation labels.
         self.mapping = self.client.stimulation if self.stimulating else self.client.mapping
         self.input_names = list(self.mapping.labels if self.stimulating else self.mapping.names)
+        if endpoint_consumer is not None:
+            self.input_names = list(ENDPOINT_LABELS)
+        self.endpoint_has = (False, False)  # (velocity, position) channels of the matched endpoint stream
         self.refused = 0  # input samples not forwarded (the Python API would refuse them)
         self.state_port = self.client.local_port
         self.source_id = source_id or f"armrt-{model}"
@@ -320,8 +381,11 @@ class LslBridge:
                 elif found:
                     inlet = pylsl.StreamInlet(found[0], max_buflen=1, recover=True)
                     full = inlet.info(timeout=5.0)
-                    self.channel_index = match_labels(channel_labels(full), self.input_names,
-                                                      f"{full.name()}@{full.hostname()}")
+                    labels = channel_labels(full)
+                    self.channel_index = match_labels(labels, self.input_names, f"{full.name()}@{full.hostname()}")
+                    if self.endpoint_consumer is not None:  # the same label match, then complete triples
+                        self.endpoint_has = endpoint_layout(labels, f"{full.name()}@{full.hostname()}")
+                    inlet.open_stream(timeout=5.0)  # subscribed from here on: no sample after this is lost
                     self.inlet = inlet
                     print(f"lsl_bridge: excitation stream {full.name()!r} ({full.source_id()}) on "
                           f"{full.hostname()}: channels matched by label", file=sys.stderr, flush=True)
@@ -338,25 +402,13 @@ class LslBridge:
         if self._error is not None:
             raise self._error
         if self.inlet is not None:
-            samples, _ = self.inlet.pull_chunk(timeout=0.0)
-            if samples:  # only the newest matters
+            samples, stamps = self.inlet.pull_chunk(timeout=0.0)
+            if samples and self.endpoint_consumer is not None:
+                self._forward(self._consume_endpoint(samples, stamps))
+            elif samples:  # only the newest matters
                 v = np.zeros(len(self.input_names))
                 v[self.channel_index] = np.asarray(samples[-1], dtype=float)
-                try:
-                    if self.client.session == 0:  # the bridge's own, timed claim (UdpClient.send never waits)
-                        self.client.join()
-                    if self.stimulating:
-                        self.client.send_stimulation(v.reshape(-1, 3))
-                    else:
-                        self.client.send(v)
-                    self.last_values = v
-                    self.forwarded += 1
-                except TimeoutError as e:
-                    self.warn("no-session", f"the runner gives this bridge no session: {e}")
-                except ValueError as e:  # NaN, out of range, beyond a channel's limits: never sent
-                    self.refused += 1
-                    kind = "stimulation" if self.stimulating else "excitation"
-                    self.warn("refused", f"{kind} samples refused, not forwarded (counted in .refused): {e}")
+                self._forward(v)
         bad0 = self.client.bad_packets + self.client.foreign_packets
         if self.client.poll(0.002):  # the bridge's pace: at most 2 ms idle, then drain without waiting
             while self.client.poll(0.0):
@@ -368,6 +420,45 @@ class LslBridge:
                                      "state packets (counted in .bad)")
         for st in self.client.take_states():
             self._publish(st)
+
+    def _forward(self, v) -> None:
+        """Sends one input sample (the mapping's order) to the runner as the session's owner; None sends nothing."""
+        if v is None:
+            return
+        try:
+            if self.client.session == 0:  # the bridge's own, timed claim (UdpClient.send never waits)
+                self.client.join()
+            if self.stimulating:
+                self.client.send_stimulation(v.reshape(-1, 3))
+            else:
+                self.client.send(v)
+            self.last_values = v
+            self.forwarded += 1
+        except TimeoutError as e:
+            self.warn("no-session", f"the runner gives this bridge no session: {e}")
+        except ValueError as e:  # NaN, out of range, beyond a channel's limits: never sent
+            self.refused += 1
+            kind = "stimulation" if self.stimulating else "excitation"
+            self.warn("refused", f"{kind} samples refused, not forwarded (counted in .refused): {e}")
+
+    def _consume_endpoint(self, samples, stamps):
+        """Each endpoint-command sample, in order, to the consumer; returns the last excitation it returned."""
+        out = None
+        have_v, have_p = self.endpoint_has
+        for sample, t in zip(samples, stamps):
+            x = np.full(len(ENDPOINT_LABELS), np.nan)
+            x[self.channel_index] = np.asarray(sample, dtype=float)
+            used = np.concatenate([x[:3]] * have_v + [x[3:]] * have_p)
+            if not np.all(np.isfinite(used)):
+                self.refused += 1
+                self.warn("refused-endpoint", "endpoint command samples with NaN or infinity refused, not given to "
+                                              "the consumer (counted in .refused)")
+                continue
+            r = self.endpoint_consumer(EndpointCommand(float(t), x[:3].copy() if have_v else None,
+                                                       x[3:].copy() if have_p else None))
+            if r is not None:
+                out = np.asarray(r, dtype=float)
+        return out
 
     def _publish(self, st: StatePacket) -> None:
         if self.forces and st.muscle_force is None:
