@@ -233,3 +233,21 @@ def test_simulated_decoder_closes_a_centre_out_block():
     b = task.block_metrics()
     assert task.done and b["n_trials"] == 8 and b["success_rate"] == 1.0
     assert 0 < b["mean_path_efficiency"] <= 1.0
+
+
+def test_cli_task_writes_json_and_csv(tmp_path, capsys):
+    import csv
+    import json
+    from armrt.cli import main
+    out = tmp_path / "m.json"
+    assert main(["task", "centre-out", "--decoder", "simulated", "--targets", "4", "--out", str(out)]) == 0
+    data = json.loads(out.read_text())
+    assert len(data["trials"]) == 4 and data["block"]["success_rate"] == 1.0
+    assert "success_rate" in capsys.readouterr().out
+    out = tmp_path / "m.csv"
+    assert main(["task", "posture", "--trials", "2", "--out", str(out)]) == 0
+    rows = list(csv.DictReader(out.open()))
+    assert len(rows) == 2 and rows[0]["success"] == "True"
+    assert main(["task", "fitts", "--fitts", "0.2:0.03", "--per-condition", "3", "--out", str(tmp_path / "x.txt")]) == 2
+    assert "--out must end in .json or .csv" in capsys.readouterr().err
+    assert main(["task", "fitts", "--fitts", "0.2"]) == 2
