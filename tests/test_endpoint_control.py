@@ -6,7 +6,7 @@ import pytest
 armrt = pytest.importorskip("armrt", reason="armrt is not built/installed (./run.sh setup)")
 pytest.importorskip("proxsuite", reason="proxsuite (pip install proxsuite) is not installed")
 from armrt import tasks  # noqa: E402
-from armrt.endpoint_control import EndpointController, EndpointGains  # noqa: E402
+from armrt.endpoint_control import EndpointController, EndpointGains, run_task  # noqa: E402
 
 # das2 posture: humerus elevated 60 deg, elbow 60 deg flexed; the hand ~0.3 m below and in front of the shoulder.
 Q0 = np.radians([30, 60, 10, 60, 80])
@@ -47,6 +47,20 @@ def test_follows_simulated_decoder_velocity():
     dec = tasks.SimulatedDecoder(gain_per_s=3.0, noise_sd_m_s=0.005, lag_s=0.05, dt_s=arm.dt, seed=3)
     reach(arm, ctl, task, lambda t, x: ctl.command_velocity(dec.step(x, tg.position)), 3500)
     assert task.trial_metrics()[0]["success"]
+
+
+def test_run_task_position_mode_two_targets_with_events():
+    arm = armrt.Arm("das2")
+    arm.reset(q=Q0)
+    ctl = EndpointController(arm)
+    targets = tasks.centre_out_targets(ctl.hand_position(), 0.05, 0.015, n_targets=4)[:2]
+    seen = []
+    task = tasks.TargetTask(targets, dwell_s=0.2, timeout_s=3.0, iti_s=0.1, on_event=seen.append)
+    run_task(task, ctl, max_time_s=8.0)
+    assert task.done and task.block_metrics()["success_rate"] == 1.0
+    assert [e.kind for e in seen if e.kind == "success"] == ["success", "success"]
+    with pytest.raises(ValueError, match="dt_s"):
+        run_task(task, ctl, tasks.SimulatedDecoder(dt_s=0.002))
 
 
 def test_bad_input_refused():

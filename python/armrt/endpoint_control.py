@@ -101,3 +101,31 @@ class EndpointController:
             self._solve()
         self._n += 1
         self.arm.step(1)
+
+
+def run_task(task, controller: EndpointController, decoder=None, max_time_s: float = 600.0):
+    """Close the loop with the arm: each arm step the task sees the hand (model.hand_position at the arm's q, m)
+    and the GH stability (gh_stable = arm.gh_stab <= 1, paper eq. 5, so a loss emits a 'gh_unstable' event);
+    between trials the controller holds the last reference. decoder None: the target position is commanded
+    (position mode); else decoder.step(hand, target) (3,) m/s is commanded as a velocity (e.g.
+    armrt.tasks.SimulatedDecoder with dt_s = arm.dt). Returns the task."""
+    arm = controller.arm
+    if decoder is not None and abs(decoder.dt_s - arm.dt) > 1e-12:
+        raise ValueError(f"the decoder's dt_s ({decoder.dt_s} s) must equal the arm's dt ({arm.dt} s)")
+    max_time_s = checks.real_scalar(max_time_s, "max_time_s")
+    if not (math.isfinite(max_time_s) and max_time_s > 0):
+        raise ValueError(f"max_time_s must be a finite number > 0, got {max_time_s}")
+    t0 = arm.time
+    for _ in range(int(math.ceil(max_time_s / arm.dt))):
+        x = controller.hand_position()
+        task.step(arm.time - t0, x, gh_stable=bool(arm.gh_stab <= 1.0))
+        if task.done:
+            break
+        tg = task.current_target()
+        if decoder is None:
+            if tg is not None:
+                controller.command_position(tg.position)
+        else:
+            controller.command_velocity(decoder.step(x, None if tg is None else tg.position))
+        controller.step()
+    return task
