@@ -251,3 +251,15 @@ def test_cli_task_writes_json_and_csv(tmp_path, capsys):
     assert main(["task", "fitts", "--fitts", "0.2:0.03", "--per-condition", "3", "--out", str(tmp_path / "x.txt")]) == 2
     assert "--out must end in .json or .csv" in capsys.readouterr().err
     assert main(["task", "fitts", "--fitts", "0.2"]) == 2
+
+
+def test_cli_task_drives_the_arm(tmp_path, capsys):
+    pytest.importorskip("proxsuite", reason="proxsuite (pip install proxsuite) is not installed")
+    import json
+    from armrt.cli import main
+    out = tmp_path / "arm.json"
+    assert main(["task", "centre-out", "--arm", "das2", "--targets", "2", "--distance", "0.05", "--out",
+                 str(out)]) == 0
+    assert "das2 hand" in capsys.readouterr().out
+    data = json.loads(out.read_text())
+    assert len(data["trials"]) == 2 and data["block"]["success_rate"] == 1.0

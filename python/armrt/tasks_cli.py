@@ -1,5 +1,6 @@
 """`armrt task centre-out|fitts|posture`: args -> a task run offline with the simulated decoder driving a point
-cursor (no arm: the endpoint controller is not built yet), a metrics table on stdout, JSON/CSV with --out."""
+cursor, or with --arm MODEL the arm's hand through the endpoint controller; a metrics table on stdout, JSON/CSV
+with --out."""
 from __future__ import annotations
 
 import csv
@@ -18,8 +19,14 @@ def add_cli(sub, formatter) -> None:
     p.add_argument("kind", choices=["centre-out", "fitts", "posture"], help="the task")
     p.add_argument("--decoder", default="simulated", choices=["simulated"],
                    help="what drives the cursor (simulated: velocity towards the target + noise + lag)")
-    p.add_argument("--centre", type=float, nargs=3, default=[0.0, 0.0, 0.0], metavar=("X", "Y", "Z"),
-                   help="task centre, m (the point cursor has no arm: any centre)")
+    p.add_argument("--centre", type=float, nargs=3, default=None, metavar=("X", "Y", "Z"),
+                   help="task centre, m, thorax frame (default: 0 0 0 for the point cursor; with --arm the hand "
+                        "at --q-deg)")
+    p.add_argument("--arm", metavar="MODEL", default=None,
+                   help="drive this model's hand (e.g. das2) through the endpoint controller instead of a point "
+                        "cursor (dt = 1 ms; --dt is ignored)")
+    p.add_argument("--q-deg", type=float, nargs="+", default=[30, 60, 10, 60, 80], metavar="DEG",
+                   help="with --arm: start posture, deg, one per DOF")
     p.add_argument("--targets", type=int, default=8, help="centre-out: number of targets")
     p.add_argument("--distance", type=float, default=0.1, help="centre-out: target distance from the centre, m")
     p.add_argument("--radius", type=float, default=0.015, help="centre-out/posture: success radius, m")
@@ -59,6 +66,18 @@ def _fmt(v):
 
 
 def cmd_task(args) -> int:
+    arm = None
+    if args.arm is not None:
+        import numpy as np
+        from .arm import Arm
+        arm = Arm(args.arm)
+        q0 = np.radians(args.q_deg)
+        arm.reset(q=q0)
+        args.dt = arm.dt
+        if args.centre is None:
+            args.centre = arm.model.hand_position(q0).tolist()
+    if args.centre is None:
+        args.centre = [0.0, 0.0, 0.0]
     if args.kind == "centre-out":
         targets = tasks.centre_out_targets(args.centre, args.distance, args.radius, args.targets)
         task = tasks.TargetTask(targets, args.dwell, args.timeout, args.iti)
@@ -70,10 +89,17 @@ def cmd_task(args) -> int:
     dec = tasks.SimulatedDecoder(args.gain, args.noise_sd, args.lag, args.dt, seed=args.seed)
     start = list(args.centre)
     if args.kind == "posture":  # start away from the held target so there is something to reach
-        start[0] += 0.05
-    tasks.run_cursor_task(task, dec, start, max_time_s=len(task.targets) * (args.timeout + args.iti) + 1.0)
+        start[1] += 0.05
+    max_time = len(task.targets) * (args.timeout + args.iti) + 1.0
+    if arm is None:
+        tasks.run_cursor_task(task, dec, start, max_time_s=max_time)
+    else:
+        from .endpoint_control import EndpointController, run_task
+        ctl = EndpointController(arm)  # posture: hold the hand where it starts, against gravity
+        run_task(task, ctl, dec, max_time_s=max_time)
     rows, block = task.trial_metrics(), task.block_metrics()
-    print(f"armrt task {args.kind} --decoder {args.decoder}: gain {args.gain} 1/s, noise SD {args.noise_sd} m/s, "
+    what = f"the {args.arm} hand (endpoint controller)" if arm is not None else "a point cursor"
+    print(f"armrt task {args.kind} --decoder {args.decoder} driving {what}: gain {args.gain} 1/s, noise SD {args.noise_sd} m/s, "
           f"lag {args.lag} s, dt {args.dt} s, seed {args.seed}")
     print("  ".join(TRIAL_COLUMNS))
     for r in rows:
