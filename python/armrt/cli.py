@@ -203,6 +203,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=cmd_experiments)
     from .view import add_cli
     add_cli(sub, _formatter)  # view, animate, export (viser is imported only when `view` runs)
+    from .tasks_cli import add_cli as add_task_cli
+    add_task_cli(sub, _formatter)  # task: target tasks with the simulated decoder (docs/tasks.md)
     from .model_cli import add_cli as add_model_cli
     add_model_cli(sub, _formatter, msub)  # model import (codegen from the source checkout), beside build and list
     return ap
