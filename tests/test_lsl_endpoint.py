@@ -4,19 +4,9 @@ import time
 
 import numpy as np
 import pytest
+from lsl_helpers import pylsl_or_skip, unique_id
 
 
-def _pylsl():
-    try:
-        import pylsl
-        pylsl.library_version()
-        return pylsl
-    except Exception as e:  # ImportError, or RuntimeError when liblsl cannot load
-        pytest.skip(f"pylsl/liblsl cannot load: {type(e).__name__}: {e}")
-
-
-def _uid():
-    return f"e{time.monotonic_ns() % 10**9}"
 
 
 def _step_until(bridge, cond, seconds=10.0):
@@ -40,9 +30,9 @@ def test_endpoint_layout_by_label():
 
 
 def test_endpoint_command_stream_reaches_the_consumer_by_label(monkeypatch):
-    pylsl = _pylsl()
+    pylsl = pylsl_or_skip()
     from armrt.lsl_bridge import LslBridge, endpoint_stream_info
-    uid = _uid()
+    uid = unique_id("e")
     # A reordered stream: position first, velocity's channels shuffled.
     labels = ["hand_position_x", "hand_position_y", "hand_position_z", "hand_velocity_z", "hand_velocity_x",
               "hand_velocity_y"]
@@ -84,7 +74,7 @@ def test_endpoint_command_stream_reaches_the_consumer_by_label(monkeypatch):
 
 
 def test_endpoint_consumer_refuses_a_stimulation_mapping_and_non_callables():
-    _pylsl()
+    pylsl_or_skip()
     from armrt.lsl_bridge import LslBridge
     with pytest.raises(ValueError, match="not 'stimulation'"):
         LslBridge(runner_port=9, mapping="stimulation", stimulation="per_muscle", endpoint_consumer=print)
@@ -94,14 +84,14 @@ def test_endpoint_consumer_refuses_a_stimulation_mapping_and_non_callables():
 
 def test_endpoint_command_over_lsl_reaches_the_arm():
     """Decoder (LSL, endpoint labels) -> bridge -> fake endpoint controller -> UDP -> armrt-rt: the arm moves."""
-    pylsl = _pylsl()
+    pylsl = pylsl_or_skip()
     try:
         from armrt import _rt  # noqa: F401
         from armrt import realtime as rt
     except ImportError as e:
         pytest.skip(f"armrt._rt is not built: {e}")
     from armrt.lsl_bridge import LslBridge, channel_labels, endpoint_stream_info
-    uid = _uid()
+    uid = unique_id("e")
     names = []
 
     def controller(cmd):

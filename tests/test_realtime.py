@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from lsl_helpers import pylsl_or_skip
 
 armrt = pytest.importorskip("armrt", reason="armrt is not built/installed (./run.sh setup)")
 try:
@@ -573,13 +574,6 @@ def test_lag_and_overrun_reach_the_state_packets():
 
 
 # ---------------------------------------------------------------------------------------- LSL
-def _pylsl():
-    try:
-        import pylsl
-        pylsl.library_version()
-        return pylsl
-    except Exception as e:  # ImportError, or RuntimeError when liblsl cannot load
-        pytest.skip(f"pylsl/liblsl cannot load: {type(e).__name__}: {e}")
 
 
 def _exc_outlet(pylsl, name, source_id, labels, rate=100):
@@ -605,7 +599,7 @@ def _run_bridge(bridge):
 
 
 def test_lsl_bridge_loopback():
-    pylsl = _pylsl()
+    pylsl = pylsl_or_skip()
     from armrt.lsl_bridge import LslBridge, channel_labels, state_channels
     source = f"armrt-test-{os.getpid()}"
     bridge = LslBridge(runner_port=0, mapping="groups", source_id=source, excitation_name=f"exc-{source}",
@@ -654,7 +648,7 @@ def test_lsl_bridge_loopback():
 
 
 def test_lsl_bridge_unknown_labels_are_an_error_naming_them():
-    pylsl = _pylsl()
+    pylsl = pylsl_or_skip()
     from armrt.lsl_bridge import LslBridge
     source = f"armrt-test-lab-{os.getpid()}"
     bridge = LslBridge(runner_port=9, mapping="groups", source_id=source, excitation_source_id=f"{source}-ctl")
@@ -669,7 +663,7 @@ def test_lsl_bridge_unknown_labels_are_an_error_naming_them():
 
 
 def test_lsl_bridge_pins_the_excitation_stream_by_source_id():
-    pylsl = _pylsl()
+    pylsl = pylsl_or_skip()
     from armrt.lsl_bridge import LslBridge
     source = f"armrt-test-pin-{os.getpid()}"
     bridge = LslBridge(runner_port=0, mapping="groups", source_id=source, excitation_name=f"exc-{source}",
@@ -695,7 +689,7 @@ def test_lsl_bridge_pins_the_excitation_stream_by_source_id():
 
 
 def test_lsl_bridge_refuses_undeliverable_rate_and_unfilled_forces():
-    pylsl = _pylsl()  # noqa: F841
+    pylsl = pylsl_or_skip()  # noqa: F841
     from armrt.lsl_bridge import LslBridge, check_state_rate
     with pytest.raises(ValueError, match="333.333 and 250"):
         check_state_rate(300, 1000)
@@ -717,7 +711,7 @@ def test_lsl_bridge_refuses_undeliverable_rate_and_unfilled_forces():
 
 
 def test_lsl_bridge_warns_once_per_fault():
-    _pylsl()
+    pylsl_or_skip()
     from armrt.lsl_bridge import LslBridge
     source = f"armrt-test-warn-{os.getpid()}"
     bridge = LslBridge(runner_port=0, mapping="groups", source_id=source, excitation_source_id=f"{source}-none")
@@ -744,7 +738,7 @@ def test_lsl_bridge_never_blocks_on_resolving(monkeypatch):
     """Looking for a controller happens on a ContinuousResolver thread: step() never calls a blocking
     resolve (the old bridge published state in 200 ms lumps while it resolved), and every state
     packet is published as it arrives."""
-    pylsl = _pylsl()
+    pylsl = pylsl_or_skip()
 
     def blocking(*a, **k):
         raise AssertionError("blocking LSL resolve called")
@@ -959,7 +953,7 @@ def test_udp_elements_mapping_dict_uses_the_same_rule():
 def test_lsl_overlapping_channels_most_specific_wins_in_either_order():
     """An LSL controller whose channels are a group and one of its muscles: the runner applies the one
     rule (the muscle's value for its elements), whichever order the channels come in."""
-    pylsl = _pylsl()
+    pylsl = pylsl_or_skip()
     from armrt.lsl_bridge import LslBridge, state_channels
     infra, supra = _cuff()
     for order, channels in enumerate((["rotator_cuff", "infra"], ["infra", "rotator_cuff"])):
@@ -1110,7 +1104,7 @@ def test_lsl_stimulator_stream_by_label_drives_the_runner():
     """A stimulator on LSL (channels labelled "<channel>/pulse_width", "/amplitude", "/frequency", a subset of
     the map's, in any order): forwarded as stimulation packets; a sample beyond the limits is not forwarded; the
     state stream carries the applied stimulation and the fatigue by channel."""
-    pylsl = _pylsl()
+    pylsl = pylsl_or_skip()
     from armrt.lsl_bridge import LslBridge, channel_labels
     source = f"armrt-test-stim-{os.getpid()}"
     bridge = LslBridge(runner_port=0, mapping="stimulation", stimulation="per_muscle", source_id=source,
