@@ -299,13 +299,7 @@ def test_runner_divergence_stops_cleanly():
                           "--state-to", f"127.0.0.1:{sub.getsockname()[1]}"], stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE, text=True)
     rc = p.wait(timeout=10)
-    final = None
-    sub.settimeout(0.2)
-    try:
-        while True:
-            final = rt.StatePacket.from_packet(rt.decode_packet(sub.recv(65536)))
-    except socket.timeout:
-        pass
+    final = _last_state(sub)
     sub.close()
     err = p.stderr.read()
     assert rc == 1
