@@ -1251,3 +1251,20 @@ def test_client_send_never_waits_for_a_session():
         c.send({"rotator_cuff": 0.03})
         time.sleep(0.05)
         assert s.stats()["packets"]["applied"] == 1
+
+
+def test_statistics_name_the_model_and_profile(tmp_path):
+    """The model's name and the profile (None when none is given) are in RealtimeSession's result and in --json:
+    one field of RtStats (rt_stats.cc), not written anywhere else."""
+    s = rt.RealtimeSession(model="das2", duration=0.02, realtime=False)
+    s.start()
+    assert s.wait(10.0)
+    stats = s.stop()
+    assert stats["model"] == "das2" and stats["profile"] is None
+    path = tmp_path / "stats.json"
+    r = subprocess.run([runner(), "--model", "das2", "--duration", "0.02", "--no-rt", "--no-mlock", "--json",
+                        str(path)], capture_output=True, text=True, timeout=20)
+    assert r.returncode == 0, r.stderr
+    saved = json.loads(path.read_text())
+    assert saved["model"] == "das2" and saved["profile"] is None
+    assert "das2 stopped (duration)" in r.stdout

@@ -197,7 +197,8 @@ int main(int argc, char** argv) {
   g_loop = nullptr;
 
   const auto st = loop->stats();
-  std::printf("armrt-rt: stopped (%s) after %lld cycles, %.3f s, sim time %.3f s\n", st.stop_reason.c_str(),
+  std::printf("armrt-rt: %s%s%s stopped (%s) after %lld cycles, %.3f s, sim time %.3f s\n", st.model.c_str(),
+              st.profile.empty() ? "" : ", profile ", st.profile.c_str(), st.stop_reason.c_str(),
               static_cast<long long>(st.cycles), st.elapsed_s, st.sim_time);
   print_pct("TET", st.tet);
   print_pct("cycle", st.cycle);

@@ -13,6 +13,9 @@ namespace armrt::rt {
 struct RtConfig {
   // Model and integrator.
   std::string model = "das2";
+  // The participant profile the strength / max_activation came from (its name, recorded in the statistics);
+  // empty: none. RealtimeSession(profile=...) resolves the profile in Python (armrt.profile) and sets it.
+  std::string profile;
   std::string integrator = "ros2";
   double rate_hz = 1000.0;     // loop rate; the control step is 1/rate_hz s (one cycle)
   // Largest integration step (s): each control step takes ceil(period / integration_step) substeps;

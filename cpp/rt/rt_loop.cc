@@ -326,6 +326,8 @@ void RtLoop::join() {
 
 RtStats RtLoop::stats() const {
   RtStats st;
+  st.model = cfg_.model;
+  st.profile = cfg_.profile;
   st.cycles = cycles_.load(std::memory_order_relaxed);
   rec_.fill(st);
   st.elapsed_s = elapsed_s_;

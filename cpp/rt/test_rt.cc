@@ -830,6 +830,22 @@ TEST_CASE("start / stop on a thread, with statistics") {
   CHECK(loop.stats_json().find("\"overruns\"") != std::string::npos);
 }
 
+TEST_CASE("the statistics name the model and the profile (JSON null when none is given)") {
+  RtConfig c = test_config();
+  {
+    RtLoop loop(c);
+    CHECK(loop.stats().model == c.model);
+    CHECK(loop.stats().profile.empty());
+    const std::string j = loop.stats_json();
+    CHECK(j.find("\"model\": \"" + c.model + "\"") != std::string::npos);
+    CHECK(j.find("\"profile\": null") != std::string::npos);
+  }
+  c.profile = "participant_A_FES";
+  RtLoop loop(c);
+  CHECK(loop.stats().profile == "participant_A_FES");
+  CHECK(loop.stats_json().find("\"profile\": \"participant_A_FES\"") != std::string::npos);
+}
+
 TEST_CASE("--strength: fmax scaled by element, muscle or group names, the most specific name winning") {
   RtConfig c = test_config();
   RtLoop intact(c);
