@@ -1268,3 +1268,44 @@ def test_statistics_name_the_model_and_profile(tmp_path):
     saved = json.loads(path.read_text())
     assert saved["model"] == "das2" and saved["profile"] is None
     assert "das2 stopped (duration)" in r.stdout
+
+
+def test_runner_settle_starts_from_the_relaxed_arm():
+    """RealtimeSession(settle=S) / --settle S: the arm first relaxes S s with zero excitation (Arm.settle's engine
+    path, Arm::settle), the loop then starts at time 0: the streamed state at time t is the offline arm's after
+    S + t s of zero excitation, stepped without settle()."""
+    weak = {"elbow_flexors": 0.5}
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, strength=weak,
+                            settle=0.3) as s, rt.UdpClient(s.port, mapping="groups") as c:
+        c.join()
+        st = None
+        for _ in range(60):
+            c.send({"elbow_flexors": 0.0})
+            st = c.latest_state(timeout=0.2) or st
+            if st is not None and st.time > 0.05:
+                break
+        stats = s.stop()
+    assert stats["error"] == "" and st is not None and st.time < 0.3 + 0.2
+    arm = armrt.Arm()
+    arm.strength = weak
+    arm.step(300 + int(round(st.time / arm.dt)))
+    np.testing.assert_allclose(st.q, arm.q, atol=1e-9)
+    unsettled = armrt.Arm()
+    unsettled.strength = weak
+    unsettled.step(int(round(st.time / arm.dt)))
+    assert np.abs(st.q - unsettled.q).max() > 1e-6
+    # Arm.settle goes through the same engine path: its state is the stepped arm's, the clock back at 0.
+    a, b = armrt.Arm(), armrt.Arm()
+    a.set_excitation(0.2)
+    a.settle(0.1)
+    b.step(100)
+    assert a.time == 0.0 and np.all(a.excitation == 0.2)
+    np.testing.assert_allclose(a.q, b.q, atol=1e-12)
+
+
+def test_settle_bad_values_are_refused():
+    for bad in (-1.0, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match=r"--settle must be a finite number of seconds >= 0"):
+            rt.RealtimeSession(settle=bad)
+    r = subprocess.run([runner(), "--settle", "-0.5", "--duration", "0.1"], capture_output=True, text=True, timeout=20)
+    assert r.returncode == 2 and "--settle must be a finite number of seconds >= 0, got -0.5" in r.stderr, r.stderr

@@ -93,6 +93,9 @@ int main(int argc, char** argv) {
                                   "(das2: GHy,GHz,GHyy,ELx,PSy; default: rest posture)")
       ->delimiter(',')->expected(1, armrt::kMaxDofs)->type_name("Q,Q,...");  // CLI11 would say FLOAT: one number
   app.add_option("--duration", cfg.duration, "run for S seconds (0: until SIGINT/SIGTERM)")->capture_default_str();
+  app.add_option("--settle", cfg.settle_s, "first relax the arm S seconds with zero excitation, then start the loop "
+                                         "at time 0 (Arm.settle; das3's start posture is not its equilibrium)")
+      ->capture_default_str();
   app.add_option("--priority", cfg.priority, "SCHED_FIFO priority 1..99")->capture_default_str();
   app.add_flag("--no-rt", no_rt, "normal scheduling on purpose (no SCHED_FIFO)");
   app.add_flag("--no-mlock", no_mlock, "do not mlockall");
@@ -153,6 +156,9 @@ int main(int argc, char** argv) {
   std::unique_ptr<RtLoop> loop;
   try {
     loop = std::make_unique<RtLoop>(cfg);
+  } catch (const armrt::rt::SettleError& e) {
+    std::fprintf(stderr, "armrt-rt: %s\n", e.what());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armrt-rt: %s\n", e.what());
     return 2;

@@ -23,6 +23,8 @@ struct RtConfig {
   double integration_step = 0;
   std::vector<double> q0;      // initial joint angles (one per DOF of the model, rad); empty: rest posture
   double duration = 0;         // s; 0: until stop() / a signal
+  // s of relaxation before the loop starts (Arm.settle: zero excitation, then the clock back to 0); 0: none.
+  double settle_s = 0;
   // Real-time set-up.
   bool realtime = true;        // try SCHED_FIFO; false: normal scheduling on purpose
   int priority = 80;           // SCHED_FIFO priority (1..99)

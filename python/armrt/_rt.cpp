@@ -116,7 +116,7 @@ PYBIND11_MODULE(_rt, m) {
                        double state_rate_hz, bool send_forces, bool send_excitation, double input_timeout,
                        std::vector<std::string> channels, double rx_budget_us,
                        std::vector<std::string> max_activation, const std::string& stimulation,
-                       std::vector<std::string> strength, const std::string& profile) {
+                       std::vector<std::string> strength, const std::string& profile, double settle) {
              RtConfig c;
              c.model = model;
              c.integrator = integrator;
@@ -145,6 +145,7 @@ PYBIND11_MODULE(_rt, m) {
              c.strength = std::move(strength);
              c.stimulation = stimulation;
              c.profile = profile;
+             c.settle_s = settle;
              return std::make_unique<RtLoop>(c);
            }),
            py::arg("model") = "das2", py::arg("integrator") = RtConfig{}.integrator, py::arg("rate_hz") = 1000.0,
@@ -157,7 +158,7 @@ PYBIND11_MODULE(_rt, m) {
            py::arg("input_timeout") = 0.1, py::arg("channels") = std::vector<std::string>{},
            py::arg("rx_budget_us") = 0.0, py::arg("max_activation") = std::vector<std::string>{},
            py::arg("stimulation") = "", py::arg("strength") = std::vector<std::string>{},
-           py::arg("profile") = "")
+           py::arg("profile") = "", py::arg("settle") = 0.0)
       .def("start", [](RtLoop& l) {
         py::gil_scoped_release release;
         l.start();

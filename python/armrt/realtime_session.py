@@ -53,7 +53,8 @@ class RealtimeSession:
 
     Parameters are those of armrt-rt (docs/realtime.md): model, integrator, rate_hz, integration_step
     (the integrator's largest step, s; `dt`, its old name, is deprecated: dt is the control step, here
-    1/rate_hz), q0, duration,
+    1/rate_hz), q0, settle (s, finite and >= 0: first relax the arm with zero excitation, then start the loop at
+    time 0, as Arm.settle; a simulation failure while settling raises RuntimeError), duration,
     realtime, priority, lock_memory (mlockall of the whole Python process; off by default), require_rt,
     cpu, busy_wait_us, max_lag, listen ("127.0.0.1:0" for an ephemeral port), state_to (one "host:port"
     or a list), allow (list of "host[:port]"), key (bytes >= 16), state_rate_hz, send_forces,
