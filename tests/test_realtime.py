@@ -1309,3 +1309,60 @@ def test_settle_bad_values_are_refused():
             rt.RealtimeSession(settle=bad)
     r = subprocess.run([runner(), "--settle", "-0.5", "--duration", "0.1"], capture_output=True, text=True, timeout=20)
     assert r.returncode == 2 and "--settle must be a finite number of seconds >= 0, got -0.5" in r.stderr, r.stderr
+
+
+def test_runner_profile_is_arm_apply_profile():
+    """RealtimeSession(profile=) resolves a participant profile with Arm.apply_profile (the runner reads no .mat):
+    the runner gets its strength and max_activation element by element, strength= given beside it applies on top,
+    and the statistics name the profile. With zero excitation the streamed state and muscle forces are the offline
+    arm's with the same profile (passive forces scale with fmax); full excitation is streamed capped at its
+    max_activation."""
+    mat = Path(__file__).resolve().parents[1].parent / "shared" / "reference" / "participant_A" / "model_struct_A_FES.mat"
+    if not mat.exists():
+        pytest.skip(f"participant data not found at {mat} (needs ../shared beside the repository)")
+    arm, intact = armrt.Arm(), armrt.Arm()
+    report = arm.apply_profile(mat)
+    arm.strength = {"deltscap": 0.3}
+    assert len(report.applied) == 42 and np.any(arm.max_activation[arm.indices("elbow_flexors")] < 1)
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, send_excitation=True,
+                            send_forces=True, profile=mat, strength={"deltscap": 0.3}) as s, \
+            rt.UdpClient(s.port, mapping="groups") as c:
+        c.join()
+        st = capped = None
+        for _ in range(60):
+            c.send({"elbow_flexors": 0.0})
+            st = c.latest_state(timeout=0.2) or st
+            if st is not None and st.time > 0.2:
+                break
+        for _ in range(60):
+            c.send({"elbow_flexors": 1.0})
+            got = c.latest_state(timeout=0.2)
+            if got is not None and got.excitation is not None and got.excitation.max() > 0:
+                capped = got
+                break
+        stats = s.stop()
+    assert stats["error"] == "" and stats["profile"] == str(mat) and st is not None and capped is not None
+    n = int(round(st.time / arm.dt))
+    arm.step(n)
+    intact.step(n)
+    np.testing.assert_allclose(st.q, arm.q, atol=1e-9)
+    np.testing.assert_allclose(st.muscle_force, arm.outputs()["muscle_force"], rtol=1e-9, atol=1e-9)
+    assert np.abs(st.muscle_force - intact.outputs()["muscle_force"]).max() > 1e-6
+    u = np.zeros(arm.n_elements)
+    u[arm.indices("elbow_flexors")] = 1.0
+    np.testing.assert_array_equal(capped.excitation, np.minimum(u, arm.max_activation))
+    with pytest.raises(FileNotFoundError, match="no profile named 'participant_Z'"):
+        rt.RealtimeSession(profile="participant_Z")
+    with pytest.raises(ValueError, match="profile_reference without a profile"):
+        rt.RealtimeSession(profile_reference=mat)
+
+
+def test_runner_profile_by_model_name():
+    """A profile named as a model file (models/participant_A_FES.json, as Arm.apply_profile takes it): resolved
+    without ../shared, its name in the statistics, its max_activation the offline arm's."""
+    s = rt.RealtimeSession(profile="participant_A_FES", send_excitation=True)
+    assert s.stats()["profile"] == "participant_A_FES"
+    arm = armrt.Arm()
+    arm.apply_profile("participant_A_FES")
+    assert np.any(arm.max_activation < 1) or np.any(arm.strength != 1)
+    assert s.config["profile"] == "participant_A_FES"

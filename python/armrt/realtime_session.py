@@ -56,7 +56,10 @@ class RealtimeSession:
     1/rate_hz), q0, settle (s, finite and >= 0: first relax the arm with zero excitation, then start the loop at
     time 0, as Arm.settle; a simulation failure while settling raises RuntimeError), duration,
     realtime, priority, lock_memory (mlockall of the whole Python process; off by default), require_rt,
-    cpu, busy_wait_us, max_lag, listen ("127.0.0.1:0" for an ephemeral port), state_to (one "host:port"
+    cpu, busy_wait_us, max_lag, profile (a participant profile, as Arm.apply_profile takes it: a DAS-format .mat,
+    an armrt model file or a model name such as "participant_A_FES"; resolved here with armrt.profile into one
+    strength and max_activation value per element, the profile's name in stats()["profile"]; profile_reference: its
+    reference=; strength / max_activation given too apply on top, as set after apply_profile), listen ("127.0.0.1:0" for an ephemeral port), state_to (one "host:port"
     or a list), allow (list of "host[:port]"), key (bytes >= 16), state_rate_hz, send_forces,
     send_excitation, input_timeout, channels, rx_budget_us, max_activation ({name: value} of elements,
     muscles or groups, or one value per element, in [0, 1]: paralysis and weakness; every excitation,
@@ -84,6 +87,21 @@ class RealtimeSession:
             del config["q0"]
         if "channels" in config:
             config["channels"] = list(config["channels"] or [])
+        profile, reference = config.pop("profile", None), config.pop("profile_reference", None)
+        if profile is not None:
+            # The runner does not read profiles (a .mat needs MATLAB's format): Arm.apply_profile resolves one
+            # here, strength / max_activation given beside it apply on top (as setting them after apply_profile),
+            # and the runner gets one value per element, the profile's name for its statistics.
+            from .arm import Arm
+            arm = Arm(config.get("model", "das2"))
+            arm.apply_profile(profile, reference)
+            for name in ("strength", "max_activation"):
+                if config.get(name) is not None:
+                    setattr(arm, name, config[name])
+                config[name] = np.array(getattr(arm, name), dtype=float)
+            config["profile"] = os.fspath(profile)
+        elif reference is not None:
+            raise ValueError("profile_reference without a profile")
         if config.get("max_activation") is not None:
             config["max_activation"] = _max_activation_items(config["max_activation"], config.get("model", "das2"))
         else:
