@@ -1366,3 +1366,33 @@ def test_runner_profile_by_model_name():
     arm.apply_profile("participant_A_FES")
     assert np.any(arm.max_activation < 1) or np.any(arm.strength != 1)
     assert s.config["profile"] == "participant_A_FES"
+
+
+def test_console_script_resolves_profile(tmp_path):
+    """`armrt-rt --profile NAME|FILE` (the console script, python -m armrt.realtime): resolved with Arm.apply_profile
+    into one --strength and --max-activation value per element, --strength given beside it on top, the name in
+    --json; the bare runner refuses --profile with the reason, and an unknown profile exits 2."""
+    args = rt.runner_args(["--no-rt", "--profile", "participant_A_FES", "--strength", "deltscap=0.3"])
+    arm = armrt.Arm()
+    arm.apply_profile("participant_A_FES")
+    arm.strength = {"deltscap": 0.3}
+    got = dict(zip(args[1::2], args[2::2]))
+    assert args[0] == "--no-rt" and got["--profile-name"] == "participant_A_FES"
+    assert args.count("--strength") == 1 and args.count("--max-activation") == 1
+    for option, values in (("--strength", arm.strength), ("--max-activation", arm.max_activation)):
+        items = dict(x.split("=") for x in got[option].split(","))
+        assert list(items) == arm.element_names
+        np.testing.assert_array_equal([float(v) for v in items.values()], values)
+    with pytest.raises(ValueError, match="strength of 'bicb' must be a finite number >= 0, got 'x'"):
+        rt.runner_args(["--profile", "participant_A_FES", "--strength=bicb=x"])
+    path = tmp_path / "stats.json"
+    r = subprocess.run([sys.executable, "-m", "armrt.realtime", "--profile", "participant_A_FES", "--duration", "0.02",
+                        "--no-rt", "--no-mlock", "--json", str(path)], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert json.loads(path.read_text())["profile"] == "participant_A_FES"
+    assert "profile participant_A_FES stopped (duration)" in r.stdout
+    r = subprocess.run([sys.executable, "-m", "armrt.realtime", "--profile", "participant_Z"], capture_output=True,
+                       text=True, timeout=60)
+    assert r.returncode == 2 and "no profile named 'participant_Z'" in r.stderr, r.stderr
+    r = subprocess.run([runner(), "--profile", "participant_A_FES"], capture_output=True, text=True, timeout=20)
+    assert r.returncode == 2 and "profiles are resolved in Python by the armrt-rt console script" in r.stderr

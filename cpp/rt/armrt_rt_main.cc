@@ -122,6 +122,11 @@ int main(int argc, char** argv) {
   app.add_option("--strength", cfg.strength, "weakness: NAME=V scales the maximum isometric force (DAS3 fmax) of "
                                            "element, muscle or group NAME by V >= 0 (1: intact; comma-separated)")
       ->delimiter(',');
+  app.add_option("--profile-name", cfg.profile, "the participant profile's name, recorded in the statistics (the "
+                                              "armrt-rt console script sets it from --profile)");
+  std::string profile_unresolved;
+  app.add_option("--profile", profile_unresolved, "participant profile NAME|FILE (.mat / .json): resolved by the "
+                                                  "armrt-rt console script (python -m armrt.realtime), not here");
   app.add_option("--stimulation", cfg.stimulation, "stimulation map (docs/fes.md): FILE.toml / FILE.json, per_muscle, or default (the model's shipped "
                                                  "map, resolved by the armrt-rt entry point); "
                                                  "packet type 7 then carries pulse width s, amplitude A, frequency Hz "
@@ -139,6 +144,10 @@ int main(int argc, char** argv) {
                            "dt in armrt is the control step, here 1/--rate)\n");
       cfg.integration_step = deprecated_dt;
     }
+    if (app.count("--profile"))
+      throw std::invalid_argument("--profile " + profile_unresolved + ": profiles are resolved in Python by the armrt-rt "
+                                  "console script (python -m armrt.realtime, Arm.apply_profile), which passes "
+                                  "--strength, --max-activation and --profile-name here; run that, or give those");
     cfg.realtime = !no_rt;
     cfg.lock_memory = !no_mlock;
     if (cfg.require_rt && !cfg.realtime) throw std::invalid_argument("--require-rt and --no-rt contradict each other");

@@ -214,13 +214,63 @@ def _option_value(argv: list[str], k: int, name: str) -> tuple[str | None, int]:
     return None, 0
 
 
+def _profile_items(model: str, profile: str, strength: list[str], max_activation: list[str]) -> list[str]:
+    """`--profile NAME|FILE` (with the --strength / --max-activation items given beside it, applied on top, as set
+    after Arm.apply_profile) -> the runner's --strength, --max-activation (one value per element) and
+    --profile-name arguments. ValueError / FileNotFoundError as Arm.apply_profile and the runner word them."""
+    from .arm import Arm
+    arm = Arm(model)
+    arm.apply_profile(profile)
+    for name, items, lo_hi in (("strength", strength, "a finite number >= 0"),
+                               ("max_activation", max_activation, "a number in [0, 1]")):
+        given = {}
+        for item in (x for arg in items for x in arg.split(",") if x):
+            key, eq, text = item.partition("=")
+            what = name.replace("_", " ")
+            if not eq:
+                raise ValueError(f"{what} '{item}' is not NAME=VALUE")
+            try:
+                v = float(text)
+            except ValueError:
+                v = float("nan")
+            hi = 1.0 if name == "max_activation" else float("inf")
+            if not (np.isfinite(v) and 0.0 <= v <= hi):
+                raise ValueError(f"{what} of '{key}' must be {lo_hi}, got '{text}'")
+            given[key] = v
+        if given:
+            setattr(arm, name, given)
+    out = []
+    for option, values in (("--strength", arm.strength), ("--max-activation", arm.max_activation)):
+        out += [option, ",".join(f"{n}={float(v)!r}" for n, v in zip(arm.element_names, values))]
+    return out + ["--profile-name", os.fspath(profile)]
+
+
 def runner_args(argv: list[str]) -> list[str]:
     """The runner's arguments: `--model FILE.json` (or --model=FILE.json) becomes the model built on demand
     (armrt.Model.load, cached) as `--model-library LIB --model NAME`; `--stimulation default` becomes the map the
     model ships (armrt.stimulation.default_map_path, as Arm(model, stimulation="default"); ValueError for a model
-    without one); everything else is passed as is."""
+    without one); `--profile NAME|FILE` is resolved with Arm.apply_profile (the runner reads no .mat) into one
+    --strength and --max-activation value per element (the --strength / --max-activation given applied on top)
+    and --profile-name for the statistics; everything else is passed as is."""
     out, k, model, stimulation_at = [], 0, "das2", None
+    profile, strength, max_activation = None, [], []
     while k < len(argv):
+        got = False
+        for name, store in (("strength", strength), ("max-activation", max_activation)):
+            value, taken = _option_value(argv, k, name)
+            if value is not None:
+                store.append(value)
+                out += argv[k:k + taken]  # kept as given unless a profile comes (then merged below)
+                k += taken
+                got = True
+                break
+        if got:
+            continue
+        value, taken = _option_value(argv, k, "profile")
+        if value is not None:
+            profile = value
+            k += taken
+            continue
         value, taken = _option_value(argv, k, "model")
         if value is not None:
             model = value
@@ -242,6 +292,17 @@ def runner_args(argv: list[str]) -> list[str]:
     if stimulation_at is not None:
         from .stimulation import default_map_path
         out[stimulation_at + 1] = str(default_map_path(model))
+    if profile is not None:
+        kept, j = [], 0
+        while j < len(out):  # the --strength / --max-activation items are merged into the profile's
+            if out[j] in ("--strength", "--max-activation") and j + 1 < len(out):
+                j += 2
+            elif out[j].startswith(("--strength=", "--max-activation=")):
+                j += 1
+            else:
+                kept.append(out[j])
+                j += 1
+        out = kept + _profile_items(model, profile, strength, max_activation)
     return out
 
 
@@ -251,7 +312,7 @@ def rt_main() -> None:
     exe = runner_path()
     try:
         args = runner_args(sys.argv[1:])
-    except (OSError, ValueError, RuntimeError) as exc:
-        print(f"armrt-rt: {exc}", file=sys.stderr)
+    except (OSError, ValueError, KeyError, RuntimeError) as exc:
+        print(f"armrt-rt: {exc.args[0] if isinstance(exc, KeyError) and exc.args else exc}", file=sys.stderr)
         sys.exit(2)
     os.execv(exe, [exe, *args])
