@@ -1239,3 +1239,148 @@ def test_client_send_never_waits_for_a_session():
         c.send({"rotator_cuff": 0.03})
         time.sleep(0.05)
         assert s.stats()["packets"]["applied"] == 1
+
+
+def test_statistics_name_the_model_and_profile(tmp_path):
+    """The model's name and the profile (None when none is given) are in RealtimeSession's result and in --json:
+    one field of RtStats (rt_stats.cc), not written anywhere else."""
+    s = rt.RealtimeSession(model="das2", duration=0.02, realtime=False)
+    s.start()
+    assert s.wait(10.0)
+    stats = s.stop()
+    assert stats["model"] == "das2" and stats["profile"] is None
+    path = tmp_path / "stats.json"
+    r = subprocess.run([runner(), "--model", "das2", "--duration", "0.02", "--no-rt", "--no-mlock", "--json",
+                        str(path)], capture_output=True, text=True, timeout=20)
+    assert r.returncode == 0, r.stderr
+    saved = json.loads(path.read_text())
+    assert saved["model"] == "das2" and saved["profile"] is None
+    assert "das2 stopped (duration)" in r.stdout
+
+
+def test_runner_settle_starts_from_the_relaxed_arm():
+    """RealtimeSession(settle=S) / --settle S: the arm first relaxes S s with zero excitation (Arm.settle's engine
+    path, Arm::settle), the loop then starts at time 0: the streamed state at time t is the offline arm's after
+    S + t s of zero excitation, stepped without settle()."""
+    weak = {"elbow_flexors": 0.5}
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, strength=weak,
+                            settle=0.3) as s, rt.UdpClient(s.port, mapping="groups") as c:
+        c.join()
+        st = None
+        for _ in range(60):
+            c.send({"elbow_flexors": 0.0})
+            st = c.latest_state(timeout=0.2) or st
+            if st is not None and st.time > 0.05:
+                break
+        stats = s.stop()
+    assert stats["error"] == "" and st is not None and st.time < 0.3 + 0.2
+    arm = armrt.Arm()
+    arm.strength = weak
+    arm.step(300 + int(round(st.time / arm.dt)))
+    np.testing.assert_allclose(st.q, arm.q, atol=1e-9)
+    unsettled = armrt.Arm()
+    unsettled.strength = weak
+    unsettled.step(int(round(st.time / arm.dt)))
+    assert np.abs(st.q - unsettled.q).max() > 1e-6
+    # Arm.settle goes through the same engine path: its state is the stepped arm's, the clock back at 0.
+    a, b = armrt.Arm(), armrt.Arm()
+    a.set_excitation(0.2)
+    a.settle(0.1)
+    b.step(100)
+    assert a.time == 0.0 and np.all(a.excitation == 0.2)
+    np.testing.assert_allclose(a.q, b.q, atol=1e-12)
+
+
+def test_settle_bad_values_are_refused():
+    for bad in (-1.0, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match=r"--settle must be a finite number of seconds >= 0"):
+            rt.RealtimeSession(settle=bad)
+    r = subprocess.run([runner(), "--settle", "-0.5", "--duration", "0.1"], capture_output=True, text=True, timeout=20)
+    assert r.returncode == 2 and "--settle must be a finite number of seconds >= 0, got -0.5" in r.stderr, r.stderr
+
+
+def test_runner_profile_is_arm_apply_profile():
+    """RealtimeSession(profile=) resolves a participant profile with Arm.apply_profile (the runner reads no .mat):
+    the runner gets its strength and max_activation element by element, strength= given beside it applies on top,
+    and the statistics name the profile. With zero excitation the streamed state and muscle forces are the offline
+    arm's with the same profile (passive forces scale with fmax); full excitation is streamed capped at its
+    max_activation."""
+    mat = Path(__file__).resolve().parents[1].parent / "shared" / "reference" / "participant_A" / "model_struct_A_FES.mat"
+    if not mat.exists():
+        pytest.skip(f"participant data not found at {mat} (needs ../shared beside the repository)")
+    arm, intact = armrt.Arm(), armrt.Arm()
+    report = arm.apply_profile(mat)
+    arm.strength = {"deltscap": 0.3}
+    assert len(report.applied) == 42 and np.any(arm.max_activation[arm.indices("elbow_flexors")] < 1)
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, send_excitation=True,
+                            send_forces=True, profile=mat, strength={"deltscap": 0.3}) as s, \
+            rt.UdpClient(s.port, mapping="groups") as c:
+        c.join()
+        st = capped = None
+        for _ in range(60):
+            c.send({"elbow_flexors": 0.0})
+            st = c.latest_state(timeout=0.2) or st
+            if st is not None and st.time > 0.2:
+                break
+        for _ in range(60):
+            c.send({"elbow_flexors": 1.0})
+            got = c.latest_state(timeout=0.2)
+            if got is not None and got.excitation is not None and got.excitation.max() > 0:
+                capped = got
+                break
+        stats = s.stop()
+    assert stats["error"] == "" and stats["profile"] == str(mat) and st is not None and capped is not None
+    n = int(round(st.time / arm.dt))
+    arm.step(n)
+    intact.step(n)
+    np.testing.assert_allclose(st.q, arm.q, atol=1e-9)
+    np.testing.assert_allclose(st.muscle_force, arm.outputs()["muscle_force"], rtol=1e-9, atol=1e-9)
+    assert np.abs(st.muscle_force - intact.outputs()["muscle_force"]).max() > 1e-6
+    u = np.zeros(arm.n_elements)
+    u[arm.indices("elbow_flexors")] = 1.0
+    np.testing.assert_array_equal(capped.excitation, np.minimum(u, arm.max_activation))
+    with pytest.raises(FileNotFoundError, match="no profile named 'participant_Z'"):
+        rt.RealtimeSession(profile="participant_Z")
+    with pytest.raises(ValueError, match="profile_reference without a profile"):
+        rt.RealtimeSession(profile_reference=mat)
+
+
+def test_runner_profile_by_model_name():
+    """A profile named as a model file (models/participant_A_FES.json, as Arm.apply_profile takes it): resolved
+    without ../shared, its name in the statistics, its max_activation the offline arm's."""
+    s = rt.RealtimeSession(profile="participant_A_FES", send_excitation=True)
+    assert s.stats()["profile"] == "participant_A_FES"
+    arm = armrt.Arm()
+    arm.apply_profile("participant_A_FES")
+    assert np.any(arm.max_activation < 1) or np.any(arm.strength != 1)
+    assert s.config["profile"] == "participant_A_FES"
+
+
+def test_console_script_resolves_profile(tmp_path):
+    """`armrt-rt --profile NAME|FILE` (the console script, python -m armrt.realtime): resolved with Arm.apply_profile
+    into one --strength and --max-activation value per element, --strength given beside it on top, the name in
+    --json; the bare runner refuses --profile with the reason, and an unknown profile exits 2."""
+    args = rt.runner_args(["--no-rt", "--profile", "participant_A_FES", "--strength", "deltscap=0.3"])
+    arm = armrt.Arm()
+    arm.apply_profile("participant_A_FES")
+    arm.strength = {"deltscap": 0.3}
+    got = dict(zip(args[1::2], args[2::2]))
+    assert args[0] == "--no-rt" and got["--profile-name"] == "participant_A_FES"
+    assert args.count("--strength") == 1 and args.count("--max-activation") == 1
+    for option, values in (("--strength", arm.strength), ("--max-activation", arm.max_activation)):
+        items = dict(x.split("=") for x in got[option].split(","))
+        assert list(items) == arm.element_names
+        np.testing.assert_array_equal([float(v) for v in items.values()], values)
+    with pytest.raises(ValueError, match="strength of 'bicb' must be a finite number >= 0, got 'x'"):
+        rt.runner_args(["--profile", "participant_A_FES", "--strength=bicb=x"])
+    path = tmp_path / "stats.json"
+    r = subprocess.run([sys.executable, "-m", "armrt.realtime", "--profile", "participant_A_FES", "--duration", "0.02",
+                        "--no-rt", "--no-mlock", "--json", str(path)], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert json.loads(path.read_text())["profile"] == "participant_A_FES"
+    assert "profile participant_A_FES stopped (duration)" in r.stdout
+    r = subprocess.run([sys.executable, "-m", "armrt.realtime", "--profile", "participant_Z"], capture_output=True,
+                       text=True, timeout=60)
+    assert r.returncode == 2 and "no profile named 'participant_Z'" in r.stderr, r.stderr
+    r = subprocess.run([runner(), "--profile", "participant_A_FES"], capture_output=True, text=True, timeout=20)
+    assert r.returncode == 2 and "profiles are resolved in Python by the armrt-rt console script" in r.stderr

@@ -93,6 +93,9 @@ int main(int argc, char** argv) {
                                   "(das2: GHy,GHz,GHyy,ELx,PSy; default: rest posture)")
       ->delimiter(',')->expected(1, armrt::kMaxDofs)->type_name("Q,Q,...");  // CLI11 would say FLOAT: one number
   app.add_option("--duration", cfg.duration, "run for S seconds (0: until SIGINT/SIGTERM)")->capture_default_str();
+  app.add_option("--settle", cfg.settle_s, "first relax the arm S seconds with zero excitation, then start the loop "
+                                         "at time 0 (Arm.settle; das3's start posture is not its equilibrium)")
+      ->capture_default_str();
   app.add_option("--priority", cfg.priority, "SCHED_FIFO priority 1..99")->capture_default_str();
   app.add_flag("--no-rt", no_rt, "normal scheduling on purpose (no SCHED_FIFO)");
   app.add_flag("--no-mlock", no_mlock, "do not mlockall");
@@ -119,6 +122,11 @@ int main(int argc, char** argv) {
   app.add_option("--strength", cfg.strength, "weakness: NAME=V scales the maximum isometric force (DAS3 fmax) of "
                                            "element, muscle or group NAME by V >= 0 (1: intact; comma-separated)")
       ->delimiter(',');
+  app.add_option("--profile-name", cfg.profile, "the participant profile's name, recorded in the statistics (the "
+                                              "armrt-rt console script sets it from --profile)");
+  std::string profile_unresolved;
+  app.add_option("--profile", profile_unresolved, "participant profile NAME|FILE (.mat / .json): resolved by the "
+                                                  "armrt-rt console script (python -m armrt.realtime), not here");
   app.add_option("--stimulation", cfg.stimulation, "stimulation map (docs/fes.md): FILE.toml / FILE.json, per_muscle, or default (the model's shipped "
                                                  "map, resolved by the armrt-rt entry point); "
                                                  "packet type 7 then carries pulse width s, amplitude A, frequency Hz "
@@ -136,6 +144,10 @@ int main(int argc, char** argv) {
                            "dt in armrt is the control step, here 1/--rate)\n");
       cfg.integration_step = deprecated_dt;
     }
+    if (app.count("--profile"))
+      throw std::invalid_argument("--profile " + profile_unresolved + ": profiles are resolved in Python by the armrt-rt "
+                                  "console script (python -m armrt.realtime, Arm.apply_profile), which passes "
+                                  "--strength, --max-activation and --profile-name here; run that, or give those");
     cfg.realtime = !no_rt;
     cfg.lock_memory = !no_mlock;
     if (cfg.require_rt && !cfg.realtime) throw std::invalid_argument("--require-rt and --no-rt contradict each other");
@@ -153,6 +165,9 @@ int main(int argc, char** argv) {
   std::unique_ptr<RtLoop> loop;
   try {
     loop = std::make_unique<RtLoop>(cfg);
+  } catch (const armrt::rt::SettleError& e) {
+    std::fprintf(stderr, "armrt-rt: %s\n", e.what());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armrt-rt: %s\n", e.what());
     return 2;
@@ -197,7 +212,8 @@ int main(int argc, char** argv) {
   g_loop = nullptr;
 
   const auto st = loop->stats();
-  std::printf("armrt-rt: stopped (%s) after %lld cycles, %.3f s, sim time %.3f s\n", st.stop_reason.c_str(),
+  std::printf("armrt-rt: %s%s%s stopped (%s) after %lld cycles, %.3f s, sim time %.3f s\n", st.model.c_str(),
+              st.profile.empty() ? "" : ", profile ", st.profile.c_str(), st.stop_reason.c_str(),
               static_cast<long long>(st.cycles), st.elapsed_s, st.sim_time);
   print_pct("TET", st.tet);
   print_pct("cycle", st.cycle);

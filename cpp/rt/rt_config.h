@@ -13,6 +13,9 @@ namespace armrt::rt {
 struct RtConfig {
   // Model and integrator.
   std::string model = "das2";
+  // The participant profile the strength / max_activation came from (its name, recorded in the statistics);
+  // empty: none. RealtimeSession(profile=...) resolves the profile in Python (armrt.profile) and sets it.
+  std::string profile;
   std::string integrator = "ros2";
   double rate_hz = 1000.0;     // loop rate; the control step is 1/rate_hz s (one cycle)
   // Largest integration step (s): each control step takes ceil(period / integration_step) substeps;
@@ -20,6 +23,8 @@ struct RtConfig {
   double integration_step = 0;
   std::vector<double> q0;      // initial joint angles (one per DOF of the model, rad); empty: rest posture
   double duration = 0;         // s; 0: until stop() / a signal
+  // s of relaxation before the loop starts (Arm.settle: zero excitation, then the clock back to 0); 0: none.
+  double settle_s = 0;
   // Real-time set-up.
   bool realtime = true;        // try SCHED_FIFO; false: normal scheduling on purpose
   int priority = 80;           // SCHED_FIFO priority (1..99)

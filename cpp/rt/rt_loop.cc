@@ -86,6 +86,12 @@ void RtLoop::make_simulator(const ModelDef& def, const Schedule& sched) {
       throw std::invalid_argument(std::string("--stimulation: ") + e.what());
     }
   }
+  // --settle: the engine's settle (Arm::settle, as Python's Arm.settle), with the weakness and paralysis above in
+  // effect and the stimulation channels at zero; the loop then starts from the relaxed state at time 0.
+  if (cfg_.settle_s > 0) {
+    const auto n = static_cast<std::int64_t>(std::llround(cfg_.settle_s / sched.period_s));
+    if (!sim_->settle(n)) throw SettleError("--settle " + fmt(cfg_.settle_s) + " s: " + sim_->error_message());
+  }
 }
 
 void RtLoop::apply_command(const double* u, const double* stimulation) {
@@ -326,6 +332,8 @@ void RtLoop::join() {
 
 RtStats RtLoop::stats() const {
   RtStats st;
+  st.model = cfg_.model;
+  st.profile = cfg_.profile;
   st.cycles = cycles_.load(std::memory_order_relaxed);
   rec_.fill(st);
   st.elapsed_s = elapsed_s_;

@@ -14,6 +14,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,11 @@
 #include "rt_stats.h"
 
 namespace armrt::rt {
+
+// The simulation failed while settling (--settle): not a bad option (exit status 1, as a divergence in the loop).
+struct SettleError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 class RtLoop {
  public:

@@ -38,6 +38,8 @@ nlohmann::ordered_json json_pct(const Percentiles& p) {
 std::string stats_json(const RtStats& s) {
   const PacketCounters& k = s.packets;
   nlohmann::ordered_json j;
+  j["model"] = s.model;
+  j["profile"] = s.profile.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(s.profile);
   j["rate_hz"] = s.rate_hz;
   j["control_step"] = s.control_step;
   j["integration_step"] = s.integration_step;

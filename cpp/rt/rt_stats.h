@@ -49,6 +49,8 @@ struct PacketCounters {
 };
 
 struct RtStats {
+  std::string model;              // the registered model's name (--model)
+  std::string profile;            // the participant profile's name; "" (JSON null): none given
   std::int64_t cycles = 0;        // cycles run
   std::int64_t recorded = 0;      // cycles in the percentiles (all of them: fixed-memory histograms)
   std::int64_t overruns = 0;      // cycles whose work ended after the next deadline

@@ -830,6 +830,50 @@ TEST_CASE("start / stop on a thread, with statistics") {
   CHECK(loop.stats_json().find("\"overruns\"") != std::string::npos);
 }
 
+TEST_CASE("the statistics name the model and the profile (JSON null when none is given)") {
+  RtConfig c = test_config();
+  {
+    RtLoop loop(c);
+    CHECK(loop.stats().model == c.model);
+    CHECK(loop.stats().profile.empty());
+    const std::string j = loop.stats_json();
+    CHECK(j.find("\"model\": \"" + c.model + "\"") != std::string::npos);
+    CHECK(j.find("\"profile\": null") != std::string::npos);
+  }
+  c.profile = "participant_A_FES";
+  RtLoop loop(c);
+  CHECK(loop.stats().profile == "participant_A_FES");
+  CHECK(loop.stats_json().find("\"profile\": \"participant_A_FES\"") != std::string::npos);
+}
+
+TEST_CASE("--settle: the loop starts from the arm relaxed with zero excitation, at time 0 (Arm::settle)") {
+  RtConfig c = test_config();
+  c.strength = {"elbow_flexors=0.5"};  // settled with the weakness in effect
+  c.settle_s = 0.3;
+  RtLoop loop(c);
+  // Independently: the same arm stepped 300 control steps with zero excitation, step by step.
+  const armrt::ModelDef* def = armrt::find_model(c.model);
+  RtConfig plain = test_config();
+  plain.strength = c.strength;
+  RtLoop unsettled(plain);
+  armrt::Arm& ref = unsettled.arm();
+  for (int k = 0; k < 300; ++k) REQUIRE(ref.step(false));
+  const armrt::Arm& got = loop.arm();
+  CHECK(got.data.time == 0.0);
+  double moved = 0;
+  for (int j = 0; j < def->num_dofs; ++j) {
+    CHECK(got.data.x[q_offset(got.model) + j] == doctest::Approx(ref.data.x[q_offset(ref.model) + j]).epsilon(1e-12));
+    moved = std::max(moved, std::fabs(got.data.x[q_offset(got.model) + j] - RtLoop(plain).arm().data.x[q_offset(got.model) + j]));
+  }
+  CHECK(moved > 1e-6);  // the settle did something: the rest posture is not das2's equilibrium with this weakness
+  for (int i = 0; i < def->num_elements; ++i) CHECK(got.data.excitation[i] == 0.0);
+  for (double bad : {-1.0, std::nan(""), HUGE_VAL}) {
+    c.settle_s = bad;
+    CHECK_THROWS_WITH_AS(RtLoop{c}, doctest::Contains("--settle must be a finite number of seconds >= 0"),
+                         std::invalid_argument);
+  }
+}
+
 TEST_CASE("--strength: fmax scaled by element, muscle or group names, the most specific name winning") {
   RtConfig c = test_config();
   RtLoop intact(c);

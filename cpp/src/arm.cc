@@ -1,4 +1,4 @@
-// arm.cc: (ModelDef, integrator, dt, substeps) -> an Arm on the shared Model at rest; reset to a posture.
+// arm.cc: (ModelDef, integrator, dt, substeps) -> an Arm on the shared Model at rest; reset to a posture; settled.
 #include "armrt/arm.h"
 
 #include "armrt/engine.h"
@@ -25,6 +25,21 @@ void Arm::reset(const double* q, const double* qdot, const double* activation) {
     }
   }
   stepper_restart(model, data, stepper);
+}
+
+bool Arm::settle(std::int64_t n_steps, const std::function<bool()>& interrupted) {
+  const auto held = data.excitation;  // already capped (data_set_excitation): restoring it changes nothing else
+  const std::array<double, kMaxElements> zero{};
+  data_set_excitation(model, data, zero.data());
+  bool ok = true;
+  for (std::int64_t k = 0; k < n_steps && ok; ++k) {
+    // No outputs while stepping: they are computed when read (evaluate_outputs).
+    ok = step(false);
+    if (ok && interrupted && interrupted()) ok = false;
+  }
+  data_set_excitation(model, data, held.data());
+  if (ok) data.time = 0.0;
+  return ok;
 }
 
 }  // namespace armrt

@@ -329,6 +329,18 @@ PYBIND11_MODULE(_core, mod) {
         if (interrupted) throw py::error_already_set();
         raise_if_failed(s);
       }, py::arg("n") = 1)
+      // Arm.settle: n control steps with zero excitation, then the clock back to 0 and the excitation as it was
+      // (Arm::settle, arm.h: the one settle path, also armrt-rt --settle's). Ctrl-C stops it as step does.
+      .def("settle", [](Arm& s, long n) {
+        bool interrupted = false;
+        {
+          py::gil_scoped_release release;
+          InterruptCheck check;
+          s.settle(n, [&] { return interrupted = check.interrupted(); });
+        }
+        if (interrupted) throw py::error_already_set();
+        raise_if_failed(s);
+      }, py::arg("n"))
       // What the dynamics use for excitations u (n,) or (T, n): capped_excitation with this arm's maximum
       // activation (data.h), the engine's one cap rule.
       .def("cap_excitation", [](const Arm& s, const Array& u) {

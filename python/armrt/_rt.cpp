@@ -116,7 +116,7 @@ PYBIND11_MODULE(_rt, m) {
                        double state_rate_hz, bool send_forces, bool send_excitation, double input_timeout,
                        std::vector<std::string> channels, double rx_budget_us,
                        std::vector<std::string> max_activation, const std::string& stimulation,
-                       std::vector<std::string> strength) {
+                       std::vector<std::string> strength, const std::string& profile, double settle) {
              RtConfig c;
              c.model = model;
              c.integrator = integrator;
@@ -144,6 +144,8 @@ PYBIND11_MODULE(_rt, m) {
              c.max_activation = std::move(max_activation);
              c.strength = std::move(strength);
              c.stimulation = stimulation;
+             c.profile = profile;
+             c.settle_s = settle;
              return std::make_unique<RtLoop>(c);
            }),
            py::arg("model") = "das2", py::arg("integrator") = RtConfig{}.integrator, py::arg("rate_hz") = 1000.0,
@@ -155,7 +157,8 @@ PYBIND11_MODULE(_rt, m) {
            py::arg("state_rate_hz") = 100.0, py::arg("send_forces") = false, py::arg("send_excitation") = false,
            py::arg("input_timeout") = 0.1, py::arg("channels") = std::vector<std::string>{},
            py::arg("rx_budget_us") = 0.0, py::arg("max_activation") = std::vector<std::string>{},
-           py::arg("stimulation") = "", py::arg("strength") = std::vector<std::string>{})
+           py::arg("stimulation") = "", py::arg("strength") = std::vector<std::string>{},
+           py::arg("profile") = "", py::arg("settle") = 0.0)
       .def("start", [](RtLoop& l) {
         py::gil_scoped_release release;
         l.start();

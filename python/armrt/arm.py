@@ -475,14 +475,12 @@ class Arm:
         duration = real_scalar(duration, "duration")
         if not np.isfinite(duration) or duration < 0:
             raise ValueError(f"duration must be a finite number of seconds >= 0, got {duration}")
-        u = self.excitation.copy()
-        self.set_excitation(np.zeros(self.model.n_elements))
-        try:
-            self.step(self._n_steps(duration), progress=False)
-        finally:
-            self.set_excitation(u)
+        n = self._n_steps(duration)
         with self._exclusive():
-            self._sim.time = 0.0
+            try:
+                self._sim.settle(n)  # Arm::settle (arm.h), the engine's one settle path (armrt-rt --settle's too)
+            except RuntimeError as exc:
+                raise _simulation_error(exc) from None
 
     def step(self, n: int = 1, progress: bool | None = None) -> None:
         """Advances n control steps (an integer >= 0) with the current excitation and load (loop in

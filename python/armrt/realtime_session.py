@@ -53,9 +53,13 @@ class RealtimeSession:
 
     Parameters are those of armrt-rt (docs/realtime.md): model, integrator, rate_hz, integration_step
     (the integrator's largest step, s; `dt`, its old name, is deprecated: dt is the control step, here
-    1/rate_hz), q0, duration,
+    1/rate_hz), q0, settle (s, finite and >= 0: first relax the arm with zero excitation, then start the loop at
+    time 0, as Arm.settle; a simulation failure while settling raises RuntimeError), duration,
     realtime, priority, lock_memory (mlockall of the whole Python process; off by default), require_rt,
-    cpu, busy_wait_us, max_lag, listen ("127.0.0.1:0" for an ephemeral port), state_to (one "host:port"
+    cpu, busy_wait_us, max_lag, profile (a participant profile, as Arm.apply_profile takes it: a DAS-format .mat,
+    an armrt model file or a model name such as "participant_A_FES"; resolved here with armrt.profile into one
+    strength and max_activation value per element, the profile's name in stats()["profile"]; profile_reference: its
+    reference=; strength / max_activation given too apply on top, as set after apply_profile), listen ("127.0.0.1:0" for an ephemeral port), state_to (one "host:port"
     or a list), allow (list of "host[:port]"), key (bytes >= 16), state_rate_hz, send_forces,
     send_excitation, input_timeout, channels, rx_budget_us, max_activation ({name: value} of elements,
     muscles or groups, or one value per element, in [0, 1]: paralysis and weakness; every excitation,
@@ -83,6 +87,21 @@ class RealtimeSession:
             del config["q0"]
         if "channels" in config:
             config["channels"] = list(config["channels"] or [])
+        profile, reference = config.pop("profile", None), config.pop("profile_reference", None)
+        if profile is not None:
+            # The runner does not read profiles (a .mat needs MATLAB's format): Arm.apply_profile resolves one
+            # here, strength / max_activation given beside it apply on top (as setting them after apply_profile),
+            # and the runner gets one value per element, the profile's name for its statistics.
+            from .arm import Arm
+            arm = Arm(config.get("model", "das2"))
+            arm.apply_profile(profile, reference)
+            for name in ("strength", "max_activation"):
+                if config.get(name) is not None:
+                    setattr(arm, name, config[name])
+                config[name] = np.array(getattr(arm, name), dtype=float)
+            config["profile"] = os.fspath(profile)
+        elif reference is not None:
+            raise ValueError("profile_reference without a profile")
         if config.get("max_activation") is not None:
             config["max_activation"] = _max_activation_items(config["max_activation"], config.get("model", "das2"))
         else:
@@ -195,13 +214,63 @@ def _option_value(argv: list[str], k: int, name: str) -> tuple[str | None, int]:
     return None, 0
 
 
+def _profile_items(model: str, profile: str, strength: list[str], max_activation: list[str]) -> list[str]:
+    """`--profile NAME|FILE` (with the --strength / --max-activation items given beside it, applied on top, as set
+    after Arm.apply_profile) -> the runner's --strength, --max-activation (one value per element) and
+    --profile-name arguments. ValueError / FileNotFoundError as Arm.apply_profile and the runner word them."""
+    from .arm import Arm
+    arm = Arm(model)
+    arm.apply_profile(profile)
+    for name, items, lo_hi in (("strength", strength, "a finite number >= 0"),
+                               ("max_activation", max_activation, "a number in [0, 1]")):
+        given = {}
+        for item in (x for arg in items for x in arg.split(",") if x):
+            key, eq, text = item.partition("=")
+            what = name.replace("_", " ")
+            if not eq:
+                raise ValueError(f"{what} '{item}' is not NAME=VALUE")
+            try:
+                v = float(text)
+            except ValueError:
+                v = float("nan")
+            hi = 1.0 if name == "max_activation" else float("inf")
+            if not (np.isfinite(v) and 0.0 <= v <= hi):
+                raise ValueError(f"{what} of '{key}' must be {lo_hi}, got '{text}'")
+            given[key] = v
+        if given:
+            setattr(arm, name, given)
+    out = []
+    for option, values in (("--strength", arm.strength), ("--max-activation", arm.max_activation)):
+        out += [option, ",".join(f"{n}={float(v)!r}" for n, v in zip(arm.element_names, values))]
+    return out + ["--profile-name", os.fspath(profile)]
+
+
 def runner_args(argv: list[str]) -> list[str]:
     """The runner's arguments: `--model FILE.json` (or --model=FILE.json) becomes the model built on demand
     (armrt.Model.load, cached) as `--model-library LIB --model NAME`; `--stimulation default` becomes the map the
     model ships (armrt.stimulation.default_map_path, as Arm(model, stimulation="default"); ValueError for a model
-    without one); everything else is passed as is."""
+    without one); `--profile NAME|FILE` is resolved with Arm.apply_profile (the runner reads no .mat) into one
+    --strength and --max-activation value per element (the --strength / --max-activation given applied on top)
+    and --profile-name for the statistics; everything else is passed as is."""
     out, k, model, stimulation_at = [], 0, "das2", None
+    profile, strength, max_activation = None, [], []
     while k < len(argv):
+        got = False
+        for name, store in (("strength", strength), ("max-activation", max_activation)):
+            value, taken = _option_value(argv, k, name)
+            if value is not None:
+                store.append(value)
+                out += argv[k:k + taken]  # kept as given unless a profile comes (then merged below)
+                k += taken
+                got = True
+                break
+        if got:
+            continue
+        value, taken = _option_value(argv, k, "profile")
+        if value is not None:
+            profile = value
+            k += taken
+            continue
         value, taken = _option_value(argv, k, "model")
         if value is not None:
             model = value
@@ -223,6 +292,17 @@ def runner_args(argv: list[str]) -> list[str]:
     if stimulation_at is not None:
         from .stimulation import default_map_path
         out[stimulation_at + 1] = str(default_map_path(model))
+    if profile is not None:
+        kept, j = [], 0
+        while j < len(out):  # the --strength / --max-activation items are merged into the profile's
+            if out[j] in ("--strength", "--max-activation") and j + 1 < len(out):
+                j += 2
+            elif out[j].startswith(("--strength=", "--max-activation=")):
+                j += 1
+            else:
+                kept.append(out[j])
+                j += 1
+        out = kept + _profile_items(model, profile, strength, max_activation)
     return out
 
 
@@ -232,7 +312,7 @@ def rt_main() -> None:
     exe = runner_path()
     try:
         args = runner_args(sys.argv[1:])
-    except (OSError, ValueError, RuntimeError) as exc:
-        print(f"armrt-rt: {exc}", file=sys.stderr)
+    except (OSError, ValueError, KeyError, RuntimeError) as exc:
+        print(f"armrt-rt: {exc.args[0] if isinstance(exc, KeyError) and exc.args else exc}", file=sys.stderr)
         sys.exit(2)
     os.execv(exe, [exe, *args])

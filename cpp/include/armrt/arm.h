@@ -2,6 +2,8 @@
 // holds the same three, plus its input checks). What the bindings, the batch and the real-time runner drive.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <string>
 
 #include "armrt/data.h"
@@ -24,6 +26,12 @@ class Arm {
   void reset(const double* q, const double* qdot, const double* activation);
   // One control step (step(model, data, stepper, 1, record), stepper.h).
   bool step(bool record = true) { return armrt::step(model, data, stepper, 1, record); }
+  // Relaxes the arm from its current state (Python's Arm.settle; the real-time runner's --settle): n_steps control
+  // steps with zero excitation, under the hand load as set, then the clock back to 0 and the excitation as it
+  // was. das3 starts at DAS3's equilibrium.mat posture, which is not this model's equilibrium (docs/das3.md).
+  // False if a step failed (data.status says why) or `interrupted` (polled between steps; may be empty) returned
+  // true: the excitation is restored, the clock is not reset, the state is the last completed step's.
+  bool settle(std::int64_t n_steps, const std::function<bool()>& interrupted = {});
   // Outputs (forces, GH stability, ...) at the current state, without advancing: computed only if they do not
   // already describe it (outputs_current), so reading them twice costs one forward() at most.
   void evaluate_outputs() {
