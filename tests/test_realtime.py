@@ -199,6 +199,18 @@ def _last_state(sub):
     return last
 
 
+def _state_after(client, t_min: float, command=None, tries: int = 60):
+    """Sends `command` (default: elbow flexors at zero) until a state packet past t_min s arrives; the last state
+    received (None if none)."""
+    st = None
+    for _ in range(tries):
+        client.send(command if command is not None else {"elbow_flexors": 0.0})
+        st = client.latest_state(timeout=0.2) or st
+        if st is not None and st.time > t_min:
+            break
+    return st
+
+
 def test_runner_signals_clean_shutdown_and_json(tmp_path):
     # SIGHUP (terminal / ssh session closed) and SIGQUIT end the run as SIGINT / SIGTERM do: statistics printed
     # and written, exit status 0, and a last state packet flagged stopped (their default actions killed the
@@ -801,12 +813,7 @@ def test_runner_strength_by_names_matches_arm_strength():
     with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, send_forces=True,
                             strength=weak) as s, rt.UdpClient(s.port, mapping="groups") as c:
         c.join()
-        st = None
-        for _ in range(60):
-            c.send({"elbow_flexors": 0.0})
-            st = c.latest_state(timeout=0.2) or st
-            if st is not None and st.time > 0.3:
-                break
+        st = _state_after(c, 0.3)
         stats = s.stop()
     assert stats["error"] == "" and st is not None and st.muscle_force is not None
     arm, intact = armrt.Arm(), armrt.Arm()
@@ -1266,12 +1273,7 @@ def test_runner_settle_starts_from_the_relaxed_arm():
     with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, strength=weak,
                             settle=0.3) as s, rt.UdpClient(s.port, mapping="groups") as c:
         c.join()
-        st = None
-        for _ in range(60):
-            c.send({"elbow_flexors": 0.0})
-            st = c.latest_state(timeout=0.2) or st
-            if st is not None and st.time > 0.05:
-                break
+        st = _state_after(c, 0.05)
         stats = s.stop()
     assert stats["error"] == "" and st is not None and st.time < 0.3 + 0.2
     arm = armrt.Arm()
@@ -1316,12 +1318,8 @@ def test_runner_profile_is_arm_apply_profile():
                             send_forces=True, profile=mat, strength={"deltscap": 0.3}) as s, \
             rt.UdpClient(s.port, mapping="groups") as c:
         c.join()
-        st = capped = None
-        for _ in range(60):
-            c.send({"elbow_flexors": 0.0})
-            st = c.latest_state(timeout=0.2) or st
-            if st is not None and st.time > 0.2:
-                break
+        capped = None
+        st = _state_after(c, 0.2)
         for _ in range(60):
             c.send({"elbow_flexors": 1.0})
             got = c.latest_state(timeout=0.2)
