@@ -211,6 +211,17 @@ def _state_after(client, t_min: float, command=None, tries: int = 60):
     return st
 
 
+def _assert_streamed_like_offline(st, arm, intact):
+    """The streamed state st is the offline `arm`'s stepped to st.time (q and muscle forces to 1e-9) and differs
+    from the `intact` arm's: the settings reached the runner and changed what it simulates."""
+    n = int(round(st.time / arm.dt))
+    arm.step(n)
+    intact.step(n)
+    np.testing.assert_allclose(st.q, arm.q, atol=1e-9)
+    np.testing.assert_allclose(st.muscle_force, arm.outputs()["muscle_force"], rtol=1e-9, atol=1e-9)
+    assert np.abs(st.muscle_force - intact.outputs()["muscle_force"]).max() > 1e-6
+
+
 def test_runner_signals_clean_shutdown_and_json(tmp_path):
     # SIGHUP (terminal / ssh session closed) and SIGQUIT end the run as SIGINT / SIGTERM do: statistics printed
     # and written, exit status 0, and a last state packet flagged stopped (their default actions killed the
@@ -821,12 +832,7 @@ def test_runner_strength_by_names_matches_arm_strength():
     assert np.all(arm.strength[arm.indices("bicb")] == 0.25)
     others = sorted(set(arm.indices("elbow_flexors")) - set(arm.indices("bicb")))
     assert others and np.all(arm.strength[others] == 0.5)
-    n = int(round(st.time / arm.dt))
-    arm.step(n)
-    intact.step(n)
-    np.testing.assert_allclose(st.q, arm.q, atol=1e-9)
-    np.testing.assert_allclose(st.muscle_force, arm.outputs()["muscle_force"], rtol=1e-9, atol=1e-9)
-    assert np.abs(st.muscle_force - intact.outputs()["muscle_force"]).max() > 1e-6
+    _assert_streamed_like_offline(st, arm, intact)
 
 
 def test_strength_bad_values_are_refused():
@@ -1328,12 +1334,7 @@ def test_runner_profile_is_arm_apply_profile():
                 break
         stats = s.stop()
     assert stats["error"] == "" and stats["profile"] == str(mat) and st is not None and capped is not None
-    n = int(round(st.time / arm.dt))
-    arm.step(n)
-    intact.step(n)
-    np.testing.assert_allclose(st.q, arm.q, atol=1e-9)
-    np.testing.assert_allclose(st.muscle_force, arm.outputs()["muscle_force"], rtol=1e-9, atol=1e-9)
-    assert np.abs(st.muscle_force - intact.outputs()["muscle_force"]).max() > 1e-6
+    _assert_streamed_like_offline(st, arm, intact)
     u = np.zeros(arm.n_elements)
     u[arm.indices("elbow_flexors")] = 1.0
     np.testing.assert_array_equal(capped.excitation, np.minimum(u, arm.max_activation))
