@@ -11,6 +11,7 @@ import time
 
 import numpy as np
 import pytest
+from lsl_helpers import pylsl_or_skip
 
 from conftest import DAS3
 
@@ -373,7 +374,7 @@ def test_lsl_bridge_loopback_with_das3():
     """The LSL bridge between an excitation outlet and a das3 session: das3's state channels come back,
     the scapular channel is forwarded and moves the girdle."""
     import test_realtime as tr
-    pylsl = tr._pylsl()
+    pylsl = pylsl_or_skip()
     from armrt import realtime as rt
     from armrt.lsl_bridge import LslBridge, channel_labels, state_channels
     source = f"armrt-test-das3-{os.getpid()}"
