@@ -28,6 +28,21 @@ class MotionActivations:
     reports: dict
 
 
+def check_motion(model, q, time, what: str, min_frames: int) -> None:
+    """q (T, ndof) rad and time (T,) s of a motion: ValueError for another shape, fewer than min_frames frames,
+    NaN/infinite values or time not strictly increasing (what names q in the messages)."""
+    if q.ndim != 2 or q.shape[1] != model.n_dofs:
+        raise ValueError(f"{what} must have shape (T, {model.n_dofs}) ({', '.join(model.dof_names)}), got {q.shape}")
+    if time.shape != (q.shape[0],):
+        raise ValueError(f"time must have shape ({q.shape[0]},), got {time.shape}")
+    if q.shape[0] < min_frames:
+        raise ValueError(f"a motion needs at least {min_frames} frames (for its accelerations)")
+    if not (np.all(np.isfinite(q)) and np.all(np.isfinite(time))):
+        raise ValueError(f"{what} or time contains NaN or infinite values")
+    if np.any(np.diff(time) <= 0):
+        raise ValueError("time must be strictly increasing")
+
+
 def static_optimization_motion(arm_or_model, motion, time=None, hand_load=None, gh_stab_max=None, weights=None,
                                criterion: str = "squared", tendon: str = "elastic", on_infeasible: str = "raise"):
     """Activations per frame along a motion: `motion` a .mot/.sto path (armrt.opensim_io.read_motion: OpenSim
@@ -47,16 +62,7 @@ def static_optimization_motion(arm_or_model, motion, time=None, hand_load=None, 
         if time is None:
             raise ValueError("time (T,) s is needed with a motion given as an array")
         time = real_array(time, "time")
-    if q.ndim != 2 or q.shape[1] != model.n_dofs:
-        raise ValueError(f"motion must have shape (T, {model.n_dofs}) ({', '.join(model.dof_names)}), got {q.shape}")
-    if time.shape != (q.shape[0],):
-        raise ValueError(f"time must have shape ({q.shape[0]},), got {time.shape}")
-    if q.shape[0] < 3:
-        raise ValueError("a motion needs at least 3 frames (for its accelerations)")
-    if not (np.all(np.isfinite(q)) and np.all(np.isfinite(time))):
-        raise ValueError("motion or time contains NaN or infinite values")
-    if np.any(np.diff(time) <= 0):
-        raise ValueError("time must be strictly increasing")
+    check_motion(model, q, time, "motion", 3)
     qd = np.gradient(q, time, axis=0, edge_order=2)
     qdd = np.gradient(qd, time, axis=0, edge_order=2)
     so = StaticOptimizer(arm_or_model, gh_stab_max=gh_stab_max, weights=weights, criterion=criterion, tendon=tendon)

@@ -20,6 +20,7 @@ import numpy as np
 
 from .checks import real_array, real_scalar
 from .control import StaticOptimizer
+from .control_motion import check_motion
 
 KP_THELEN_2003 = 100.0  # s^-2, Thelen et al. 2003
 KV_THELEN_2003 = 20.0  # s^-1, 2 sqrt(kp)
@@ -91,14 +92,7 @@ def track_motion(arm, q_ref, time, kp: float = KP_THELEN_2003, kv: float = KV_TH
     model = arm.model
     q_ref = real_array(q_ref, "q_ref")
     time = real_array(time, "time")
-    if q_ref.ndim != 2 or q_ref.shape[1] != model.n_dofs:
-        raise ValueError(f"q_ref must have shape (T, {model.n_dofs}) ({', '.join(model.dof_names)}), got {q_ref.shape}")
-    if time.shape != (q_ref.shape[0],) or q_ref.shape[0] < 4:
-        raise ValueError(f"time must have shape ({q_ref.shape[0]},) and the motion at least 4 frames")
-    if not (np.all(np.isfinite(q_ref)) and np.all(np.isfinite(time))):
-        raise ValueError("q_ref or time contains NaN or infinite values")
-    if np.any(np.diff(time) <= 0):
-        raise ValueError("time must be strictly increasing")
+    check_motion(model, q_ref, time, "q_ref", 4)
     kp, kv = real_scalar(kp, "kp"), real_scalar(kv, "kv")
     if kp < 0 or kv < 0:
         raise ValueError(f"kp and kv must be >= 0, got kp={kp:g}, kv={kv:g}")
