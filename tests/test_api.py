@@ -108,6 +108,42 @@ def test_simulate_with_array_and_callable_agree(arm):
     assert np.array_equal(a.q, b.q)
 
 
+def test_simulate_callable_arrays_checked_per_block_as_per_step(arm):
+    # A callable returning float arrays takes simulate()'s block check; dicts, scalars and other dtypes the per-step
+    # one: both give the same run, the same clipping and errors that name the step and element.
+    n = 30
+    u = np.zeros((n, 102))
+    u[:, arm.indices("brachialis")] = 0.4
+    u[n // 2:, arm.indices("tric_long")] = 1.3   # clipped to 1
+    rows = iter(range(n))
+
+    def mixed(t):
+        k = next(rows)
+        v = u[k].copy()
+        return v if k % 3 else {name: v[i] for i, name in enumerate(arm.element_names) if v[i]}  # dict: slow path
+    with pytest.warns(RuntimeWarning, match="clipped"):
+        a = arm.simulate(u, duration=n * arm.dt)
+    arm.reset()
+    with pytest.warns(RuntimeWarning, match="clipped"):
+        b = arm.simulate(mixed, duration=n * arm.dt)
+    assert np.array_equal(a.q, b.q) and np.array_equal(a.excitation, b.excitation)
+    assert b.excitation[:, arm.indices("tric_long")].max() == 1.0
+    arm.reset()
+
+    def nan_at_step_12(t):
+        v = np.zeros(102)
+        if round(t / arm.dt) == 12:
+            v[5] = np.inf
+        return v
+    with pytest.raises(ValueError, match=rf"first at step 12, element {arm.element_names[5]}, t = 0.012 s"):
+        arm.simulate(nan_at_step_12, duration=0.03)
+    arm.reset()
+    with pytest.raises(ValueError, match=r"shape \(102,\)"):
+        arm.simulate(lambda t: np.zeros(101), duration=0.01)
+    c = arm.simulate(lambda t: np.full(102, 0.2, dtype=np.float32), duration=0.01)  # not float64: per step
+    assert np.allclose(c.excitation, 0.2)
+
+
 def test_simulate_bad_input(arm):
     with pytest.raises(ValueError, match=r"shape \(40, 102\)"):
         arm.simulate(np.zeros((39, 102)), duration=0.04)

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
+#include <string>
 
 #include "armrt/engine.h"
 
@@ -17,8 +19,12 @@ void add_row(Recording& r, const Arm& s, const double* x, double time, double te
   const Data& d = s.data;
   int c = 0;
   auto put = [&](const double* p) {
-    std::vector<double>& v = r.channel[c];
-    v.insert(v.end(), p, p + r.width[c]);
+    if (r.into[c]) {
+      std::copy(p, p + r.width[c], r.into[c] + r.num_rows * r.width[c]);
+    } else {
+      std::vector<double>& v = r.channel[c];
+      v.insert(v.end(), p, p + r.width[c]);
+    }
     ++c;
   };
   put(&time);
@@ -36,9 +42,19 @@ void add_row(Recording& r, const Arm& s, const double* x, double time, double te
   ARMRT_OUTPUTS(ARMRT_X)
 #undef ARMRT_X
   put(&tet_ns);
+  ++r.num_rows;
 }
 
 }  // namespace
+
+std::array<int, kNumChannels> recording_widths(const Arm& s) {
+  const ModelDef& def = *s.model.def;
+  const LayoutRow* rows = recorded_channels();
+  std::array<int, kNumChannels> width{};
+  for (int c = 0; c < kNumChannels; ++c)
+    width[c] = rows[c].girdle_only && !def.girdle ? 0 : layout_size(rows[c].size, def, s.data.stimulation_map.num_channels);
+  return width;
+}
 
 long simulate_recorded(Arm& s, const double* u, bool held, long n_steps, long record_every, Recording& r,
                        bool (*stop)(void*), void* ctx) {
@@ -47,12 +63,18 @@ long simulate_recorded(Arm& s, const double* u, bool held, long n_steps, long re
   r.num_dofs = nq;
   r.num_elements = n;
   r.num_contact_points = def.girdle ? def.girdle->num_contact_points : 0;
-  const long n_rec = n_steps / record_every + 1;
-  const LayoutRow* rows = recorded_channels();
+  const long n_rec = recorded_rows(n_steps, record_every);
+  r.width = recording_widths(s);
+  const bool external = r.into[0] != nullptr;
   for (int c = 0; c < kNumChannels; ++c) {
-    r.width[c] = rows[c].girdle_only && !def.girdle ? 0 : layout_size(rows[c].size, def, s.data.stimulation_map.num_channels);
-    r.channel[c].reserve(n_rec * r.width[c]);
+    if (external && (r.into[c] == nullptr) != (r.width[c] == 0))
+      throw std::invalid_argument(std::string("simulate_recorded: storage for channel ") + recorded_channels()[c].name +
+                                  (r.width[c] == 0 ? " given but the arm records none" : " missing"));
+    if (!external) r.channel[c].reserve(r.channel[c].size() + n_rec * r.width[c]);
   }
+  if (external && r.capacity - r.num_rows < n_rec)
+    throw std::invalid_argument("simulate_recorded: " + std::to_string(n_rec) + " rows to record, room for " +
+                                std::to_string(r.capacity - r.num_rows));
   // Only a recorded step keeps a copy of its start state (its outputs describe that state).
   std::vector<double> x0(state_size(s.model));
   long done = 0;

@@ -1,6 +1,7 @@
 // Recording (recorder.h) and TET (Arm::step, the one place it is measured), on the pendulum.
 #include <doctest/doctest.h>
 
+#include <stdexcept>
 #include <vector>
 
 #include "armrt/recorder.h"
@@ -40,6 +41,41 @@ TEST_CASE("rows are consistent time points; the final state is added when the la
   Arm s2(generated::pendulum2::model_def(), Integrator::kRos2, 1e-3);
   CHECK(simulate_recorded(s2, u.data(), true, 10, 3, r2) == 10);
   CHECK(r2.rows() == 4);  // steps 0, 3, 6, 9; 10 % 3 != 0: no final row
+}
+
+TEST_CASE("rows written into the caller's arrays are the rows the vectors hold, block after block") {
+  std::vector<double> u(generated::pendulum2::model_def().num_elements, 0.3);
+  Arm a(generated::pendulum2::model_def(), Integrator::kRos2, 1e-3);
+  Recording whole;
+  REQUIRE(simulate_recorded(a, u.data(), true, 12, 2, whole) == 12);
+  REQUIRE(whole.rows() == 7);
+  // The same run as two blocks of 6 steps into one set of arrays: block 1's closing row is overwritten by block 2's
+  // first row (the same state), as Arm.simulate does it.
+  Arm b(generated::pendulum2::model_def(), Integrator::kRos2, 1e-3);
+  const auto width = recording_widths(b);
+  std::array<std::vector<double>, kNumChannels> store;
+  Recording into;
+  into.capacity = 7;
+  for (int c = 0; c < kNumChannels; ++c) {
+    store[c].assign(7 * width[c], -1.0);
+    into.into[c] = width[c] ? store[c].data() : nullptr;
+  }
+  REQUIRE(simulate_recorded(b, u.data(), true, 6, 2, into) == 6);
+  CHECK(into.rows() == 4);
+  into.num_rows = 3;
+  REQUIRE(simulate_recorded(b, u.data(), true, 6, 2, into) == 6);
+  CHECK(into.rows() == 7);
+  for (int c = 0; c < kNumChannels; ++c) {
+    if (c == static_cast<int>(Channel::tet_ns) || width[c] == 0) continue;  // TET: wall time
+    CHECK(store[c] == whole.channel[c]);
+  }
+  // No room for another block: refused before a step is taken.
+  const double t = b.data.time;
+  CHECK_THROWS_AS(simulate_recorded(b, u.data(), true, 2, 1, into), std::invalid_argument);
+  CHECK(b.data.time == t);
+  into.into[static_cast<int>(Channel::q)] = nullptr;
+  into.num_rows = 0;
+  CHECK_THROWS_AS(simulate_recorded(b, u.data(), true, 2, 1, into), std::invalid_argument);
 }
 
 TEST_CASE("a stop request ends the loop after the current step") {

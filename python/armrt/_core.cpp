@@ -513,12 +513,40 @@ PYBIND11_MODULE(_core, mod) {
       .def_property("max_joint_speed", [](const Arm& s) { return s.data.settings.max_joint_speed; },
                     [](Arm& s, double v) { s.data.settings.max_joint_speed = v; })
       // simulate: excitation is (T, n) (one row per step) or (1, n) (held); the loop runs without the GIL.
-      .def("simulate", [](Arm& s, const Array& excitation, long n_steps, long record_every) {
+      // With out (a dict of C-contiguous float64 arrays, one per channel of recording_shapes(rows)), the rows go
+      // straight into them from row `row` on and only {"steps", "rows"} is returned: Arm.simulate's Result arrays,
+      // filled block by block without the copies in between.
+      .def("simulate", [](Arm& s, const Array& excitation, long n_steps, long record_every, py::object storage, long row) {
         const int n = s.model.num_elements, nq = s.model.num_dofs;
         if (excitation.ndim() != 2 || excitation.shape(1) != n || (excitation.shape(0) != n_steps && excitation.shape(0) != 1))
           throw py::value_error("excitation must have shape (" + std::to_string(n_steps) + ", " + std::to_string(n) + ") or (1, " + std::to_string(n) + ")");
         if (record_every < 1) throw py::value_error("record_every must be >= 1");
         Recording r;
+        const bool into = !storage.is_none();
+        if (into) {
+          const py::dict arrays = storage.cast<py::dict>();
+          const auto width = recording_widths(s);
+          const LayoutRow* rows = recorded_channels();
+          long capacity = -1;
+          for (int c = 0; c < kNumChannels; ++c) {
+            if (width[c] == 0) continue;
+            if (!arrays.contains(rows[c].name)) throw py::value_error(std::string("simulate: out has no array ") + rows[c].name);
+            py::array a = arrays[rows[c].name].cast<py::array>();
+            const bool scalar = rows[c].size == SizeRule::kOne;
+            if (!a.dtype().is(py::dtype::of<double>()) || !(a.flags() & py::array::c_style) || !a.writeable() ||
+                a.ndim() != (scalar ? 1 : 2) || (!scalar && a.shape(1) != width[c]) || (capacity >= 0 && a.shape(0) != capacity))
+              throw py::value_error(std::string("simulate: out[") + rows[c].name + "] must be a writeable C-contiguous float64 array of "
+                                    "recording_shapes' shape");
+            capacity = a.shape(0);
+            r.into[c] = static_cast<double*>(a.mutable_data());
+          }
+          if (row < 0 || row > capacity) throw py::value_error("simulate: row outside out's rows");
+          r.capacity = capacity;
+          r.num_rows = row;
+          if (capacity - row < recorded_rows(n_steps, record_every))
+            throw py::value_error("simulate: out has room for " + std::to_string(capacity - row) + " rows from row " +
+                                  std::to_string(row) + ", " + std::to_string(recorded_rows(n_steps, record_every)) + " needed");
+        }
         long steps_done = 0;
         bool interrupted = false;
         {
@@ -533,6 +561,12 @@ PYBIND11_MODULE(_core, mod) {
         }
         if (interrupted) throw py::error_already_set();
         raise_if_failed(s);
+        if (into) {
+          py::dict done;
+          done["steps"] = steps_done;
+          done["rows"] = r.rows() - row;
+          return done;
+        }
         const py::ssize_t T = static_cast<py::ssize_t>(r.rows());
         auto arr = [T](const std::vector<double>& v, py::ssize_t w) {
           Array a(w == 0 ? std::vector<py::ssize_t>{T} : std::vector<py::ssize_t>{T, w});
@@ -547,7 +581,20 @@ PYBIND11_MODULE(_core, mod) {
         }
         out["steps"] = steps_done;
         return out;
-      }, py::arg("excitation"), py::arg("n_steps"), py::arg("record_every") = 1)
+      }, py::arg("excitation"), py::arg("n_steps"), py::arg("record_every") = 1, py::arg("out") = py::none(),
+         py::arg("row") = 0)
+      // {channel: shape} of `rows` recorded rows of this arm (the channels it records, as simulate returns them).
+      .def("recording_shapes", [](const Arm& s, long rows) {
+        const auto width = recording_widths(s);
+        const LayoutRow* table = recorded_channels();
+        py::dict shapes;
+        for (int c = 0; c < kNumChannels; ++c) {
+          if (width[c] == 0) continue;
+          if (table[c].size == SizeRule::kOne) shapes[table[c].name] = py::make_tuple(rows);
+          else shapes[table[c].name] = py::make_tuple(rows, width[c]);
+        }
+        return shapes;
+      }, py::arg("rows"))
       // linearize (engine.h) at the current state and inputs: (dfdx, dfdu) or, with step, (dfdx, dfdu, A, B) of one
       // ROS2 step of dt / substeps.
       .def("linearize", [](Arm& s, LinearizeWorkspace& w, bool step) -> py::tuple {

@@ -40,6 +40,25 @@ RESULT_MEMORY_LIMIT = 2 * 1024**3
 SIMULATE_BLOCK_STEPS = 2000
 
 
+def _check_excitation_block(u: np.ndarray, rows, first_step: int, t0: float, dt: float, element_names,
+                            clip: bool = True, stacklevel: int = 4) -> None:
+    """simulate()'s check of a block of excitation rows, the first being step first_step of a run from t0 (s)
+    (rows: a mask of the rows to check, None for all):
+    ValueError naming the first NaN/infinite value's step, time (s) and element; values outside [0, 1] give one
+    RuntimeWarning and, with clip, are clipped in place (the engine clips them too; Result.excitation holds them)."""
+    part = u if rows is None else u[rows]
+    bad = ~np.isfinite(part)
+    if bad.any():
+        row, col = np.argwhere(bad)[0]
+        step = first_step + int(row if rows is None else np.flatnonzero(rows)[row])
+        raise ValueError(f"excitation contains NaN or infinite values (first at step {step}, element "
+                         f"{element_names[col]}, t = {t0 + dt * step:.6g} s)")
+    if (part < 0).any() or (part > 1).any():
+        warnings.warn("excitation outside [0, 1] clipped", RuntimeWarning, stacklevel=stacklevel)
+        if clip:
+            np.clip(u, 0.0, 1.0, out=u)
+
+
 class Arm:
     """One simulated arm of a model (default das2: the paper's fixed-scapula, 5-DOF, 102-element model).
 
@@ -551,21 +570,27 @@ class Arm:
         array_in = isinstance(excitation, np.ndarray) and excitation.ndim == 2
         if callable(excitation) and not isinstance(excitation, Mapping):
             def block(k0: int, k1: int) -> np.ndarray:
+                # A float (n,) array (what a controller returns) is copied as it is and the block checked once
+                # (finite, [0, 1]) like an array input: per_element's checks on every step cost more than the step.
                 u = np.empty((k1 - k0, n))
+                fast = np.zeros(k1 - k0, dtype=bool)
                 for k in range(k0, k1):
-                    u[k - k0] = self._per_element(excitation(float(t0 + self.dt * k)), "excitation", 0.0, 1.0, clip=True)
+                    v = excitation(float(t0 + self.dt * k))
+                    if type(v) is np.ndarray and v.shape == (n,) and v.dtype == np.float64:
+                        u[k - k0] = v
+                        fast[k - k0] = True
+                    else:
+                        u[k - k0] = self._per_element(v, "excitation", 0.0, 1.0, clip=True)
+                if fast.any():
+                    _check_excitation_block(u, fast, k0, t0, self.dt, self.element_names)
                 return u
         elif array_in:
             if excitation.shape != (n_steps, n):
                 raise ValueError(f"excitation must have shape ({n_steps}, {n}) for {duration} s at dt = {self.dt} s, "
                                  f"got {excitation.shape}")
             u_all = real_array(excitation, "excitation")
-            if not np.all(np.isfinite(u_all)):
-                row, col = np.argwhere(~np.isfinite(u_all))[0]
-                raise ValueError(f"excitation contains NaN or infinite values (first at step {row}, "
-                                 f"element {self.element_names[col]})")
-            if (u_all < 0).any() or (u_all > 1).any():
-                warnings.warn("excitation outside [0, 1] clipped", RuntimeWarning, stacklevel=2)
+            _check_excitation_block(u_all, None, 0, self.time, self.dt, self.element_names, clip=False,
+                                    stacklevel=3)
 
             def block(k0: int, k1: int) -> np.ndarray:
                 return u_all[k0:k1]
@@ -575,11 +600,12 @@ class Arm:
             def block(k0: int, k1: int) -> np.ndarray:
                 return held
 
-        out: dict[str, np.ndarray] = {}
-        # Blocks of whole record intervals: the C++ loop records a block's rows, and its closing row
-        # (the state after the block) is the next block's first row, so it is kept only at the end.
+        # The engine writes the rows straight into the Result's arrays, block by block. Blocks are whole record
+        # intervals: a block's closing row (the state after it) is the next block's first row, which overwrites
+        # it, so it is kept only at the end.
         chunk = record_every * max(1, -(-SIMULATE_BLOCK_STEPS // record_every))
         with self._exclusive():
+            out = {k: np.empty(shape) for k, shape in self._sim.recording_shapes(rows).items()}
             t0 = self.time
             row = 0
             with progress_bar(n_steps * self.dt, "simulate", unit="s", enabled=progress,
@@ -589,17 +615,10 @@ class Arm:
                     u = np.ascontiguousarray(block(k0, k1), dtype=float) if n_steps else \
                         self._sim.excitation[None, :].copy()
                     try:
-                        raw = self._sim.simulate(u, k1 - k0, record_every)
+                        done = self._sim.simulate(u, k1 - k0, record_every, out=out, row=row)
                     except RuntimeError as exc:
                         raise _simulation_error(exc) from None
-                    raw.pop("steps")
-                    last = k1 >= n_steps
-                    take = len(raw["time"]) if last else (k1 - k0) // record_every
-                    if not out:
-                        out = {k: np.empty((rows,) + v.shape[1:]) for k, v in raw.items()}
-                    for k, v in raw.items():
-                        out[k][row:row + take] = v[:take]
-                    row += take
+                    row += done["rows"] if k1 >= n_steps else (k1 - k0) // record_every
                     pbar.update((k1 - k0) * self.dt)
         assert row == rows, (row, rows)
         if "stimulation" in out:  # (T, 3 x channels) -> (T, channels, 3)
