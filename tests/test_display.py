@@ -147,3 +147,45 @@ def test_operator_page_shows_the_panel_and_metrics(scene, tmp_path):
     assert "trial 2 of 8" in text and "target entered" in text
     assert "path_efficiency" in text and "0.930" in text and "yes" in text
     assert _colour_centroid(img, display.TARGET_COLOURS["entered"])[1] > 50   # the scene is drawn beside it
+
+
+def test_frame_feed_draws_the_runner_state_stream(arm):
+    """armrt-rt's UDP state packets (UdpSource) -> the display: the cursor is the engine's hand at the packet's q."""
+    realtime = pytest.importorskip("armrt.realtime", reason="armrt.realtime (the armrt-rt codec) is not built")
+    import socket
+    from armrt.view import UdpSource
+
+    class Recorder:
+        plane = display.TaskPlane((0.2, -0.3, 0.3), half_height_m=0.4)
+        states = []
+
+        def publish(self, st):
+            self.states.append(st)
+
+    src = UdpSource("127.0.0.1", 0)
+    rec = Recorder()
+    feed = display.FrameFeed(src, rec, fps=100).start()
+    try:
+        q = arm.dof_ranges.mean(axis=1)
+        values = np.concatenate([[1.25], q, np.zeros(5), np.zeros(3), [0.8, 0.5, -0.6, -0.1, -0.87, -1, 0.004, 0]])
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as tx:
+            tx.sendto(realtime.encode_packet(realtime.STATE, 7, values), ("127.0.0.1", src.port))
+            deadline = time.monotonic() + 5
+            while not rec.states and time.monotonic() < deadline:
+                time.sleep(0.02)
+    finally:
+        feed.stop()
+    assert rec.states, "no state drawn"
+    st = rec.states[-1]
+    arm.reset(q=q)
+    np.testing.assert_allclose(st["cursor"], rec.plane.project(arm.hand_position), atol=1e-9)
+    np.testing.assert_allclose(st["arm"][-1], st["cursor"])
+    assert st["time_s"] == 1.25 and st["gh_stab"] == 0.8 and "target" not in st
+
+
+def test_cli_display_serves_the_pages(capsys):
+    pytest.importorskip("armrt.realtime", reason="armrt.realtime is not built")
+    from armrt.cli import main
+    assert main(["display", "--udp", "127.0.0.1:0", "--port", "0", "--duration", "0.3"]) == 0
+    out = capsys.readouterr().out
+    assert "chromium --kiosk http://127.0.0.1:" in out and "/operator" in out and "drew 0 states" in out

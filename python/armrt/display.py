@@ -292,6 +292,59 @@ class DisplayServer:
                 self.connected[page] -= 1
 
 
+class FrameFeed:
+    """Feeds a DisplayServer from an armrt.view source (UdpSource: the armrt-rt UDP state stream; ResultSource,
+    SimulationSource): a thread draws each new Frame's arm (ArmGeometry.points at frame.q) with the hand as the
+    cursor, GHstab and time for the operator page, at most fps times a second. targets: the task's targets (a
+    list of armrt.tasks.Target) drawn as "shown" (the task runs elsewhere, so their state is not known here)."""
+
+    def __init__(self, source, server: DisplayServer, fps: float = 60.0, targets=()):
+        from .geometry import ArmGeometry
+        self.source, self.server = source, server
+        self.fps = checks.real_scalar(fps, "fps")
+        if not (math.isfinite(self.fps) and self.fps > 0):
+            raise ValueError(f"fps must be a finite number > 0, got {fps}")
+        self.geometry = ArmGeometry(source.model)
+        self.targets = list(targets)
+        self.frames = 0
+        self.error = ""          # why the last frame could not be drawn (e.g. a pose in degrees)
+        self._stop = threading.Event()
+        self._thread = None
+
+    def state(self, f) -> dict:
+        pts = arm_points(self.geometry, f.q)
+        tg = self.targets[0] if len(self.targets) == 1 else None
+        return display_state(self.server.plane, cursor=pts[-1], arm_points=pts, time_s=f.time, gh_stab=f.gh_stab,
+                             target=None if tg is None else tg.position,
+                             target_radius_m=0.0 if tg is None else tg.radius_m,
+                             target_state=None if tg is None else "shown", phase="armrt-rt state stream")
+
+    def _run(self) -> None:
+        last = None
+        while not self._stop.is_set():
+            f = self.source.latest()
+            if f is not None and f is not last:
+                try:
+                    self.server.publish(self.state(f))
+                    self.frames += 1
+                except ValueError as exc:   # a pose the geometry refuses: said, and the feed goes on
+                    self.error = str(exc)
+                last = f
+            self._stop.wait(1.0 / self.fps)
+
+    def start(self) -> "FrameFeed":
+        self.source.start()
+        self._thread = threading.Thread(target=self._run, name="armrt-display-feed", daemon=True)
+        self._thread.start()
+        return self
+
+    def stop(self) -> None:
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(timeout=2.0)
+        self.source.close()
+
+
 # ---------------------------------------------------------------- the pages
 # px(uv): TaskPlane.to_pixels. The page answers each drawn state at its next animation frame (the frame with the
 # draw has been produced by then): {seq, draw_ms, next_frame_ms} on the page's performance.now() clock.
@@ -384,3 +437,53 @@ function panel(st) {
     '<tr>' + COLUMNS.map(c => `<th>${c}</th>`).join('') + '</tr>' + rows.join('');
 }
 """.replace("COLUMNS_JSON", json.dumps(list(OPERATOR_COLUMNS))) + PAGE_JS + "</script></body></html>\n"
+
+
+# ------------------------------------------------------------------ command line
+def _cmd_display(args) -> int:
+    from .geometry import ArmGeometry
+    from .realtime import parse_endpoint, read_key_file
+    from .view import UdpSource
+    host, port = parse_endpoint(args.udp)
+    key = read_key_file(args.key_file) if args.key_file else None
+    geom = ArmGeometry(args.model)
+    pts = arm_points(geom, geom.rest)
+    centre = np.asarray(args.centre, dtype=float) if args.centre else pts[-1]
+    plane = TaskPlane(tuple(centre), half_height_m=args.half_height or
+                      1.25 * float(np.abs(TaskPlane(tuple(centre)).project(pts)).max()))
+    source = UdpSource(host, port, model=args.model, key=key)
+    with DisplayServer(plane, host=args.host, port=args.port) as server:
+        feed = FrameFeed(source, server, fps=args.fps).start()
+        print(f"participant display: chromium --kiosk {server.url}\noperator page: {server.operator_url}\n"
+              f"drawing the armrt-rt state stream on udp {host or '127.0.0.1'}:{source.port}", flush=True)
+        try:
+            t_end = None if args.duration is None else time.monotonic() + args.duration
+            while t_end is None or time.monotonic() < t_end:
+                time.sleep(0.2)
+        except KeyboardInterrupt:
+            pass
+        finally:
+            feed.stop()
+    print(f"drew {feed.frames} states ({source.packets} packets, {source.bad_packets} refused)"
+          + (f"; last refused pose: {feed.error}" if feed.error else ""))
+    return 0
+
+
+def add_cli(sub, formatter=None) -> None:
+    """Registers `display`: the participant display and operator page fed by the armrt-rt UDP state stream."""
+    kw = {"formatter_class": formatter} if formatter else {}
+    p = sub.add_parser("display", help="participant display (kiosk) + operator page of the armrt-rt state stream",
+                       **kw)
+    p.add_argument("--udp", default=":9870", metavar="HOST:PORT",
+                   help="where armrt-rt sends state (--state-to; ':PORT': loopback)")
+    p.add_argument("--key-file", help="the runner's --key-file (draw only signed state packets)")
+    p.add_argument("--model", default="das2", help="the runner's --model")
+    p.add_argument("--centre", type=float, nargs=3, default=None, metavar=("X", "Y", "Z"),
+                   help="screen centre, m, thorax frame (default: the hand at the model's rest posture)")
+    p.add_argument("--half-height", type=float, default=None,
+                   help="m from the centre to the screen's nearer edges (default: the arm fits)")
+    p.add_argument("--host", default="127.0.0.1", help="address the pages are served on")
+    p.add_argument("--port", type=int, default=8090, help="port the pages are served on")
+    p.add_argument("--fps", type=float, default=60.0, help="states sent to the pages per second")
+    p.add_argument("--duration", type=float, default=None, help="stop after this many seconds (default: Ctrl-C)")
+    p.set_defaults(func=_cmd_display)
