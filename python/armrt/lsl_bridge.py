@@ -191,6 +191,35 @@ class MarkerOutlet:
         return t
 
 
+# The live task's state stream (armrt task ... --task-stream; task_live.run_live): one sample per task sample.
+TASK_STATE_CHANNELS = (("time", "s", "time"), ("cursor_x", "m", "position"), ("cursor_y", "m", "position"),
+                       ("cursor_z", "m", "position"), ("target_x", "m", "position"), ("target_y", "m", "position"),
+                       ("target_z", "m", "position"), ("target_index", "1", "index"), ("inside", "1", "flag"),
+                       ("gh_stab", "1", "stability"))
+
+
+class TaskStateOutlet:
+    """An LSL outlet of a live task's state (type "TaskState", float64, rate 1/dt_s): TASK_STATE_CHANNELS, i.e. the
+    task time (s), the cursor (m, thorax frame), the shown target (m; NaN between trials), its index (-1 between
+    trials), whether the cursor is inside it (0/1) and GHstab (NaN without an arm). push(values, timestamp)."""
+
+    def __init__(self, name: str = "armrt_task_state", source_id: str = "armrt-task-state", rate_hz: float = 500.0,
+                 model: str = "cursor"):
+        self.pylsl = _pylsl()
+        labels, units, types = (list(c) for c in zip(*TASK_STATE_CHANNELS))
+        info = self.pylsl.StreamInfo(name, "TaskState", len(labels), float(rate_hz), self.pylsl.cf_double64,
+                                     source_id)
+        info.desc().append_child_value("frames", "cursor and target in the thorax frame (docs/conventions.md)")
+        _describe(info.desc(), model, labels, units, types)
+        self.outlet = self.pylsl.StreamOutlet(info)
+        self.source_id = source_id
+        self.pushed = 0
+
+    def push(self, values, timestamp: float) -> None:
+        self.outlet.push_sample([float(v) for v in values], float(timestamp))
+        self.pushed += 1
+
+
 def channel_labels(info) -> list[str]:
     """Channel labels from a full StreamInfo (desc/channels/channel/label), [] if none."""
     labels = []

@@ -126,13 +126,14 @@ def live_state(plane, task, driver, view: _TargetView, t: float) -> dict:
 
 
 def run_live(task, driver, display=None, plane=None, markers=None, fps: float = 60.0, max_time_s: float = 600.0,
-             realtime: bool = True, hold_s: float = 1.0, on_event=None):
+             realtime: bool = True, hold_s: float = 1.0, on_event=None, task_stream=None):
     """Runs task with driver (CursorDriver / ArmDriver) one sample per driver.dt_s until the task is done or
     max_time_s passes, paced to wall-clock time when realtime (a late sample is run at once, never skipped:
     .lag_s in the returned stats is the largest lateness). Every 1/fps s of task time (rounded to whole samples)
     the state is published on display (armrt.display.DisplayServer) in plane; each task event is pushed on
     markers (lsl_bridge.MarkerOutlet) as Event.marker() at the LSL time of its sample (the loop's LSL start time
-    + the event's task time) and handed to on_event. After the task the last state stays on the display for
+    + the event's task time) and handed to on_event; each sample's state goes on task_stream
+    (lsl_bridge.TaskStateOutlet) at the same clock. After the task the last state stays on the display for
     hold_s (s). Returns dict(task, samples, lag_s, published, markers)."""
     dt = float(driver.dt_s)
     fps = checks.real_scalar(fps, "fps")
@@ -142,7 +143,8 @@ def run_live(task, driver, display=None, plane=None, markers=None, fps: float = 
     if display is not None and plane is None:
         plane = display.plane
     view = _TargetView(task)
-    lsl_t0 = markers.pylsl.local_clock() if markers is not None else 0.0
+    clock = markers if markers is not None else task_stream
+    lsl_t0 = clock.pylsl.local_clock() if clock is not None else 0.0
     stats = {"task": task, "samples": 0, "lag_s": 0.0, "published": 0, "markers": 0}
     user = task.on_event
 
@@ -166,7 +168,11 @@ def run_live(task, driver, display=None, plane=None, markers=None, fps: float = 
                 if late < 0:
                     time.sleep(-late)
                 stats["lag_s"] = max(stats["lag_s"], late)
-            task.step(t, driver.cursor(), gh_stable=driver.gh_stable())
+            cursor = driver.cursor()
+            st = task.step(t, cursor, gh_stable=driver.gh_stable())
+            if task_stream is not None:
+                tp = st.target_position if st.target_position is not None else (math.nan,) * 3
+                task_stream.push([t, *cursor, *tp, st.target_index, float(st.inside), driver.gh_stab], lsl_t0 + t)
             if display is not None and (i % every == 0 or task.done):
                 display.publish(live_state(plane, task, driver, view, t))
                 stats["published"] += 1

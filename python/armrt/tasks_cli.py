@@ -6,8 +6,13 @@ from __future__ import annotations
 import csv
 import json
 import math
+import time
 
 from . import tasks
+
+# s the LSL outlets stay open after the task: a recorder pulls the last markers before the outlet goes away (a
+# closed outlet's unsent samples are lost; a LabRecorder test lost the final 'success' without it).
+LSL_LINGER_S = 1.0
 
 TRIAL_COLUMNS = ("trial", "target", "success", "time_to_target_s", "acquisition_time_s", "dial_in_time_s",
                  "path_efficiency", "n_entries", "gh_unstable_events", "hold_rms_m")
@@ -56,6 +61,9 @@ def add_cli(sub, formatter) -> None:
     p.add_argument("--markers", nargs="?", const="armrt_task_markers", default=None, metavar="NAME",
                    help="publish the task events on an LSL marker stream (default name armrt_task_markers, "
                         "source_id armrt-task-markers); runs in real time")
+    p.add_argument("--task-stream", nargs="?", const="armrt_task_state", default=None, metavar="NAME",
+                   help="publish the task's state each sample on an LSL stream (default name armrt_task_state, "
+                        "source_id armrt-task-state: time, cursor, target, target index, inside, GHstab); real time")
     p.add_argument("--lsl-wait", type=float, default=10.0, help="with --decoder lsl:NAME: s to wait for the stream")
     p.set_defaults(func=cmd_task)
 
@@ -111,7 +119,7 @@ def cmd_task(args) -> int:
     if args.kind == "posture":  # start away from the held target so there is something to reach
         start[1] += 0.05
     max_time = len(task.targets) * (args.timeout + args.iti) + 1.0
-    live = args.display or args.markers is not None or args.decoder != "simulated"
+    live = args.display or args.markers is not None or args.task_stream is not None or args.decoder != "simulated"
     decoder = None
     try:
         if args.decoder == "simulated":
@@ -174,8 +182,13 @@ def _run_live(args, task, arm, dec, start, max_time) -> dict:
         from .endpoint_control import EndpointController
         driver = task_live.ArmDriver(EndpointController(arm), dec)
         extra = [driver.shoulder()]
-    server = markers = None
+    server = markers = stream = None
     try:
+        if args.task_stream is not None:
+            from .lsl_bridge import TaskStateOutlet
+            stream = TaskStateOutlet(args.task_stream, "armrt-task-state", 1.0 / driver.dt_s, args.arm or "cursor")
+            print(f"task state: LSL stream {args.task_stream!r} (type TaskState, source_id armrt-task-state)",
+                  flush=True)
         if args.markers is not None:
             from .lsl_bridge import MarkerOutlet
             markers = MarkerOutlet(args.markers, "armrt-task-markers", args.arm or "cursor")
@@ -190,8 +203,11 @@ def _run_live(args, task, arm, dec, start, max_time) -> dict:
                 print(f"waiting up to {args.display_wait:g} s for the participant page...", flush=True)
                 if not server.wait_for_page("participant", args.display_wait):
                     print("no participant page connected: the task starts anyway", flush=True)
-        stats = task_live.run_live(task, driver, display=server, markers=markers, fps=args.display_fps,
+        stats = task_live.run_live(task, driver, display=server, markers=markers, task_stream=stream,
+                                   fps=args.display_fps,
                                    max_time_s=max_time, hold_s=args.hold if server is not None else 0.0)
+        if markers is not None or stream is not None:
+            time.sleep(LSL_LINGER_S)
     finally:
         if server is not None:
             server.stop()
