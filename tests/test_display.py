@@ -1,8 +1,9 @@
 """The participant display and operator page (issue 29 item 2): the task-plane projection, the server, and both
 pages in real headless Chromium, where the target, the cursor and the arm are found by colour at the pixels the
 task geometry predicts (computed here from the thorax-frame axes, not with the module's projection)."""
-import json
+import os
 import time
+from pathlib import Path
 import urllib.error
 import urllib.request
 
@@ -80,6 +81,12 @@ def _colour_centroid(img, rgb, tol=30):
     return (np.array([xs.mean(), ys.mean()]) if len(xs) else None), int(m.sum())
 
 
+def _out_dir(tmp_path) -> Path:
+    d = Path(os.environ.get("ARMRT_SCREENSHOT_DIR", tmp_path))
+    d.mkdir(parents=True, exist_ok=True)
+    return d
+
+
 def _state(sc, target_state, **kw):
     return display.display_state(sc["plane"], cursor=sc["hand"], target=sc["target"], target_radius_m=sc["radius"],
                                  target_state=target_state, arm_points=sc["arm"], **kw)
@@ -94,13 +101,13 @@ def test_participant_page_draws_target_cursor_and_arm_where_the_geometry_says(sc
         page.wait_for(f"window.armrtState && window.armrtState.seq === {seq}", "the state was never drawn")
         time.sleep(0.3)
         img, png = page.screenshot()
-        (tmp_path / "participant_shown.png").write_bytes(png)
+        (_out_dir(tmp_path) / "participant_shown.png").write_bytes(png)
         text = page.eval("document.body.innerText")
         seq = d.publish(_state(sc, "success"))
         page.wait_for(f"window.armrtState && window.armrtState.seq === {seq}", "the success state was never drawn")
         time.sleep(0.3)
         img2, png2 = page.screenshot()
-        (tmp_path / "participant_success.png").write_bytes(png2)
+        (_out_dir(tmp_path) / "participant_success.png").write_bytes(png2)
         deadline = time.monotonic() + 5
         while len(d.acks) < 2 and time.monotonic() < deadline:
             time.sleep(0.05)
@@ -142,7 +149,7 @@ def test_operator_page_shows_the_panel_and_metrics(scene, tmp_path):
         page.wait_for(f"window.armrtState && window.armrtState.seq === {seq}", "the state was never drawn")
         text = page.eval("document.body.innerText")
         img, png = page.screenshot()
-        (tmp_path / "operator.png").write_bytes(png)
+        (_out_dir(tmp_path) / "operator.png").write_bytes(png)
     assert "t = 3.25 s" in text and "GHstab = 1.30" in text and "outside the glenoid rim" in text
     assert "trial 2 of 8" in text and "target entered" in text
     assert "path_efficiency" in text and "0.930" in text and "yes" in text

@@ -295,17 +295,16 @@ class DisplayServer:
 class FrameFeed:
     """Feeds a DisplayServer from an armrt.view source (UdpSource: the armrt-rt UDP state stream; ResultSource,
     SimulationSource): a thread draws each new Frame's arm (ArmGeometry.points at frame.q) with the hand as the
-    cursor, GHstab and time for the operator page, at most fps times a second. targets: the task's targets (a
-    list of armrt.tasks.Target) drawn as "shown" (the task runs elsewhere, so their state is not known here)."""
+    cursor, GHstab and time for the operator page, at most fps times a second. No target: the state stream does
+    not carry the task's (a task loop publishes its own states, task_live.run_live)."""
 
-    def __init__(self, source, server: DisplayServer, fps: float = 60.0, targets=()):
+    def __init__(self, source, server: DisplayServer, fps: float = 60.0):
         from .geometry import ArmGeometry
         self.source, self.server = source, server
         self.fps = checks.real_scalar(fps, "fps")
         if not (math.isfinite(self.fps) and self.fps > 0):
             raise ValueError(f"fps must be a finite number > 0, got {fps}")
         self.geometry = ArmGeometry(source.model)
-        self.targets = list(targets)
         self.frames = 0
         self.error = ""          # why the last frame could not be drawn (e.g. a pose in degrees)
         self._stop = threading.Event()
@@ -313,11 +312,8 @@ class FrameFeed:
 
     def state(self, f) -> dict:
         pts = arm_points(self.geometry, f.q)
-        tg = self.targets[0] if len(self.targets) == 1 else None
         return display_state(self.server.plane, cursor=pts[-1], arm_points=pts, time_s=f.time, gh_stab=f.gh_stab,
-                             target=None if tg is None else tg.position,
-                             target_radius_m=0.0 if tg is None else tg.radius_m,
-                             target_state=None if tg is None else "shown", phase="armrt-rt state stream")
+                             phase="armrt-rt state stream")
 
     def _run(self) -> None:
         last = None
