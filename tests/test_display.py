@@ -1,6 +1,7 @@
 """The participant display and operator page (issue 29 item 2): the task-plane projection, the server, and both
 pages in real headless Chromium, where the target, the cursor and the arm are found by colour at the pixels the
 task geometry predicts (computed here from the thorax-frame axes, not with the module's projection)."""
+import json
 import os
 import time
 from pathlib import Path
@@ -50,6 +51,29 @@ def test_server_serves_both_pages():
                 assert r.headers["Content-Type"].startswith("text/html") and marker in r.read()
         with pytest.raises(urllib.error.HTTPError, match="404"):
             urllib.request.urlopen(d.url + "nothing", timeout=10)
+
+
+def test_stop_closes_open_pages_so_the_process_can_end():
+    """websockets runs each connection on a non-daemon thread: an open kiosk page must not keep the session alive."""
+    import threading
+    from websockets.exceptions import ConnectionClosed
+    from websockets.sync.client import connect
+    before = {t for t in threading.enumerate() if not t.daemon}
+    d = display.DisplayServer(port=0).start()
+    with connect(f"ws://127.0.0.1:{d.port}/ws?page=participant") as page:
+        assert d.wait_for_page("participant", 10) and d.connected["participant"] == 1
+        seq = d.publish(display.display_state(d.plane, cursor=(0.01, 0.0, 0.02)))
+        msg = json.loads(page.recv(timeout=10))
+        assert msg["seq"] == seq and msg["cursor"] == [0.02, 0.0]
+        d.stop()
+        with pytest.raises(ConnectionClosed):
+            page.recv(timeout=10)
+    deadline = time.monotonic() + 10
+    while d.connected["participant"] and time.monotonic() < deadline:
+        time.sleep(0.02)
+    assert d.connected["participant"] == 0
+    left = {t for t in threading.enumerate() if not t.daemon} - before
+    assert not [t for t in left if t.is_alive()], left
 
 
 @pytest.fixture(scope="module")

@@ -180,6 +180,7 @@ class DisplayServer:
         self.keep_acks = checks.count(keep_acks, "keep_acks", minimum=1)
         self.acks: list[tuple] = []
         self.connected = {"participant": 0, "operator": 0}   # pages open now
+        self._connections = set()
         self._server = None
         self._thread = None
         self._closed = False
@@ -205,12 +206,17 @@ class DisplayServer:
         return self
 
     def stop(self) -> None:
+        """Stops serving and closes the open pages' connections (their screens go black): websockets runs each
+        connection on a non-daemon thread, which an open kiosk page would otherwise keep alive past the end."""
         with self._cond:
             self._closed = True
             self._cond.notify_all()
+            conns = list(self._connections)
         if self._server is not None:
             self._server.shutdown()
             self._thread.join(timeout=2.0)
+        for c in conns:
+            c.close()
 
     def __enter__(self):
         return self.start()
@@ -271,7 +277,10 @@ class DisplayServer:
 
         th = threading.Thread(target=sender, daemon=True)
         with self._cond:
+            if self._closed:
+                return
             self.connected[page] = self.connected.get(page, 0) + 1
+            self._connections.add(ws)
             self._cond.notify_all()
         th.start()
         try:
@@ -290,6 +299,7 @@ class DisplayServer:
             th.join(timeout=1.0)
             with self._cond:
                 self.connected[page] -= 1
+                self._connections.discard(ws)
 
 
 class FrameFeed:
