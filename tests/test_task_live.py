@@ -39,6 +39,11 @@ class _Markers:
         return timestamp
 
 
+def display_columns():
+    from armrt.display import OPERATOR_COLUMNS
+    return OPERATOR_COLUMNS
+
+
 def _centre_out(n=3):
     return tasks.TargetTask(tasks.centre_out_targets(C, 0.1, 0.015, n), dwell_s=0.3, timeout_s=5.0, iti_s=0.2)
 
@@ -63,7 +68,11 @@ def test_live_loop_is_the_offline_loop_with_display_and_markers():
     first = [seen[k] for k in range(len(seen)) if k == 0 or seen[k] != seen[k - 1]]
     assert first[:4] == [None, "shown", "entered", "success"], first
     last = display.states[-1]
-    assert last["phase"] == "done" and len(last["metrics"]) == 3 and last["target"]["state"] == "success"
+    assert last["phase"] == "done" and last["target"]["state"] == "success"
+    # The operator's metrics rows: the finished trials' (as the task computes them), growing trial by trial.
+    assert [len(s["metrics"]) for s in display.states][::len(display.states) - 1] == [0, 3]
+    want = [{k: v for k, v in row.items() if k in display_columns()} for row in task.trial_metrics()]
+    assert last["metrics"] == want
     # The cursor is drawn where the task saw it: the final state's cursor is the last sample's, projected.
     rec = task.trials[-1]
     np.testing.assert_allclose(last["cursor"], display.plane.project(rec.cursor_m[-1]))

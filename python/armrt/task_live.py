@@ -13,7 +13,7 @@ import time
 import numpy as np
 
 from . import checks
-from .tasks import _vec3
+from .tasks import _vec3, trial_metrics
 
 
 def _command(decoder, cursor, target):
@@ -95,12 +95,14 @@ class ArmDriver:
 
 class _TargetView:
     """The target's display state from the task's events: shown -> entered <-> shown -> success / timeout, the
-    finished trial's colour held through the inter-trial interval."""
+    finished trial's colour held through the inter-trial interval; the finished trials' metrics, each computed
+    once when its trial ends (not every published state: a long block would make that grow)."""
 
     def __init__(self, task):
         self.task = task
         self.state = None
         self.target = None
+        self.metrics = []
 
     def on_event(self, ev) -> None:
         tg = self.task.targets[ev.target]
@@ -112,6 +114,7 @@ class _TargetView:
             self.state = "shown"
         elif ev.kind in ("success", "timeout"):
             self.state = ev.kind
+            self.metrics.append(trial_metrics(self.task.trials[ev.trial], self.task.dwell_s))
 
 
 def live_state(plane, task, driver, view: _TargetView, t: float) -> dict:
@@ -122,7 +125,7 @@ def live_state(plane, task, driver, view: _TargetView, t: float) -> dict:
                          target_radius_m=0.0 if tg is None else tg.radius_m, target_state=view.state,
                          arm_points=driver.arm_points(), time_s=t, gh_stab=driver.gh_stab,
                          trial=min(task._trial, len(task.targets) - 1), n_trials=len(task.targets),
-                         phase="done" if task.done else task._phase, metrics=task.trial_metrics())
+                         phase="done" if task.done else task._phase, metrics=view.metrics)
 
 
 def run_live(task, driver, display=None, plane=None, markers=None, fps: float = 60.0, max_time_s: float = 600.0,
