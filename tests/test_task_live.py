@@ -280,12 +280,18 @@ def test_lab_session_participant_screen_xdf_and_metrics(tmp_path, capsys):
         with XdfRecording(tmp_path / "session.xdf", [{"name": f"mk-{uid}"}, {"name": f"ts-{uid}"},
                                                      {"name": f"dec-{uid}"}]):
             time.sleep(1.0)   # LabRecorder subscribed
-            with chromium_page(f"http://127.0.0.1:{port}/", tmp_path):
+            with chromium_page(f"http://127.0.0.1:{port}/", tmp_path) as page:
+                page.wait_for("window.armrtTicks !== undefined", "the participant page did not load")
+                # What the page drew, sampled in the page every 5 ms (a success colour lasts the 0.2 s ITI).
+                page.eval("window.seen = new Set(); setInterval(() => { const s = window.armrtState; "
+                          "if (s && s.target) window.seen.add(s.target.state); }, 5); 1")
                 session.join(timeout=120)
+                seen = page.eval("Array.from(window.seen)")
     finally:
         stop.set()
         dec.join(timeout=5)
     assert not session.is_alive() and rc.get("rc") == 0
+    assert {"shown", "entered", "success"} <= set(seen), seen
     text = capsys.readouterr().out
     assert "success_rate: 1.000" in text and "velocity commands" in text
     rows = list(csv.DictReader(out.open()))
