@@ -1,10 +1,11 @@
 """Participant display and operator page for the target tasks (issue 29 item 2): task state (cursor, target, arm
 pose) -> JSON over a WebSocket -> a full-screen canvas in the browser. docs/tasks.md#participant-display.
 
-    from armrt.display import DisplayServer, TaskPlane
+    from armrt.display import DisplayServer, TaskPlane, display_state
     plane = TaskPlane(centre=(0.3, -0.2, 0.25))          # the frontal plane through the task centre
     with DisplayServer(plane, port=8090) as d:           # http://127.0.0.1:8090/ and .../operator
-        d.publish(display_state(plane, cursor=hand, target=..., target_state="shown"))
+        d.publish(display_state(plane, cursor=hand, target=target_position, target_radius_m=0.015,
+                                target_state="shown"))   # hand, target_position: (3,) m, thorax frame
 
     chromium --kiosk http://127.0.0.1:8090/             # the participant's screen
 

@@ -3,7 +3,8 @@ endpoint controller) and a decoder (simulated, or a decoder's LSL endpoint-comma
 wall-clock time, its state on the participant display (armrt.display), its events on an LSL marker stream.
 docs/tasks.md#participant-display.
 
-    run_live(task, CursorDriver(start, SimulatedDecoder(dt_s=0.002)), display=DisplayServer(plane), markers=...)
+    with DisplayServer(plane) as d:
+        run_live(task, CursorDriver(start, SimulatedDecoder(dt_s=0.002), 0.002), display=d, markers=MarkerOutlet())
 """
 from __future__ import annotations
 
