@@ -104,6 +104,10 @@ def test_cli_task_display_serves_and_runs_in_real_time(capsys):
     out = capsys.readouterr().out
     assert "participant display: chromium --kiosk http://127.0.0.1:" in out and "/operator" in out
     assert "(real time)" in out and "display states" in out
+    assert main(["task", "posture", "--trials", "1", "--display", "--display-port", "0", "--display-wait", "0",
+                 "--hold", "0"]) == 0
+    out = capsys.readouterr().out
+    assert "armrt task posture" in out and "(real time)" in out and "success_rate: 1.000" in out
     with pytest.raises(SystemExit):
         main(["task", "centre-out", "--decoder", "lsl"])   # not lsl:NAME
     assert "takes 'simulated' or 'lsl:NAME'" in capsys.readouterr().err
