@@ -1,10 +1,6 @@
 """Live view (issue 7, parts 1 and 4): geometry, data sources, the served page in headless Chromium."""
-import base64
-import json
 import os
-import shutil
 import socket
-import subprocess
 import time
 import urllib.request
 from pathlib import Path
@@ -14,6 +10,7 @@ import pytest
 
 armrt = pytest.importorskip("armrt", reason="armrt is not built/installed (./run.sh setup)")
 from armrt.geometry import POINTS, ArmGeometry  # noqa: E402
+from chromium_helpers import chromium_page, free_port, needs_chromium  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -104,14 +101,14 @@ def test_viewer_offline_controls(arm):
     from armrt.view import ResultSource, SimulationSource, serve
     arm.reset()
     res = arm.simulate({"elbow_flexors": 0.3}, duration=0.3, record_every=5)
-    v = serve(ResultSource(res), host="127.0.0.1", port=_free_port(), block=False)
+    v = serve(ResultSource(res), host="127.0.0.1", port=free_port(), block=False)
     try:
         v.controls["time"].value = 0.1          # scrubbing holds the frame there
         assert v.controls["pause"].value and v.source.paused
         assert v.source.latest().time == pytest.approx(0.1, abs=0.006)
     finally:
         v.stop()
-    v = serve(SimulationSource(), host="127.0.0.1", port=_free_port(), block=False)
+    v = serve(SimulationSource(), host="127.0.0.1", port=free_port(), block=False)
     try:
         ef = arm.indices("elbow_flexors")
         v.controls["manual"].value = True
@@ -152,7 +149,7 @@ def test_viewer_says_why_it_cannot_draw_a_frame():
         def close(self):
             pass
 
-    v = serve(Degrees(), host="127.0.0.1", port=_free_port(), block=False)
+    v = serve(Degrees(), host="127.0.0.1", port=free_port(), block=False)
     try:
         deadline = time.monotonic() + 5
         while v.last_frame is None and time.monotonic() < deadline:
@@ -243,17 +240,11 @@ def test_udp_source_with_the_runner():
         src.close()
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 @pytest.fixture
 def viewer():
     pytest.importorskip("viser", reason="viser is not installed (pip install viser)")
     from armrt.view import SimulationSource, serve
-    v = serve(SimulationSource(), host="127.0.0.1", port=_free_port(), fps=30, block=False)
+    v = serve(SimulationSource(), host="127.0.0.1", port=free_port(), fps=30, block=False)
     yield v
     v.stop()
 
@@ -270,41 +261,6 @@ def test_server_draws_30_fps(viewer):
 
 
 # ---------------------------------------------------------------- the page in headless Chromium
-def _chromium() -> str | None:
-    for name in ("chromium", "chromium-browser", "google-chrome"):
-        if shutil.which(name):
-            return shutil.which(name)
-    return None
-
-
-class _Page:
-    """A Chromium tab driven over the DevTools protocol (websocket-client)."""
-
-    def __init__(self, ws_url: str):
-        import websocket
-        self.ws = websocket.create_connection(ws_url, timeout=30, suppress_origin=True)
-        self.n = 0
-
-    def call(self, method: str, **params):
-        self.n += 1
-        self.ws.send(json.dumps({"id": self.n, "method": method, "params": params}))
-        while True:
-            msg = json.loads(self.ws.recv())
-            if msg.get("id") == self.n:
-                if "error" in msg:
-                    raise RuntimeError(f"{method}: {msg['error']}")
-                return msg["result"]
-
-    def eval(self, js: str):
-        return self.call("Runtime.evaluate", expression=js, returnByValue=True)["result"].get("value")
-
-    def screenshot(self) -> np.ndarray:
-        from PIL import Image
-        import io
-        png = base64.b64decode(self.call("Page.captureScreenshot", format="png")["data"])
-        return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")), png
-
-
 def _arm_mask(img: np.ndarray) -> np.ndarray:
     """Saturated (coloured) pixels of the 3D view: the bones (orange, blue, magenta) and the humeral head;
     the girdle is grey, the background white. Crops away the GUI panel, the notification and the axes."""
@@ -314,51 +270,11 @@ def _arm_mask(img: np.ndarray) -> np.ndarray:
     return sat > 80
 
 
-import contextlib  # noqa: E402
-
-
-@contextlib.contextmanager
-def _chromium_page(url: str, tmp_path):
-    """A headless Chromium showing url, driven over DevTools; yields a _Page."""
-    pytest.importorskip("websocket", reason="websocket-client is not installed (pip install websocket-client)")
-    pytest.importorskip("PIL", reason="Pillow is not installed")
-    port = _free_port()
-    profile = tmp_path / "profile"
-    cmd = [_chromium(), "--headless=new", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-           "--no-first-run", "--disable-extensions", "--window-size=1000,700", f"--remote-debugging-port={port}",
-           "--remote-allow-origins=*", f"--user-data-dir={profile}", url]
-    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    try:
-        deadline = time.monotonic() + 20
-        ws_url = None
-        while ws_url is None:
-            assert time.monotonic() < deadline, "chromium did not open its DevTools endpoint"
-            try:
-                with urllib.request.urlopen(f"http://127.0.0.1:{port}/json/list", timeout=2) as r:
-                    ws_url = next((t["webSocketDebuggerUrl"] for t in json.load(r) if t.get("type") == "page"), None)
-            except OSError:
-                pass
-            time.sleep(0.2)
-        page = _Page(ws_url)
-        try:
-            yield page
-        finally:
-            # Closed here, not left to the garbage collector: an unclosed socket's ResourceWarning would
-            # surface in whatever test runs when it is collected (test_gym's warning-free check did).
-            page.ws.close()
-    finally:
-        proc.terminate()
-        try:
-            proc.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-
-
-@pytest.mark.skipif(_chromium() is None, reason="chromium is not installed (Debian package 'chromium')")
+@needs_chromium
 def test_live_page_in_headless_chromium(viewer, tmp_path):
     out_dir = Path(os.environ.get("ARMRT_SCREENSHOT_DIR", tmp_path))
     out_dir.mkdir(parents=True, exist_ok=True)
-    with _chromium_page(viewer.url, tmp_path) as page:
+    with chromium_page(viewer.url, tmp_path) as page:
         deadline = time.monotonic() + 30
         while not page.eval("!!document.querySelector('canvas') && document.body.innerText.includes('GHstab')"):
             assert time.monotonic() < deadline, "the page never showed the scene and the GHstab panel"
@@ -399,7 +315,7 @@ def _panel_value(text: str, name: str) -> float:
     raise AssertionError(f"no value for {name} in the panel: {lines[k:k + 3]}")
 
 
-@pytest.mark.skipif(_chromium() is None, reason="chromium is not installed (Debian package 'chromium')")
+@needs_chromium
 def test_realtime_page_in_headless_chromium(tmp_path):
     """A lab's view of the runner: excitations received, GHstab plot with the 1 and 0.5 lines, labelled
     joint angles in degrees, lag visible, the arm framed large, moving when an excitation is sent."""
@@ -408,7 +324,7 @@ def test_realtime_page_in_headless_chromium(tmp_path):
     import threading
     from armrt.view import UdpSource, serve
     src = UdpSource(port=0)
-    v = serve(src, host="127.0.0.1", port=_free_port(), fps=30, block=False)
+    v = serve(src, host="127.0.0.1", port=free_port(), fps=30, block=False)
     out_dir = Path(os.environ.get("ARMRT_SCREENSHOT_DIR", tmp_path))
     out_dir.mkdir(parents=True, exist_ok=True)
     stop = threading.Event()
@@ -425,7 +341,7 @@ def test_realtime_page_in_headless_chromium(tmp_path):
                     time.sleep(0.01)
             th = threading.Thread(target=control, daemon=True)
             th.start()
-            with _chromium_page(v.url, tmp_path) as page:
+            with chromium_page(v.url, tmp_path) as page:
                 deadline = time.monotonic() + 30
                 while not page.eval("!!document.querySelector('canvas') && "
                                     "document.body.innerText.includes('excitation received')"):
@@ -472,7 +388,7 @@ def test_viewer_replays_a_mot_motion(tmp_path, arm):
     from armrt.view import ResultSource, load_replay, serve
     write_mot(arm.simulate({"elbow_flexors": 0.3}, 0.2, record_every=10), tmp_path / "m.mot")
     src = ResultSource(load_replay(tmp_path / "m.mot"))
-    v = serve(src, host="127.0.0.1", port=_free_port(), fps=30, block=False)
+    v = serve(src, host="127.0.0.1", port=free_port(), fps=30, block=False)
     try:
         deadline = time.monotonic() + 10
         while v.frames_drawn < 5 and time.monotonic() < deadline:

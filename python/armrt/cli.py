@@ -205,6 +205,8 @@ def build_parser() -> argparse.ArgumentParser:
     add_cli(sub, _formatter)  # view, animate, export (viser is imported only when `view` runs)
     from .tasks_cli import add_cli as add_task_cli
     add_task_cli(sub, _formatter)  # task: target tasks with the simulated decoder (docs/tasks.md)
+    from .display import add_cli as add_display_cli
+    add_display_cli(sub, _formatter)  # display: participant display of the armrt-rt state stream (docs/tasks.md)
     from .model_cli import add_cli as add_model_cli
     add_model_cli(sub, _formatter, msub)  # model import (codegen from the source checkout), beside build and list
     return ap

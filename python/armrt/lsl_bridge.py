@@ -191,6 +191,35 @@ class MarkerOutlet:
         return t
 
 
+# The live task's state stream (armrt task ... --task-stream; task_live.run_live): one sample per task sample.
+TASK_STATE_CHANNELS = (("time", "s", "time"), ("cursor_x", "m", "position"), ("cursor_y", "m", "position"),
+                       ("cursor_z", "m", "position"), ("target_x", "m", "position"), ("target_y", "m", "position"),
+                       ("target_z", "m", "position"), ("target_index", "1", "index"), ("inside", "1", "flag"),
+                       ("gh_stab", "1", "stability"))
+
+
+class TaskStateOutlet:
+    """An LSL outlet of a live task's state (type "TaskState", float64, rate 1/dt_s): TASK_STATE_CHANNELS, i.e. the
+    task time (s), the cursor (m, thorax frame), the shown target (m; NaN between trials), its index (-1 between
+    trials), whether the cursor is inside it (0/1) and GHstab (NaN without an arm). push(values, timestamp)."""
+
+    def __init__(self, name: str = "armrt_task_state", source_id: str = "armrt-task-state", rate_hz: float = 500.0,
+                 model: str = "cursor"):
+        self.pylsl = _pylsl()
+        labels, units, types = (list(c) for c in zip(*TASK_STATE_CHANNELS))
+        info = self.pylsl.StreamInfo(name, "TaskState", len(labels), float(rate_hz), self.pylsl.cf_double64,
+                                     source_id)
+        info.desc().append_child_value("frames", "cursor and target in the thorax frame (docs/conventions.md)")
+        _describe(info.desc(), model, labels, units, types)
+        self.outlet = self.pylsl.StreamOutlet(info)
+        self.source_id = source_id
+        self.pushed = 0
+
+    def push(self, values, timestamp: float) -> None:
+        self.outlet.push_sample([float(v) for v in values], float(timestamp))
+        self.pushed += 1
+
+
 def channel_labels(info) -> list[str]:
     """Channel labels from a full StreamInfo (desc/channels/channel/label), [] if none."""
     labels = []
@@ -249,6 +278,23 @@ def endpoint_layout(labels: list[str], stream: str = "") -> tuple[bool, bool]:
     return present[0], present[1]
 
 
+def endpoint_commands(samples, stamps, channel_index, has) -> tuple[list[EndpointCommand], int]:
+    """An inlet's chunk of endpoint-command samples (channels in the stream's order; channel_index: their places
+    in ENDPOINT_LABELS, from match_labels; has: endpoint_layout's (velocity, position)) -> (the EndpointCommands in
+    order, the number refused: a used channel NaN or infinite)."""
+    have_v, have_p = has
+    out, refused = [], 0
+    for sample, t in zip(samples, stamps):
+        x = np.full(len(ENDPOINT_LABELS), np.nan)
+        x[channel_index] = np.asarray(sample, dtype=float)
+        used = np.concatenate([x[:3]] * have_v + [x[3:]] * have_p)
+        if not np.all(np.isfinite(used)):
+            refused += 1
+            continue
+        out.append(EndpointCommand(float(t), x[:3].copy() if have_v else None, x[3:].copy() if have_p else None))
+    return out, refused
+
+
 def endpoint_stream_info(pylsl, name: str, source_id: str, rate_hz: float, labels=ENDPOINT_LABELS):
     """A decoder's endpoint-command stream as the bridge matches it (type "EndpointCommand", float64): channels
     labelled from ENDPOINT_LABELS (complete triples), units m/s and m, thorax frame."""
@@ -261,6 +307,84 @@ def endpoint_stream_info(pylsl, name: str, source_id: str, rate_hz: float, label
     types = ["velocity" if lab in ENDPOINT_VELOCITY else "position" for lab in labels]
     _describe(desc, "decoder", labels, units, types)
     return info
+
+
+class LslEndpointDecoder:
+    """A decoder's LSL endpoint-command stream as a task decoder (armrt task --decoder lsl:NAME; task_live):
+    the stream named `name` on this host (host= another; or pinned by source_id), waited for up to wait_s s
+    (RuntimeError naming it when absent or ambiguous), its channels matched by label (ENDPOINT_LABELS, complete
+    x, y, z triples: ValueError otherwise). command(cursor, target) pulls what arrived and returns (velocity (3,)
+    m/s or None, position (3,) m or None): the newest sample's, the position held; a velocity older than
+    hold_s s (the decoder went silent) is zero, so the hand stops instead of drifting (as the runner's input
+    timeout zeroes the excitation). Samples with a NaN or an infinity in a used channel are refused (counted
+    in .refused). received counts the samples taken, stale_s the longest silence seen (s)."""
+
+    def __init__(self, name: str | None = None, source_id: str | None = None, host: str | None = None,
+                 wait_s: float = 10.0, hold_s: float = 0.5):
+        if not name and not source_id:
+            raise ValueError("name the decoder's endpoint stream (lsl:NAME) or pin its source_id")
+        pylsl = self.pylsl = _pylsl()
+        self.host = host or socket.gethostname()
+        self.hold_s = float(hold_s)
+        what = f"source_id {source_id!r}" if source_id else f"stream {name!r} on {self.host}"
+        resolver = (pylsl.ContinuousResolver(prop="source_id", value=source_id) if source_id
+                    else pylsl.ContinuousResolver(prop="name", value=name))
+        t_end = time.monotonic() + float(wait_s)
+        found = []
+        while True:
+            found = [r for r in resolver.results() if source_id or r.hostname() == self.host]
+            if len(found) > 1:
+                who = [f"{f.name()}@{f.hostname()} ({f.source_id()})" for f in found]
+                raise RuntimeError(f"{len(found)} endpoint-command streams match {what}: {who}; pin one by source_id")
+            if found or time.monotonic() > t_end:
+                break
+            time.sleep(0.05)
+        if not found:
+            raise RuntimeError(f"no LSL endpoint-command {what} after {wait_s:g} s (is the decoder running?)")
+        self.inlet = pylsl.StreamInlet(found[0], max_buflen=1, recover=True)
+        full = self.inlet.info(timeout=5.0)
+        where = f"{full.name()}@{full.hostname()}"
+        labels = channel_labels(full)
+        self.channel_index = match_labels(labels, list(ENDPOINT_LABELS), where)
+        self.has = endpoint_layout(labels, where)
+        self.name, self.source_id = full.name(), full.source_id()
+        self.inlet.open_stream(timeout=5.0)
+        self.velocity = np.zeros(3) if self.has[0] else None
+        self.position = None
+        self.received = 0
+        self.refused = 0
+        self.stale_s = 0.0
+        self._last = None   # perf_counter of the newest sample
+
+    def poll(self) -> list[EndpointCommand]:
+        """Takes the samples that arrived; returns them (in order)."""
+        samples, stamps = self.inlet.pull_chunk(timeout=0.0)
+        cmds, refused = endpoint_commands(samples, stamps, self.channel_index, self.has)
+        self.refused += refused
+        now = time.perf_counter()
+        if cmds:
+            if self._last is not None:
+                self.stale_s = max(self.stale_s, now - self._last)
+            self._last = now
+            self.received += len(cmds)
+            if self.has[0]:
+                self.velocity = cmds[-1].hand_velocity
+            if self.has[1]:
+                self.position = cmds[-1].hand_position
+        return cmds
+
+    def command(self, cursor=None, target=None):
+        """(velocity or None, position or None) to command now; cursor and target are not used (the decoder
+        outside sees the participant's screen)."""
+        self.poll()
+        v = None
+        if self.has[0]:
+            fresh = self._last is not None and time.perf_counter() - self._last <= self.hold_s
+            v = self.velocity if fresh else np.zeros(3)
+        return v, self.position
+
+    def close(self) -> None:
+        self.inlet.close_stream()
 
 
 class LslBridge:
@@ -444,18 +568,13 @@ class LslBridge:
     def _consume_endpoint(self, samples, stamps):
         """Each endpoint-command sample, in order, to the consumer; returns the last excitation it returned."""
         out = None
-        have_v, have_p = self.endpoint_has
-        for sample, t in zip(samples, stamps):
-            x = np.full(len(ENDPOINT_LABELS), np.nan)
-            x[self.channel_index] = np.asarray(sample, dtype=float)
-            used = np.concatenate([x[:3]] * have_v + [x[3:]] * have_p)
-            if not np.all(np.isfinite(used)):
-                self.refused += 1
-                self.warn("refused-endpoint", "endpoint command samples with NaN or infinity refused, not given to "
-                                              "the consumer (counted in .refused)")
-                continue
-            r = self.endpoint_consumer(EndpointCommand(float(t), x[:3].copy() if have_v else None,
-                                                       x[3:].copy() if have_p else None))
+        commands, refused = endpoint_commands(samples, stamps, self.channel_index, self.endpoint_has)
+        if refused:
+            self.refused += refused
+            self.warn("refused-endpoint", "endpoint command samples with NaN or infinity refused, not given to "
+                                          "the consumer (counted in .refused)")
+        for cmd in commands:
+            r = self.endpoint_consumer(cmd)
             if r is not None:
                 out = np.asarray(r, dtype=float)
         return out

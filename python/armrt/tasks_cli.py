@@ -6,8 +6,13 @@ from __future__ import annotations
 import csv
 import json
 import math
+import time
 
 from . import tasks
+
+# s the LSL outlets stay open after the task: a recorder pulls the last markers before the outlet goes away (a
+# closed outlet's unsent samples are lost; a LabRecorder test lost the final 'success' without it).
+LSL_LINGER_S = 1.0
 
 TRIAL_COLUMNS = ("trial", "target", "success", "time_to_target_s", "acquisition_time_s", "dial_in_time_s",
                  "path_efficiency", "n_entries", "gh_unstable_events", "hold_rms_m")
@@ -17,8 +22,10 @@ def add_cli(sub, formatter) -> None:
     p = sub.add_parser("task", formatter_class=formatter,
                        help="run a target task offline (simulated decoder, point cursor) and print its metrics")
     p.add_argument("kind", choices=["centre-out", "fitts", "posture"], help="the task")
-    p.add_argument("--decoder", default="simulated", choices=["simulated"],
-                   help="what drives the cursor (simulated: velocity towards the target + noise + lag)")
+    p.add_argument("--decoder", default="simulated", type=_decoder_arg, metavar="simulated|lsl:NAME",
+                   help="what drives the cursor (simulated: velocity towards the target + noise + lag; lsl:NAME: "
+                        "the endpoint velocity/position commands of the LSL stream NAME on this host, channels "
+                        "labelled hand_velocity_x.. / hand_position_x.., docs/lsl.md; runs in real time)")
     p.add_argument("--centre", type=float, nargs=3, default=None, metavar=("X", "Y", "Z"),
                    help="task centre, m, thorax frame (default: 0 0 0 for the point cursor; with --arm the hand "
                         "at --q-deg)")
@@ -43,7 +50,29 @@ def add_cli(sub, formatter) -> None:
     p.add_argument("--dt", type=float, default=0.002, help="sample interval, s")
     p.add_argument("--seed", type=int, default=0, help="decoder noise seed")
     p.add_argument("--out", metavar="FILE.json|FILE.csv", help="write the metrics (JSON: trials + block; CSV: trials)")
+    p.add_argument("--display", action="store_true",
+                   help="run in real time with the participant display (chromium --kiosk URL) and the operator page")
+    p.add_argument("--display-host", default="127.0.0.1", help="address the display pages are served on")
+    p.add_argument("--display-port", type=int, default=8090, help="port of the display pages (0: a free one)")
+    p.add_argument("--display-fps", type=float, default=60.0, help="states sent to the display per second")
+    p.add_argument("--display-wait", type=float, default=60.0,
+                   help="with --display: s to wait for the participant page before the task starts (0: start at once)")
+    p.add_argument("--hold", type=float, default=2.0, help="with --display: s the last state stays up after the task")
+    p.add_argument("--markers", nargs="?", const="armrt_task_markers", default=None, metavar="NAME",
+                   help="publish the task events on an LSL marker stream (default name armrt_task_markers, "
+                        "source_id armrt-task-markers); runs in real time")
+    p.add_argument("--task-stream", nargs="?", const="armrt_task_state", default=None, metavar="NAME",
+                   help="publish the task's state each sample on an LSL stream (default name armrt_task_state, "
+                        "source_id armrt-task-state: time, cursor, target, target index, inside, GHstab); real time")
+    p.add_argument("--lsl-wait", type=float, default=10.0, help="with --decoder lsl:NAME: s to wait for the stream")
     p.set_defaults(func=cmd_task)
+
+
+def _decoder_arg(text: str) -> str:
+    if text == "simulated" or (text.startswith("lsl:") and len(text) > 4):
+        return text
+    import argparse
+    raise argparse.ArgumentTypeError(f"--decoder takes 'simulated' or 'lsl:NAME' (an LSL stream name), got {text!r}")
 
 
 def _conditions(texts):
@@ -86,21 +115,37 @@ def cmd_task(args) -> int:
         task = tasks.TargetTask(targets, args.dwell, args.timeout, args.iti)
     else:
         task = tasks.PostureTask(args.centre, args.radius, args.dwell, args.timeout, args.trials, args.iti)
-    dec = tasks.SimulatedDecoder(args.gain, args.noise_sd, args.lag, args.dt, seed=args.seed)
     start = list(args.centre)
     if args.kind == "posture":  # start away from the held target so there is something to reach
         start[1] += 0.05
     max_time = len(task.targets) * (args.timeout + args.iti) + 1.0
-    if arm is None:
-        tasks.run_cursor_task(task, dec, start, max_time_s=max_time)
-    else:
-        from .endpoint_control import EndpointController, run_task
-        ctl = EndpointController(arm)  # posture: hold the hand where it starts, against gravity
-        run_task(task, ctl, dec, max_time_s=max_time)
+    live = args.display or args.markers is not None or args.task_stream is not None or args.decoder != "simulated"
+    decoder = None
+    try:
+        if args.decoder == "simulated":
+            dec = tasks.SimulatedDecoder(args.gain, args.noise_sd, args.lag, args.dt, seed=args.seed)
+            how = f"gain {args.gain} 1/s, noise SD {args.noise_sd} m/s, lag {args.lag} s"
+        else:
+            from .lsl_bridge import LslEndpointDecoder
+            dec = decoder = LslEndpointDecoder(args.decoder[4:], wait_s=args.lsl_wait)
+            how = (f"LSL stream {decoder.name!r} ({decoder.source_id}): "
+                   + " and ".join(k for k, h in zip(("velocity", "position"), decoder.has) if h) + " commands")
+        if not live:
+            if arm is None:
+                tasks.run_cursor_task(task, dec, start, max_time_s=max_time)
+            else:
+                from .endpoint_control import EndpointController, run_task
+                ctl = EndpointController(arm)  # posture: hold the hand where it starts, against gravity
+                run_task(task, ctl, dec, max_time_s=max_time)
+        else:
+            _run_live(args, task, arm, dec, start, max_time)
+    finally:
+        if decoder is not None:
+            decoder.close()
     rows, block = task.trial_metrics(), task.block_metrics()
     what = f"the {args.arm} hand (endpoint controller)" if arm is not None else "a point cursor"
-    print(f"armrt task {args.kind} --decoder {args.decoder} driving {what}: gain {args.gain} 1/s, noise SD {args.noise_sd} m/s, "
-          f"lag {args.lag} s, dt {args.dt} s, seed {args.seed}")
+    print(f"armrt task {args.kind} --decoder {args.decoder} driving {what}: {how}, dt {args.dt} s, seed {args.seed}"
+          + (" (real time)" if live else ""))
     print("  ".join(TRIAL_COLUMNS))
     for r in rows:
         print("  ".join(f"{_fmt(r[c]):>{len(c)}}" for c in TRIAL_COLUMNS))
@@ -125,3 +170,47 @@ def cmd_task(args) -> int:
             raise ValueError(f"--out must end in .json or .csv, got {args.out!r}")
         print(f"wrote {args.out}")
     return 0
+
+
+def _run_live(args, task, arm, dec, start, max_time) -> dict:
+    """The task in real time: the display pages (--display), the marker stream (--markers)."""
+    from . import task_live
+    if arm is None:
+        driver = task_live.CursorDriver(start, dec, args.dt)
+        extra = []
+    else:
+        from .endpoint_control import EndpointController
+        driver = task_live.ArmDriver(EndpointController(arm), dec)
+        extra = [driver.shoulder()]
+    server = markers = stream = None
+    try:
+        if args.task_stream is not None:
+            from .lsl_bridge import TaskStateOutlet
+            stream = TaskStateOutlet(args.task_stream, "armrt-task-state", 1.0 / driver.dt_s, args.arm or "cursor")
+            print(f"task state: LSL stream {args.task_stream!r} (type TaskState, source_id armrt-task-state)",
+                  flush=True)
+        if args.markers is not None:
+            from .lsl_bridge import MarkerOutlet
+            markers = MarkerOutlet(args.markers, "armrt-task-markers", args.arm or "cursor")
+            print(f"markers: LSL stream {args.markers!r} (type Markers, source_id armrt-task-markers)", flush=True)
+        if args.display:
+            from .display import DisplayServer, fit_plane
+            plane = fit_plane(task.targets, centre=args.centre, points=extra)
+            server = DisplayServer(plane, host=args.display_host, port=args.display_port).start()
+            print(f"participant display: chromium --kiosk {server.url}\noperator page: {server.operator_url}",
+                  flush=True)
+            if args.display_wait > 0:
+                print(f"waiting up to {args.display_wait:g} s for the participant page...", flush=True)
+                if not server.wait_for_page("participant", args.display_wait):
+                    print("no participant page connected: the task starts anyway", flush=True)
+        stats = task_live.run_live(task, driver, display=server, markers=markers, task_stream=stream,
+                                   fps=args.display_fps,
+                                   max_time_s=max_time, hold_s=args.hold if server is not None else 0.0)
+        if markers is not None or stream is not None:
+            time.sleep(LSL_LINGER_S)
+    finally:
+        if server is not None:
+            server.stop()
+    print(f"real time: {stats['samples']} samples, largest lateness {stats['lag_s'] * 1e3:.1f} ms, "
+          f"{stats['published']} display states, {stats['markers']} markers", flush=True)
+    return stats

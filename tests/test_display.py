@@ -1,0 +1,222 @@
+"""The participant display and operator page (issue 29 item 2): the task-plane projection, the server, and both
+pages in real headless Chromium, where the target, the cursor and the arm are found by colour at the pixels the
+task geometry predicts (computed here from the thorax-frame axes, not with the module's projection)."""
+import json
+import os
+import time
+from pathlib import Path
+import urllib.error
+import urllib.request
+
+import numpy as np
+import pytest
+
+armrt = pytest.importorskip("armrt", reason="armrt is not built/installed (./run.sh setup)")
+pytest.importorskip("websockets", reason="websockets is not installed (a viser dependency)")
+from armrt import display  # noqa: E402
+from chromium_helpers import chromium_page, free_port, needs_chromium  # noqa: E402
+
+
+def test_plane_projection_is_the_frontal_plane():
+    """Frontal plane (armrt.tasks): u = +z (right), v = +y (up); the anterior (x) offset does not show."""
+    c = np.array([0.3, -0.2, 0.25])
+    plane = display.TaskPlane(tuple(c), half_height_m=0.1)
+    p = c + [0.07, 0.03, -0.02]          # 7 cm anterior, 3 cm up, 2 cm left
+    np.testing.assert_allclose(plane.project(p), [-0.02, 0.03], atol=1e-15)
+    # 1000 x 700 screen: 3500 px/m; right is +x pixels, up is -y pixels.
+    np.testing.assert_allclose(plane.to_pixels([-0.02, 0.03], 1000, 700), [500 - 70, 350 - 105])
+    tilted = display.TaskPlane(tuple(c), axis_u=(1, 0, 1), axis_v=(0, 1, 0))
+    np.testing.assert_allclose(tilted.project(c + [1, 0, 1]), [np.sqrt(2), 0], atol=1e-12)
+    with pytest.raises(ValueError, match="orthogonal"):
+        display.TaskPlane(axis_u=(0, 1, 1))
+    with pytest.raises(ValueError, match="half_height_m"):
+        display.TaskPlane(half_height_m=0)
+    with pytest.raises(ValueError, match="target_state"):
+        display.display_state(plane, target=c, target_state="hit")
+
+
+def test_fit_plane_holds_targets_and_shoulder():
+    from armrt.tasks import centre_out_targets
+    tg = centre_out_targets((0, 0, 0), 0.1, 0.02, 8)
+    plane = display.fit_plane(tg, margin=1.25)
+    assert plane.half_height_m == pytest.approx(1.25 * 0.12)
+    plane = display.fit_plane(tg, points=[(0, 0.3, 0.0)], margin=1.1)
+    assert plane.half_height_m == pytest.approx(0.33)
+
+
+def test_server_serves_both_pages():
+    with display.DisplayServer(port=0) as d:
+        for url, marker in ((d.url, b"const PAGE = 'participant'"), (d.operator_url, b"const PAGE = 'operator'")):
+            with urllib.request.urlopen(url, timeout=10) as r:
+                assert r.headers["Content-Type"].startswith("text/html") and marker in r.read()
+        with pytest.raises(urllib.error.HTTPError, match="404"):
+            urllib.request.urlopen(d.url + "nothing", timeout=10)
+
+
+def test_stop_closes_open_pages_so_the_process_can_end():
+    """websockets runs each connection on a non-daemon thread: an open kiosk page must not keep the session alive."""
+    import threading
+    from websockets.exceptions import ConnectionClosed
+    from websockets.sync.client import connect
+    before = {t for t in threading.enumerate() if not t.daemon}
+    d = display.DisplayServer(port=0).start()
+    with connect(f"ws://127.0.0.1:{d.port}/ws?page=participant") as page:
+        assert d.wait_for_page("participant", 10) and d.connected["participant"] == 1
+        seq = d.publish(display.display_state(d.plane, cursor=(0.01, 0.0, 0.02)))
+        msg = json.loads(page.recv(timeout=10))
+        assert msg["seq"] == seq and msg["cursor"] == [0.02, 0.0]
+        d.stop()
+        with pytest.raises(ConnectionClosed):
+            page.recv(timeout=10)
+    deadline = time.monotonic() + 10
+    while d.connected["participant"] and time.monotonic() < deadline:
+        time.sleep(0.02)
+    assert d.connected["participant"] == 0
+    left = {t for t in threading.enumerate() if not t.daemon} - before
+    assert not [t for t in left if t.is_alive()], left
+
+
+@pytest.fixture(scope="module")
+def scene():
+    """das2's arm at the CLI's start posture, the hand as cursor, a target 8 cm right and 3 cm up of it."""
+    from armrt.geometry import POINTS, ArmGeometry
+    geom = ArmGeometry("das2")
+    q = np.radians([30, 60, 10, 60, 80])
+    pts = geom.points(q)
+    hand, elbow = pts[POINTS.index("hand")], pts[POINTS.index("elbow")]
+    target = hand + np.array([0.0, 0.03, 0.08])
+    centre = hand + np.array([0.0, 0.05, 0.0])
+    plane = display.TaskPlane(tuple(centre), half_height_m=0.25)
+    return dict(plane=plane, centre=centre, hand=hand, elbow=elbow, target=target, radius=0.02,
+                arm=display.arm_points(geom, q))
+
+
+def _predicted_px(p, centre, half_height, shape):
+    """Thorax-frame point -> pixel of a screenshot (h, w): frontal plane, z to the right, y up."""
+    h, w = shape[:2]
+    s = min(w, h) / (2 * half_height)
+    d = np.asarray(p) - centre
+    return np.array([w / 2 + s * d[2], h / 2 - s * d[1]])
+
+
+def _colour_centroid(img, rgb, tol=30):
+    m = (np.abs(img.astype(int) - np.array(rgb)).max(axis=2) <= tol)
+    ys, xs = np.nonzero(m)
+    return (np.array([xs.mean(), ys.mean()]) if len(xs) else None), int(m.sum())
+
+
+def _out_dir(tmp_path) -> Path:
+    d = Path(os.environ.get("ARMRT_SCREENSHOT_DIR", tmp_path))
+    d.mkdir(parents=True, exist_ok=True)
+    return d
+
+
+def _state(sc, target_state, **kw):
+    return display.display_state(sc["plane"], cursor=sc["hand"], target=sc["target"], target_radius_m=sc["radius"],
+                                 target_state=target_state, arm_points=sc["arm"], **kw)
+
+
+@needs_chromium
+def test_participant_page_draws_target_cursor_and_arm_where_the_geometry_says(scene, tmp_path):
+    sc = scene
+    with display.DisplayServer(sc["plane"], port=free_port()) as d, chromium_page(d.url, tmp_path) as page:
+        page.wait_for("window.armrtFrames !== undefined", "the participant page did not load")
+        seq = d.publish(_state(sc, "shown"))
+        page.wait_for(f"window.armrtState && window.armrtState.seq === {seq}", "the state was never drawn")
+        time.sleep(0.3)
+        img, png = page.screenshot()
+        (_out_dir(tmp_path) / "participant_shown.png").write_bytes(png)
+        text = page.eval("document.body.innerText")
+        seq = d.publish(_state(sc, "success"))
+        page.wait_for(f"window.armrtState && window.armrtState.seq === {seq}", "the success state was never drawn")
+        time.sleep(0.3)
+        img2, png2 = page.screenshot()
+        (_out_dir(tmp_path) / "participant_success.png").write_bytes(png2)
+        deadline = time.monotonic() + 5
+        while len(d.acks) < 2 and time.monotonic() < deadline:
+            time.sleep(0.05)
+        acks = list(d.acks)
+    hh, c = sc["plane"].half_height_m, sc["centre"]
+    s = min(img.shape[:2]) / (2 * hh)                    # px per m
+    assert text.strip() == "", f"the participant page shows text: {text!r}"
+    # The target (amber while shown) is a disc of the target's radius at the predicted pixel.
+    at, n = _colour_centroid(img, display.TARGET_COLOURS["shown"])
+    assert at is not None, "no target-coloured pixels"
+    np.testing.assert_allclose(at, _predicted_px(sc["target"], c, hh, img.shape), atol=2.0)
+    assert n == pytest.approx(np.pi * (sc["radius"] * s) ** 2, rel=0.1)
+    # The cursor (white) is centred on the hand.
+    at, n = _colour_centroid(img, display.CURSOR_COLOUR, tol=10)
+    assert at is not None and n > 100, n
+    np.testing.assert_allclose(at, _predicted_px(sc["hand"], c, hh, img.shape), atol=2.0)
+    # The arm (grey) passes through the projected elbow.
+    ex, ey = np.round(_predicted_px(sc["elbow"], c, hh, img.shape)).astype(int)
+    patch = img[ey - 2:ey + 3, ex - 2:ex + 3].astype(int)
+    assert (np.abs(patch - display.ARM_COLOUR).max(axis=2) <= 30).any(), patch[2, 2]
+    # Success: the same disc turns green, no amber left.
+    at, n = _colour_centroid(img2, display.TARGET_COLOURS["success"])
+    assert at is not None
+    np.testing.assert_allclose(at, _predicted_px(sc["target"], c, hh, img.shape), atol=2.0)
+    assert _colour_centroid(img2, display.TARGET_COLOURS["shown"])[1] == 0
+    # Each drawn state was acknowledged by the page (state-to-frame latency on the server's clock).
+    assert {a.seq for a in acks} >= {seq - 1, seq} and all(a.latency_s > 0 and a.page == "participant" for a in acks)
+
+
+@needs_chromium
+def test_operator_page_shows_the_panel_and_metrics(scene, tmp_path):
+    sc = scene
+    rows = [{"trial": 0, "target": 0, "success": True, "time_to_target_s": 0.61, "acquisition_time_s": 0.7,
+             "path_efficiency": 0.93, "n_entries": 1, "gh_unstable_events": 0, "hold_rms_m": 0.004}]
+    with display.DisplayServer(sc["plane"], port=free_port()) as d, chromium_page(d.operator_url, tmp_path) as page:
+        page.wait_for("window.armrtFrames !== undefined", "the operator page did not load")
+        seq = d.publish(_state(sc, "entered", time_s=3.25, gh_stab=1.3, trial=1, n_trials=8, phase="target",
+                               metrics=rows))
+        page.wait_for(f"window.armrtState && window.armrtState.seq === {seq}", "the state was never drawn")
+        text = page.eval("document.body.innerText")
+        img, png = page.screenshot()
+        (_out_dir(tmp_path) / "operator.png").write_bytes(png)
+    assert "t = 3.25 s" in text and "GHstab = 1.30" in text and "outside the glenoid rim" in text
+    assert "trial 2 of 8" in text and "target entered" in text
+    assert "path_efficiency" in text and "0.930" in text and "yes" in text
+    assert _colour_centroid(img, display.TARGET_COLOURS["entered"])[1] > 50   # the scene is drawn beside it
+
+
+def test_frame_feed_draws_the_runner_state_stream(arm):
+    """armrt-rt's UDP state packets (UdpSource) -> the display: the cursor is the engine's hand at the packet's q."""
+    realtime = pytest.importorskip("armrt.realtime", reason="armrt.realtime (the armrt-rt codec) is not built")
+    import socket
+    from armrt.view import UdpSource
+
+    class Recorder:
+        plane = display.TaskPlane((0.2, -0.3, 0.3), half_height_m=0.4)
+        states = []
+
+        def publish(self, st):
+            self.states.append(st)
+
+    src = UdpSource("127.0.0.1", 0)
+    rec = Recorder()
+    feed = display.FrameFeed(src, rec, fps=100).start()
+    try:
+        q = arm.dof_ranges.mean(axis=1)
+        values = np.concatenate([[1.25], q, np.zeros(5), np.zeros(3), [0.8, 0.5, -0.6, -0.1, -0.87, -1, 0.004, 0]])
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as tx:
+            tx.sendto(realtime.encode_packet(realtime.STATE, 7, values), ("127.0.0.1", src.port))
+            deadline = time.monotonic() + 5
+            while not rec.states and time.monotonic() < deadline:
+                time.sleep(0.02)
+    finally:
+        feed.stop()
+    assert rec.states, "no state drawn"
+    st = rec.states[-1]
+    arm.reset(q=q)
+    np.testing.assert_allclose(st["cursor"], rec.plane.project(arm.hand_position), atol=1e-9)
+    np.testing.assert_allclose(st["arm"][-1], st["cursor"])
+    assert st["time_s"] == 1.25 and st["gh_stab"] == 0.8 and "target" not in st
+
+
+def test_cli_display_serves_the_pages(capsys):
+    pytest.importorskip("armrt.realtime", reason="armrt.realtime is not built")
+    from armrt.cli import main
+    assert main(["display", "--udp", "127.0.0.1:0", "--port", "0", "--duration", "0.3"]) == 0
+    out = capsys.readouterr().out
+    assert "chromium --kiosk http://127.0.0.1:" in out and "/operator" in out and "drew 0 states" in out
