@@ -305,3 +305,64 @@ def test_lab_session_participant_screen_xdf_and_metrics(tmp_path, capsys):
     markers = [m[0] for m in by_name[f"mk-{uid}"]["time_series"]]
     assert [m.split()[0] for m in markers].count("success") == 2, markers
     assert len(by_name[f"ts-{uid}"]["time_series"]) > 100 and len(by_name[f"dec-{uid}"]["time_series"]) > 10
+
+
+# ---------------------------------------------------------------- the hand of a running armrt-rt (RunnerDriver)
+def _free_udp_port() -> int:
+    import socket
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def test_runner_driver_measures_the_runners_hand_and_refuses_junk():
+    import socket
+
+    from armrt import realtime as rt
+    from armrt import task_live, tasks
+    port = _free_udp_port()
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, state_to=f"127.0.0.1:{port}", settle=3.0) as s:
+        driver = task_live.RunnerDriver("127.0.0.1", port, dt_s=0.005, wait_s=10.0)
+        try:
+            with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as junk:
+                junk.sendto(b"not a state packet", ("127.0.0.1", port))
+            hand = driver.cursor().copy()
+            # At the hand: every hold succeeds; 5 cm away with nothing driving the arm: every trial times out.
+            at = tasks.PostureTask(hand, 0.02, 0.2, 1.0, 2, 0.05)
+            task_live.run_live(at, driver, max_time_s=5.0)
+            away = tasks.PostureTask(hand + [0.0, 0.05, 0.0], 0.02, 0.2, 0.5, 1, 0.05)
+            task_live.run_live(away, driver, max_time_s=5.0)
+            pkt = driver.packet
+        finally:
+            driver.close()
+        stats = s.stop()
+    assert [r["success"] for r in at.trial_metrics()] == [True, True]
+    assert [r["success"] for r in away.trial_metrics()] == [False]
+    assert driver.bad_packets >= 1 and driver.last_error
+    assert driver.packets > 100                      # 200 Hz over ~3 s
+    assert np.array_equal(driver.cursor(), np.asarray(pkt.hand_position, dtype=float))
+    assert np.linalg.norm(driver.cursor() - hand) < 0.02   # the settled arm hangs where it was
+    assert stats["model"] == "das2"
+
+
+def test_runner_driver_without_a_runner_says_which_port():
+    from armrt import task_live
+    port = _free_udp_port()
+    with pytest.raises(RuntimeError, match=rf"no armrt-rt state packet on 127.0.0.1:{port} after 0.3 s"):
+        task_live.RunnerDriver("127.0.0.1", port, wait_s=0.3)
+
+
+def test_task_cli_runner_state(tmp_path, capsys):
+    import json
+
+    from armrt import realtime as rt
+    from armrt.cli import main
+    port = _free_udp_port()
+    out = tmp_path / "m.json"
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=100, state_to=f"127.0.0.1:{port}", settle=3.0):
+        assert main(["task", "posture", "--runner-state", f":{port}", "--trials", "1", "--dwell", "0.2", "--timeout",
+                     "1", "--radius", "0.02", "--dt", "0.005", "--out", str(out)]) == 0
+    assert "running armrt-rt" in capsys.readouterr().out
+    assert json.loads(out.read_text())["block"]["success_rate"] == 1.0
+    assert main(["task", "posture", "--runner-state", f":{port}", "--arm", "das2"]) == 2
+    assert "neither --arm nor --decoder" in capsys.readouterr().err

@@ -1,5 +1,5 @@
-"""A target task run live: a task (armrt.tasks), a cursor driver (a point cursor or an arm's hand through the
-endpoint controller) and a decoder (simulated, or a decoder's LSL endpoint-command stream) -> the task paced to
+"""A target task run live: a task (armrt.tasks), a cursor driver (a point cursor, an arm's hand through the
+endpoint controller, or the hand of a running armrt-rt driven from outside: RunnerDriver) and a decoder (simulated, or a decoder's LSL endpoint-command stream) -> the task paced to
 wall-clock time, its state on the participant display (armrt.display), its events on an LSL marker stream.
 docs/tasks.md#participant-display.
 
@@ -92,6 +92,100 @@ class ArmDriver:
 
     def shoulder(self) -> np.ndarray:
         return self.arm_points()[0]
+
+
+class RunnerDriver:
+    """The hand of a running armrt-rt as the cursor (its --state-to stream, docs/realtime.md): the arm is driven from
+    outside the task (a lab's controller sending excitations or stimulation over UDP, or through the LSL bridge,
+    issue 29 item 1(b)); the task only measures. Binds host:port (UDP; loopback unless another address is named)
+    and waits up to wait_s s for the first state packet (RuntimeError naming the port when none comes). Each step
+    takes the packets that arrived (non-blocking) and keeps the newest: cursor() is its hand_position (3,) m,
+    thorax frame; gh_stab its GHstab. Datagrams that are not the model's state packets (or not signed with key) are
+    counted in .bad_packets (.last_error says why), never drawn. stale_s is the longest gap between packets seen
+    (s): a runner that stopped or a network that dropped packets shows there. dt_s: the task's sample interval (s)."""
+
+    def __init__(self, host: str = "127.0.0.1", port: int = 9870, model: str = "das2", key: bytes | None = None,
+                 dt_s: float = 0.002, wait_s: float = 5.0):
+        import socket
+
+        from . import _core, realtime
+        from .geometry import ArmGeometry
+        host, port = realtime.parse_endpoint(f"{host}:{int(port)}")
+        self.dt_s = checks.real_scalar(dt_s, "dt_s")
+        if not (math.isfinite(self.dt_s) and self.dt_s > 0):
+            raise ValueError(f"dt_s must be a finite number of seconds > 0, got {dt_s}")
+        self._rt, self._key = realtime, key
+        self._fields = realtime.state_packet_fields(model)
+        self._n = len(_core.model_info(model)["elements"])
+        self.geometry = ArmGeometry(model)
+        self._sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        try:
+            self._sock.bind((host, port))
+        except OSError as exc:
+            self._sock.close()
+            raise OSError(f"cannot listen for the runner's state on {host}:{port}: {exc.strerror}") from None
+        self.port = self._sock.getsockname()[1]
+        self.packets = self.bad_packets = 0
+        self.last_error = ""
+        self.stale_s = 0.0
+        self.packet = None
+        self._last = None
+        self._sock.settimeout(checks.real_scalar(wait_s, "wait_s"))
+        try:
+            while self.packet is None:
+                self._take(self._sock.recv(65536))
+        except (TimeoutError, socket.timeout):
+            self._sock.close()
+            why = f" ({self.bad_packets} datagrams refused: {self.last_error})" if self.bad_packets else ""
+            raise RuntimeError(f"no armrt-rt state packet on {host}:{self.port} after {wait_s:g} s{why} "
+                               f"(is the runner started with --state-to {host}:{self.port}?)") from None
+        self._sock.setblocking(False)
+
+    def _take(self, data: bytes) -> None:
+        rt = self._rt
+        try:
+            pkt = rt.StatePacket.from_packet(rt.decode_packet(data, self._key), self._fields, self._n)
+        except Exception as exc:
+            self.bad_packets += 1
+            self.last_error = str(exc)
+            return
+        now = time.perf_counter()
+        if self._last is not None:
+            self.stale_s = max(self.stale_s, now - self._last)
+        self._last = now
+        self.packets += 1
+        self.packet = pkt
+
+    def poll(self) -> None:
+        while True:
+            try:
+                data = self._sock.recv(65536)
+            except (BlockingIOError, InterruptedError):
+                return
+            self._take(data)
+
+    @property
+    def gh_stab(self) -> float:
+        return float(self.packet.gh_stab)
+
+    def cursor(self) -> np.ndarray:
+        return np.asarray(self.packet.hand_position, dtype=float)
+
+    def gh_stable(self):
+        return bool(self.packet.gh_stab <= 1.0)   # paper eq. 5, as run_task
+
+    def step(self, target) -> None:
+        self.poll()
+
+    def arm_points(self):
+        from .display import arm_points
+        return arm_points(self.geometry, np.asarray(self.packet.q, dtype=float))
+
+    def shoulder(self) -> np.ndarray:
+        return self.arm_points()[0]
+
+    def close(self) -> None:
+        self._sock.close()
 
 
 class _TargetView:

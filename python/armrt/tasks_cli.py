@@ -22,6 +22,13 @@ def add_cli(sub, formatter) -> None:
     p = sub.add_parser("task", formatter_class=formatter,
                        help="run a target task offline (simulated decoder, point cursor) and print its metrics")
     p.add_argument("kind", choices=["centre-out", "fitts", "posture"], help="the task")
+    p.add_argument("--runner-state", metavar="HOST:PORT", default=None,
+                   help="the cursor is the hand of a running armrt-rt sending its state here (armrt-rt --state-to "
+                        "HOST:PORT; ':PORT' is loopback): the arm is driven from outside the task, by a lab's "
+                        "controller sending excitations or stimulation (UDP or the LSL bridge); the task measures "
+                        "it in real time. Not with --arm or --decoder")
+    p.add_argument("--runner-model", default="das2", help="with --runner-state: the runner's model")
+    p.add_argument("--runner-wait", type=float, default=5.0, help="with --runner-state: s to wait for its first state")
     p.add_argument("--decoder", default="simulated", type=_decoder_arg, metavar="simulated|lsl:NAME",
                    help="what drives the cursor (simulated: velocity towards the target + noise + lag; lsl:NAME: "
                         "the endpoint velocity/position commands of the LSL stream NAME on this host, channels "
@@ -94,7 +101,46 @@ def _fmt(v):
     return str(v)
 
 
+def _make_task(args):
+    if args.kind == "centre-out":
+        targets = tasks.centre_out_targets(args.centre, args.distance, args.radius, args.targets)
+        return tasks.TargetTask(targets, args.dwell, args.timeout, args.iti)
+    if args.kind == "fitts":
+        targets = tasks.fitts_targets(args.centre, _conditions(args.fitts), args.per_condition)
+        return tasks.TargetTask(targets, args.dwell, args.timeout, args.iti)
+    return tasks.PostureTask(args.centre, args.radius, args.dwell, args.timeout, args.trials, args.iti)
+
+
+def _cmd_task_runner(args) -> int:
+    """--runner-state: the task over the hand of a running armrt-rt (task_live.RunnerDriver)."""
+    import sys
+    from . import task_live
+    from .realtime import parse_endpoint
+    if args.arm is not None or args.decoder != "simulated":
+        raise ValueError("--runner-state measures a runner's arm driven from outside: it takes neither --arm nor "
+                         "--decoder (drive the runner with your controller, e.g. through the LSL bridge)")
+    host, port = parse_endpoint(args.runner_state)
+    driver = task_live.RunnerDriver(host, port, model=args.runner_model, dt_s=args.dt, wait_s=args.runner_wait)
+    try:
+        if args.centre is None:
+            args.centre = driver.cursor().tolist()   # the hand where the runner's arm is now
+        task = _make_task(args)
+        max_time = len(task.targets) * (args.timeout + args.iti) + 1.0
+        stats = _run_live_with(args, task, driver, [driver.shoulder()], max_time)
+    finally:
+        driver.close()
+    print(f"armrt task {args.kind} --runner-state {args.runner_state}: the {args.runner_model} hand of a running "
+          f"armrt-rt, {driver.packets} state packets ({driver.bad_packets} refused), longest gap "
+          f"{driver.stale_s * 1e3:.1f} ms, dt {args.dt} s (real time)")
+    if driver.packets < 2:
+        print("armrt task: the runner stopped sending state during the task", file=sys.stderr)
+    _report(args, task)
+    return 0
+
+
 def cmd_task(args) -> int:
+    if args.runner_state is not None:
+        return _cmd_task_runner(args)
     arm = None
     if args.arm is not None:
         import numpy as np
@@ -107,14 +153,7 @@ def cmd_task(args) -> int:
             args.centre = arm.model.hand_position(q0).tolist()
     if args.centre is None:
         args.centre = [0.0, 0.0, 0.0]
-    if args.kind == "centre-out":
-        targets = tasks.centre_out_targets(args.centre, args.distance, args.radius, args.targets)
-        task = tasks.TargetTask(targets, args.dwell, args.timeout, args.iti)
-    elif args.kind == "fitts":
-        targets = tasks.fitts_targets(args.centre, _conditions(args.fitts), args.per_condition)
-        task = tasks.TargetTask(targets, args.dwell, args.timeout, args.iti)
-    else:
-        task = tasks.PostureTask(args.centre, args.radius, args.dwell, args.timeout, args.trials, args.iti)
+    task = _make_task(args)
     start = list(args.centre)
     if args.kind == "posture":  # start away from the held target so there is something to reach
         start[1] += 0.05
@@ -142,10 +181,16 @@ def cmd_task(args) -> int:
     finally:
         if decoder is not None:
             decoder.close()
-    rows, block = task.trial_metrics(), task.block_metrics()
     what = f"the {args.arm} hand (endpoint controller)" if arm is not None else "a point cursor"
     print(f"armrt task {args.kind} --decoder {args.decoder} driving {what}: {how}, dt {args.dt} s, seed {args.seed}"
           + (" (real time)" if live else ""))
+    _report(args, task)
+    return 0
+
+
+def _report(args, task) -> None:
+    """The metrics table on stdout, and --out."""
+    rows, block = task.trial_metrics(), task.block_metrics()
     print("  ".join(TRIAL_COLUMNS))
     for r in rows:
         print("  ".join(f"{_fmt(r[c]):>{len(c)}}" for c in TRIAL_COLUMNS))
@@ -169,7 +214,6 @@ def cmd_task(args) -> int:
         else:
             raise ValueError(f"--out must end in .json or .csv, got {args.out!r}")
         print(f"wrote {args.out}")
-    return 0
 
 
 def _run_live(args, task, arm, dec, start, max_time) -> dict:
@@ -182,16 +226,24 @@ def _run_live(args, task, arm, dec, start, max_time) -> dict:
         from .endpoint_control import EndpointController
         driver = task_live.ArmDriver(EndpointController(arm), dec)
         extra = [driver.shoulder()]
+    return _run_live_with(args, task, driver, extra, max_time)
+
+
+def _run_live_with(args, task, driver, extra, max_time) -> dict:
+    """task paced in real time with driver: the display pages (--display), the LSL outlets (--markers,
+    --task-stream); extra: points the display plane must hold besides the targets (the shoulder)."""
+    from . import task_live
+    model = args.arm or (args.runner_model if args.runner_state is not None else "cursor")
     server = markers = stream = None
     try:
         if args.task_stream is not None:
             from .lsl_bridge import TaskStateOutlet
-            stream = TaskStateOutlet(args.task_stream, "armrt-task-state", 1.0 / driver.dt_s, args.arm or "cursor")
+            stream = TaskStateOutlet(args.task_stream, "armrt-task-state", 1.0 / driver.dt_s, model)
             print(f"task state: LSL stream {args.task_stream!r} (type TaskState, source_id armrt-task-state)",
                   flush=True)
         if args.markers is not None:
             from .lsl_bridge import MarkerOutlet
-            markers = MarkerOutlet(args.markers, "armrt-task-markers", args.arm or "cursor")
+            markers = MarkerOutlet(args.markers, "armrt-task-markers", model)
             print(f"markers: LSL stream {args.markers!r} (type Markers, source_id armrt-task-markers)", flush=True)
         if args.display:
             from .display import DisplayServer, fit_plane
