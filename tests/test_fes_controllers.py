@@ -1,0 +1,130 @@
+"""The reference FES controllers (armrt.fes_control; docs/control.md "Reference FES controllers"): their building
+blocks cross-checked against the engine, and short versions of the papers' protocols against the published bounds."""
+import copy
+import math
+
+import numpy as np
+import pytest
+
+import armrt
+from armrt import fes_control as fc
+from armrt import fes_controllers_validation as v
+
+
+@pytest.fixture(scope="module")
+def setup():
+    arm = v.weakened_arm()
+    coding = fc.StimulationCoding.from_arm(arm)
+    return arm, coding, fc.chain_time_constant(arm, coding)
+
+
+# ------------------------------------------------------------------------------------------ building blocks
+def test_coding_inverts_the_engines_recruitment(setup):
+    """pulse_width(R) is the inverse of the engine's recruitment law (Arm.recruitment_fraction, computed in C++)."""
+    arm, coding, _ = setup
+    r = np.linspace(0.02, 1.0, len(coding.channel_names))
+    pw = coding.pulse_width(r)
+    engine = [arm.recruitment_fraction(c, pw[k], coding.amplitude_A) for k, c in enumerate(coding.channel_names)]
+    np.testing.assert_allclose(engine, r, atol=1e-9)
+    assert np.all(coding.pulse_width(np.zeros(len(r))) == 0.0)
+    assert np.all(coding.pulse_width(np.ones(len(r))) <= coding.max_pulse_width_s)
+
+
+def test_coded_level_is_the_force_level_the_engine_settles_to(setup):
+    """command(level) gives, once the rested chain settles, the Ding force level asked for (0.1, 0.3, 0.6)."""
+    arm, coding, _ = setup
+    levels = np.resize([0.1, 0.3, 0.6], len(coding.channel_names)) * coding.fused / coding.fused.max()
+    m = dict(arm.stimulation_map(), fatigue=False)
+    probe = armrt.Arm("das2", stimulation=m)
+    probe.set_stimulation(coding.command(levels))
+    probe.step(700)
+    got = np.zeros(len(levels))
+    for _ in range(300):
+        probe.step(1)
+        got += [probe.force_level[c] for c in probe.channel_names]
+    np.testing.assert_allclose(got / 300, levels, rtol=0.02, atol=2e-3)
+
+
+def test_minimum_jerk_derivatives_match_finite_differences():
+    t = np.linspace(-0.2, 1.4, 1601)
+    q, qd, qdd = fc.minimum_jerk([0.1, 0.2], [0.5, -0.2], 0.0, 1.2, t)
+    smooth = (np.abs(t) > 0.01) & (np.abs(t - 1.2) > 0.01)   # the jerk jumps at the ends
+    np.testing.assert_allclose(np.gradient(q, t, axis=0)[smooth], qd[smooth], atol=1e-5)
+    np.testing.assert_allclose(np.gradient(qd, t, axis=0)[smooth], qdd[smooth], atol=1e-4)
+    assert np.allclose(q[t <= 0], [0.1, 0.2]) and np.allclose(q[t >= 1.2], [0.5, -0.2])
+    with pytest.raises(ValueError, match="duration"):
+        fc.minimum_jerk([0.0], [1.0], 0.0, 0.0, t)
+
+
+def test_pole_placement_puts_the_four_poles_at_minus_one_over_four_lags():
+    p = fc.PIDParams.pole_placement(0.1)
+    roots = np.roots([0.1, 1.0, p.kd, p.kp, p.ki])   # tau s^4 + s^3 + kd s^2 + kp s + ki
+    np.testing.assert_allclose(roots.real, -2.5, atol=2e-3 * 2.5 * 10)
+    assert np.abs(roots.imag).max() < 0.05 and p.preview_s == 0.1
+    with pytest.raises(ValueError, match="lag_s"):
+        fc.PIDParams.pole_placement(0.0)
+    with pytest.raises(ValueError, match="kp"):
+        fc.PIDParams(kp=-1.0, ki=0.0, kd=0.0)
+
+
+def test_channel_static_optimisation_balances_the_moments(setup):
+    """The channel levels' element activations supply inverse dynamics' moments (the engine's muscle model)."""
+    arm, coding, _ = setup
+    model = fc.model_arm(arm)
+    so = fc.ChannelStaticOptimizer(model, coding)
+    q = arm.rest_posture.copy()
+    q[arm.dof_index("ELx")] += math.radians(40)
+    levels, res = so.solve_levels(q, np.zeros(arm.n_dofs), np.zeros(arm.n_dofs))
+    assert res.feasible and np.abs(res.residual).max() < 1e-3
+    assert np.all(levels >= 0) and np.all(levels <= so.level_max + 1e-12)
+    # the activations the plant's stimulation stage gives those levels: min(max_activation, w level)
+    np.testing.assert_allclose(res.activation, np.minimum(so.S @ levels, model.max_activation))
+
+
+def test_controllers_check_their_inputs(setup):
+    arm, coding, tau = setup
+    t, q = v.movement_reference(arm, {"ELx": 10.0}, 1.0)
+    ctl = fc.FeedforwardPID(fc.model_arm(arm), coding, (t, q), fc.PIDParams.pole_placement(tau))
+    with pytest.raises(ValueError, match="shape"):
+        ctl.update(0.0, np.zeros(3), np.zeros(5))
+    with pytest.raises(ValueError, match="NaN"):
+        ctl.update(0.0, np.full(5, np.nan), np.zeros(5))
+    with pytest.raises(ValueError, match="without a stimulation map"):
+        fc.FeedforwardPID(arm, coding, (t, q), fc.PIDParams.pole_placement(tau))
+    with pytest.raises(ValueError, match="stimulation map"):
+        fc.StimulationCoding.from_arm(armrt.Arm("das2"))
+    with pytest.raises(ValueError, match="channels"):
+        fc.run_offline(armrt.Arm("das2", stimulation={"channels": [{"name": "f", "elements": ["bicl"]}]}), ctl, 0.1)
+
+
+# ------------------------------------------------------------------------------------------ (a) Blana 2009
+def test_blana_feedforward_pid_tracks_within_4_deg_ideal_and_10_deg_fatigued(setup):
+    """Blana, Kirsch & Chadwick 2009: < 4 deg in ideal conditions, < 10 deg with fatigue; the PID does the work the
+    feedforward alone cannot under fatigue."""
+    mv = v.BLANA_MOVEMENTS[-1]   # shoulder and elbow together
+    ideal = v.blana_trial(mv, setup=setup)
+    assert ideal["rms_deg"] < 4.0 and ideal["max_deg"] < 4.0
+    fatigued = v.blana_trial(mv, fatigue_s=10.0, setup=setup)
+    assert 0.2 < fatigued["fatigue"] < 0.4          # the fatigue is there (1 - A/A_rest)
+    assert fatigued["rms_deg"] < 10.0 and fatigued["max_deg"] < 10.0
+    open_loop = v.blana_trial(mv, fatigue_s=10.0, gains="feedforward", setup=setup)
+    assert open_loop["rms_deg"] > 1.2 * fatigued["rms_deg"]
+
+
+def test_blana_disturbance_is_corrected(setup):
+    mv = v.BLANA_MOVEMENTS[0]
+    r = v.blana_trial(mv, disturbance_N=2.0, setup=setup)
+    assert r["rms_deg"] < 10.0
+    # after the pulse (0.5 s from the movement's middle) the error falls to less than half its peak by the end
+    run = r["run"]
+    assert np.abs(np.degrees(run.q[-1] - run.q_ref[-1])).max() < 0.5 * r["max_deg"]
+
+
+@pytest.mark.slow
+def test_blana_full_protocol_table():
+    rows = v.blana(None)
+    for r in rows:
+        if r["condition"] == "ideal":
+            assert r["rms_deg"] < 4.0, r["movement"]
+        if r["condition"] in ("fatigue 10 s", "disturbance 2 N", "disturbance 5 N"):
+            assert r["rms_deg"] < 10.0, (r["condition"], r["movement"])
