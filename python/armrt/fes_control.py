@@ -471,15 +471,19 @@ class PDController:
     one with set_target.
 
     model: an Arm of the plant's model (moment arms), coding: StimulationCoding, target (ndof,) rad, params:
-    PDParams, dofs: the DOF names fed back (default all; the others get no feedback)."""
+    PDParams, dofs: the DOF names fed back (default all; the others get no feedback), schedule: [(t s, target)]
+    targets that take over at their times."""
 
-    def __init__(self, model, coding: StimulationCoding, target, params: PDParams, dofs=None):
+    def __init__(self, model, coding: StimulationCoding, target, params: PDParams, dofs=None, schedule=()):
         self.model, self.coding, self.params = model, coding, params
         names = model.dof_names
         self.dofs = list(names) if dofs is None else [names[model.dof_index(d)] for d in dofs]
         self._cols = [names.index(d) for d in self.dofs]
         self.state = PDState(target=np.zeros(model.n_dofs))
         self.set_target(target)
+        # [(t s, target (ndof,) rad)]: from each time on, its target (a reaching trial's step)
+        self.schedule = sorted([(real_scalar(t, "schedule time"), _state_vectors(model, q, np.zeros(model.n_dofs))[0])
+                                for t, q in schedule], key=lambda x: x[0])
 
     def set_target(self, target) -> None:
         """A new target posture (ndof,) rad: G is recomputed from the moment arms there."""
@@ -496,8 +500,10 @@ class PDController:
 
     def update(self, t, q, qdot) -> np.ndarray:
         """(C, 3) stimulation for the state (t s, q (ndof,) rad, qdot (ndof,) rad/s)."""
-        real_scalar(t, "t")
+        t = real_scalar(t, "t")
         q, qdot = _state_vectors(self.model, q, qdot)
+        while self.schedule and self.schedule[0][0] <= t + 1e-12:
+            self.set_target(self.schedule.pop(0)[1])
         p = self.params
         drive = p.kp * (self.state.target - q) - p.kd * qdot
         r = np.clip(self.gain_structure @ drive, 0.0, 1.0)
@@ -522,7 +528,7 @@ def _state_vectors(model, q, qdot) -> tuple[np.ndarray, np.ndarray]:
 @dataclass
 class ControlRun:
     """An offline run: per control update (K rows) time (K,) s, q and q_ref (K, ndof) rad, stimulation (K, C, 3),
-    gh_stab (K,), fatigue (K, C) 1 - A/A_rest, update_s (K,) the controller's update time (wall clock, this
+    gh_stab (K,), fatigue (K, C) 1 - A/A_rest, force_total (K,) N the sum of every element's tendon force, update_s (K,) the controller's update time (wall clock, this
     machine: information, not a claim)."""
     time: np.ndarray
     q: np.ndarray
@@ -531,6 +537,7 @@ class ControlRun:
     gh_stab: np.ndarray
     fatigue: np.ndarray
     update_s: np.ndarray
+    force_total: np.ndarray | None = None
     channel_names: list = field(default_factory=list)
 
     def error_deg(self, dofs, model, t_from: float = -np.inf, t_to: float = np.inf) -> dict:
@@ -567,13 +574,14 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
     nq, C = plant.n_dofs, len(names)
     out = ControlRun(time=np.empty(n + 1), q=np.empty((n + 1, nq)), q_ref=np.empty((n + 1, nq)),
                      stimulation=np.zeros((n + 1, C, 3)), gh_stab=np.empty(n + 1), fatigue=np.empty((n + 1, C)),
-                     update_s=np.zeros(n + 1), channel_names=list(names))
+                     update_s=np.zeros(n + 1), force_total=np.zeros(n + 1), channel_names=list(names))
 
     def record(k, cmd, dt_upd):
         fat = plant.fatigue
         out.time[k], out.q[k], out.q_ref[k] = plant.time, plant.q, reference(plant.time)
         out.gh_stab[k], out.fatigue[k] = plant.gh_stab, [fat[c] for c in names]
         out.stimulation[k], out.update_s[k] = cmd, dt_upd
+        out.force_total[k] = float(np.sum(plant.outputs()["muscle_force"]))
 
     record(0, np.zeros((C, 3)), 0.0)
     sl = plant.state_vector_slices()
