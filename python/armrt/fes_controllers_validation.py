@@ -369,6 +369,29 @@ def _plot_jagodnik(conds, path, arm):
     print(f"wrote {path}")
 
 
+# ------------------------------------------------------------------------------------------ over UDP
+def jagodnik_udp_controller(arm, coding, t_start: float, lead_s: float):
+    """(b) for examples/fes_controllers_udp.py: the saved gains hold the runner's start posture (rest) for lead_s s
+    of simulated time from t_start, then reach the first test movement's target; (controller, dofs, t_from, t_end)."""
+    kp, kd = saved_pd_gains()
+    target = pd_movements(1, 2, arm.rest_posture)[0][1]
+    ctl = fc.PDController(arm, coding, arm.rest_posture, fc.PDParams(kp, kd), schedule=[(t_start + lead_s, target)])
+    return ctl, list(PD_DOFS), t_start + lead_s, t_start + lead_s + PD_TRIAL_S
+
+
+def posture_udp_controller(arm, coding, tau, t_start: float, lead_s: float, limit: float = 0.03,
+                           duration: float = 5.0):
+    """(c) for examples/fes_controllers_udp.py: the posture of posture_trial without the hand weight (the runner
+    takes no hand load; unconstrained, that hold's GHstab is 0.038) and GHstab <= limit; (controller, dofs, t_from,
+    t_end)."""
+    q = arm.rest_posture.copy()
+    q[arm.dof_index("GHy")] += POSTURE_GHY_RAD
+    t = np.array([t_start, t_start + 1.0, t_start + 2.0, t_start + lead_s + duration + 1.0])
+    ctl = fc.FeedforwardPID(fc.model_arm(arm), coding, (t, np.tile(q, (4, 1))),
+                            fc.PIDParams.pole_placement(tau, gh_stab_max=limit))
+    return ctl, ["GHy"], t_start + lead_s, t_start + lead_s + duration
+
+
 # ------------------------------------------------------------------------------------------ (c) posture, GHstab limit
 #: (c): the humerus held elevated POSTURE_GHY_RAD above rest (examples/posture_gh_limit.py's posture) with a
 #: POSTURE_HAND_KG weight in the hand, for POSTURE_S s under stimulation with Ding fatigue, by FeedforwardPID whose
@@ -382,14 +405,14 @@ POSTURE_LIMITS = (None, 0.08, 0.06, 0.04)
 G = 9.81
 
 
-def posture_trial(limit, duration: float = POSTURE_S, setup=None) -> dict:
+def posture_trial(limit, duration: float = POSTURE_S, setup=None, hand_kg: float = POSTURE_HAND_KG) -> dict:
     """One posture hold of (c): returns rms_deg / max_deg (largest per-DOF error after the first second),
     gh_stab_max (the simulated arm's), model_gh_stab_max (the inverse model's), infeasible updates, run."""
     arm, coding, tau = setup if setup is not None else _setup()
     plant = __import__("copy").deepcopy(arm)
     q = plant.rest_posture.copy()
     q[plant.dof_index("GHy")] += POSTURE_GHY_RAD
-    load = (0.0, -POSTURE_HAND_KG * G, 0.0)
+    load = (0.0, -hand_kg * G, 0.0)
     plant.set_hand_load(load)
     plant.reset(q=q)
     t = np.array([0.0, 1.0, 2.0, duration + 1.0])
@@ -418,7 +441,7 @@ def posture(out: Path | None = None, duration: float = POSTURE_S, limits=POSTURE
     for lim in limits:
         r = posture_trial(lim, duration, setup)
         rows.append(r)
-        print(f"| {'none' if lim is None else lim} | {r['gh_stab_max']:.3f} | {r['model_gh_stab_max']:.3f} | "
+        print(f"| {'none' if lim is None else lim} | {r['gh_stab_max']:.4f} | {r['model_gh_stab_max']:.4f} | "
               f"{r['rms_deg']:.2f} | {r['max_deg']:.2f} | {r['fatigue_end']:.2f} | {r['infeasible']} |")
     if out is not None:
         import matplotlib  # noqa: PLC0415
