@@ -142,15 +142,23 @@ def _udp_example():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("kind", ["blana"])
+@pytest.mark.parametrize("kind", ["blana", "jagodnik", "posture"])
 def test_controller_runs_as_a_separate_process_against_the_realtime_runner(kind):
-    """The controller process joins armrt-rt over UDP and tracks; its loop times are reported (not bounded: wall
-    clock on a shared machine), the runner applied its stimulation packets."""
-    out = _udp_example().main(["--controller", kind])
+    """The controller process joins armrt-rt over UDP and controls the arm; its loop times are reported (not bounded:
+    wall clock on a shared machine) and the runner applied its stimulation packets."""
+    mod = _udp_example()
+    out = mod.main(["--controller", kind])
     assert out["cycles"] > 100 and out["runner"]["stimulation_applied"] > 100
-    # RMS within Blana's 10 deg: the loop's late and irregular updates on a shared machine act as a disturbance
-    assert max(out["rms_deg"].values()) < 10.0
     assert {"p50", "p90", "p99", "max"} <= set(out["compute_us"]) and out["compute_us"]["p50"] > 0
+    if kind == "blana":
+        # RMS within Blana's 10 deg: the loop's late and irregular updates on a shared machine act as a disturbance
+        assert max(out["rms_deg"].values()) < 10.0
+    elif kind == "jagodnik":
+        assert max(out["final_deg"][d] for d in ("GHy", "ELx")) < 5.0     # arrived (Jagodnik's 5 deg criterion)
+    else:
+        # below the unconstrained (unloaded) hold's 0.038: the bound lowers GHstab; over UDP, with late updates and
+        # no supported start, it is not kept exactly (0.034 against 0.03 measured, docs/control.md)
+        assert out["gh_stab_max"] < 0.038 and max(out["max_deg"].values()) < 5.0
 
 
 # ------------------------------------------------------------------------------------------ (b) Jagodnik 2010
