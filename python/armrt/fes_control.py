@@ -32,9 +32,9 @@ from .checks import real_array, real_scalar
 #: saturation and the NNP device maximum) and 20 Hz, the lowest rate at which Ding 2003's force fuses (ripple 1.6 %).
 AMPLITUDE_A = 0.020
 FREQUENCY_HZ = 20.0
-CONTROL_INTERVAL_S = 0.01
+CONTROL_INTERVAL_S = 0.01  # s: 100 Hz, as examples/fes_elbow_hold_pi.py and Thelen 2003's 10 ms
 #: Activation step of the channel optimiser's secant slopes (ChannelStaticOptimizer).
-SECANT = 0.02  # 100 Hz, as examples/fes_elbow_hold_pi.py and Thelen 2003's 10 ms
+SECANT = 0.02
 
 
 def minimum_jerk(q0, q1, t0: float, duration: float, t) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -338,14 +338,17 @@ def ChannelStaticOptimizer(model, coding, gh_stab_max=None, iterations: int = 6)
 class PIDParams:
     """Feedback gains of FeedforwardPID on the joint-angle error (per DOF, the same for all): kp s^-2, ki s^-3,
     kd s^-1 (PIDParams.pole_placement derives them from the stimulated force's lag), preview_s (s: how far ahead of
-    the control interval the reference and the posture are taken), integral_limit rad s (anti-windup:
-    the integral of the error is held within +-integral_limit), control_interval_s (the update period the
+    the control interval the reference and the posture are taken), integral_limit rad s (anti-windup: the integral of
+    the error is held within +-integral_limit; default 10: through the inverse model ki x 10 rad s is 32 rad/s^2 at the
+    pole-placed ki, about the elbow's whole gravitational moment, 3.2 N m on its 0.083 kg m^2 at the two-joint
+    movement's end, so the integral can make up for a loss of force up to all of it; a bound of 1 rad s held the
+    fatigued elbow 22 deg low for good, docs/control.md), control_interval_s (the update period the
     controller assumes for its one-step prediction), gh_stab_max (None, or the GHstab bound of the inverse model)."""
     kp: float
     ki: float
     kd: float
     preview_s: float = 0.0
-    integral_limit: float = 1.0
+    integral_limit: float = 10.0
     control_interval_s: float = CONTROL_INTERVAL_S
     gh_stab_max: float | None = None
 

@@ -15,6 +15,7 @@ not name, intact) and one intramuscular channel per muscle (stimulation="per_mus
 from __future__ import annotations
 
 import argparse
+import copy
 import json
 import math
 from pathlib import Path
@@ -89,26 +90,29 @@ def hand_pulse(force_N: float, t_on: float, length_s: float = 0.5):
     return load
 
 
-def movement_reference(arm, amplitude_deg: dict, duration: float, dt: float = 0.01):
-    """(time (T,), q_ref (T, ndof)): HOLD_S at rest, a minimum-jerk movement of duration s, AFTER_S at its end."""
+def movement_reference(arm, amplitude_deg: dict, duration: float, dt: float = 0.01, after_s: float = AFTER_S):
+    """(time (T,), q_ref (T, ndof)): HOLD_S at rest, a minimum-jerk movement of duration s, after_s at its end."""
     q0 = arm.rest_posture.copy()
     q1 = q0.copy()
     for d, a in amplitude_deg.items():
         q1[arm.dof_index(d)] += math.radians(a)
-    t = np.arange(0.0, HOLD_S + duration + AFTER_S + 1e-9, dt)
+    t = np.arange(0.0, HOLD_S + duration + after_s + 1e-9, dt)
     q, _, _ = fc.minimum_jerk(q0, q1, HOLD_S, duration, t)
     return t, q
 
 
-def blana_trial(movement, fatigue_s: float = 0.0, disturbance_N: float = 0.0, gains: str = "pid", setup=None):
+def blana_trial(movement, fatigue_s: float = 0.0, disturbance_N: float = 0.0, gains: str = "pid", setup=None,
+                after_s: float = AFTER_S, integral_limit: float | None = None):
     """One trial of (a): returns {"run": ControlRun, "rms_deg": the largest per-DOF RMS error, "max_deg": the largest
     error, both over the movement and the hold after it, "per_dof": ControlRun.error_deg, "infeasible": updates}.
     gains: "pid" (PIDParams.pole_placement of the measured lag) or "feedforward" (no feedback)."""
     name, amp, dur = movement
     arm, coding, tau = setup if setup is not None else _setup()
-    plant = arm.copy() if hasattr(arm, "copy") else __import__("copy").deepcopy(arm)
-    t, q = movement_reference(plant, amp, dur)
+    plant = copy.deepcopy(arm)   # an independent Arm with the same settings (Arm.__deepcopy__)
+    t, q = movement_reference(plant, amp, dur, after_s=after_s)
     params = fc.PIDParams.pole_placement(tau)
+    if integral_limit is not None:
+        params.integral_limit = float(integral_limit)
     if gains == "feedforward":
         params.kp = params.ki = params.kd = 0.0
     ctl = fc.FeedforwardPID(fc.model_arm(plant), coding, (t, q), params)
@@ -144,6 +148,18 @@ def blana(out: Path | None = None, movements=None, conditions=None) -> list[dict
             rows.append(r)
             print(f"| {cond} | {mv[0]} | {r['rms_deg']:.2f} | {r['max_deg']:.2f} | {r['fatigue']:.2f} | "
                   f"{r['infeasible']} |")
+    # How long the slow integral needs: the two-joint movement at 0.52 fatigue, held 10 s after it instead of 1 s,
+    # with the anti-windup bound at its default and at 1 rad s.
+    if movements is None and conditions is None:
+        for bound in (fc.PIDParams.pole_placement(tau).integral_limit, 1.0):
+            r = blana_trial(BLANA_MOVEMENTS[-1], 20.0, setup=setup, after_s=10.0, integral_limit=bound)
+            run = r["run"]
+            errs = []
+            for t_after in (1.0, 3.0, 6.0, 10.0):
+                k = np.argmin(np.abs(run.time - (run.time[-1] - 10.0 + t_after)))
+                errs.append(f"{t_after:g} s {np.degrees(np.abs(run.q[k] - run.q_ref[k])).max():.2f}")
+            print(f"fatigue 20 s, {BLANA_MOVEMENTS[-1][0]}, integral bound {bound:g} rad s: largest error (deg) "
+                  f"after the movement: " + ", ".join(errs))
     if out is not None:
         _plot_blana(rows, Path(out) / "fes_blana_pid.png")
     return rows
@@ -239,7 +255,7 @@ def pd_trial(kp: float, kd: float, movement, setup, hand_force=None, strength_sc
     PD_TRIAL_S s follow. Returns error_deg, ss_error_deg (None if failed), effort_N, failed, run."""
     arm, coding, _ = setup
     start, target = movement
-    plant = __import__("copy").deepcopy(arm)
+    plant = copy.deepcopy(arm)
     if strength_scale is not None:
         plant.strength = plant.strength * strength_scale
     plant.reset(q=start)
@@ -409,7 +425,7 @@ def posture_trial(limit, duration: float = POSTURE_S, setup=None, hand_kg: float
     """One posture hold of (c): returns rms_deg / max_deg (largest per-DOF error after the first second),
     gh_stab_max (the simulated arm's), model_gh_stab_max (the inverse model's), infeasible updates, run."""
     arm, coding, tau = setup if setup is not None else _setup()
-    plant = __import__("copy").deepcopy(arm)
+    plant = copy.deepcopy(arm)
     q = plant.rest_posture.copy()
     q[plant.dof_index("GHy")] += POSTURE_GHY_RAD
     load = (0.0, -hand_kg * G, 0.0)
