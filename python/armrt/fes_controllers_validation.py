@@ -138,6 +138,8 @@ def blana(out: Path | None = None, movements=None, conditions=None) -> list[dict
     setup = _setup()
     arm, coding, tau = setup
     p = fc.PIDParams.pole_placement(tau)
+    print(f"coding: {coding.amplitude_A * 1e3:g} mA, {coding.frequency_Hz:g} Hz, fused level "
+          f"{coding.fused.min():.3f}-{coding.fused.max():.3f} (steady_force_level)")
     print(f"(a) Blana 2009 feedforward + PID: stimulated-force lag {tau * 1e3:.0f} ms (chain_time_constant); gains "
           f"kp {p.kp:.3g} s^-2, ki {p.ki:.3g} s^-3, kd {p.kd:.3g} s^-1, preview {p.preview_s * 1e3:.0f} ms")
     rows = []
