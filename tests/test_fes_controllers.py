@@ -1,6 +1,5 @@
 """The reference FES controllers (armrt.fes_control; docs/control.md "Reference FES controllers"): their building
 blocks cross-checked against the engine, and short versions of the papers' protocols against the published bounds."""
-import copy
 import math
 
 import numpy as np

@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .checks import real_array, real_scalar
+from .control import _INF, StaticOptimizer, _state
 
 #: Implanted-system coding (docs/fes.md): pulse width modulated at a held 20 mA (the intramuscular channels'
 #: saturation and the NNP device maximum) and 20 Hz, the lowest rate at which Ding 2003's force fuses (ripple 1.6 %).
@@ -236,101 +237,91 @@ def model_arm(arm):
 
 
 # ------------------------------------------------------------------------------------------ inverse model
-def _channel_optimizer_class():
-    from .control import _INF, StaticOptimizer  # noqa: PLC0415 (control is imported lazily: no import cycle)
+class ChannelStaticOptimizer(StaticOptimizer):
+    """Static optimisation in the stimulator's channel space: the levels (C,) of the channels, each driving its
+    elements together (element activation min(max_activation, w level), as the engine's stimulation stage), that
+    supply the moments of inverse dynamics with the least sum of squared levels; GHstab <= gh_stab_max as
+    StaticOptimizer's polygon. Element-wise static optimisation (StaticOptimizer) would ask elements of one
+    muscle for different activations that one electrode cannot give. Sequential QP on the elastic-tendon model
+    (steady_forces, slopes as secants) with free moment residuals weighted 1e4 above the levels (StaticOptimizer's
+    slack form), so an infeasible posture returns the closest levels (feasible False) instead of failing mid-trial.
+    solve_levels(q, qdot, qddot) -> (levels (C,), StaticOptimizationResult of their element activations)."""
 
-    class ChannelStaticOptimizer(StaticOptimizer):
-        """Static optimisation in the stimulator's channel space: the levels (C,) of the channels, each driving its
-        elements together (element activation min(max_activation, w level), as the engine's stimulation stage), that
-        supply the moments of inverse dynamics with the least sum of squared levels; GHstab <= gh_stab_max as
-        StaticOptimizer's polygon. Element-wise static optimisation (StaticOptimizer) would ask elements of one
-        muscle for different activations that one electrode cannot give. Sequential QP on the elastic-tendon model
-        (steady_forces, slopes as secants) with free moment residuals weighted 1e4 above the levels (StaticOptimizer's slack form), so
-        an infeasible posture returns the closest levels (feasible False) instead of failing mid-trial."""
+    def __init__(self, model, coding, gh_stab_max=None, iterations: int = 6):
+        super().__init__(model, gh_stab_max=gh_stab_max)
+        n, C = model.n_elements, len(coding.channel_names)
+        S = np.zeros((n, C))
+        for c, (i, w) in enumerate(zip(coding.element_index, coding.weights)):
+            S[i, c] = w
+        self.S, self.coding, self.iterations = S, coding, int(iterations)
+        amax = np.asarray(model.max_activation, float)
+        # A channel's level goes at most to its fused force level, and to the lowest cap of its elements
+        # (max_activation / weight): within it no element saturates, so the moments are smooth in the levels.
+        # Above it the elements with higher caps could still give more (brachialis: caps 0.12-0.19 in
+        # participant_A_FES); a Jacobian switching as elements saturate made the SQP cycle between two points.
+        self.level_max = np.minimum(coding.fused, np.array([float(np.min(amax[i] / w)) for i, w in
+                                                            zip(coding.element_index, coding.weights)]))
+        self.last_levels = np.zeros(C)
+        self.reached = S.sum(axis=1) > 0
 
-        def __init__(self, model, coding, gh_stab_max=None, iterations: int = 6):
-            super().__init__(model, gh_stab_max=gh_stab_max)
-            n, C = model.n_elements, len(coding.channel_names)
-            S = np.zeros((n, C))
-            for c, (i, w) in enumerate(zip(coding.element_index, coding.weights)):
-                S[i, c] = w
-            self.S, self.coding, self.iterations = S, coding, int(iterations)
-            amax = np.asarray(model.max_activation, float)
-            # A channel's level goes at most to its fused force level, and to the lowest cap of its elements
-            # (max_activation / weight): within it no element saturates, so the moments are smooth in the levels.
-            # Above it the elements with higher caps could still give more (brachialis: caps 0.12-0.19 in
-            # participant_A_FES); a Jacobian switching as elements saturate made the SQP cycle between two points.
-            self.level_max = np.minimum(coding.fused, np.array([float(np.min(amax[i] / w)) for i, w in
-                                                                zip(coding.element_index, coding.weights)]))
-            self.last_levels = np.zeros(C)
-            self.reached = S.sum(axis=1) > 0
-
-        def solve_levels(self, q, qdot, qddot):
-            """(levels (C,), StaticOptimizationResult of the element activations they give)."""
-            from proxsuite import proxqp  # noqa: PLC0415
-            from .control import _state  # noqa: PLC0415
-            model, sim = self.model, self._sim
-            q, qd, qdd = _state(model, q, qdot, qddot)
-            idyn = sim.inverse_dynamics(q, qd, qdd, np.array(sim.hand_force), np.array(sim.hand_moment))
-            tau_req = idyn["tau_muscle"]
-            L, R = sim.muscle_paths(q)
-            v = np.ascontiguousarray(-(R @ qd))
-            P = self._axes @ sim.gh_directions(q).T
-            f0 = self._axes @ idyn["gh_force_without_muscles"]
-            amax = np.asarray(sim.get_max_activation(), float)
-            self._rigid = sim.rigid_tendon_forces(L, v)
-            if self._lce_guess is None or self._last_L is None or np.abs(L - self._last_L).max() > 0.01:
-                self._lce_guess = self._rigid[0].copy()
-            self._last_L = L
-            C, nq = self.S.shape[1], model.n_dofs
-            n_in = self._gh_rows.shape[0]
-            lv = np.clip(self.last_levels, 0.0, self.level_max)
-            H = np.zeros((C + nq, C + nq))
-            H[np.arange(C), np.arange(C)] = 2e-4
-            H[np.arange(C, C + nq), np.arange(C, C + nq)] = 2.0
-            g = np.zeros(C + nq)
-            lbox = np.concatenate([np.zeros(C), -_INF * np.ones(nq)])
-            ubox = np.concatenate([self.level_max, _INF * np.ones(nq)])
-            it = 0
-            for it in range(1, self.iterations + 1):
-                a = np.minimum(self.S @ lv, amax)
-                lce, F, _ = self._forces(L, v, a)
-                # Slopes as secants over +SECANT in activation: at a = 0 the element's tangent is ~0 (the damper's
-                # low-activation floor, muscle.cc), which would keep an unused channel unused for good.
-                guess = self._lce_guess
-                _, F_hi, _ = self._sim.steady_forces(L, v, np.minimum(a + SECANT, 1.0), lce)
-                self._lce_guess = guess
-                dF = (F_hi - F) / (np.minimum(a + SECANT, 1.0) - a + 1e-300)
-                J = dF[:, None] * self.S      # (n, C): dF/dlevel (no element is above its cap: level_max)
-                A = R.T @ J
-                b = tau_req - R.T @ F + A @ lv
-                A_ = np.hstack([A, np.eye(nq)])
-                if n_in:
-                    Cg = self._gh_rows @ P @ J
-                    ug = -(self._gh_rows @ (f0 + P @ F - P @ J @ lv))
-                    C_ = np.hstack([Cg, np.zeros((n_in, nq))])
-                qp = proxqp.dense.QP(C + nq, nq, n_in, True)
-                qp.settings.eps_abs, qp.settings.eps_rel, qp.settings.verbose = 1e-9, 0.0, False
-                qp.init(H, g, A_, b, C_ if n_in else None, np.full(n_in, -_INF) if n_in else None,
-                        ug if n_in else None, lbox, ubox)
-                qp.solve()
-                new = np.clip(qp.results.x[:C], 0.0, self.level_max)
-                step = float(np.abs(new - lv).max())
-                lv = new
-                if step < 1e-6:
-                    break
+    def solve_levels(self, q, qdot, qddot):
+        """(levels (C,), StaticOptimizationResult of the element activations they give)."""
+        from proxsuite import proxqp  # noqa: PLC0415 (a dependency, imported where the solver runs, as control.py)
+        model, sim = self.model, self._sim
+        q, qd, qdd = _state(model, q, qdot, qddot)
+        idyn = sim.inverse_dynamics(q, qd, qdd, np.array(sim.hand_force), np.array(sim.hand_moment))
+        tau_req = idyn["tau_muscle"]
+        L, R = sim.muscle_paths(q)
+        v = np.ascontiguousarray(-(R @ qd))
+        P = self._axes @ sim.gh_directions(q).T
+        f0 = self._axes @ idyn["gh_force_without_muscles"]
+        amax = np.asarray(sim.get_max_activation(), float)
+        self._rigid = sim.rigid_tendon_forces(L, v)
+        if self._lce_guess is None or self._last_L is None or np.abs(L - self._last_L).max() > 0.01:
+            self._lce_guess = self._rigid[0].copy()
+        self._last_L = L
+        C, nq = self.S.shape[1], model.n_dofs
+        n_in = self._gh_rows.shape[0]
+        lv = np.clip(self.last_levels, 0.0, self.level_max)
+        H = np.zeros((C + nq, C + nq))
+        H[np.arange(C), np.arange(C)] = 2e-4
+        H[np.arange(C, C + nq), np.arange(C, C + nq)] = 2.0
+        g = np.zeros(C + nq)
+        lbox = np.concatenate([np.zeros(C), -_INF * np.ones(nq)])
+        ubox = np.concatenate([self.level_max, _INF * np.ones(nq)])
+        it = 0
+        for it in range(1, self.iterations + 1):
             a = np.minimum(self.S @ lv, amax)
             lce, F, _ = self._forces(L, v, a)
-            ok = float(np.abs(R.T @ F - tau_req).max()) < 1e-3  # N m: what the levels leave unbalanced
-            self.last_levels = lv
-            return lv, self._result(a, lce, F, L, v, R, P, f0, tau_req, amax, it, feasible=ok)
-
-    return ChannelStaticOptimizer
-
-
-def ChannelStaticOptimizer(model, coding, gh_stab_max=None, iterations: int = 6):  # noqa: N802 (a class factory)
-    """The inverse model of FeedforwardPID (see its class docstring: _channel_optimizer_class)."""
-    return _channel_optimizer_class()(model, coding, gh_stab_max=gh_stab_max, iterations=iterations)
+            # Slopes as secants over +SECANT in activation: at a = 0 the element's tangent is ~0 (the damper's
+            # low-activation floor, muscle.cc), which would keep an unused channel unused for good.
+            guess = self._lce_guess
+            _, F_hi, _ = self._sim.steady_forces(L, v, np.minimum(a + SECANT, 1.0), lce)
+            self._lce_guess = guess
+            dF = (F_hi - F) / (np.minimum(a + SECANT, 1.0) - a + 1e-300)
+            J = dF[:, None] * self.S      # (n, C): dF/dlevel (no element is above its cap: level_max)
+            A = R.T @ J
+            b = tau_req - R.T @ F + A @ lv
+            A_ = np.hstack([A, np.eye(nq)])
+            if n_in:
+                Cg = self._gh_rows @ P @ J
+                ug = -(self._gh_rows @ (f0 + P @ F - P @ J @ lv))
+                C_ = np.hstack([Cg, np.zeros((n_in, nq))])
+            qp = proxqp.dense.QP(C + nq, nq, n_in, True)
+            qp.settings.eps_abs, qp.settings.eps_rel, qp.settings.verbose = 1e-9, 0.0, False
+            qp.init(H, g, A_, b, C_ if n_in else None, np.full(n_in, -_INF) if n_in else None,
+                    ug if n_in else None, lbox, ubox)
+            qp.solve()
+            new = np.clip(qp.results.x[:C], 0.0, self.level_max)
+            step = float(np.abs(new - lv).max())
+            lv = new
+            if step < 1e-6:
+                break
+        a = np.minimum(self.S @ lv, amax)
+        lce, F, _ = self._forces(L, v, a)
+        ok = float(np.abs(R.T @ F - tau_req).max()) < 1e-3  # N m: what the levels leave unbalanced
+        self.last_levels = lv
+        return lv, self._result(a, lce, F, L, v, R, P, f0, tau_req, amax, it, feasible=ok)
 
 
 # ------------------------------------------------------------------------------------------ controllers
@@ -531,8 +522,8 @@ def _state_vectors(model, q, qdot) -> tuple[np.ndarray, np.ndarray]:
 @dataclass
 class ControlRun:
     """An offline run: per control update (K rows) time (K,) s, q and q_ref (K, ndof) rad, stimulation (K, C, 3),
-    gh_stab (K,), fatigue (K, C) 1 - A/A_rest, force_total (K,) N the sum of every element's tendon force, update_s (K,) the controller's update time (wall clock, this
-    machine: information, not a claim)."""
+    gh_stab (K,), fatigue (K, C) 1 - A/A_rest, force_total (K,) N the sum of every element's tendon force, update_s
+    (K,) the controller's update time (wall clock, this machine: information, not a claim)."""
     time: np.ndarray
     q: np.ndarray
     q_ref: np.ndarray
@@ -558,9 +549,9 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
     """Runs `controller` on the Arm `plant` (with a stimulation map) for `duration` s from the plant's present state,
     one update every controller.params.control_interval_s. hold_s: for the first hold_s s the joints are held at
     their start (q and qdot restored after each interval, every other state kept): the arm supported while the
-    stimulation builds up from rest, as a trial starts from a supported arm. reference: a callable t -> q_ref (ndof,) recorded beside q
-    (default: the controller's own reference, or its target). hand_load: None or a callable t -> (force (3,),
-    moment (3,)) N, N m applied before each interval (a disturbance). ValueError for a plant without a map."""
+    stimulation builds up from rest, as a trial starts from a supported arm. reference: a callable t -> q_ref (ndof,)
+    recorded beside q (default: the controller's own reference, or its target). hand_load: None or a callable
+    t -> (force (3,), moment (3,)) N, N m applied before each interval (a disturbance). ValueError for a plant without a map."""
     if not plant.channel_names or list(plant.channel_names) != list(controller.coding.channel_names):
         raise ValueError("the plant's stimulation channels must be the controller's coding's channels")
     h = controller.params.control_interval_s
