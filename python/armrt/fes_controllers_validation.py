@@ -350,7 +350,15 @@ def jagodnik(out: Path | None = None, n_test: int = 20, seed: int = 2, gains=Non
             load = elbow_weight_load(arm, mv[0]) if "doubled" in cond else None
             rows.append(pd_trial(kp, kd, mv, setup, hand_force=load, strength_scale=scale))
         ok = [r for r in rows if not r["failed"]]
-        conds[cond] = {"error_deg": float(np.mean([r["error_deg"] for r in rows])),
+        # Which side of its target a failed trial ends on: below (q < target in the joint further off) is the
+        # gravity side for both GHy (elevation) and ELx (flexion).
+        below = 0
+        for mv, r in zip(movements, rows):
+            if r["failed"]:
+                end = r["run"].q[-1]
+                e = [end[arm.dof_index(d)] - mv[1][arm.dof_index(d)] for d in PD_DOFS]
+                below += int(e[int(np.argmax(np.abs(e)))] < 0)
+        conds[cond] = {"failed_below_target": below, "error_deg": float(np.mean([r["error_deg"] for r in rows])),
                        "ss_error_deg": float(np.mean([r["ss_error_deg"] for r in ok])) if ok else float("nan"),
                        "effort_N": float(np.mean([r["effort_N"] for r in rows])),
                        "failed": sum(r["failed"] for r in rows), "n": len(rows), "example": rows[0]}
@@ -358,7 +366,8 @@ def jagodnik(out: Path | None = None, n_test: int = 20, seed: int = 2, gains=Non
         pub = JAGODNIK_PUBLISHED.get(cond)
         pub_s = f"{pub[0]:.2f} | {pub[1]:.2f} | {pub[2]:.1f} | {pub[3]} of 1000" if pub else "- | - | - | -"
         print(f"| {cond} | {c['error_deg']:.2f} | {c['ss_error_deg']:.2f} | {c['effort_N']:.1f} | "
-              f"{c['failed']} of {c['n']} | {pub_s} |")
+              f"{c['failed']} of {c['n']} | {pub_s} |  (failed trials ending below their target: "
+              f"{c['failed_below_target']})")
     if out is not None:
         _plot_jagodnik(conds, Path(out) / "fes_jagodnik_pd.png", arm)
     return conds
