@@ -162,6 +162,20 @@ def blana(out: Path | None = None, movements=None, conditions=None) -> list[dict
                 errs.append(f"{t_after:g} s {np.degrees(np.abs(run.q[k] - run.q_ref[k])).max():.2f}")
             print(f"fatigue 20 s, {BLANA_MOVEMENTS[-1][0]}, integral bound {bound:g} rad s: largest error (deg) "
                   f"after the movement: " + ", ".join(errs))
+        # The feedback's stiffness in torque terms, and what half the force lost asks of it, at that movement's end.
+        t, q = movement_reference(arm, BLANA_MOVEMENTS[-1][1], BLANA_MOVEMENTS[-1][2])
+        j = arm.dof_index("ELx")
+        probe = fc.model_arm(arm)
+        tau_el = float(np.asarray(probe.inverse_dynamics(q[-1]))[j])
+        m_el = float(np.asarray(probe.mass_matrix(q[-1]))[j, j])
+        print(f"elbow at that movement's end: moment {tau_el:.2f} N m, inertia {m_el:.4f} kg m^2; kp x inertia "
+              f"{p.kp * m_el:.2f} N m/rad; half the moment / inertia {0.5 * abs(tau_el) / m_el:.1f} rad/s^2; "
+              f"ki x bound {p.ki * p.integral_limit:.1f} rad/s^2")
+        ff = blana_trial(BLANA_MOVEMENTS[-1], 10.0, gains="feedforward", setup=setup)
+        pid = [r for r in rows if r["condition"] == "fatigue 10 s" and r["movement"] == BLANA_MOVEMENTS[-1][0]]
+        print(f"fatigue 10 s, {BLANA_MOVEMENTS[-1][0]}: feedforward alone RMS {ff['rms_deg']:.2f} / max "
+              f"{ff['max_deg']:.2f} deg" + (f", with the PID {pid[0]['rms_deg']:.2f} / {pid[0]['max_deg']:.2f}"
+                                            if pid else ""))
     if out is not None:
         _plot_blana(rows, Path(out) / "fes_blana_pid.png")
     return rows
