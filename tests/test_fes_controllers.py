@@ -258,3 +258,11 @@ def test_control_loop_drives_the_realtime_runner_over_udp(setup):
     assert {"p50", "p90", "p99", "max"} <= set(r["compute_us"]) and r["period_s"].size == r["time"].size - 1
     # held near rest: unstimulated, the arm drops 30 deg at the elbow and 10 deg at GHz in the same 1 s
     assert np.degrees(np.abs(r["q"][-1] - arm.rest_posture)).max() < 5.0
+
+
+@pytest.mark.slow
+def test_optimise_pd_reproduces_the_saved_gains():
+    """optimise-pd rerun (not saved) finds the gains in fes_pd_gains.json: the PD trials are deterministic (no QP)."""
+    out = v.optimise_pd(save=None)
+    kp, kd = v.saved_pd_gains()
+    assert out["kp_per_rad"] == pytest.approx(kp, rel=1e-6) and out["kd_s_per_rad"] == pytest.approx(kd, rel=1e-6)
