@@ -31,7 +31,7 @@ AFTER_S = 1.0   # s of holding the end posture after the movement, inside the er
 #: (a) Blana 2009: "goal-oriented movements of varying amplitudes and durations" of the shoulder and elbow. Their
 #: exact set was not retrieved: these are minimum-jerk movements (Flash & Hogan 1985) from the rest posture, of two
 #: amplitudes and two durations per joint and one of both joints, within what the weakened elbow flexors can hold
-#: (elbow flexion above about +70 deg from rest is infeasible for them: ChannelStaticOptimizer).
+#: (a static elbow hold at +70 deg from rest is feasible for them, at +80 deg not: blana() prints it).
 BLANA_MOVEMENTS = [
     ("elbow +20 deg, 1 s", {"ELx": 20.0}, 1.0),
     ("elbow +40 deg, 2 s", {"ELx": 40.0}, 2.0),
@@ -171,6 +171,15 @@ def blana(out: Path | None = None, movements=None, conditions=None) -> list[dict
         print(f"elbow at that movement's end: moment {tau_el:.2f} N m, inertia {m_el:.4f} kg m^2; kp x inertia "
               f"{p.kp * m_el:.2f} N m/rad; half the moment / inertia {0.5 * abs(tau_el) / m_el:.1f} rad/s^2; "
               f"ki x bound {p.ki * p.integral_limit:.1f} rad/s^2")
+        so = fc.ChannelStaticOptimizer(fc.model_arm(arm), coding)
+        feas = []
+        for d in (40, 50, 60, 70, 80, 90):
+            qh = arm.rest_posture.copy()
+            qh[j] += math.radians(d)
+            ok = so.solve_levels(qh, np.zeros(arm.n_dofs), np.zeros(arm.n_dofs))[1].feasible
+            feas.append(f"+{d} {'yes' if ok else 'no'}")
+        print("static elbow holds (deg from rest) the weakened flexors can supply (ChannelStaticOptimizer): "
+              + ", ".join(feas))
         ff = blana_trial(BLANA_MOVEMENTS[-1], 10.0, gains="feedforward", setup=setup)
         pid = [r for r in rows if r["condition"] == "fatigue 10 s" and r["movement"] == BLANA_MOVEMENTS[-1][0]]
         print(f"fatigue 10 s, {BLANA_MOVEMENTS[-1][0]}: feedforward alone RMS {ff['rms_deg']:.2f} / max "
@@ -218,7 +227,7 @@ JAGODNIK_PUBLISHED = {"generality": (5.50, 1.17, 25.10, 0), "weakened": (7.51, 4
                       "doubled mass": (6.18, 1.55, 34.50, 0)}
 PD_DOFS = ("GHy", "ELx")
 #: The random postures' box (rad): shoulder GHy from rest (0.43) to 0.9, elbow from 0.5 (29 deg) to 1.4 (80 deg),
-#: inside what the weakened flexors hold (ChannelStaticOptimizer: feasible to about 1.9 rad).
+#: inside what the weakened flexors hold (a static hold at rest + 70 deg, 1.88 rad, is feasible: blana() prints it).
 PD_BOX = {"GHy": (0.40, 0.90), "ELx": (0.50, 1.40)}
 PD_TRIAL_S = 2.0
 PD_HOLD_S = 0.5     # s supported at the start posture with the PD holding it, before the target steps
@@ -357,6 +366,8 @@ def jagodnik(out: Path | None = None, n_test: int = 20, seed: int = 2, gains=Non
         muscle_of[arm.indices(name)] = m
     conds = {}
     print(f"(b) Jagodnik 2010 PD, kp {kp:.4g} per rad, kd {kd:.4g} per rad/s, {n_test} test movements (seed {seed})")
+    loads = [-elbow_weight_load(arm, mv[0])[1] for mv in movements]
+    print(f"doubled mass: downward hand force {min(loads):.1f}-{max(loads):.1f} N (elbow_weight_load at each start)")
     for cond in ("generality", "weakened", "doubled mass", "doubled mass + weakened"):
         rows = []
         for mv in movements:
@@ -479,6 +490,8 @@ def posture(out: Path | None = None, duration: float = POSTURE_S, limits=POSTURE
     setup = _setup()
     rows = []
     print(f"(c) posture GHy +{POSTURE_GHY_RAD} rad with {POSTURE_HAND_KG} kg in the hand for {duration:g} s")
+    free = posture_trial(None, 2.0, setup, hand_kg=0.0)
+    print(f"without the hand weight (the UDP run's case), unconstrained, 2 s: largest GHstab {free['gh_stab_max']:.4f}")
     for lim in limits:
         r = posture_trial(lim, duration, setup)
         rows.append(r)
