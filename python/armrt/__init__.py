@@ -11,6 +11,8 @@ from .control import StaticOptimizationResult, StaticOptimizer, inverse_dynamics
 from .control_motion import static_optimization_motion
 from .control_tracking import TrackingResult, track_motion
 from .data import Data, State
+from .fes_control import (ControlRun, FeedforwardPID, PDController, PDParams, PIDParams, StimulationCoding,
+                          run_offline)
 from .errors import ConcurrentUseError, SimulationError, StaticOptimizationInfeasible, StepSizeWarning
 from .model import Model, models
 from .model_build import CompilerNotFoundError, ModelBuildError, ModelFileError
@@ -22,6 +24,7 @@ from .sweeps import sweep
 __all__ = ["Arm", "Stepper", "step", "forward", "Result", "SimulationError", "StepSizeWarning", "ConcurrentUseError", "deg", "rad", "ArmBatch",
            "sweep", "inverse_dynamics", "static_optimization", "static_optimization_motion", "track_motion", "TrackingResult", "StaticOptimizer", "StaticOptimizationResult",
            "StaticOptimizationInfeasible", "Model", "Data", "State", "StatePart", "models", "ModelFileError", "ModelBuildError", "CompilerNotFoundError",
+           "FeedforwardPID", "PDController", "PIDParams", "PDParams", "StimulationCoding", "ControlRun", "run_offline",
            "RealtimeSession", "UdpClient"]
 try:  # the packet layout comes from armrt._rt: without that extension the rest of armrt still works
     from .realtime import RealtimeSession, UdpClient

@@ -1,0 +1,268 @@
+"""The reference FES controllers (armrt.fes_control; docs/control.md "Reference FES controllers"): their building
+blocks cross-checked against the engine, and short versions of the papers' protocols against the published bounds."""
+import math
+
+import numpy as np
+import pytest
+
+import armrt
+from armrt import fes_control as fc
+from armrt import fes_controllers_validation as v
+
+
+@pytest.fixture(scope="module")
+def setup():
+    arm = v.weakened_arm()
+    coding = fc.StimulationCoding.from_arm(arm)
+    return arm, coding, fc.chain_time_constant(arm, coding)
+
+
+# ------------------------------------------------------------------------------------------ building blocks
+def test_coding_inverts_the_engines_recruitment(setup):
+    """pulse_width(R) is the inverse of the engine's recruitment law (Arm.recruitment_fraction, computed in C++)."""
+    arm, coding, _ = setup
+    r = np.linspace(0.02, 1.0, len(coding.channel_names))
+    pw = coding.pulse_width(r)
+    engine = [arm.recruitment_fraction(c, pw[k], coding.amplitude_A) for k, c in enumerate(coding.channel_names)]
+    np.testing.assert_allclose(engine, r, atol=1e-9)
+    assert np.all(coding.pulse_width(np.zeros(len(r))) == 0.0)
+    assert np.all(coding.pulse_width(np.ones(len(r))) <= coding.max_pulse_width_s)
+
+
+def test_coded_level_is_the_force_level_the_engine_settles_to(setup):
+    """command(level) gives, once the rested chain settles, the Ding force level asked for (0.1, 0.3, 0.6)."""
+    arm, coding, _ = setup
+    levels = np.resize([0.1, 0.3, 0.6], len(coding.channel_names)) * coding.fused / coding.fused.max()
+    m = dict(arm.stimulation_map(), fatigue=False)
+    probe = armrt.Arm("das2", stimulation=m)
+    probe.set_stimulation(coding.command(levels))
+    probe.step(700)
+    got = np.zeros(len(levels))
+    for _ in range(300):
+        probe.step(1)
+        got += [probe.force_level[c] for c in probe.channel_names]
+    np.testing.assert_allclose(got / 300, levels, rtol=0.02, atol=2e-3)
+
+
+def test_minimum_jerk_derivatives_match_finite_differences():
+    t = np.linspace(-0.2, 1.4, 1601)
+    q, qd, qdd = fc.minimum_jerk([0.1, 0.2], [0.5, -0.2], 0.0, 1.2, t)
+    smooth = (np.abs(t) > 0.01) & (np.abs(t - 1.2) > 0.01)   # the jerk jumps at the ends
+    np.testing.assert_allclose(np.gradient(q, t, axis=0)[smooth], qd[smooth], atol=1e-5)
+    np.testing.assert_allclose(np.gradient(qd, t, axis=0)[smooth], qdd[smooth], atol=1e-4)
+    assert np.allclose(q[t <= 0], [0.1, 0.2]) and np.allclose(q[t >= 1.2], [0.5, -0.2])
+    with pytest.raises(ValueError, match="duration"):
+        fc.minimum_jerk([0.0], [1.0], 0.0, 0.0, t)
+
+
+def test_pole_placement_puts_the_four_poles_at_minus_one_over_four_lags():
+    p = fc.PIDParams.pole_placement(0.1)
+    roots = np.roots([0.1, 1.0, p.kd, p.kp, p.ki])   # tau s^4 + s^3 + kd s^2 + kp s + ki
+    np.testing.assert_allclose(roots.real, -2.5, atol=2e-3 * 2.5 * 10)
+    assert np.abs(roots.imag).max() < 0.05 and p.preview_s == 0.1
+    with pytest.raises(ValueError, match="lag_s"):
+        fc.PIDParams.pole_placement(0.0)
+    with pytest.raises(ValueError, match="kp"):
+        fc.PIDParams(kp=-1.0, ki=0.0, kd=0.0)
+
+
+def test_channel_static_optimisation_balances_the_moments(setup):
+    """The channel levels' element activations supply inverse dynamics' moments (the engine's muscle model)."""
+    arm, coding, _ = setup
+    model = fc.model_arm(arm)
+    so = fc.ChannelStaticOptimizer(model, coding)
+    q = arm.rest_posture.copy()
+    q[arm.dof_index("ELx")] += math.radians(40)
+    levels, res = so.solve_levels(q, np.zeros(arm.n_dofs), np.zeros(arm.n_dofs))
+    assert res.feasible and np.abs(res.residual).max() < 1e-3
+    assert np.all(levels >= 0) and np.all(levels <= so.level_max + 1e-12)
+    # the activations the plant's stimulation stage gives those levels: min(max_activation, w level)
+    np.testing.assert_allclose(res.activation, np.minimum(so.S @ levels, model.max_activation))
+
+
+def test_controllers_check_their_inputs(setup):
+    arm, coding, tau = setup
+    t, q = v.movement_reference(arm, {"ELx": 10.0}, 1.0)
+    ctl = fc.FeedforwardPID(fc.model_arm(arm), coding, (t, q), fc.PIDParams.pole_placement(tau))
+    with pytest.raises(ValueError, match="shape"):
+        ctl.update(0.0, np.zeros(3), np.zeros(5))
+    with pytest.raises(ValueError, match="NaN"):
+        ctl.update(0.0, np.full(5, np.nan), np.zeros(5))
+    with pytest.raises(ValueError, match="without a stimulation map"):
+        fc.FeedforwardPID(arm, coding, (t, q), fc.PIDParams.pole_placement(tau))
+    with pytest.raises(ValueError, match="stimulation map"):
+        fc.StimulationCoding.from_arm(armrt.Arm("das2"))
+    with pytest.raises(ValueError, match="channels"):
+        fc.run_offline(armrt.Arm("das2", stimulation={"channels": [{"name": "f", "elements": ["bicl"]}]}), ctl, 0.1)
+
+
+# ------------------------------------------------------------------------------------------ (a) Blana 2009
+def test_blana_feedforward_pid_tracks_within_4_deg_ideal_and_10_deg_fatigued(setup):
+    """Blana, Kirsch & Chadwick 2009: < 4 deg in ideal conditions, < 10 deg with fatigue; the PID does the work the
+    feedforward alone cannot under fatigue."""
+    mv = v.BLANA_MOVEMENTS[-1]   # shoulder and elbow together
+    ideal = v.blana_trial(mv, setup=setup)
+    assert ideal["rms_deg"] < 4.0 and ideal["max_deg"] < 4.0
+    fatigued = v.blana_trial(mv, fatigue_s=10.0, setup=setup)
+    assert 0.2 < fatigued["fatigue"] < 0.4          # the fatigue is there (1 - A/A_rest)
+    assert fatigued["rms_deg"] < 10.0 and fatigued["max_deg"] < 10.0
+    open_loop = v.blana_trial(mv, fatigue_s=10.0, gains="feedforward", setup=setup)
+    assert open_loop["rms_deg"] > 1.2 * fatigued["rms_deg"]
+
+
+def test_blana_disturbance_is_corrected(setup):
+    mv = v.BLANA_MOVEMENTS[0]
+    r = v.blana_trial(mv, disturbance_N=2.0, setup=setup)
+    assert r["rms_deg"] < 10.0
+    # after the pulse (0.5 s from the movement's middle) the error falls to less than half its peak by the end
+    run = r["run"]
+    assert np.abs(np.degrees(run.q[-1] - run.q_ref[-1])).max() < 0.5 * r["max_deg"]
+
+
+@pytest.mark.slow
+def test_blana_full_protocol_table():
+    rows = v.blana(None)
+    for r in rows:
+        if r["condition"] == "ideal":
+            assert r["rms_deg"] < 4.0, r["movement"]
+        if r["condition"] in ("fatigue 10 s", "disturbance 2 N", "disturbance 5 N"):
+            assert r["rms_deg"] < 10.0, (r["condition"], r["movement"])
+
+
+# ------------------------------------------------------------------------------------------ real time over UDP
+def _udp_example():
+    import importlib.util
+    from pathlib import Path
+    path = Path(__file__).resolve().parents[1] / "examples" / "fes_controllers_udp.py"
+    spec = importlib.util.spec_from_file_location("fes_controllers_udp", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("kind", ["blana", "jagodnik", "posture"])
+def test_controller_runs_as_a_separate_process_against_the_realtime_runner(kind):
+    """The controller process joins armrt-rt over UDP and controls the arm; its loop times are reported (not bounded:
+    wall clock on a shared machine) and the runner applied its stimulation packets."""
+    mod = _udp_example()
+    out = mod.main(["--controller", kind])
+    assert out["cycles"] > 100 and out["runner"]["stimulation_applied"] > 100
+    assert {"p50", "p90", "p99", "max"} <= set(out["compute_us"]) and out["compute_us"]["p50"] > 0
+    if kind == "blana":
+        # RMS within Blana's 10 deg: the loop's late and irregular updates on a shared machine act as a disturbance
+        assert max(out["rms_deg"].values()) < 10.0
+    elif kind == "jagodnik":
+        assert max(out["final_deg"][d] for d in ("GHy", "ELx")) < 5.0     # arrived (Jagodnik's 5 deg criterion)
+    else:
+        # below the unconstrained (unloaded) hold's 0.038: the bound lowers GHstab; over UDP, with late updates and
+        # no supported start, it is not kept exactly (0.034 against 0.03 measured, docs/control.md)
+        assert out["gh_stab_max"] < 0.038 and max(out["max_deg"].values()) < 5.0
+
+
+# ------------------------------------------------------------------------------------------ (b) Jagodnik 2010
+def test_pd_structure_maps_errors_to_agonists(setup):
+    """A positive elbow error stimulates the elbow flexors and no triceps; a negative one the reverse."""
+    arm, coding, _ = setup
+    q = arm.rest_posture.copy()
+    ctl = fc.PDController(arm, coding, q, fc.PDParams(3.0, 0.3))
+    el = arm.dof_index("ELx")
+    names = coding.channel_names
+    for sign, agonists, antagonists in ((+1, ["bicl", "brachialis"], ["triclat", "tricmed"]),
+                                        (-1, ["triclat", "tricmed"], ["bicl", "brachialis"])):
+        dq = np.zeros(arm.n_dofs)
+        dq[el] = -sign * 0.1     # the arm below (sign +1) or above the target
+        cmd = ctl.update(0.0, q + dq, np.zeros(arm.n_dofs))
+        assert all(cmd[names.index(m), 0] > 0 for m in agonists), sign
+        assert all(cmd[names.index(m), 0] == 0 for m in antagonists), sign
+    with pytest.raises(ValueError, match="kp"):
+        fc.PDParams(-1.0, 0.1)
+
+
+def test_saved_pd_gains_are_the_optimisers_improvement(setup):
+    """The saved gains (optimise-pd's result) lower the training cost below the search's start."""
+    saved = v.saved_pd_gains()
+    moves = v.pd_movements(6, 1, setup[0].rest_posture)
+    assert v.pd_cost(saved, moves, setup) < v.pd_cost(v.PD_START_GAINS, moves, setup) - 0.1
+    assert saved[0] > 0 and saved[1] > 0
+
+
+def test_pd_tracks_with_doubled_forearm_weight_and_weakened_muscles(setup):
+    """Jagodnik 2010: generality error 5.50 deg and doubled mass 6.18 deg for their 2-gain PD; ours on three test
+    movements, nominal and with the elbow's gravity moment doubled and every muscle weakened to 0.5-1 x."""
+    arm = setup[0]
+    kp, kd = v.saved_pd_gains()
+    moves = v.pd_movements(3, 2, arm.rest_posture)
+    nominal = [v.pd_trial(kp, kd, mv, setup) for mv in moves]
+    assert np.mean([r["error_deg"] for r in nominal]) < 5.50 and not any(r["failed"] for r in nominal)
+    load = v.elbow_weight_load(arm, moves[0][0])
+    # the load doubles the forearm and hand's gravitational elbow moment (independent: inverse dynamics with it)
+    j = arm.dof_index("ELx")
+    t0 = arm.inverse_dynamics(moves[0][0], hand_load=((0, 0, 0), (0, 0, 0)))
+    t1 = arm.inverse_dynamics(moves[0][0], hand_load=(tuple(load), (0, 0, 0)))
+    t0, t1 = (np.asarray(x["tau_muscle"] if isinstance(x, dict) else x)[j] for x in (t0, t1))
+    assert t1 == pytest.approx(2 * t0, rel=1e-6)
+    rng = np.random.default_rng(0)
+    heavy = []
+    for mv in moves:
+        scale = np.ones(arm.n_elements)
+        for name in arm.muscle_names:
+            scale[arm.indices(name)] = rng.uniform(*v.WEAKEN_RANGE)
+        heavy.append(v.pd_trial(kp, kd, mv, setup, hand_force=v.elbow_weight_load(arm, mv[0]), strength_scale=scale))
+    err = np.mean([r["error_deg"] for r in heavy])
+    assert err < 10.0                                   # still tracking: within 10 deg on average over 2 s
+    assert err > np.mean([r["error_deg"] for r in nominal])   # and the load and weakness cost accuracy
+
+
+# ------------------------------------------------------------------------------------------ (c) posture, GH limit
+def test_posture_holding_keeps_simulated_ghstab_under_the_limit(setup):
+    free = v.posture_trial(None, duration=2.0, setup=setup)
+    held = v.posture_trial(0.06, duration=2.0, setup=setup)
+    assert free["gh_stab_max"] > 0.08                    # without the limit the hold's GHstab is above it
+    assert held["model_gh_stab_max"] <= 0.06 + 1e-6      # the inverse model keeps its bound
+    assert held["gh_stab_max"] <= 0.06 * 1.02            # and the simulated arm (the engine's GHstab) follows
+    assert held["max_deg"] < 2.0 and held["infeasible"] == 0
+
+
+@pytest.mark.slow
+def test_posture_full_protocol_under_fatigue():
+    rows = v.posture(None)
+    for r in rows[1:]:
+        assert r["gh_stab_max"] <= r["limit"] * 1.02 and r["max_deg"] < 5.0, r["limit"]
+
+
+@pytest.mark.slow
+def test_pd_full_test_set():
+    conds = v.jagodnik(None)
+    assert conds["generality"]["error_deg"] < 5.50 and conds["generality"]["failed"] == 0
+    assert conds["doubled mass + weakened"]["error_deg"] < 10.0
+
+
+def test_control_loop_drives_the_realtime_runner_over_udp(setup):
+    """The cheap default-run check of the UDP path: the PD (a cheap update) holds the rest posture through
+    fes_control_udp.control_loop against an in-process RealtimeSession for 1 s of simulated time."""
+    from armrt.fes_control_udp import control_loop, first_state
+    from armrt.realtime import RealtimeSession, UdpClient
+    arm, coding, _ = setup
+    kp, kd = v.saved_pd_gains()
+    ctl = fc.PDController(arm, coding, arm.rest_posture, fc.PDParams(kp, kd))
+    with RealtimeSession(model="das2", profile="participant_A_FES", stimulation="per_muscle", listen="127.0.0.1:0",
+                         state_rate_hz=1000, input_timeout=5.0, q0=arm.rest_posture) as s:
+        with UdpClient(s.port, stimulation="per_muscle") as c:
+            c.join(timeout=5.0)
+            t0 = first_state(c).time
+            r = control_loop(ctl, c, t0 + 1.0)
+        stats = s.stop()
+    assert r["time"].size > 20 and stats["packets"]["stimulation_applied"] >= r["time"].size
+    assert np.all(np.diff(r["time"]) > 0) and r["time"][-1] >= t0 + 1.0
+    assert {"p50", "p90", "p99", "max"} <= set(r["compute_us"]) and r["period_s"].size == r["time"].size - 1
+    # held near rest: unstimulated, the arm drops 30 deg at the elbow and 10 deg at GHz in the same 1 s
+    assert np.degrees(np.abs(r["q"][-1] - arm.rest_posture)).max() < 5.0
+
+
+@pytest.mark.slow
+def test_optimise_pd_reproduces_the_saved_gains():
+    """optimise-pd rerun (not saved) finds the gains in fes_pd_gains.json: the PD trials are deterministic (no QP)."""
+    out = v.optimise_pd(save=None)
+    kp, kd = v.saved_pd_gains()
+    assert out["kp_per_rad"] == pytest.approx(kp, rel=1e-6) and out["kd_s_per_rad"] == pytest.approx(kd, rel=1e-6)
