@@ -114,6 +114,8 @@ int main(int argc, char** argv) {
   app.add_flag("--excitations", cfg.send_excitation, "append the applied element excitations to state packets");
   app.add_option("--timeout", cfg.input_timeout, "s of input silence after which the session ends and the excitation "
                                                  "falls to zero (2 periods .. 10 s)")->capture_default_str();
+  app.add_option("--resume-grace", cfg.resume_grace, "s after the hold that follows a timeout in which only the timed-out "
+                                                     "owner may claim the session again (0 .. 60 s)")->capture_default_str();
   app.add_option("--channels", cfg.channels, "names (element, muscle or group) of the channel mapping (packet type 4)")
       ->delimiter(',');
   app.add_option("--max-activation", cfg.max_activation, "paralysis/weakness: NAME=V caps the activation of "

@@ -352,6 +352,8 @@ RtStats RtLoop::stats() const {
   st.integration_step = cfg_.integration_step;
   st.integrator = cfg_.integrator;
   st.authenticated = session_->authenticated();
+  st.session_hold_s = session_->hold_s();
+  st.resume_grace_s = session_->resume_grace_s();
   return st;
 }
 

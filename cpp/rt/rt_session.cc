@@ -69,6 +69,19 @@ Session::Session(const RtConfig& cfg, const ModelDef& def, const StimulationMap&
   level_scratch_.assign(n_el_, NameLevel::kUnnamed);
   command_.assign(n_el_, 0.0);
 
+  // The hold after a timeout: at zero excitation each activation decays as exp(-t / tdeact) (the model's
+  // activation dynamics, da/dt = (c1 u + c2)(u - a) with c2 = 1/tdeact, He et al. 1991); ln(100) time
+  // constants of the slowest element take every activation below 1 % of its value (das2: deltoid, tdeact
+  // 83.5 ms: 0.385 s). Counted in cycles of simulated time.
+  double tdeact_max = 0;
+  for (int i = 0; i < def.num_elements; ++i) tdeact_max = std::max(tdeact_max, def.elements[i].tdeact);
+  const double period_s = 1.0 / cfg.rate_hz;
+  hold_cycles_ = static_cast<std::int64_t>(std::ceil(std::log(100.0) * tdeact_max / period_s - 1e-9));
+  hold_s_ = static_cast<double>(hold_cycles_) * period_s;
+  grace_cycles_ = static_cast<std::int64_t>(std::ceil(cfg.resume_grace / period_s - 1e-9));
+  grace_s_ = static_cast<double>(grace_cycles_) * period_s;
+  reply_interval_cycles_ = std::max<std::int64_t>(1, std::llround(kReplyInterval / period_s));
+
   rx_buf_.assign(static_cast<std::size_t>(kBatch) * (kMaxPacket + 64), 0);
   rx_from_.assign(kBatch, sockaddr_in{});
   rx_hdr_storage_.assign(kBatch * (sizeof(mmsghdr) + sizeof(iovec)), 0);
@@ -150,9 +163,48 @@ void Session::send_to(const std::uint8_t* b, int len, const sockaddr_in& to) {
   if (rc != len) ++pk_.send_errors;
 }
 
+bool Session::may_claim(const sockaddr_in& from) const {
+  if (cycle_ < hold_end_) return false;                                          // the hold: nobody
+  if (cycle_ < grace_end_) return had_owner_ && same_source(from, previous_owner_);  // the old owner's turn
+  return true;
+}
+
+bool Session::reply_allowed(const sockaddr_in& to) {
+  // A flood from one source used to take the one offer per cycle every cycle (0 of 10 joins from elsewhere
+  // succeeded): each source now has its own share, and the cycle's replies are bounded (no amplification).
+  ReplySlot* slot = nullptr;
+  ReplySlot* oldest = &reply_slots_[0];
+  for (auto& r : reply_slots_) {
+    if (r.last_cycle >= 0 && r.addr == to.sin_addr.s_addr && r.port == to.sin_port) { slot = &r; break; }
+    if (r.last_cycle < oldest->last_cycle) oldest = &r;
+  }
+  if ((slot && cycle_ - slot->last_cycle < reply_interval_cycles_) || replies_this_cycle_ >= kRepliesPerCycle) {
+    ++pk_.replies_limited;
+    return false;
+  }
+  if (!slot) {  // a new source takes a free slot or the least recently answered one
+    slot = oldest;
+    slot->addr = to.sin_addr.s_addr;
+    slot->port = to.sin_port;
+  }
+  slot->last_cycle = cycle_;
+  ++replies_this_cycle_;
+  return true;
+}
+
+void Session::send_session_ended(const sockaddr_in& to) {
+  std::uint8_t* b = tx_buf_.data();
+  const std::uint16_t flags = key_.enabled() ? kFlagAuth : 0;
+  const double why[3] = {1.0, hold_s_, grace_s_};  // reason 1: timeout
+  const int len = encode(b, kSessionEnded, tx_seq_++, flags, why, 3, ended_session_id_);
+  if (key_.enabled()) key_.sign(b, len - kTagSize, b + len - kTagSize);
+  send_to(b, len, to);
+  ++pk_.session_ended;
+}
+
 void Session::send_offer(const sockaddr_in& to) {
-  if (offered_this_cycle_) return;  // at most one per cycle: a flood of hellos gets no flood back
-  offered_this_cycle_ = true;
+  if (!may_claim(to)) { ++pk_.held_off; return; }  // no offer while the source could not claim
+  if (!reply_allowed(to)) return;
   std::uint8_t* b = tx_buf_.data();
   const std::uint16_t flags = key_.enabled() ? kFlagAuth : 0;
   const int len = encode(b, kOffer, tx_seq_++, flags, nullptr, 0, session_id_);
@@ -173,6 +225,13 @@ void Session::end_session(bool released) {
   have_seq_ = false;
   notify_previous_ = true;  // the ex-owner gets one last state packet, flagged timed out, and no more
   isolate_owner(nullptr);
+  ended_session_id_ = released ? 0 : session_id_;
+  if (!released) {
+    // The hold, then the old owner's grace (rt_session.h); it is told now, so it does not send into a void.
+    hold_end_ = cycle_ + hold_cycles_;
+    grace_end_ = hold_end_ + grace_cycles_;
+    if (sock_ >= 0 && reply_allowed(previous_owner_)) send_session_ended(previous_owner_);
+  }
   session_id_ = next_session_id(session_rng_);  // no packet of the ended session is accepted again
 }
 
@@ -200,7 +259,7 @@ void Session::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in
   switch (h.type) {
     case kHello:
       ++pk_.hellos;
-      send_offer(from);
+      send_offer(from);  // none in the hold, only to the old owner in its grace, within each source's share
       return;
     case kRelease:
       if (have_owner_ && h.session == session_id_) end_session(true);
@@ -218,7 +277,13 @@ void Session::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in
     // Not (or no longer) this session's: never applied. The sender learns the current id, so a
     // controller that missed the offer or outlived a timeout can start over.
     ++pk_.bad_session;
-    send_offer(from);
+    if (ended_session_id_ != 0 && h.session == ended_session_id_ && had_owner_ && same_source(from, previous_owner_)) {
+      // The timed-out owner still sends in its ended session: it is told again that the session ended (it
+      // must join again, UdpClient raises SessionEnded), instead of silently getting a new id.
+      if (reply_allowed(from)) send_session_ended(from);
+    } else {
+      send_offer(from);
+    }
     return;
   }
   for (int k = 0; k < h.count; ++k) {
@@ -260,6 +325,7 @@ bool Session::accept_sequence(const Header& h, const sockaddr_in& from) {
     if (diff < 0) { ++pk_.out_of_order; return false; }
   }
   if (!have_owner_) {  // the first valid packet with the offered id claims the session
+    if (!may_claim(from)) { ++pk_.held_off; return false; }  // the hold / the old owner's grace
     have_owner_ = true;
     owner_ = from;
     isolate_owner(&owner_);
@@ -314,7 +380,8 @@ bool Session::drain(int fd, double now_s, std::int64_t budget_end) {
 }
 
 void Session::receive(double now_s) {
-  offered_this_cycle_ = false;
+  ++cycle_;
+  replies_this_cycle_ = 0;
   if (sock_ >= 0 && listening_) {
     // The owner's queue first (others cannot fill it), then everything else until empty or the
     // budget is spent, so junk from others cannot queue up in front of the owner's packets.
