@@ -1542,3 +1542,14 @@ def test_console_script_resolves_profile(tmp_path):
     assert r.returncode == 2 and "no profile named 'participant_Z'" in r.stderr, r.stderr
     r = subprocess.run([runner(), "--profile", "participant_A_FES"], capture_output=True, text=True, timeout=20)
     assert r.returncode == 2 and "profiles are resolved in Python by the armrt-rt console script" in r.stderr
+
+
+def test_statistics_report_receive_buffers_and_kernel_drops():
+    """The receive queues' sizes (the owner's as the shared one's) and the kernel drops reach RealtimeSession's
+    statistics; the C++ tests force drops deterministically (cpp/rt/test_rt.cc, "receive queues")."""
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=0) as s:
+        st = s.stats()
+    assert st["owner_rcvbuf_bytes"] == st["rcvbuf_bytes"] > 2 * 212992
+    assert st["packets"]["kernel_drops"] == 0
+    for key in ("replies_limited", "held_off", "session_ended"):
+        assert st["packets"][key] == 0

@@ -230,6 +230,8 @@ int main(int argc, char** argv) {
               (unsigned long long)k.received, (unsigned long long)k.applied, (unsigned long long)k.dropped(),
               (unsigned long long)k.foreign, (unsigned long long)k.sessions, (unsigned long long)k.owner_changes,
               (unsigned long long)k.timeouts, (unsigned long long)k.state_sent, st.lag_s);
+  std::printf("  kernel drops %llu (receive buffers %d and %d bytes)\n", (unsigned long long)k.kernel_drops,
+              st.rcvbuf_bytes, st.owner_rcvbuf_bytes);
   if (!cfg.stimulation.empty())
     std::printf("  stimulation: %d channels, packets applied %llu, clamped to the channels' limits %llu\n",
                 loop->arm().data.stimulation_map.num_channels, (unsigned long long)k.stimulation_applied,

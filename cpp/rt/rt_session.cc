@@ -32,6 +32,24 @@ std::uint32_t next_session_id(std::uint64_t& s) {
   }
 }
 
+// The receive buffer both queues ask for: 4 MB, as the kernel counts it 8 MB with its bookkeeping (getsockopt
+// reports the doubled value), which holds about 10 000 of the smallest datagrams (24 bytes, each costing
+// ~830 bytes of kernel memory) or about 990 of the largest packets (4152 bytes) between two cycles (the
+// default, 212 992 bytes, held 256 and 25). Beyond net.core.rmem_max only with CAP_NET_ADMIN (FORCE first);
+// the size obtained is in the statistics. Drops beyond it are counted (SO_RXQ_OVFL).
+constexpr int kRcvBufBytes = 4 << 20;
+
+int size_queue(int fd) {
+  if (::setsockopt(fd, SOL_SOCKET, SO_RCVBUFFORCE, &kRcvBufBytes, sizeof kRcvBufBytes) != 0)
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &kRcvBufBytes, sizeof kRcvBufBytes);
+  const int one = 1;
+  ::setsockopt(fd, SOL_SOCKET, SO_RXQ_OVFL, &one, sizeof one);  // each datagram carries the queue's drop count
+  int got = 0;
+  socklen_t len = sizeof got;
+  ::getsockopt(fd, SOL_SOCKET, SO_RCVBUF, &got, &len);
+  return got;
+}
+
 bool same_source(const sockaddr_in& a, const sockaddr_in& b) {
   return a.sin_addr.s_addr == b.sin_addr.s_addr && a.sin_port == b.sin_port;
 }
@@ -85,6 +103,7 @@ Session::Session(const RtConfig& cfg, const ModelDef& def, const StimulationMap&
   rx_buf_.assign(static_cast<std::size_t>(kBatch) * (kMaxPacket + 64), 0);
   rx_from_.assign(kBatch, sockaddr_in{});
   rx_hdr_storage_.assign(kBatch * (sizeof(mmsghdr) + sizeof(iovec)), 0);
+  rx_ctrl_.assign(kBatch * kCtrlWords, 0);
   tx_buf_.assign(kMaxPacket, 0);
   values_.assign(kMaxValues, 0.0);
 
@@ -129,13 +148,14 @@ Session::Session(const RtConfig& cfg, const ModelDef& def, const StimulationMap&
       ::getsockname(sock_, reinterpret_cast<sockaddr*>(&a), &len);
       bound_port_ = ntohs(a.sin_port);
       // A receive buffer that holds a period of a flood, so the owner's packets are not dropped by the
-      // kernel between two cycles (beyond net.core.rmem_max only with CAP_NET_ADMIN: FORCE first).
-      const int rcvbuf = 4 << 20;
-      if (::setsockopt(sock_, SOL_SOCKET, SO_RCVBUFFORCE, &rcvbuf, sizeof rcvbuf) != 0)
-        ::setsockopt(sock_, SOL_SOCKET, SO_RCVBUF, &rcvbuf, sizeof rcvbuf);
+      // kernel between two cycles (kRcvBufBytes above).
+      rcvbuf_bytes_ = size_queue(sock_);
       bound_addr_ = a;
       if (bound_addr_.sin_addr.s_addr == htonl(INADDR_ANY)) bound_addr_.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
       owner_sock_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+      // Sized as the shared queue: with the default buffer, junk from the owner's own address (a buggy
+      // controller) cost owner packets (3 lost in the audit of issue 29).
+      if (owner_sock_ >= 0) owner_rcvbuf_bytes_ = size_queue(owner_sock_);
       if (owner_sock_ < 0 || ::setsockopt(owner_sock_, SOL_SOCKET, SO_REUSEPORT, &one, sizeof one) != 0 ||
           ::bind(owner_sock_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 ||
           ::connect(owner_sock_, reinterpret_cast<sockaddr*>(&bound_addr_), sizeof bound_addr_) != 0) {
@@ -144,6 +164,7 @@ Session::Session(const RtConfig& cfg, const ModelDef& def, const StimulationMap&
                             "): a flood from others can crowd the owner's packets out of the socket buffer");
         if (owner_sock_ >= 0) ::close(owner_sock_);
         owner_sock_ = -1;
+        owner_rcvbuf_bytes_ = 0;
       }
       if (!is_loopback(a) && !key_.enabled())
         warnings.push_back("listening on " + to_string(a) +
@@ -350,8 +371,9 @@ void Session::isolate_owner(const sockaddr_in* owner) {
   ::connect(owner_sock_, reinterpret_cast<const sockaddr*>(&to), sizeof to);
 }
 
-// Reads fd in batches until it is empty or the budget is spent; true if the budget ran out.
-bool Session::drain(int fd, double now_s, std::int64_t budget_end) {
+// Reads fd (queue 0: shared, 1: the owner's) in batches until it is empty or the budget is spent; true if the
+// budget ran out.
+bool Session::drain(int fd, int queue, double now_s, std::int64_t budget_end) {
   auto* msgs = reinterpret_cast<mmsghdr*>(rx_hdr_storage_.data());
   auto* iov = reinterpret_cast<iovec*>(rx_hdr_storage_.data() + kBatch * sizeof(mmsghdr));
   const std::size_t slot = kMaxPacket + 64;
@@ -364,16 +386,27 @@ bool Session::drain(int fd, double now_s, std::int64_t budget_end) {
       msgs[i].msg_hdr.msg_namelen = sizeof(sockaddr_in);
       msgs[i].msg_hdr.msg_iov = &iov[i];
       msgs[i].msg_hdr.msg_iovlen = 1;
+      msgs[i].msg_hdr.msg_control = rx_ctrl_.data() + i * kCtrlWords;
+      msgs[i].msg_hdr.msg_controllen = kCtrlWords * sizeof(std::uint64_t);
       msgs[i].msg_len = 0;
     }
     const int got = ::recvmmsg(fd, msgs, kBatch, MSG_DONTWAIT, nullptr);
     if (got <= 0) return false;  // EAGAIN: empty (other errors: try again next cycle)
     for (int i = 0; i < got; ++i) {
+      // SO_RXQ_OVFL: the queue's drop count so far (datagrams the kernel dropped because the queue was full),
+      // carried by every datagram read; drops after the last one read show with the next.
+      for (cmsghdr* cm = CMSG_FIRSTHDR(&msgs[i].msg_hdr); cm; cm = CMSG_NXTHDR(&msgs[i].msg_hdr, cm))
+        if (cm->cmsg_level == SOL_SOCKET && cm->cmsg_type == SO_RXQ_OVFL) {
+          std::uint32_t v;
+          std::memcpy(&v, CMSG_DATA(cm), sizeof v);
+          queue_drops_[queue] = v;
+        }
       ++pk_.received;
       long len = static_cast<long>(msgs[i].msg_len);
       if (msgs[i].msg_hdr.msg_flags & MSG_TRUNC) len = kMaxPacket + 1;  // larger than any packet
       handle_datagram(rx_buf_.data() + i * slot, len, rx_from_[i], now_s);
     }
+    pk_.kernel_drops = static_cast<std::uint64_t>(queue_drops_[0]) + queue_drops_[1];
     if (got < kBatch) return false;
     if (now_ns() >= budget_end) return true;
   }
@@ -386,8 +419,8 @@ void Session::receive(double now_s) {
     // The owner's queue first (others cannot fill it), then everything else until empty or the
     // budget is spent, so junk from others cannot queue up in front of the owner's packets.
     const std::int64_t budget_end = now_ns() + static_cast<std::int64_t>(rx_budget_us_ * 1e3);
-    bool hit = owner_sock_ >= 0 && drain(owner_sock_, now_s, budget_end);
-    hit = drain(sock_, now_s, budget_end) || hit;
+    bool hit = owner_sock_ >= 0 && drain(owner_sock_, 1, now_s, budget_end);
+    hit = drain(sock_, 0, now_s, budget_end) || hit;
     if (hit) ++pk_.rx_budget_hits;
   }
   if (have_owner_ && now_s - last_valid_s_ > input_timeout_) end_session(false);

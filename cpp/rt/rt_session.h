@@ -27,6 +27,7 @@
 #pragma once
 
 #include <netinet/in.h>
+#include <sys/socket.h>
 
 #include <array>
 #include <cstdint>
@@ -79,6 +80,10 @@ class Session {
   int bound_port() const { return bound_port_; }
   double hold_s() const { return hold_s_; }                 // zero held after a timeout (simulated s)
   double resume_grace_s() const { return grace_s_; }        // the timed-out owner's turn after the hold (s)
+  // The receive buffers obtained (getsockopt SO_RCVBUF: twice the request, the kernel's bookkeeping included);
+  // 0: no such queue.
+  int rcvbuf_bytes() const { return rcvbuf_bytes_; }
+  int owner_rcvbuf_bytes() const { return owner_rcvbuf_bytes_; }
   bool authenticated() const { return key_.enabled(); }
   const PacketCounters& counters() const { return pk_; }
 
@@ -87,7 +92,7 @@ class Session {
   // The sequence check and claim of an applicable packet (excitation or stimulation); false: not applied.
   bool accept_sequence(const Header& h, const sockaddr_in& from);
   void applied(const Header& h, double now_s);
-  bool drain(int fd, double now_s, std::int64_t budget_end);
+  bool drain(int fd, int queue, double now_s, std::int64_t budget_end);
   void isolate_owner(const sockaddr_in* owner);
   void end_session(bool released);
   void send_offer(const sockaddr_in& to);
@@ -126,6 +131,11 @@ class Session {
   std::vector<std::uint8_t> rx_buf_, tx_buf_;
   std::vector<sockaddr_in> rx_from_;
   std::vector<char> rx_hdr_storage_;    // mmsghdr[kBatch] + iovec[kBatch], preallocated
+  // Ancillary data per datagram (the SO_RXQ_OVFL drop count), 8-byte aligned, preallocated.
+  static constexpr std::size_t kCtrlWords = (CMSG_SPACE(sizeof(std::uint32_t)) + 7) / 8;
+  std::vector<std::uint64_t> rx_ctrl_;
+  std::uint32_t queue_drops_[2] = {0, 0};  // the kernel's drop count of the shared and the owner's queue
+  int rcvbuf_bytes_ = 0, owner_rcvbuf_bytes_ = 0;  // as getsockopt(SO_RCVBUF) reports them
   std::vector<double> values_;          // decoded packet values / state staging (kMaxValues)
   std::uint32_t tx_seq_ = 0;
 

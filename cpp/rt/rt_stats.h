@@ -39,6 +39,7 @@ struct PacketCounters {
   std::uint64_t held_off = 0;      // hellos and claims refused in the hold after a timeout (anyone) or the
                                    // grace window (anyone but the timed-out owner)
   std::uint64_t session_ended = 0; // session-ended notices sent to a timed-out owner
+  std::uint64_t kernel_drops = 0;  // datagrams the kernel dropped, both queues full (SO_RXQ_OVFL; never read)
   std::uint64_t sessions = 0;      // sessions started (first excitation with the offered id)
   std::uint64_t owner_changes = 0; // sessions started by a source other than the previous owner
   std::uint64_t releases = 0;      // sessions ended by the owner
@@ -81,6 +82,8 @@ struct RtStats {
   bool authenticated = false;
   double session_hold_s = 0;      // zero held after an owner's timeout (ln(100) * the largest tdeact, rt_session.h)
   double resume_grace_s = 0;      // then the timed-out owner alone may claim the session (--resume-grace)
+  int rcvbuf_bytes = 0;           // the shared receive queue's buffer, as getsockopt(SO_RCVBUF) reports it
+  int owner_rcvbuf_bytes = 0;     // the owner's queue's (0: none)
 };
 
 // The cycle records: three histograms and the overrun / missed-period counts.
