@@ -1553,3 +1553,19 @@ def test_statistics_report_receive_buffers_and_kernel_drops():
     assert st["packets"]["kernel_drops"] == 0
     for key in ("replies_limited", "held_off", "session_ended"):
         assert st["packets"][key] == 0
+
+
+def test_read_key_file_is_the_runners_reader(tmp_path):
+    """One implementation of the key-file rules: Python's read_key_file is the runner's (armrt._rt), an unopenable
+    file still an OSError naming it."""
+    assert rt.read_key_file.__module__ == "armrt.realtime_packets"
+    with pytest.raises(FileNotFoundError) as e:
+        rt.read_key_file(tmp_path / "absent")
+    assert e.value.filename == str(tmp_path / "absent")
+    short = tmp_path / "short"
+    short.write_bytes(b"too short\n")
+    short.chmod(0o600)
+    with pytest.raises(ValueError, match="shorter than 16 bytes"):
+        rt.read_key_file(short)
+    with pytest.raises(ValueError, match="not a regular file"):
+        rt.read_key_file(tmp_path)

@@ -12,6 +12,7 @@
 #include <arpa/inet.h>
 
 #include "endpoint.h"
+#include "hmac.h"
 #include "packet.h"
 #include "rt_loop.h"
 
@@ -108,6 +109,18 @@ PYBIND11_MODULE(_rt, m) {
       }, py::arg("endpoint"), py::arg("require_port") = false,
       "'host:port' -> (numeric IPv4 host, port) as the runner reads it (empty host or localhost: 127.0.0.1); "
       "ValueError naming the problem");
+
+  m.def("read_key_file", [](const std::string& path) {
+        try {
+          return py::bytes(read_key_file(path));
+        } catch (const KeyFileOpenError& e) {
+          errno = e.error;  // OSError (FileNotFoundError, PermissionError, ...) naming the file, as open() raises it
+          PyErr_SetFromErrnoWithFilename(PyExc_OSError, path.c_str());
+          throw py::error_already_set();
+        }
+      }, py::arg("path"),
+      "The shared key in a file, by armrt-rt --key-file's rules (cpp/rt/hmac.cc, the one implementation): ValueError "
+      "naming the problem, OSError if it cannot be opened");
 
   py::class_<RtLoop>(m, "RtLoop")
       .def(py::init([](const std::string& model, const std::string& integrator, double rate_hz, double integration_step,
