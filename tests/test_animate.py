@@ -124,3 +124,81 @@ def test_animate_plays_a_mot_motion(saved, tmp_path, capsys):
     assert main(["animate", str(tmp_path / "m.mot"), "-o", str(tmp_path / "m.gif"), "--fps", "5", "--dpi", "30"]) == 0
     from PIL import Image
     assert Image.open(tmp_path / "m.gif").n_frames == len(frame_indices(res.time, 5))
+
+
+def test_frame_rows_are_frame_indices_without_the_array():
+    from armrt.animate import FrameRows
+    rng = np.random.default_rng(4)
+    for _ in range(20):
+        t = np.sort(rng.uniform(0, 3, rng.integers(1, 60)))
+        fps, speed = float(rng.choice([5, 10, 30])), float(rng.choice([0.5, 1.0, 2.0]))
+        rows = FrameRows(t, fps, speed)
+        np.testing.assert_array_equal(list(rows), frame_indices(t, fps, speed))
+        assert len(FrameRows(t, fps, speed, max_frames=3)) == min(3, len(rows))
+    with pytest.raises(ValueError, match="non-decreasing"):
+        FrameRows(np.array([0.0, 2.0, 1.0]), 10)
+
+
+def _stretched(res, factor):
+    import copy
+    long = copy.copy(res)
+    long.time = res.time * factor
+    return long
+
+
+def test_animate_memory_does_not_grow_with_the_video(saved, tmp_path):
+    """The measured fault: a 19 KB result file reached 2 GB in 30 s (the geometry of every frame computed before the
+    first was drawn). The same result stretched 10^5 times in time: 10^6 frames at 20 frames/s. The animation's
+    figure for all of them (FrameRows, drawn lazily) peaks, in tracemalloc, within 2 MB of the figure for 3 frames
+    (before: the geometry of the 10^6 frames first, > 144 MB), and draws its last frame; the whole video is refused
+    before any work without max_frames, naming the frame count."""
+    import tracemalloc
+
+    import matplotlib
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    from armrt.animate import FrameRows, build_figure
+    res, _ = saved
+    long = _stretched(res, 1e5)
+    peaks = []
+    for max_frames in (3, None):
+        rows = FrameRows(long.time, 20, 1.0, max_frames)
+        tracemalloc.start()
+        fig, draw, _ = build_figure(long, rows, dpi=20)
+        for k in (0, len(rows) // 2, len(rows) - 1):
+            draw(k)
+        peaks.append(tracemalloc.get_traced_memory()[1])
+        tracemalloc.stop()
+        plt.close(fig)
+    assert len(FrameRows(long.time, 20)) == 10 ** 6 + 1  # 0 .. 50 000 s every 0.05 s
+    assert peaks[1] < peaks[0] + 2e6, peaks
+    with pytest.raises(ValueError, match="1000001 frames .* more than"):
+        animate(long, tmp_path / "refused.gif", fps=20, dpi=20, progress=False)
+    assert not (tmp_path / "refused.gif").exists()
+    out = animate(long, tmp_path / "bounded.gif", fps=20, dpi=20, max_frames=3, progress=False)
+    from PIL import Image
+    assert Image.open(out).n_frames == 3
+
+
+def test_animate_frames_show_their_rows(saved, tmp_path):
+    """Drawn one at a time, frame k still shows row rows[k]: each decoded frame matches the figure drawn for it."""
+    import matplotlib
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+    from PIL import Image
+
+    from armrt.animate import FrameRows, build_figure
+    res, _ = saved
+    out = animate(res, tmp_path / "f.gif", fps=10, dpi=30, max_frames=4, progress=False)
+    im = Image.open(out)
+    rows = FrameRows(res.time, 10, 1.0, 4)
+    fig, draw, _ = build_figure(res, rows, dpi=30)
+    for k in range(4):
+        draw(k)
+        fig.canvas.draw()
+        drawn = np.asarray(fig.canvas.buffer_rgba())[..., :3].astype(int)
+        im.seek(k)
+        shown = np.asarray(im.convert("RGB"), dtype=int)
+        assert shown.shape == drawn.shape and np.abs(shown - drawn).mean() < 2.0, k
+    plt.close(fig)

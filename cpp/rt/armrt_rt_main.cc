@@ -114,6 +114,8 @@ int main(int argc, char** argv) {
   app.add_flag("--excitations", cfg.send_excitation, "append the applied element excitations to state packets");
   app.add_option("--timeout", cfg.input_timeout, "s of input silence after which the session ends and the excitation "
                                                  "falls to zero (2 periods .. 10 s)")->capture_default_str();
+  app.add_option("--resume-grace", cfg.resume_grace, "s after the hold that follows a timeout in which only the timed-out "
+                                                     "owner may claim the session again (0 .. 60 s)")->capture_default_str();
   app.add_option("--channels", cfg.channels, "names (element, muscle or group) of the channel mapping (packet type 4)")
       ->delimiter(',');
   app.add_option("--max-activation", cfg.max_activation, "paralysis/weakness: NAME=V caps the activation of "
@@ -228,6 +230,8 @@ int main(int argc, char** argv) {
               (unsigned long long)k.received, (unsigned long long)k.applied, (unsigned long long)k.dropped(),
               (unsigned long long)k.foreign, (unsigned long long)k.sessions, (unsigned long long)k.owner_changes,
               (unsigned long long)k.timeouts, (unsigned long long)k.state_sent, st.lag_s);
+  std::printf("  kernel drops %llu (receive buffers %d and %d bytes)\n", (unsigned long long)k.kernel_drops,
+              st.rcvbuf_bytes, st.owner_rcvbuf_bytes);
   if (!cfg.stimulation.empty())
     std::printf("  stimulation: %d channels, packets applied %llu, clamped to the channels' limits %llu\n",
                 loop->arm().data.stimulation_map.num_channels, (unsigned long long)k.stimulation_applied,

@@ -61,7 +61,10 @@ std::string read_key_file(const std::string& path) {
   // a FIFO would block) that neither the group nor others may read or write. The checks are on the opened
   // descriptor (fstat), so the file checked is the file read. O_NONBLOCK: opening a FIFO does not wait.
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-  if (fd < 0) throw std::invalid_argument("cannot read the key file '" + path + "': " + std::strerror(errno));
+  if (fd < 0) {
+    const int err = errno;
+    throw KeyFileOpenError("cannot read the key file '" + path + "': " + std::strerror(err), err);
+  }
   struct stat st {};
   if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
     ::close(fd);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 
 #include <openssl/sha.h>
@@ -27,8 +28,17 @@ class HmacKey {
   SHA256_CTX inner_{}, outer_{};
 };
 
+// The file could not be opened (errno in `error`): a std::invalid_argument to the runner (exit status 2), an
+// OSError to Python (armrt._rt.read_key_file), as open() failing is there.
+struct KeyFileOpenError : std::invalid_argument {
+  KeyFileOpenError(const std::string& what, int err) : std::invalid_argument(what), error(err) {}
+  int error;
+};
+
 // The key in a file: its bytes, without one trailing newline (so `head -c 32 /dev/urandom | base64 >
-// key` and `openssl rand -hex 32 > key` both work). Throws std::invalid_argument naming the problem.
+// key` and `openssl rand -hex 32 > key` both work). Throws std::invalid_argument naming the problem
+// (KeyFileOpenError if it cannot be opened). The one implementation of the rules: armrt-rt --key-file and
+// Python's armrt.realtime.read_key_file (through armrt._rt) both call it.
 std::string read_key_file(const std::string& path);
 
 }  // namespace armrt::rt

@@ -49,6 +49,8 @@ enum PacketType : std::uint16_t {
   kStimulation = 7,         // count = 3 * channels of the runner's --stimulation map, in its order: per channel
                             // pulse width (s), amplitude (A), frequency (Hz); beyond a channel's limits: clamped
   kOffer = 17,              // runner -> controller, count 0: the session id to put in excitation packets
+  kSessionEnded = 18,       // runner -> the owner whose session timed out, count 3: reason (1: timeout), hold (s),
+                            // resume grace (s); the session field is the ended session's id (docs/realtime.md)
 };
 
 enum PacketFlags : std::uint16_t {

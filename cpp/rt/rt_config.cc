@@ -89,6 +89,7 @@ Schedule check_config(RtConfig& cfg) {
   if (cfg.cpu < -1 || cfg.cpu >= CPU_SETSIZE) throw std::invalid_argument("--cpu must be a CPU number >= 0");
   // The safety timeout is bounded: at least two periods (one late packet is not a silence), at most 10 s.
   check_range("--timeout", cfg.input_timeout, 2 * s.period_s, 10.0, "s");
+  check_range("--resume-grace", cfg.resume_grace, 0.0, 60.0, "s");
   check_range("--busy-wait", cfg.busy_wait_us, 0.0, 0.5e6 * s.period_s, "us (at most half the period)");
   if (cfg.duration != 0)
     check_range("--duration", cfg.duration, s.period_s, 1e7, "s (0: until stopped; else at least one period)");

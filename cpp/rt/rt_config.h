@@ -42,6 +42,9 @@ struct RtConfig {
   bool send_forces = false;    // append the muscle forces to state packets
   bool send_excitation = false;  // append the applied element excitations to state packets
   double input_timeout = 0.1;  // s of silence from the owner after which its session ends (excitation 0)
+  // s after the hold that follows a timeout during which only the timed-out owner may claim the session again
+  // (rt_session.h; docs/realtime.md "Sessions"): 0 .. 60.
+  double resume_grace = 1.0;
   std::vector<std::string> channels;  // names (element, muscle or group) of the kExcitationChannels mapping
   // Paralysis / weakness: "NAME=VALUE" (element, muscle or group; VALUE in [0, 1]) caps the
   // activation every excitation source can produce; later entries override earlier ones.

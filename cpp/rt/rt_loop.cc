@@ -352,6 +352,10 @@ RtStats RtLoop::stats() const {
   st.integration_step = cfg_.integration_step;
   st.integrator = cfg_.integrator;
   st.authenticated = session_->authenticated();
+  st.session_hold_s = session_->hold_s();
+  st.resume_grace_s = session_->resume_grace_s();
+  st.rcvbuf_bytes = session_->rcvbuf_bytes();
+  st.owner_rcvbuf_bytes = session_->owner_rcvbuf_bytes();
   return st;
 }
 

@@ -59,6 +59,7 @@ class RtLoop {
   Arm& arm() { return *sim_; }
   static Percentiles percentiles(const LogHistogram& h) { return rt::percentiles(h); }
   bool authenticated() const { return session_->authenticated(); }
+  double hold_s() const { return session_->hold_s(); }  // zero held after an owner's timeout (rt_session.h)
 
  private:
   static void* thread_main(void* self);

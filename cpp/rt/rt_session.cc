@@ -32,6 +32,24 @@ std::uint32_t next_session_id(std::uint64_t& s) {
   }
 }
 
+// The receive buffer both queues ask for: 4 MB, as the kernel counts it 8 MB with its bookkeeping (getsockopt
+// reports the doubled value), which holds about 10 000 of the smallest datagrams (24 bytes, each costing
+// ~830 bytes of kernel memory) or about 990 of the largest packets (4152 bytes) between two cycles (the
+// default, 212 992 bytes, held 256 and 25). Beyond net.core.rmem_max only with CAP_NET_ADMIN (FORCE first);
+// the size obtained is in the statistics. Drops beyond it are counted (SO_RXQ_OVFL).
+constexpr int kRcvBufBytes = 4 << 20;
+
+int size_queue(int fd) {
+  if (::setsockopt(fd, SOL_SOCKET, SO_RCVBUFFORCE, &kRcvBufBytes, sizeof kRcvBufBytes) != 0)
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &kRcvBufBytes, sizeof kRcvBufBytes);
+  const int one = 1;
+  ::setsockopt(fd, SOL_SOCKET, SO_RXQ_OVFL, &one, sizeof one);  // each datagram carries the queue's drop count
+  int got = 0;
+  socklen_t len = sizeof got;
+  ::getsockopt(fd, SOL_SOCKET, SO_RCVBUF, &got, &len);
+  return got;
+}
+
 bool same_source(const sockaddr_in& a, const sockaddr_in& b) {
   return a.sin_addr.s_addr == b.sin_addr.s_addr && a.sin_port == b.sin_port;
 }
@@ -69,9 +87,23 @@ Session::Session(const RtConfig& cfg, const ModelDef& def, const StimulationMap&
   level_scratch_.assign(n_el_, NameLevel::kUnnamed);
   command_.assign(n_el_, 0.0);
 
+  // The hold after a timeout: at zero excitation each activation decays as exp(-t / tdeact) (the model's
+  // activation dynamics, da/dt = (c1 u + c2)(u - a) with c2 = 1/tdeact, He et al. 1991); ln(100) time
+  // constants of the slowest element take every activation below 1 % of its value (das2: deltoid, tdeact
+  // 83.5 ms: 0.385 s). Counted in cycles of simulated time.
+  double tdeact_max = 0;
+  for (int i = 0; i < def.num_elements; ++i) tdeact_max = std::max(tdeact_max, def.elements[i].tdeact);
+  const double period_s = 1.0 / cfg.rate_hz;
+  hold_cycles_ = static_cast<std::int64_t>(std::ceil(std::log(100.0) * tdeact_max / period_s - 1e-9));
+  hold_s_ = static_cast<double>(hold_cycles_) * period_s;
+  grace_cycles_ = static_cast<std::int64_t>(std::ceil(cfg.resume_grace / period_s - 1e-9));
+  grace_s_ = static_cast<double>(grace_cycles_) * period_s;
+  reply_interval_cycles_ = std::max<std::int64_t>(1, std::llround(kReplyInterval / period_s));
+
   rx_buf_.assign(static_cast<std::size_t>(kBatch) * (kMaxPacket + 64), 0);
   rx_from_.assign(kBatch, sockaddr_in{});
   rx_hdr_storage_.assign(kBatch * (sizeof(mmsghdr) + sizeof(iovec)), 0);
+  rx_ctrl_.assign(kBatch * kCtrlWords, 0);
   tx_buf_.assign(kMaxPacket, 0);
   values_.assign(kMaxValues, 0.0);
 
@@ -116,13 +148,14 @@ Session::Session(const RtConfig& cfg, const ModelDef& def, const StimulationMap&
       ::getsockname(sock_, reinterpret_cast<sockaddr*>(&a), &len);
       bound_port_ = ntohs(a.sin_port);
       // A receive buffer that holds a period of a flood, so the owner's packets are not dropped by the
-      // kernel between two cycles (beyond net.core.rmem_max only with CAP_NET_ADMIN: FORCE first).
-      const int rcvbuf = 4 << 20;
-      if (::setsockopt(sock_, SOL_SOCKET, SO_RCVBUFFORCE, &rcvbuf, sizeof rcvbuf) != 0)
-        ::setsockopt(sock_, SOL_SOCKET, SO_RCVBUF, &rcvbuf, sizeof rcvbuf);
+      // kernel between two cycles (kRcvBufBytes above).
+      rcvbuf_bytes_ = size_queue(sock_);
       bound_addr_ = a;
       if (bound_addr_.sin_addr.s_addr == htonl(INADDR_ANY)) bound_addr_.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
       owner_sock_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+      // Sized as the shared queue: with the default buffer, junk from the owner's own address (a buggy
+      // controller) cost owner packets (3 lost in the audit of issue 29).
+      if (owner_sock_ >= 0) owner_rcvbuf_bytes_ = size_queue(owner_sock_);
       if (owner_sock_ < 0 || ::setsockopt(owner_sock_, SOL_SOCKET, SO_REUSEPORT, &one, sizeof one) != 0 ||
           ::bind(owner_sock_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 ||
           ::connect(owner_sock_, reinterpret_cast<sockaddr*>(&bound_addr_), sizeof bound_addr_) != 0) {
@@ -131,6 +164,7 @@ Session::Session(const RtConfig& cfg, const ModelDef& def, const StimulationMap&
                             "): a flood from others can crowd the owner's packets out of the socket buffer");
         if (owner_sock_ >= 0) ::close(owner_sock_);
         owner_sock_ = -1;
+        owner_rcvbuf_bytes_ = 0;
       }
       if (!is_loopback(a) && !key_.enabled())
         warnings.push_back("listening on " + to_string(a) +
@@ -150,9 +184,48 @@ void Session::send_to(const std::uint8_t* b, int len, const sockaddr_in& to) {
   if (rc != len) ++pk_.send_errors;
 }
 
+bool Session::may_claim(const sockaddr_in& from) const {
+  if (cycle_ < hold_end_) return false;                                          // the hold: nobody
+  if (cycle_ < grace_end_) return had_owner_ && same_source(from, previous_owner_);  // the old owner's turn
+  return true;
+}
+
+bool Session::reply_allowed(const sockaddr_in& to) {
+  // A flood from one source used to take the one offer per cycle every cycle (0 of 10 joins from elsewhere
+  // succeeded): each source now has its own share, and the cycle's replies are bounded (no amplification).
+  ReplySlot* slot = nullptr;
+  ReplySlot* oldest = &reply_slots_[0];
+  for (auto& r : reply_slots_) {
+    if (r.last_cycle >= 0 && r.addr == to.sin_addr.s_addr && r.port == to.sin_port) { slot = &r; break; }
+    if (r.last_cycle < oldest->last_cycle) oldest = &r;
+  }
+  if ((slot && cycle_ - slot->last_cycle < reply_interval_cycles_) || replies_this_cycle_ >= kRepliesPerCycle) {
+    ++pk_.replies_limited;
+    return false;
+  }
+  if (!slot) {  // a new source takes a free slot or the least recently answered one
+    slot = oldest;
+    slot->addr = to.sin_addr.s_addr;
+    slot->port = to.sin_port;
+  }
+  slot->last_cycle = cycle_;
+  ++replies_this_cycle_;
+  return true;
+}
+
+void Session::send_session_ended(const sockaddr_in& to) {
+  std::uint8_t* b = tx_buf_.data();
+  const std::uint16_t flags = key_.enabled() ? kFlagAuth : 0;
+  const double why[3] = {1.0, hold_s_, grace_s_};  // reason 1: timeout
+  const int len = encode(b, kSessionEnded, tx_seq_++, flags, why, 3, ended_session_id_);
+  if (key_.enabled()) key_.sign(b, len - kTagSize, b + len - kTagSize);
+  send_to(b, len, to);
+  ++pk_.session_ended;
+}
+
 void Session::send_offer(const sockaddr_in& to) {
-  if (offered_this_cycle_) return;  // at most one per cycle: a flood of hellos gets no flood back
-  offered_this_cycle_ = true;
+  if (!may_claim(to)) { ++pk_.held_off; return; }  // no offer while the source could not claim
+  if (!reply_allowed(to)) return;
   std::uint8_t* b = tx_buf_.data();
   const std::uint16_t flags = key_.enabled() ? kFlagAuth : 0;
   const int len = encode(b, kOffer, tx_seq_++, flags, nullptr, 0, session_id_);
@@ -173,6 +246,13 @@ void Session::end_session(bool released) {
   have_seq_ = false;
   notify_previous_ = true;  // the ex-owner gets one last state packet, flagged timed out, and no more
   isolate_owner(nullptr);
+  ended_session_id_ = released ? 0 : session_id_;
+  if (!released) {
+    // The hold, then the old owner's grace (rt_session.h); it is told now, so it does not send into a void.
+    hold_end_ = cycle_ + hold_cycles_;
+    grace_end_ = hold_end_ + grace_cycles_;
+    if (sock_ >= 0 && reply_allowed(previous_owner_)) send_session_ended(previous_owner_);
+  }
   session_id_ = next_session_id(session_rng_);  // no packet of the ended session is accepted again
 }
 
@@ -200,7 +280,7 @@ void Session::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in
   switch (h.type) {
     case kHello:
       ++pk_.hellos;
-      send_offer(from);
+      send_offer(from);  // none in the hold, only to the old owner in its grace, within each source's share
       return;
     case kRelease:
       if (have_owner_ && h.session == session_id_) end_session(true);
@@ -218,7 +298,13 @@ void Session::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in
     // Not (or no longer) this session's: never applied. The sender learns the current id, so a
     // controller that missed the offer or outlived a timeout can start over.
     ++pk_.bad_session;
-    send_offer(from);
+    if (ended_session_id_ != 0 && h.session == ended_session_id_ && had_owner_ && same_source(from, previous_owner_)) {
+      // The timed-out owner still sends in its ended session: it is told again that the session ended (it
+      // must join again, UdpClient raises SessionEnded), instead of silently getting a new id.
+      if (reply_allowed(from)) send_session_ended(from);
+    } else {
+      send_offer(from);
+    }
     return;
   }
   for (int k = 0; k < h.count; ++k) {
@@ -260,6 +346,7 @@ bool Session::accept_sequence(const Header& h, const sockaddr_in& from) {
     if (diff < 0) { ++pk_.out_of_order; return false; }
   }
   if (!have_owner_) {  // the first valid packet with the offered id claims the session
+    if (!may_claim(from)) { ++pk_.held_off; return false; }  // the hold / the old owner's grace
     have_owner_ = true;
     owner_ = from;
     isolate_owner(&owner_);
@@ -284,8 +371,9 @@ void Session::isolate_owner(const sockaddr_in* owner) {
   ::connect(owner_sock_, reinterpret_cast<const sockaddr*>(&to), sizeof to);
 }
 
-// Reads fd in batches until it is empty or the budget is spent; true if the budget ran out.
-bool Session::drain(int fd, double now_s, std::int64_t budget_end) {
+// Reads fd (queue 0: shared, 1: the owner's) in batches until it is empty or the budget is spent; true if the
+// budget ran out.
+bool Session::drain(int fd, int queue, double now_s, std::int64_t budget_end) {
   auto* msgs = reinterpret_cast<mmsghdr*>(rx_hdr_storage_.data());
   auto* iov = reinterpret_cast<iovec*>(rx_hdr_storage_.data() + kBatch * sizeof(mmsghdr));
   const std::size_t slot = kMaxPacket + 64;
@@ -298,29 +386,41 @@ bool Session::drain(int fd, double now_s, std::int64_t budget_end) {
       msgs[i].msg_hdr.msg_namelen = sizeof(sockaddr_in);
       msgs[i].msg_hdr.msg_iov = &iov[i];
       msgs[i].msg_hdr.msg_iovlen = 1;
+      msgs[i].msg_hdr.msg_control = rx_ctrl_.data() + i * kCtrlWords;
+      msgs[i].msg_hdr.msg_controllen = kCtrlWords * sizeof(std::uint64_t);
       msgs[i].msg_len = 0;
     }
     const int got = ::recvmmsg(fd, msgs, kBatch, MSG_DONTWAIT, nullptr);
     if (got <= 0) return false;  // EAGAIN: empty (other errors: try again next cycle)
     for (int i = 0; i < got; ++i) {
+      // SO_RXQ_OVFL: the queue's drop count so far (datagrams the kernel dropped because the queue was full),
+      // carried by every datagram read; drops after the last one read show with the next.
+      for (cmsghdr* cm = CMSG_FIRSTHDR(&msgs[i].msg_hdr); cm; cm = CMSG_NXTHDR(&msgs[i].msg_hdr, cm))
+        if (cm->cmsg_level == SOL_SOCKET && cm->cmsg_type == SO_RXQ_OVFL) {
+          std::uint32_t v;
+          std::memcpy(&v, CMSG_DATA(cm), sizeof v);
+          queue_drops_[queue] = v;
+        }
       ++pk_.received;
       long len = static_cast<long>(msgs[i].msg_len);
       if (msgs[i].msg_hdr.msg_flags & MSG_TRUNC) len = kMaxPacket + 1;  // larger than any packet
       handle_datagram(rx_buf_.data() + i * slot, len, rx_from_[i], now_s);
     }
+    pk_.kernel_drops = static_cast<std::uint64_t>(queue_drops_[0]) + queue_drops_[1];
     if (got < kBatch) return false;
     if (now_ns() >= budget_end) return true;
   }
 }
 
 void Session::receive(double now_s) {
-  offered_this_cycle_ = false;
+  ++cycle_;
+  replies_this_cycle_ = 0;
   if (sock_ >= 0 && listening_) {
     // The owner's queue first (others cannot fill it), then everything else until empty or the
     // budget is spent, so junk from others cannot queue up in front of the owner's packets.
     const std::int64_t budget_end = now_ns() + static_cast<std::int64_t>(rx_budget_us_ * 1e3);
-    bool hit = owner_sock_ >= 0 && drain(owner_sock_, now_s, budget_end);
-    hit = drain(sock_, now_s, budget_end) || hit;
+    bool hit = owner_sock_ >= 0 && drain(owner_sock_, 1, now_s, budget_end);
+    hit = drain(sock_, 0, now_s, budget_end) || hit;
     if (hit) ++pk_.rx_budget_hits;
   }
   if (have_owner_ && now_s - last_valid_s_ > input_timeout_) end_session(false);

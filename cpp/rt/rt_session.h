@@ -9,11 +9,27 @@
 // it: the excitation falls to zero, state stops going to the owner, and a new session id is drawn,
 // so no packet of the old session is ever applied again.
 //
+// After a timeout (not a release: that is the owner's deliberate hand-over) the zero is held for
+// hold_s() of simulated time, ln(100) deactivation time constants of the model's slowest element
+// (activation dynamics da/dt = -a / tdeact at zero excitation, He et al. 1991, the model's tdeact): every
+// activation is then below 1 % of its value at the timeout. Nobody may own the arm during the hold; then,
+// for resume_grace_s(), only the timed-out owner may; then anyone. The timed-out owner is told at once
+// (kSessionEnded), and again when a packet of its ended session arrives. Both intervals are counted in
+// cycles (one period of simulated time each), so a loop that falls behind holds longer in wall time,
+// never shorter in the model's time.
+//
+// Replies (offers, session-ended notices) are shared between sources: at most one per source per
+// kReplyInterval s and kRepliesPerCycle per cycle, the sources remembered in a fixed table of
+// kReplySources (least recently answered evicted), so a hello flood from one source cannot take the
+// offers every other source asks for.
+//
 // Everything that allocates happens in the constructor; receive() and send_state() do not.
 #pragma once
 
 #include <netinet/in.h>
+#include <sys/socket.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -62,6 +78,12 @@ class Session {
   void send_state(const StateValues& values, std::uint16_t loop_flags);
 
   int bound_port() const { return bound_port_; }
+  double hold_s() const { return hold_s_; }                 // zero held after a timeout (simulated s)
+  double resume_grace_s() const { return grace_s_; }        // the timed-out owner's turn after the hold (s)
+  // The receive buffers obtained (getsockopt SO_RCVBUF: twice the request, the kernel's bookkeeping included);
+  // 0: no such queue.
+  int rcvbuf_bytes() const { return rcvbuf_bytes_; }
+  int owner_rcvbuf_bytes() const { return owner_rcvbuf_bytes_; }
   bool authenticated() const { return key_.enabled(); }
   const PacketCounters& counters() const { return pk_; }
 
@@ -70,10 +92,15 @@ class Session {
   // The sequence check and claim of an applicable packet (excitation or stimulation); false: not applied.
   bool accept_sequence(const Header& h, const sockaddr_in& from);
   void applied(const Header& h, double now_s);
-  bool drain(int fd, double now_s, std::int64_t budget_end);
+  bool drain(int fd, int queue, double now_s, std::int64_t budget_end);
   void isolate_owner(const sockaddr_in* owner);
   void end_session(bool released);
   void send_offer(const sockaddr_in& to);
+  void send_session_ended(const sockaddr_in& to);
+  // May `from` claim the session now (not in the hold; in the grace window only the timed-out owner)?
+  bool may_claim(const sockaddr_in& from) const;
+  // Is a reply to `to` within its share (per source and per cycle)? Records it if so.
+  bool reply_allowed(const sockaddr_in& to);
   void send_to(const std::uint8_t* b, int len, const sockaddr_in& to);
 
   bool listening_ = false;
@@ -104,6 +131,11 @@ class Session {
   std::vector<std::uint8_t> rx_buf_, tx_buf_;
   std::vector<sockaddr_in> rx_from_;
   std::vector<char> rx_hdr_storage_;    // mmsghdr[kBatch] + iovec[kBatch], preallocated
+  // Ancillary data per datagram (the SO_RXQ_OVFL drop count), 8-byte aligned, preallocated.
+  static constexpr std::size_t kCtrlWords = (CMSG_SPACE(sizeof(std::uint32_t)) + 7) / 8;
+  std::vector<std::uint64_t> rx_ctrl_;
+  std::uint32_t queue_drops_[2] = {0, 0};  // the kernel's drop count of the shared and the owner's queue
+  int rcvbuf_bytes_ = 0, owner_rcvbuf_bytes_ = 0;  // as getsockopt(SO_RCVBUF) reports them
   std::vector<double> values_;          // decoded packet values / state staging (kMaxValues)
   std::uint32_t tx_seq_ = 0;
 
@@ -116,8 +148,27 @@ class Session {
   bool have_seq_ = false;
   std::uint32_t last_seq_ = 0;
   double last_valid_s_ = -1;            // loop time of the owner's last applied excitation
-  bool offered_this_cycle_ = false;
   PacketCounters pk_;
+
+  // Hold and grace after a timeout, in cycles (receive() calls: one period of simulated time each).
+  std::int64_t cycle_ = 0;
+  double hold_s_ = 0, grace_s_ = 0;
+  std::int64_t hold_cycles_ = 0, grace_cycles_ = 0;
+  std::int64_t hold_end_ = 0, grace_end_ = 0;  // cycle numbers; 0: no hold (never timed out)
+  std::uint32_t ended_session_id_ = 0;  // the timed-out session's id (0: none, or ended by release)
+
+  // Fair replies: one per source per reply_interval_cycles_, kRepliesPerCycle per cycle.
+  static constexpr int kReplySources = 64;
+  static constexpr int kRepliesPerCycle = 4;
+  static constexpr double kReplyInterval = 0.01;  // s; UdpClient.join says hello every 50 ms
+  struct ReplySlot {
+    in_addr_t addr = 0;
+    in_port_t port = 0;
+    std::int64_t last_cycle = -1;  // -1: free
+  };
+  std::array<ReplySlot, kReplySources> reply_slots_{};
+  std::int64_t reply_interval_cycles_ = 1;
+  int replies_this_cycle_ = 0;
 };
 
 }  // namespace armrt::rt

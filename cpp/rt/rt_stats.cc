@@ -61,6 +61,10 @@ std::string stats_json(const RtStats& s) {
   j["error"] = s.error;
   j["warnings"] = s.warnings;
   j["authenticated"] = s.authenticated;
+  j["session_hold_s"] = s.session_hold_s;
+  j["resume_grace_s"] = s.resume_grace_s;
+  j["rcvbuf_bytes"] = s.rcvbuf_bytes;
+  j["owner_rcvbuf_bytes"] = s.owner_rcvbuf_bytes;
   j["units"] = "ns";
   j["percentile_precision"] = "log-bucket histogram: values within 1/64 of their size";
   j["tet_ns"] = json_pct(s.tet);
@@ -72,7 +76,9 @@ std::string stats_json(const RtStats& s) {
                   {"bad_count", k.bad_count}, {"bad_auth", k.bad_auth}, {"bad_session", k.bad_session},
                   {"non_finite", k.non_finite}, {"stale", k.stale}, {"out_of_order", k.out_of_order},
                   {"clipped", k.clipped}, {"stimulation_applied", k.stimulation_applied},
-                  {"stimulation_clamped", k.stimulation_clamped}, {"hellos", k.hellos}, {"offers", k.offers}, {"sessions", k.sessions},
+                  {"stimulation_clamped", k.stimulation_clamped}, {"hellos", k.hellos}, {"offers", k.offers},
+                  {"replies_limited", k.replies_limited}, {"held_off", k.held_off}, {"session_ended", k.session_ended},
+                  {"kernel_drops", k.kernel_drops}, {"sessions", k.sessions},
                   {"owner_changes", k.owner_changes}, {"releases", k.releases}, {"timeouts", k.timeouts},
                   {"rx_budget_hits", k.rx_budget_hits}, {"state_sent", k.state_sent},
                   {"send_errors", k.send_errors}};

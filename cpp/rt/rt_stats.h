@@ -34,7 +34,12 @@ struct PacketCounters {
   std::uint64_t stimulation_clamped = 0;  // stimulation packets with a value beyond its channel's limits
                                           // (pulse width, amplitude, frequency, charge; applied, clamped)
   std::uint64_t hellos = 0;        // session requests read
-  std::uint64_t offers = 0;        // session offers sent (at most one per cycle)
+  std::uint64_t offers = 0;        // session offers sent (at most one per source per 10 ms, 4 per cycle)
+  std::uint64_t replies_limited = 0;  // hellos / stale-session packets not answered: the source's share was spent
+  std::uint64_t held_off = 0;      // hellos and claims refused in the hold after a timeout (anyone) or the
+                                   // grace window (anyone but the timed-out owner)
+  std::uint64_t session_ended = 0; // session-ended notices sent to a timed-out owner
+  std::uint64_t kernel_drops = 0;  // datagrams the kernel dropped, both queues full (SO_RXQ_OVFL; never read)
   std::uint64_t sessions = 0;      // sessions started (first excitation with the offered id)
   std::uint64_t owner_changes = 0; // sessions started by a source other than the previous owner
   std::uint64_t releases = 0;      // sessions ended by the owner
@@ -75,6 +80,10 @@ struct RtStats {
   double integration_step = 0;    // s, the integrator's step inside a cycle
   std::string integrator;
   bool authenticated = false;
+  double session_hold_s = 0;      // zero held after an owner's timeout (ln(100) * the largest tdeact, rt_session.h)
+  double resume_grace_s = 0;      // then the timed-out owner alone may claim the session (--resume-grace)
+  int rcvbuf_bytes = 0;           // the shared receive queue's buffer, as getsockopt(SO_RCVBUF) reports it
+  int owner_rcvbuf_bytes = 0;     // the owner's queue's (0: none)
 };
 
 // The cycle records: three histograms and the overrun / missed-period counts.

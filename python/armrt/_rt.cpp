@@ -12,6 +12,7 @@
 #include <arpa/inet.h>
 
 #include "endpoint.h"
+#include "hmac.h"
 #include "packet.h"
 #include "rt_loop.h"
 
@@ -50,6 +51,7 @@ PYBIND11_MODULE(_rt, m) {
   types["state"] = static_cast<int>(kStatePacket);
   types["offer"] = static_cast<int>(kOffer);
   types["stimulation"] = static_cast<int>(kStimulation);
+  types["session_ended"] = static_cast<int>(kSessionEnded);
   m.attr("TYPES") = types;
   py::dict flags;
   flags["forces"] = static_cast<int>(kFlagForces);
@@ -108,6 +110,18 @@ PYBIND11_MODULE(_rt, m) {
       "'host:port' -> (numeric IPv4 host, port) as the runner reads it (empty host or localhost: 127.0.0.1); "
       "ValueError naming the problem");
 
+  m.def("read_key_file", [](const std::string& path) {
+        try {
+          return py::bytes(read_key_file(path));
+        } catch (const KeyFileOpenError& e) {
+          errno = e.error;  // OSError (FileNotFoundError, PermissionError, ...) naming the file, as open() raises it
+          PyErr_SetFromErrnoWithFilename(PyExc_OSError, path.c_str());
+          throw py::error_already_set();
+        }
+      }, py::arg("path"),
+      "The shared key in a file, by armrt-rt --key-file's rules (cpp/rt/hmac.cc, the one implementation): ValueError "
+      "naming the problem, OSError if it cannot be opened");
+
   py::class_<RtLoop>(m, "RtLoop")
       .def(py::init([](const std::string& model, const std::string& integrator, double rate_hz, double integration_step,
                        std::vector<double> q0, double duration, bool realtime, int priority, bool lock_memory,
@@ -116,7 +130,8 @@ PYBIND11_MODULE(_rt, m) {
                        double state_rate_hz, bool send_forces, bool send_excitation, double input_timeout,
                        std::vector<std::string> channels, double rx_budget_us,
                        std::vector<std::string> max_activation, const std::string& stimulation,
-                       std::vector<std::string> strength, const std::string& profile, double settle) {
+                       std::vector<std::string> strength, const std::string& profile, double settle,
+                       double resume_grace) {
              RtConfig c;
              c.model = model;
              c.integrator = integrator;
@@ -146,6 +161,7 @@ PYBIND11_MODULE(_rt, m) {
              c.stimulation = stimulation;
              c.profile = profile;
              c.settle_s = settle;
+             c.resume_grace = resume_grace;
              return std::make_unique<RtLoop>(c);
            }),
            py::arg("model") = "das2", py::arg("integrator") = RtConfig{}.integrator, py::arg("rate_hz") = 1000.0,
@@ -158,7 +174,8 @@ PYBIND11_MODULE(_rt, m) {
            py::arg("input_timeout") = 0.1, py::arg("channels") = std::vector<std::string>{},
            py::arg("rx_budget_us") = 0.0, py::arg("max_activation") = std::vector<std::string>{},
            py::arg("stimulation") = "", py::arg("strength") = std::vector<std::string>{},
-           py::arg("profile") = "", py::arg("settle") = 0.0)
+           py::arg("profile") = "", py::arg("settle") = 0.0,
+           py::arg("resume_grace") = RtConfig{}.resume_grace)
       .def("start", [](RtLoop& l) {
         py::gil_scoped_release release;
         l.start();

@@ -5,7 +5,10 @@ model's clavicle, scapula, glenoid and scapulothoracic contact points move with 
 ellipsoid's outline), the GH stability trace (red above 1) and per-muscle activation bars. Frames go to the encoder as they are drawn, so
 memory does not grow with the length of the video: .gif through StreamingGifWriter (Pillow, one frame
 in memory; matplotlib's PillowWriter keeps every frame: 1.3 GB for 600), .mp4 through ffmpeg's pipe
-(Debian package `ffmpeg`).
+(Debian package `ffmpeg`). The frames' rows (FrameRows) and each frame's geometry are computed when the
+frame is drawn, not for the whole video first (a 19 KB result spanning a long time reached 2 GB in 30 s
+before its first frame), and a video of more than MAX_FRAMES frames is refused before any work unless
+max_frames bounds it.
 """
 from __future__ import annotations
 
@@ -22,6 +25,48 @@ GIRDLE_STYLE = {"clavicle_r": dict(color="#00a060", lw=4, solid_capstyle="round"
                 "scapula_r": dict(color="#a05a2c", lw=2.5),
                 "glenoid": dict(color="#a05a2c", lw=1.2),
                 "contact_points": dict(color="#d4a000", ls="none", marker="s", ms=5)}
+
+
+# An hour of video at 30 frames/s (encoding it takes hours here): longer asks for max_frames or a higher speed.
+MAX_FRAMES = 108_000
+
+
+class FrameRows:
+    """The rows of a result shown at `fps` frames per second of wall time, `speed` x real time, as a lazy
+    sequence (len, [k], iteration): frame k shows the first row at or after time[0] + k * speed / fps, the rows
+    frame_indices lists, without an array of every frame. max_frames: keep only the first ones.
+    ValueError as frame_indices."""
+
+    def __init__(self, time, fps: float, speed: float = 1.0, max_frames: int | None = None):
+        self.time = np.asarray(time, dtype=float)
+        if self.time.size == 0:
+            raise ValueError("the result has no rows")
+        if not (np.isfinite(fps) and np.isfinite(speed)) or fps <= 0 or speed <= 0:
+            raise ValueError("fps and speed must be positive")
+        if not np.all(np.isfinite(self.time)) or np.any(np.diff(self.time) < 0):
+            raise ValueError("the result's time must be finite and non-decreasing")
+        self.step = speed / fps
+        # As np.arange(time[0], time[-1] + 1e-12, step) counts them.
+        self.n = max(1, int(np.ceil((self.time[-1] + 1e-12 - self.time[0]) / self.step)))
+        if max_frames is not None:
+            self.n = min(self.n, int(max_frames))
+
+    def __len__(self) -> int:
+        return self.n
+
+    def __getitem__(self, k):
+        if isinstance(k, slice):
+            return [self[j] for j in range(*k.indices(self.n))]
+        k = int(k)
+        if k < 0:
+            k += self.n
+        if not 0 <= k < self.n:
+            raise IndexError(f"frame {k} of {self.n}")
+        r = int(np.searchsorted(self.time, self.time[0] + k * self.step, side="left"))
+        return min(r, self.time.size - 1)
+
+    def __iter__(self):
+        return (self[k] for k in range(self.n))
 
 
 def frame_indices(time: np.ndarray, fps: float, speed: float = 1.0) -> np.ndarray:
@@ -121,8 +166,9 @@ def build_figure(result, rows: np.ndarray, dpi: int = 80, lines_of_action: bool 
     import matplotlib.pyplot as plt
 
     geom = ArmGeometry(result.model or "das2")
-    pts = geom.points_series(result.q[rows])                  # (F, 6, 3)
-    girdle = geom.girdle_series(result.q[rows])               # {part: (F, k, 3)}; {} when the scapula is fixed
+    # rows: an array or a lazy FrameRows. Each frame's geometry is computed when it is drawn; the axes' extent
+    # from the rows the frames span, in chunks, so memory does not grow with the number of frames.
+    r_first, r_last = int(rows[0]), int(rows[len(rows) - 1])
     static = geom.static()
     ix = {n: i for i, n in enumerate(POINTS)}
     info = geom.info
@@ -137,10 +183,19 @@ def build_figure(result, rows: np.ndarray, dpi: int = 80, lines_of_action: bool 
     # (anterior, -z, to the right). Thorax frame: x lateral, y up, z posterior.
     views = [(ax_front, lambda p: (-p[..., 0], p[..., 1]), "front (thorax x to the left)"),
              (ax_side, lambda p: (-p[..., 2], p[..., 1]), "right side (anterior to the right)")]
-    allp = np.concatenate([pts.reshape(-1, 3)] + list(static.values()) + [g.reshape(-1, 3) for g in girdle.values()])
+    lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
+    for p in static.values():
+        lo, hi = np.minimum(lo, p.min(axis=0)), np.maximum(hi, p.max(axis=0))
+    lo_r, hi_r = min(r_first, r_last), max(r_first, r_last)
+    for c0 in range(lo_r, hi_r + 1, 1000):
+        q = result.q[c0:min(c0 + 1000, hi_r + 1)]
+        for p in [geom.points_series(q)] + list(geom.girdle_series(q).values()):
+            p = p.reshape(-1, 3)
+            lo, hi = np.minimum(lo, p.min(axis=0)), np.maximum(hi, p.max(axis=0))
+    corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
     artists = []
     for ax, proj, title in views:
-        h, v = proj(allp)
+        h, v = proj(corners)
         pad = 0.05
         ax.set_xlim(h.min() - pad, h.max() + pad)
         ax.set_ylim(v.min() - pad, v.max() + pad)
@@ -150,7 +205,7 @@ def build_figure(result, rows: np.ndarray, dpi: int = 80, lines_of_action: bool 
         for name, poly in static.items():
             ax.plot(*proj(poly), color="0.75" if name.startswith("thorax") else "0.55",
                     lw=1.0 if name.startswith("thorax") else 1.5)
-        moving = {name: ax.plot([], [], **GIRDLE_STYLE[name])[0] for name in girdle}
+        moving = {name: ax.plot([], [], **GIRDLE_STYLE[name])[0] for name in geom.girdle(result.q[r_first])}
         bones = {name: ax.plot([], [], color=BONE_COLOURS[name], lw=5, solid_capstyle="round")[0]
                  for name, _, _ in SEGMENTS}
         head = ax.plot([], [], "o", ms=9, color="tab:green")[0]
@@ -176,8 +231,9 @@ def build_figure(result, rows: np.ndarray, dpi: int = 80, lines_of_action: bool 
     fig.tight_layout()
 
     def draw(k: int):
-        r = rows[k]
-        p = pts[k]
+        r = int(rows[k])
+        p = geom.points(result.q[r])
+        girdle = geom.girdle(result.q[r])
         stab = float(result.gh_stab[r])
         colour = "tab:red" if stab > 1 else "tab:green"
         loa_xyz = None
@@ -190,7 +246,7 @@ def build_figure(result, rows: np.ndarray, dpi: int = 80, lines_of_action: bool 
             for name, a, b in SEGMENTS:
                 bones[name].set_data(*proj(np.array([p[ix[a]], p[ix[b]]])))
             for name, line in moving.items():
-                line.set_data(*proj(girdle[name][k]))
+                line.set_data(*proj(girdle[name]))
             head.set_data(*proj(p[ix["gh"]][None]))
             head.set_color(colour)
             if loa is not None:
@@ -213,7 +269,9 @@ def build_figure(result, rows: np.ndarray, dpi: int = 80, lines_of_action: bool 
 def animate(result, out, fps: int = 30, speed: float = 1.0, dpi: int = 80, lines_of_action: bool = True,
             max_frames: int | None = None, progress: bool | None = None) -> Path:
     """Renders a Result (or a path to a saved .npz) to `out` (.gif or .mp4). Returns the path.
-    progress: a frame counter on stderr (None: only on a terminal)."""
+    progress: a frame counter on stderr (None: only on a terminal). Memory does not grow with the number of frames
+    (each is computed, drawn and encoded in turn); ValueError before any work for more than MAX_FRAMES frames
+    without max_frames (a long result: raise speed, or give max_frames)."""
     import matplotlib
     matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
@@ -229,9 +287,11 @@ def animate(result, out, fps: int = 30, speed: float = 1.0, dpi: int = 80, lines
     else:
         writer = animation.FFMpegWriter(fps=fps, codec="libx264", extra_args=["-pix_fmt", "yuv420p"])
 
-    rows = frame_indices(result.time, fps, speed)
-    if max_frames is not None:
-        rows = rows[:max_frames]
+    rows = FrameRows(result.time, fps, speed, max_frames)
+    if max_frames is None and len(rows) > MAX_FRAMES:
+        raise ValueError(f"{len(rows)} frames ({result.time[-1] - result.time[0]:.6g} s of result at {fps} frames/s, "
+                         f"speed {speed}): more than {MAX_FRAMES} (an hour at 30 frames/s); raise the speed or give "
+                         "max_frames (--max-frames)")
     fig, draw, _ = build_figure(result, rows, dpi, lines_of_action)
     out.parent.mkdir(parents=True, exist_ok=True)
     try:

@@ -22,9 +22,10 @@ import warnings
 from .realtime_packets import (  # noqa: F401 (armrt.realtime's names, as before the split)
     EXC_CHANNELS, EXC_ELEMENTS, EXC_GROUPS, EXC_MUSCLES, FLAG_AUTH, FLAG_ERROR, FLAG_EXCITATION, FLAG_FORCES,
     FLAG_OVERRUN, FLAG_STIMULATION, FLAG_STOPPED, FLAG_TIMED_OUT, FLAGS, GH_RIM_FIELDS, HEADER, HEADER_FIELDS, HEADER_SIZE, HELLO,
-    MAGIC, MAX_VALUES, OFFER, RELEASE, STATE, STATE_FIELDS, STIMULATION, STATE_FIXED_VALUES, TAG_SIZE, TYPES, VERSION, Packet,
+    MAGIC, MAX_VALUES, OFFER, RELEASE, SESSION_ENDED, STATE, STATE_FIELDS, STIMULATION, STATE_FIXED_VALUES, TAG_SIZE, TYPES, VERSION, Packet,
     PacketError, StatePacket, decode_packet, encode_packet, read_key_file, state_fields, state_packet_fields)
-from .realtime_client import MAPPING_TYPES, GroupMapping, StimulationChannels, UdpClient, parse_endpoint  # noqa: F401
+from .realtime_client import (MAPPING_TYPES, GroupMapping, SessionEnd, SessionEnded, StimulationChannels,  # noqa: F401
+                              UdpClient, parse_endpoint)
 from .realtime_session import RealtimeSession, rt_main, runner_args, runner_path  # noqa: F401
 
 

@@ -15,8 +15,8 @@ from typing import Mapping, Sequence
 import numpy as np
 
 from . import _rt
-from .realtime_packets import (EXC_CHANNELS, EXC_ELEMENTS, EXC_GROUPS, EXC_MUSCLES, HELLO, OFFER, RELEASE, STATE,
-                               STIMULATION, PacketError, StatePacket, _key_bytes, decode_packet, encode_packet,
+from .realtime_packets import (EXC_CHANNELS, EXC_ELEMENTS, EXC_GROUPS, EXC_MUSCLES, HELLO, OFFER, RELEASE,
+                               SESSION_ENDED, STATE, STIMULATION, PacketError, StatePacket, _key_bytes, decode_packet, encode_packet,
                                state_fields, state_packet_fields)
 
 MAPPING_TYPES = {"elements": EXC_ELEMENTS, "muscles": EXC_MUSCLES, "groups": EXC_GROUPS, "channels": EXC_CHANNELS}
@@ -139,6 +139,34 @@ class StimulationChannels:
 
 
 # ---------------------------------------------------------------------------------------- UDP client
+@dataclass
+class SessionEnd:
+    """The runner's notice that this client's session ended (packet type 18, docs/realtime.md "Sessions").
+
+    reason: "timeout" (no valid packet for longer than the runner's --timeout); hold_s: the excitation is held at
+    zero that long (simulated s) and nobody may own the arm meanwhile; grace_s: then, for that long, only this
+    client (the timed-out owner) may claim it again with join(); session: the ended session's id; received_at:
+    time.monotonic() when the notice came."""
+
+    reason: str
+    hold_s: float
+    grace_s: float
+    session: int
+    received_at: float
+
+
+class SessionEnded(RuntimeError):
+    """send() / send_stimulation() after the runner ended this client's session (the notice is .end, a
+    SessionEnd): the excitation is zero; join(timeout) again to resume (first in line within the grace window)."""
+
+    def __init__(self, end: SessionEnd, address):
+        self.end = end
+        super().__init__(f"the runner at {address[0]}:{address[1]} ended this session ({end.reason}: no valid packet "
+                         f"for longer than its --timeout); the excitation is zero and held for {end.hold_s:g} s, then "
+                         f"this controller alone may claim the arm for {end.grace_s:g} s: call join(timeout) again "
+                         f"(docs/realtime.md, Sessions)")
+
+
 class UdpClient:
     """A controller's end of the link: owns a session of the runner, sends excitations, receives state.
 
@@ -146,9 +174,11 @@ class UdpClient:
     read_key_file), or None. join(timeout) asks for the session (hello -> offer) before the first send(),
     which never waits for one (RuntimeError without a session); packets carry the session id and, with a key, an HMAC-SHA256 tag. Incoming datagrams are accepted only
     from the runner's address and, with a key, only with a valid tag: anything else is dropped and
-    counted (.foreign_packets, .bad_packets), never raised. When a session ends (silence longer than
-    the runner's --timeout) the runner offers a new id on the next packet, and the client adopts it
-    as soon as it reads the offer (recv_state / latest_state / join()).
+    counted (.foreign_packets, .bad_packets), never raised. When the runner ends the session (silence
+    longer than its --timeout) it says so (a session-ended packet, read by poll / recv_state / latest_state):
+    .session becomes 0, .session_end holds the notice (SessionEnd) and send() raises SessionEnded until
+    join() succeeds again; the runner holds the excitation at zero for the notice's hold_s, then lets this
+    client alone claim the arm for grace_s (docs/realtime.md, Sessions).
     """
 
     def __init__(self, port: int, host: str = "127.0.0.1", mapping: str | GroupMapping = "elements",
@@ -170,6 +200,7 @@ class UdpClient:
         self.foreign_packets = 0   # datagrams from anyone but the runner
         self.last_state: StatePacket | None = None
         self.last_error = ""       # why the last bad datagram was refused
+        self.session_end: SessionEnd | None = None  # the runner's notice that this session ended (None: none)
         self._states: collections.deque = collections.deque(maxlen=4096)
 
     @property
@@ -194,6 +225,13 @@ class UdpClient:
             p = decode_packet(data, self.key)
             if p.type == OFFER:
                 self.session = p.session
+            elif p.type == SESSION_ENDED:
+                if self.session != 0 and p.session == self.session:  # a late notice of an older session: ignored
+                    v = p.values
+                    self.session_end = SessionEnd("timeout" if len(v) and v[0] == 1 else f"reason {v[0] if len(v) else '?'}",
+                                                  float(v[1]) if len(v) > 1 else 0.0,
+                                                  float(v[2]) if len(v) > 2 else 0.0, p.session, time.monotonic())
+                    self.session = 0
             elif p.type == STATE:
                 st = StatePacket.from_packet(p, self.state_table)
                 st.received_at = time.monotonic()
@@ -222,17 +260,20 @@ class UdpClient:
 
     def join(self, timeout: float = 1.0) -> int:
         """Asks the runner for its session id and waits for the offer; returns it. TimeoutError if
-        none comes (the runner is not there, another controller owns the session, --allow or the key
-        refuses this one)."""
+        none comes (the runner is not there, another controller owns the session, the runner holds the arm at
+        zero after an owner timed out and then keeps it for that owner's grace window, --allow or the key
+        refuses this one). After a SessionEnded, a timeout of session_end.hold_s + 1 s covers the hold."""
         self.session = 0
+        self.session_end = None
         t_end = time.monotonic() + timeout
         next_hello = 0.0
         while self.session == 0:
             now = time.monotonic()
             if now >= t_end:
                 raise TimeoutError(f"no session offer from {self.address[0]}:{self.address[1]} within {timeout} s "
-                                   "(runner not listening, session owned by another controller, or refused by "
-                                   "--allow / the key)")
+                                   "(runner not listening, session owned by another controller, the zero held after "
+                                   "an owner timed out and that owner's grace window, or refused by --allow / the "
+                                   "key)")
             if now >= next_hello:
                 self.sock.sendto(encode_packet(HELLO, self._next_seq(), key=self.key), self.address)
                 next_hello = now + 0.05
@@ -242,6 +283,8 @@ class UdpClient:
     def _require_session(self) -> None:
         # The first send used to join, blocking up to a second inside a caller's control loop (a second client in
         # the loop silenced the owner that long): joining is the caller's explicit, timed step.
+        if self.session == 0 and self.session_end is not None:
+            raise SessionEnded(self.session_end, self.address)
         if self.session == 0:
             raise RuntimeError(f"no session with the runner at {self.address[0]}:{self.address[1]}: call "
                                "join(timeout) first (send never waits; after release() or a session that ended, "
@@ -252,7 +295,7 @@ class UdpClient:
         ValueError (nothing sent) for a NaN, an infinity or a value outside [0, 1], naming the values: the runner
         would drop or clip them, and a controller that computes them has a bug the lab should see. RuntimeError
         without a session (join(timeout) first): send never waits for the runner, so a control loop never stalls on
-        it."""
+        it; SessionEnded (a RuntimeError) once the runner said the session ended (join again)."""
         values = self.mapping.values(excitation)
         bad = ~np.isfinite(values) | (values < 0.0) | (values > 1.0)
         if bad.any():
@@ -296,7 +339,10 @@ class UdpClient:
         while not self._states:
             remaining = None if deadline is None else deadline - time.monotonic()
             if remaining is not None and remaining <= 0:
-                self._pump(0.0)
+                # Everything already queued, up to the first state packet (an offer or a session-ended notice
+                # ahead of it is read on the way, not taken for "nothing there").
+                while not self._states and self._pump(0.0):
+                    pass
                 if not self._states:
                     return None
                 break

@@ -47,6 +47,7 @@ FLAGS: dict = dict(_rt.FLAGS)
 EXC_ELEMENTS, EXC_MUSCLES, EXC_GROUPS, EXC_CHANNELS = (TYPES[k] for k in ("elements", "muscles", "groups", "channels"))
 RELEASE, HELLO, STATE, OFFER = (TYPES[k] for k in ("release", "hello", "state", "offer"))
 STIMULATION: int = TYPES["stimulation"]
+SESSION_ENDED: int = TYPES["session_ended"]  # runner -> a timed-out owner: [reason (1 timeout), hold s, grace s]
 FLAG_FORCES, FLAG_STOPPED, FLAG_ERROR, FLAG_TIMED_OUT = (FLAGS[k] for k in ("forces", "stopped", "error", "timed_out"))
 FLAG_AUTH, FLAG_OVERRUN, FLAG_EXCITATION = (FLAGS[k] for k in ("auth", "overrun", "excitation"))
 FLAG_STIMULATION: int = FLAGS["stimulation"]
@@ -72,35 +73,14 @@ STATE_FIXED_VALUES = len(STATE_FIELDS)
 
 
 def read_key_file(path) -> bytes:
-    """The shared key in a file, as armrt-rt --key-file reads it (one trailing newline removed).
+    """The shared key in a file, as armrt-rt --key-file reads it (one trailing newline removed): the runner's own
+    reader (cpp/rt/hmac.cc read_key_file, through armrt._rt), so both sides apply one set of rules.
 
-    As ssh treats a private key (and as the runner does, hmac.cc read_key_file): ValueError if the file is
-    not a regular file (a device such as /dev/zero, a FIFO, a directory), is accessible by group or others
-    (chmod 600 it), is larger than 4096 bytes or holds fewer than 16 bytes; OSError if it cannot be opened."""
+    As ssh treats a private key: ValueError if the file is not a regular file (a device such as /dev/zero, a
+    FIFO, a directory), is accessible by group or others (chmod 600 it), is larger than 4096 bytes or holds fewer
+    than 16 bytes; OSError (FileNotFoundError, PermissionError, ...) if it cannot be opened."""
     import os
-    import stat
-    fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC | os.O_NOCTTY)
-    try:
-        st = os.fstat(fd)  # the file checked is the file read
-        if not stat.S_ISREG(st.st_mode):
-            raise ValueError(f"the key file {str(path)!r} is not a regular file")
-        if st.st_mode & 0o077:
-            raise ValueError(f"the key file {str(path)!r} is accessible by group or others (mode "
-                             f"{stat.S_IMODE(st.st_mode):04o}); it must be readable by its owner only, as ssh "
-                             f"requires of a private key: chmod 600 {str(path)!r}")
-        if st.st_size > 4096:
-            raise ValueError(f"the key file {str(path)!r} is {st.st_size} bytes (a key is 16 .. 4096 bytes)")
-        with os.fdopen(os.dup(fd), "rb") as f:
-            key = f.read()
-    finally:
-        os.close(fd)
-    if key.endswith(b"\n"):
-        key = key[:-1]
-    if key.endswith(b"\r"):
-        key = key[:-1]
-    if len(key) < 16:
-        raise ValueError(f"the key in {str(path)!r} is shorter than 16 bytes")
-    return key
+    return _rt.read_key_file(os.fsdecode(os.fspath(path)))
 
 
 def _key_bytes(key) -> bytes | None:

@@ -628,7 +628,8 @@ def _cmd_animate(args) -> int:
     from .animate import animate, check_output
     check_output(args.out)
     out = animate(load_replay(args.result, args.model), args.out, fps=args.fps, speed=args.speed, dpi=args.dpi,
-                  lines_of_action=not args.no_lines, progress=None if args.progress else False)
+                  lines_of_action=not args.no_lines, max_frames=args.max_frames,
+                  progress=None if args.progress else False)
     print(f"wrote {out}")
     return 0
 
@@ -688,6 +689,8 @@ def add_cli(subparsers, formatter_class=None) -> None:
     p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per video second")
     p.add_argument("--dpi", type=int, default=80, help="resolution, dots per inch (figure 10 x 6.4 in)")
     p.add_argument("--no-lines", action="store_true", help="hide the GH lines of action")
+    p.add_argument("--max-frames", type=int, default=None,
+                   help="only the first N frames (needed beyond an hour of video at 30 frames/s)")
     p.add_argument("--no-progress", dest="progress", action="store_false", help="no progress bar on a terminal")
     p.set_defaults(func=_cmd_animate)
 
