@@ -1,5 +1,6 @@
 """armrt task ... live: the task loop that feeds the participant display and the marker stream (armrt.task_live),
 checked against the offline loop it must reproduce; `--decoder lsl:NAME` and `--markers` over real LSL streams."""
+import math
 import threading
 import time
 
@@ -205,6 +206,39 @@ def test_lsl_decoder_names_a_missing_stream_and_bad_labels():
     _outlet = pylsl.StreamOutlet(info)  # noqa: F841 (kept alive while resolved)
     with pytest.raises(ValueError, match=r"\['hand_velocity_z'\] missing"):
         LslEndpointDecoder(f"dec-{uid}", wait_s=10)
+
+
+def test_lsl_decoder_refuses_a_string_stream_and_the_cli_reports_a_useless_one(capsys):
+    pylsl = pylsl_or_skip()
+    from armrt.cli import main
+    from armrt.lsl_bridge import ENDPOINT_VELOCITY, LslEndpointDecoder
+    uid = unique_id("s")
+    info = pylsl.StreamInfo(f"dec-{uid}", "EndpointCommand", 3, 100, pylsl.cf_string, f"{uid}-decoder")
+    ch = info.desc().append_child("channels")
+    for lab in ENDPOINT_VELOCITY:
+        ch.append_child("channel").append_child_value("label", lab)
+    _strings = pylsl.StreamOutlet(info)  # noqa: F841 (kept alive while resolved)
+    with pytest.raises(ValueError, match="carries strings"):
+        LslEndpointDecoder(f"dec-{uid}", wait_s=10)
+    # A decoder that sends only NaN: the task runs, and the summary says nothing usable came.
+    uid = unique_id("n")
+    out = _endpoint_outlet(pylsl, uid, list(ENDPOINT_VELOCITY))
+    stop = threading.Event()
+
+    def nan_decoder():
+        while not stop.is_set():
+            out.push_sample([math.nan] * 3)
+            time.sleep(0.01)
+    th = threading.Thread(target=nan_decoder, daemon=True)
+    th.start()
+    try:
+        assert main(["task", "centre-out", "--targets", "1", "--timeout", "0.5", "--decoder", f"lsl:dec-{uid}",
+                     "--lsl-source-id", f"{uid}-decoder"]) == 0
+    finally:
+        stop.set()
+        th.join(timeout=2)
+    cap = capsys.readouterr()
+    assert "0 samples used" in cap.out and "sent only refused samples" in cap.err
 
 
 def test_cli_task_with_an_lsl_position_decoder(capsys):

@@ -248,8 +248,12 @@ def test_cli_task_writes_json_and_csv(tmp_path, capsys):
     assert main(["task", "posture", "--trials", "2", "--out", str(out)]) == 0
     rows = list(csv.DictReader(out.open()))
     assert len(rows) == 2 and rows[0]["success"] == "True"
-    assert main(["task", "fitts", "--fitts", "0.2:0.03", "--per-condition", "3", "--out", str(tmp_path / "x.txt")]) == 2
-    assert "--out must end in .json or .csv" in capsys.readouterr().err
+    with pytest.raises(SystemExit):   # refused before the task runs, not after it
+        main(["task", "fitts", "--fitts", "0.2:0.03", "--per-condition", "3", "--out", str(tmp_path / "x.txt")])
+    assert "argument --out: must end in .json or .csv" in capsys.readouterr().err
+    with pytest.raises(SystemExit):
+        main(["task", "centre-out", "--out", str(tmp_path / "no" / "such" / "m.csv")])
+    assert "no folder" in capsys.readouterr().err
     assert main(["task", "fitts", "--fitts", "0.2"]) == 2
 
 
@@ -263,3 +267,71 @@ def test_cli_task_drives_the_arm(tmp_path, capsys):
     assert "das2 hand" in capsys.readouterr().out
     data = json.loads(out.read_text())
     assert len(data["trials"]) == 2 and data["block"]["success_rate"] == 1.0
+
+
+def test_cli_task_json_is_strict_and_bad_geometry_names_the_option(tmp_path, capsys):
+    import json
+
+    from armrt.cli import main
+    out = tmp_path / "m.json"
+    # A posture hold that cannot succeed (the decoder does not move): undefined metrics are null, not NaN.
+    assert main(["task", "posture", "--trials", "1", "--gain", "0", "--noise-sd", "0", "--timeout", "0.5",
+                 "--out", str(out)]) == 0
+    data = json.loads(out.read_text(), parse_constant=lambda c: pytest.fail(f"{c} in JSON"))
+    assert data["trials"][0]["success"] is False and data["trials"][0]["path_efficiency"] is None
+    capsys.readouterr()
+    assert main(["task", "centre-out", "--radius", "0.2", "--distance", "0.1"]) == 2
+    assert "--radius (0.2 m) must be below --distance" in capsys.readouterr().err
+    assert main(["task", "centre-out", "--radius", "0.05", "--distance", "0.1", "--targets", "8"]) == 2
+    assert "overlap" in capsys.readouterr().err
+    for bad in (["--lsl-wait", "nan"], ["--hold", "-1"], ["--display-wait", "inf"], ["--display-fps", "1e-6"]):
+        with pytest.raises(SystemExit):
+            main(["task", "centre-out", *bad])
+        assert "expected" in capsys.readouterr().err
+
+
+def test_cli_task_interrupted_reports_the_finished_trials(tmp_path, capsys, monkeypatch):
+    import csv
+
+    from armrt.cli import main
+    calls = {"n": 0}
+    step = tasks.SimulatedDecoder.step
+
+    def interrupting(self, cursor, target):
+        calls["n"] += 1
+        if calls["n"] == 1500:   # 3 s of 2 ms samples: a few centre-out trials done (each ~0.4 s + dwell + iti)
+            raise KeyboardInterrupt
+        return step(self, cursor, target)
+    monkeypatch.setattr(tasks.SimulatedDecoder, "step", interrupting)
+    out = tmp_path / "m.csv"
+    assert main(["task", "centre-out", "--out", str(out)]) == 130
+    captured = capsys.readouterr()
+    rows = list(csv.DictReader(out.open()))
+    assert 0 < len(rows) < 8 and all(r["success"] == "True" for r in rows)
+    assert f"interrupted: the {len(rows)} trials finished so far" in captured.err
+
+
+def test_cli_task_sigterm_reports_the_finished_trials(tmp_path):
+    import csv
+    import signal
+    import subprocess
+    import sys
+    out = tmp_path / "m.csv"
+    code = "import sys; from armrt.cli import main; raise SystemExit(main(sys.argv[1:]))"
+    p = subprocess.Popen([sys.executable, "-c", code, "task", "centre-out", "--display", "--display-port", "0",
+                          "--display-wait", "0", "--dwell", "0.3", "--out", str(out)],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        for line in p.stdout:   # the task has started once the display is up
+            if "operator page" in line:
+                break
+        import time
+        time.sleep(2.5)
+        p.send_signal(signal.SIGTERM)
+        stdout, stderr = p.communicate(timeout=30)
+    finally:
+        p.kill()
+    assert p.returncode == 143, stderr
+    assert "terminated: the" in stderr
+    rows = list(csv.DictReader(out.open()))
+    assert 0 < len(rows) < 8

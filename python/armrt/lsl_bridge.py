@@ -344,6 +344,10 @@ class LslEndpointDecoder:
         self.inlet = pylsl.StreamInlet(found[0], max_buflen=1, recover=True)
         full = self.inlet.info(timeout=5.0)
         where = f"{full.name()}@{full.hostname()}"
+        if full.channel_format() == pylsl.cf_string:
+            self.inlet.close_stream()
+            raise ValueError(f"the endpoint-command stream {where} carries strings: its channels must be numbers "
+                             "(float32, float64 or integers)")
         labels = channel_labels(full)
         self.channel_index = match_labels(labels, list(ENDPOINT_LABELS), where)
         self.has = endpoint_layout(labels, where)

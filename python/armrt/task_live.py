@@ -102,10 +102,12 @@ class RunnerDriver:
     takes the packets that arrived (non-blocking) and keeps the newest: cursor() is its hand_position (3,) m,
     thorax frame; gh_stab its GHstab. Datagrams that are not the model's state packets (or not signed with key) are
     counted in .bad_packets (.last_error says why), never drawn. stale_s is the longest gap between packets seen
-    (s): a runner that stopped or a network that dropped packets shows there. dt_s: the task's sample interval (s)."""
+    (s, the silence up to now included): a runner that stopped or a network that dropped packets shows there; a
+    silence longer than max_silence_s (s) raises RunnerSilent from step(), so no trial is scored on a frozen hand.
+    dt_s: the task's sample interval (s)."""
 
     def __init__(self, host: str = "127.0.0.1", port: int = 9870, model: str = "das2", key: bytes | None = None,
-                 dt_s: float = 0.002, wait_s: float = 5.0):
+                 dt_s: float = 0.002, wait_s: float = 5.0, max_silence_s: float = 1.0):
         import socket
 
         from . import _core, realtime
@@ -114,6 +116,9 @@ class RunnerDriver:
         self.dt_s = checks.real_scalar(dt_s, "dt_s")
         if not (math.isfinite(self.dt_s) and self.dt_s > 0):
             raise ValueError(f"dt_s must be a finite number of seconds > 0, got {dt_s}")
+        self.max_silence_s = checks.real_scalar(max_silence_s, "max_silence_s")
+        if not self.max_silence_s > 0:
+            raise ValueError(f"max_silence_s must be > 0 s, got {max_silence_s}")
         self._rt, self._key = realtime, key
         self._fields = realtime.state_packet_fields(model)
         self._n = len(_core.model_info(model)["elements"])
@@ -176,6 +181,11 @@ class RunnerDriver:
 
     def step(self, target) -> None:
         self.poll()
+        silence = time.perf_counter() - self._last
+        if silence > self.max_silence_s:
+            self.stale_s = max(self.stale_s, silence)
+            raise RunnerSilent(f"the runner sent no state for {silence:.2f} s on port {self.port} (stopped, or its "
+                               f"packets are lost): the task stops rather than score a frozen hand")
 
     def arm_points(self):
         from .display import arm_points
@@ -185,7 +195,13 @@ class RunnerDriver:
         return self.arm_points()[0]
 
     def close(self) -> None:
+        if self._last is not None:
+            self.stale_s = max(self.stale_s, time.perf_counter() - self._last)
         self._sock.close()
+
+
+class RunnerSilent(RuntimeError):
+    """RunnerDriver: the runner's state stopped coming for longer than max_silence_s."""
 
 
 class _TargetView:

@@ -97,11 +97,18 @@ def centre_out_targets(centre, distance_m: float, radius_m: float, n_targets: in
                        axis_v=FRONTAL_V) -> list[Target]:
     """n_targets targets evenly spaced on a circle of distance_m (m) around centre (3,) m in the plane of
     axis_u, axis_v (orthogonal, thorax frame; default the frontal plane y-z), target k at angle 2 pi k / n
-    from axis_u. Raises ValueError for non-positive sizes or non-orthogonal axes."""
+    from axis_u. Raises ValueError for non-positive sizes, non-orthogonal axes, a radius that reaches the centre
+    (the cursor would start inside the target) or targets that overlap (each trial would start in the next one)."""
     c, u, v = _plane_axes(centre, axis_u, axis_v)
     d = _positive(distance_m, "distance_m")
     r = _positive(radius_m, "radius_m")
     n = checks.count(n_targets, "n_targets", minimum=1)
+    if r >= d:
+        raise ValueError(f"radius_m ({r} m) must be below distance_m ({d} m): the cursor would start inside the target")
+    gap = 2 * d * math.sin(math.pi / n) if n > 1 else math.inf   # chord between neighbouring targets
+    if 2 * r >= gap:
+        raise ValueError(f"{n} targets of radius_m {r} m on a circle of {d} m overlap (neighbours {gap:.4g} m "
+                         f"apart): fewer targets, a smaller radius or a larger distance")
     return [Target(c + d * (math.cos(2 * math.pi * k / n) * u + math.sin(2 * math.pi * k / n) * v), r)
             for k in range(n)]
 

@@ -3,9 +3,12 @@ cursor, or with --arm MODEL the arm's hand through the endpoint controller; a me
 with --out."""
 from __future__ import annotations
 
+import argparse
 import csv
 import json
 import math
+import os
+import signal
 import time
 
 from . import tasks
@@ -13,6 +16,9 @@ from . import tasks
 # s the LSL outlets stay open after the task: a recorder pulls the last markers before the outlet goes away (a
 # closed outlet's unsent samples are lost; a LabRecorder test lost the final 'success' without it).
 LSL_LINGER_S = 1.0
+
+# A runner silent for longer than this (s) is reported: ten periods of its slowest useful state rate (10 Hz).
+RUNNER_SILENCE_S = 1.0
 
 TRIAL_COLUMNS = ("trial", "target", "success", "time_to_target_s", "acquisition_time_s", "dial_in_time_s",
                  "path_efficiency", "n_entries", "gh_unstable_events", "hold_rms_m")
@@ -28,7 +34,7 @@ def add_cli(sub, formatter) -> None:
                         "controller sending excitations or stimulation (UDP or the LSL bridge); the task measures "
                         "it in real time. Not with --arm or --decoder")
     p.add_argument("--runner-model", default="das2", help="with --runner-state: the runner's model")
-    p.add_argument("--runner-wait", type=float, default=5.0, help="with --runner-state: s to wait for its first state")
+    p.add_argument("--runner-wait", type=_seconds, default=5.0, help="with --runner-state: s to wait for its first state")
     p.add_argument("--decoder", default="simulated", type=_decoder_arg, metavar="simulated|lsl:NAME",
                    help="what drives the cursor (simulated: velocity towards the target + noise + lag; lsl:NAME: "
                         "the endpoint velocity/position commands of the LSL stream NAME on this host, channels "
@@ -56,23 +62,58 @@ def add_cli(sub, formatter) -> None:
     p.add_argument("--lag", type=float, default=0.05, help="decoder lag, s")
     p.add_argument("--dt", type=float, default=0.002, help="sample interval, s")
     p.add_argument("--seed", type=int, default=0, help="decoder noise seed")
-    p.add_argument("--out", metavar="FILE.json|FILE.csv", help="write the metrics (JSON: trials + block; CSV: trials)")
+    p.add_argument("--out", metavar="FILE.json|FILE.csv", type=_out_arg, help="write the metrics (JSON: trials + block; CSV: trials)")
     p.add_argument("--display", action="store_true",
                    help="run in real time with the participant display (chromium --kiosk URL) and the operator page")
     p.add_argument("--display-host", default="127.0.0.1", help="address the display pages are served on")
     p.add_argument("--display-port", type=int, default=8090, help="port of the display pages (0: a free one)")
-    p.add_argument("--display-fps", type=float, default=60.0, help="states sent to the display per second")
-    p.add_argument("--display-wait", type=float, default=60.0,
+    p.add_argument("--display-fps", type=_fps, default=60.0, help="states sent to the display per second")
+    p.add_argument("--display-wait", type=_seconds, default=60.0,
                    help="with --display: s to wait for the participant page before the task starts (0: start at once)")
-    p.add_argument("--hold", type=float, default=2.0, help="with --display: s the last state stays up after the task")
+    p.add_argument("--hold", type=_seconds, default=2.0, help="with --display: s the last state stays up after the task")
     p.add_argument("--markers", nargs="?", const="armrt_task_markers", default=None, metavar="NAME",
                    help="publish the task events on an LSL marker stream (default name armrt_task_markers, "
                         "source_id armrt-task-markers); runs in real time")
     p.add_argument("--task-stream", nargs="?", const="armrt_task_state", default=None, metavar="NAME",
                    help="publish the task's state each sample on an LSL stream (default name armrt_task_state, "
                         "source_id armrt-task-state: time, cursor, target, target index, inside, GHstab); real time")
-    p.add_argument("--lsl-wait", type=float, default=10.0, help="with --decoder lsl:NAME: s to wait for the stream")
+    p.add_argument("--lsl-source-id", default=None, metavar="ID",
+                   help="with --decoder lsl:NAME: pin the decoder's stream by its source_id (when several share NAME)")
+    p.add_argument("--lsl-wait", type=_seconds, default=10.0, help="with --decoder lsl:NAME: s to wait for the stream")
     p.set_defaults(func=cmd_task)
+
+
+def _seconds(text: str) -> float:
+    """A wait or hold in s: a finite number >= 0."""
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number of seconds, got {text!r}") from None
+    if not (math.isfinite(v) and v >= 0):
+        raise argparse.ArgumentTypeError(f"expected a finite number of seconds >= 0, got {text!r}")
+    return v
+
+
+def _fps(text: str) -> float:
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected states per second, got {text!r}") from None
+    if not (math.isfinite(v) and 1.0 <= v <= 1000.0):
+        raise argparse.ArgumentTypeError(f"expected 1 to 1000 states per second, got {text!r}")
+    return v
+
+
+def _out_arg(text: str) -> str:
+    """--out: refused before the task runs (a session's metrics must not be lost at its end)."""
+    if not (text.endswith(".csv") or text.endswith(".json")):
+        raise argparse.ArgumentTypeError(f"must end in .json or .csv, got {text!r}")
+    folder = os.path.dirname(os.path.abspath(text))
+    if not os.path.isdir(folder):
+        raise argparse.ArgumentTypeError(f"{text!r}: no folder {folder}")
+    if not os.access(folder, os.W_OK) or (os.path.exists(text) and not os.access(text, os.W_OK)):
+        raise argparse.ArgumentTypeError(f"{text!r}: not writable")
+    return text
 
 
 def _decoder_arg(text: str) -> str:
@@ -120,25 +161,72 @@ def _cmd_task_runner(args) -> int:
         raise ValueError("--runner-state measures a runner's arm driven from outside: it takes neither --arm nor "
                          "--decoder (drive the runner with your controller, e.g. through the LSL bridge)")
     host, port = parse_endpoint(args.runner_state)
-    driver = task_live.RunnerDriver(host, port, model=args.runner_model, dt_s=args.dt, wait_s=args.runner_wait)
+    driver = task_live.RunnerDriver(host, port, model=args.runner_model, dt_s=args.dt, wait_s=args.runner_wait,
+                                    max_silence_s=RUNNER_SILENCE_S)
+    stopped = 0
     try:
         if args.centre is None:
             args.centre = driver.cursor().tolist()   # the hand where the runner's arm is now
-        task = _make_task(args)
+        try:
+            task = _make_task(args)
+        except ValueError as exc:
+            raise _option_error(exc) from None
         max_time = len(task.targets) * (args.timeout + args.iti) + 1.0
-        stats = _run_live_with(args, task, driver, [driver.shoulder()], max_time)
+        try:
+            _run_live_with(args, task, driver, [driver.shoulder()], max_time)
+        except task_live.RunnerSilent as exc:
+            print(f"armrt task: error: {exc}", file=sys.stderr)
+            stopped = 1
+        except KeyboardInterrupt:
+            stopped = 130
+        except _Stopped:
+            stopped = 143
     finally:
         driver.close()
     print(f"armrt task {args.kind} --runner-state {args.runner_state}: the {args.runner_model} hand of a running "
           f"armrt-rt, {driver.packets} state packets ({driver.bad_packets} refused), longest gap "
           f"{driver.stale_s * 1e3:.1f} ms, dt {args.dt} s (real time)")
-    if driver.packets < 2:
-        print("armrt task: the runner stopped sending state during the task", file=sys.stderr)
-    _report(args, task)
-    return 0
+    if driver.bad_packets:
+        print(f"armrt task: warning: {driver.bad_packets} datagrams refused: {driver.last_error}", file=sys.stderr)
+    return _finish(args, task, stopped)
+
+
+# What the task functions call their parameters, as the options a user typed (errors name the option).
+_OPTION_NAMES = {"radius_m": "--radius", "distance_m": "--distance", "n_targets": "--targets",
+                 "n_per_condition": "--per-condition", "dwell_s": "--dwell", "timeout_s": "--timeout",
+                 "iti_s": "--iti", "n_trials": "--trials", "gain_per_s": "--gain", "noise_sd": "--noise-sd",
+                 "lag_s": "--lag", "dt_s": "--dt"}
+
+
+def _option_error(exc: ValueError) -> ValueError:
+    text = str(exc)
+    for name, opt in _OPTION_NAMES.items():
+        text = text.replace(name, opt)
+    return ValueError(text)
+
+
+class _Stopped(Exception):
+    """SIGTERM during a task, turned into an exception so the finished trials are still reported."""
+
+
+def _on_sigterm(signum, frame):
+    raise _Stopped()
 
 
 def cmd_task(args) -> int:
+    """Runs the task; on Ctrl-C (exit 130) or SIGTERM (143) the trials finished so far are still printed and
+    written to --out."""
+    import threading
+    if threading.current_thread() is not threading.main_thread():   # signals reach the main thread only
+        return _cmd_task(args)
+    previous = signal.signal(signal.SIGTERM, _on_sigterm)
+    try:
+        return _cmd_task(args)
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def _cmd_task(args) -> int:
     if args.runner_state is not None:
         return _cmd_task_runner(args)
     arm = None
@@ -153,39 +241,86 @@ def cmd_task(args) -> int:
             args.centre = arm.model.hand_position(q0).tolist()
     if args.centre is None:
         args.centre = [0.0, 0.0, 0.0]
-    task = _make_task(args)
+    try:
+        task = _make_task(args)
+    except ValueError as exc:
+        raise _option_error(exc) from None
     start = list(args.centre)
     if args.kind == "posture":  # start away from the held target so there is something to reach
         start[1] += 0.05
     max_time = len(task.targets) * (args.timeout + args.iti) + 1.0
     live = args.display or args.markers is not None or args.task_stream is not None or args.decoder != "simulated"
     decoder = None
+    stopped = 0
     try:
         if args.decoder == "simulated":
-            dec = tasks.SimulatedDecoder(args.gain, args.noise_sd, args.lag, args.dt, seed=args.seed)
+            try:
+                dec = tasks.SimulatedDecoder(args.gain, args.noise_sd, args.lag, args.dt, seed=args.seed)
+            except ValueError as exc:
+                raise _option_error(exc) from None
             how = f"gain {args.gain} 1/s, noise SD {args.noise_sd} m/s, lag {args.lag} s"
         else:
             from .lsl_bridge import LslEndpointDecoder
-            dec = decoder = LslEndpointDecoder(args.decoder[4:], wait_s=args.lsl_wait)
+            dec = decoder = LslEndpointDecoder(args.decoder[4:], source_id=args.lsl_source_id, wait_s=args.lsl_wait)
             how = (f"LSL stream {decoder.name!r} ({decoder.source_id}): "
                    + " and ".join(k for k, h in zip(("velocity", "position"), decoder.has) if h) + " commands")
-        if not live:
-            if arm is None:
-                tasks.run_cursor_task(task, dec, start, max_time_s=max_time)
+        try:
+            if not live:
+                if arm is None:
+                    tasks.run_cursor_task(task, dec, start, max_time_s=max_time)
+                else:
+                    from .endpoint_control import EndpointController, run_task
+                    ctl = EndpointController(arm)  # posture: hold the hand where it starts, against gravity
+                    run_task(task, ctl, dec, max_time_s=max_time)
             else:
-                from .endpoint_control import EndpointController, run_task
-                ctl = EndpointController(arm)  # posture: hold the hand where it starts, against gravity
-                run_task(task, ctl, dec, max_time_s=max_time)
-        else:
-            _run_live(args, task, arm, dec, start, max_time)
+                _run_live(args, task, arm, dec, start, max_time)
+        except KeyboardInterrupt:
+            stopped = 130
+        except _Stopped:
+            stopped = 143
     finally:
         if decoder is not None:
             decoder.close()
     what = f"the {args.arm} hand (endpoint controller)" if arm is not None else "a point cursor"
     print(f"armrt task {args.kind} --decoder {args.decoder} driving {what}: {how}, dt {args.dt} s, seed {args.seed}"
           + (" (real time)" if live else ""))
+    if decoder is not None:
+        _decoder_summary(decoder)
+    return _finish(args, task, stopped)
+
+
+def _decoder_summary(decoder) -> None:
+    """The LSL decoder's samples taken, refused and its longest silence; a warning when it gave nothing usable."""
+    import sys
+    print(f"decoder {decoder.name!r}: {decoder.received} samples used, {decoder.refused} refused (NaN or "
+          f"infinite), longest silence {decoder.stale_s * 1e3:.0f} ms", flush=True)
+    if decoder.received == 0:
+        print(f"armrt task: warning: the decoder {decoder.name!r} sent "
+              + ("only refused samples" if decoder.refused else "nothing") + ": the cursor did not move by its "
+              "commands", file=sys.stderr)
+
+
+def _finish(args, task, stopped: int) -> int:
+    """The report of a run (stopped: 0, or the exit code of an interrupted one: only its finished trials)."""
+    import sys
+    if stopped:
+        task.trials = [r for r in task.trials if math.isfinite(r.end_time_s)]
+        how = {130: "interrupted", 143: "terminated"}.get(stopped, "stopped")
+        print(f"armrt task: {how}: the {len(task.trials)} trials finished so far", file=sys.stderr, flush=True)
     _report(args, task)
-    return 0
+    return stopped
+
+
+def _json_ready(v):
+    if isinstance(v, dict):
+        return {k: _json_ready(x) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return [_json_ready(x) for x in v]
+    if hasattr(v, "tolist") and not isinstance(v, str):
+        return _json_ready(v.tolist())
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    return v
 
 
 def _report(args, task) -> None:
@@ -209,8 +344,8 @@ def _report(args, task) -> None:
                 for r in rows:
                     w.writerow([r[c] for c in TRIAL_COLUMNS])
         elif args.out.endswith(".json"):
-            with open(args.out, "w") as fh:
-                json.dump({"trials": rows, "block": block}, fh, indent=1, default=str)
+            with open(args.out, "w") as fh:   # strict JSON: undefined metrics (NaN) are null
+                json.dump(_json_ready({"trials": rows, "block": block}), fh, indent=1, default=str, allow_nan=False)
         else:
             raise ValueError(f"--out must end in .json or .csv, got {args.out!r}")
         print(f"wrote {args.out}")
@@ -221,11 +356,11 @@ def _run_live(args, task, arm, dec, start, max_time) -> dict:
     from . import task_live
     if arm is None:
         driver = task_live.CursorDriver(start, dec, args.dt)
-        extra = []
+        extra = [start]   # the cursor starts on the screen (posture: 5 cm off the held target)
     else:
         from .endpoint_control import EndpointController
         driver = task_live.ArmDriver(EndpointController(arm), dec)
-        extra = [driver.shoulder()]
+        extra = [driver.shoulder(), driver.cursor()]
     return _run_live_with(args, task, driver, extra, max_time)
 
 
