@@ -95,7 +95,7 @@ void gh_polygon(double theta_a, double phi_a, double bound, int sides, double* r
   double scale = 1.0;
   for (int attempt = 0; attempt < 200; ++attempt) {
     for (int k = 0; k < sides; ++k) {
-      const double psi = kTwoPi * k / sides;
+      const double psi = k * (kTwoPi / sides);  // np.linspace(0, 2 pi, sides, endpoint=False)
       u[k] = std::tan(theta_a * r * scale * std::cos(psi));
       v[k] = std::tan(phi_a * r * scale * std::sin(psi));
     }
@@ -103,12 +103,12 @@ void gh_polygon(double theta_a, double phi_a, double bound, int sides, double* r
     for (int k = 0; k < sides; ++k) {
       const int kn = (k + 1) % sides;
       for (int s = 0; s < 64; ++s) {
-        const double t = s / 63.0;
+        const double t = s == 63 ? 1.0 : s * (1.0 / 63);  // np.linspace(0, 1, 64)
         const double eu = u[k] + (u[kn] - u[k]) * t, ev = v[k] + (v[kn] - v[k]) * t;
         worst = std::max(worst, std::pow(std::atan(eu) / theta_a, 2) + std::pow(std::atan(ev) / phi_a, 2));
       }
     }
-    if (worst <= bound) break;
+    if (worst <= bound * (1 + 1e-12)) break;  // the vertices' rounding must not shrink it (control.py)
     scale *= 0.99;
   }
   // Counter-clockwise vertices: the outward normal of edge k is (dv, -du); n . (u, v) <= n . p_k.
