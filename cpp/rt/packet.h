@@ -49,6 +49,8 @@ enum PacketType : std::uint16_t {
   kStimulation = 7,         // count = 3 * channels of the runner's --stimulation map, in its order: per channel
                             // pulse width (s), amplitude (A), frequency (Hz); beyond a channel's limits: clamped
   kOffer = 17,              // runner -> controller, count 0: the session id to put in excitation packets
+  kTarget = 8,              // count = 3 * DOFs, only with --static-optimization: the desired joint angles (rad),
+                            // velocities (rad/s) and accelerations (rad/s^2), in the model's DOF order
 };
 
 enum PacketFlags : std::uint16_t {

@@ -49,6 +49,7 @@ PYBIND11_MODULE(_rt, m) {
   types["hello"] = static_cast<int>(kHello);
   types["state"] = static_cast<int>(kStatePacket);
   types["offer"] = static_cast<int>(kOffer);
+  types["target"] = static_cast<int>(kTarget);
   types["stimulation"] = static_cast<int>(kStimulation);
   m.attr("TYPES") = types;
   py::dict flags;
@@ -116,7 +117,8 @@ PYBIND11_MODULE(_rt, m) {
                        double state_rate_hz, bool send_forces, bool send_excitation, double input_timeout,
                        std::vector<std::string> channels, double rx_budget_us,
                        std::vector<std::string> max_activation, const std::string& stimulation,
-                       std::vector<std::string> strength, const std::string& profile, double settle) {
+                       std::vector<std::string> strength, const std::string& profile, double settle,
+                       bool static_optimization, double so_gh_stab_max, double so_kp, double so_kd) {
              RtConfig c;
              c.model = model;
              c.integrator = integrator;
@@ -146,6 +148,10 @@ PYBIND11_MODULE(_rt, m) {
              c.stimulation = stimulation;
              c.profile = profile;
              c.settle_s = settle;
+             c.static_optimization = static_optimization;
+             c.so_gh_stab_max = so_gh_stab_max;
+             c.so_kp = so_kp;
+             c.so_kd = so_kd;
              return std::make_unique<RtLoop>(c);
            }),
            py::arg("model") = "das2", py::arg("integrator") = RtConfig{}.integrator, py::arg("rate_hz") = 1000.0,
@@ -158,7 +164,8 @@ PYBIND11_MODULE(_rt, m) {
            py::arg("input_timeout") = 0.1, py::arg("channels") = std::vector<std::string>{},
            py::arg("rx_budget_us") = 0.0, py::arg("max_activation") = std::vector<std::string>{},
            py::arg("stimulation") = "", py::arg("strength") = std::vector<std::string>{},
-           py::arg("profile") = "", py::arg("settle") = 0.0)
+           py::arg("profile") = "", py::arg("settle") = 0.0, py::arg("static_optimization") = false,
+           py::arg("so_gh_stab_max") = 0.0, py::arg("so_kp") = 0.0, py::arg("so_kd") = 0.0)
       .def("start", [](RtLoop& l) {
         py::gil_scoped_release release;
         l.start();

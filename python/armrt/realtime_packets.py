@@ -47,6 +47,7 @@ FLAGS: dict = dict(_rt.FLAGS)
 EXC_ELEMENTS, EXC_MUSCLES, EXC_GROUPS, EXC_CHANNELS = (TYPES[k] for k in ("elements", "muscles", "groups", "channels"))
 RELEASE, HELLO, STATE, OFFER = (TYPES[k] for k in ("release", "hello", "state", "offer"))
 STIMULATION: int = TYPES["stimulation"]
+TARGET: int = TYPES["target"]  # --static-optimization: desired q, qdot, qddot
 FLAG_FORCES, FLAG_STOPPED, FLAG_ERROR, FLAG_TIMED_OUT = (FLAGS[k] for k in ("forces", "stopped", "error", "timed_out"))
 FLAG_AUTH, FLAG_OVERRUN, FLAG_EXCITATION = (FLAGS[k] for k in ("auth", "overrun", "excitation"))
 FLAG_STIMULATION: int = FLAGS["stimulation"]
