@@ -124,7 +124,7 @@ void RtLoop::static_optimization_cycle() {
                             d.hand_moment.data(), so_activation_.data(), &so_report_);
   so_hist_.record(now_ns() - t0);
   ++so_solves_;
-  if (so_report_.solver == StaticOptimizationSolverUsed::kProxQP) ++so_proxqp_;
+  if (so_report_.status == StaticOptimizationStatus::kNotConverged) ++so_not_converged_;
   if (!so_report_.feasible) {  // fail safe: no excitation rather than the closest solution
     ++so_infeasible_;
     std::fill(so_activation_.begin(), so_activation_.begin() + n, 0.0);
@@ -185,6 +185,9 @@ RtLoop::RtLoop(const RtConfig& config) : cfg_(config) {
                                             "which a stimulation map's channels would override");
     StaticOptimizationOptions o;
     o.gh_stab_max = cfg_.so_gh_stab_max;
+    // No ProxQP fallback in the loop: a solve the Newton method does not finish is reported not converged and
+    // gives zero excitation, in bounded time and without the fallback's allocations (docs/realtime.md).
+    o.proxqp_fallback = false;
     try {
       static_optimization_setup(sim_->model, o, so_);
     } catch (const std::invalid_argument& e) {
@@ -402,7 +405,7 @@ RtStats RtLoop::stats() const {
     st.so_solve = rt::percentiles(so_hist_);
     st.so_solves = so_solves_;
     st.so_infeasible = so_infeasible_;
-    st.so_proxqp = so_proxqp_;
+    st.so_not_converged = so_not_converged_;
     st.so_gh_stab_max = cfg_.so_gh_stab_max;
     st.so_kp = cfg_.so_kp;
     st.so_kd = cfg_.so_kd;

@@ -84,7 +84,7 @@ class RtLoop {
   StaticOptimizationReport so_report_;
   std::array<double, kMaxElements> so_activation_{};
   LogHistogram so_hist_;
-  std::int64_t so_solves_ = 0, so_infeasible_ = 0, so_proxqp_ = 0;
+  std::int64_t so_solves_ = 0, so_infeasible_ = 0, so_not_converged_ = 0;
   double so_residual_max_ = 0;
 
   // Loop state and results.

@@ -82,7 +82,7 @@ struct RtStats {
   Percentiles so_solve;             // ns per solve
   std::int64_t so_solves = 0;       // solves run (cycles with a target)
   std::int64_t so_infeasible = 0;   // of which infeasible or not converged (excitation set to zero)
-  std::int64_t so_proxqp = 0;       // of which the dual Newton method handed to ProxQP
+  std::int64_t so_not_converged = 0;  // of which the dual Newton method did not finish (no ProxQP fallback in the loop)
   double so_gh_stab_max = 0, so_kp = 0, so_kd = 0;
   double so_residual_max = 0;       // N m, the largest moment residual of a feasible solve
 };

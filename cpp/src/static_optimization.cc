@@ -4,8 +4,9 @@
 // QP as python/armrt/control.py's StaticOptimizer(tendon="rigid") (docs/control.md).
 //
 // ProxQP (proxsuite, header-only; Bambade et al. 2022, RSS) is the solver the Python path already uses: the same
-// algorithm and settings here keep the two answers within its tolerance, and its dense workspace is sized once in
-// set-up, so a solve does not allocate.
+// algorithm and settings here keep the two answers within its tolerance. Its dense workspace is sized once in
+// set-up, but its line search copies a strided block into an Eigen::Ref when the active set changes (a malloc):
+// the fallback is not allocation-free, the dual Newton method (no Eigen, fixed arrays) is.
 #include "armrt/static_optimization.h"
 
 #include <algorithm>
@@ -455,7 +456,10 @@ void static_optimization_rigid(const Model& m, const Data& d, StaticOptimization
   }
   r.feasible = solved;
   r.status = StaticOptimizationStatus::kSolved;
-  if (!solved) {
+  if (!solved && w.options.dual_newton && !w.options.proxqp_fallback) {
+    r.status = StaticOptimizationStatus::kNotConverged;  // reported as such, the Newton iterate's residuals
+    balance(s.a_);
+  } else if (!solved) {
     r.solver = StaticOptimizationSolverUsed::kProxQP;
     for (int j = 0; j < nq; ++j) {
       for (int i = 0; i < n; ++i) s.A(j, i) = s.K[j * E + i];

@@ -196,6 +196,18 @@ TEST_CASE("static optimisation (rigid tendon): infeasible requests reported with
   static_optimization_rigid(arm.model, arm.data, w, q, qd, qdd, light, zero, a, &rep);
   CHECK(rep.feasible);
   CHECK(moment_residual(arm, q, qd, qdd, light, a) < 1e-6);
+  // Without the ProxQP fallback (the runner's choice): reported not converged at once, never as a solution.
+  StaticOptimizationOptions no_fallback;
+  no_fallback.proxqp_fallback = false;
+  StaticOptimizationWorkspace wn;
+  static_optimization_setup(arm.model, no_fallback, wn);
+  static_optimization_rigid(arm.model, arm.data, wn, q, qd, qdd, heavy, zero, a, &rep);
+  CHECK_FALSE(rep.feasible);
+  CHECK(rep.status == StaticOptimizationStatus::kNotConverged);
+  CHECK(rep.qps == 0);
+  static_optimization_rigid(arm.model, arm.data, wn, q, qd, qdd, light, zero, a, &rep);
+  CHECK(rep.feasible);
+  CHECK(moment_residual(arm, q, qd, qdd, light, a) < 1e-6);
   // Bad options are refused.
   StaticOptimizationOptions bad;
   bad.weights.assign(3, 1.0);

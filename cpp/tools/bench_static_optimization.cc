@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
     else if (a == "--cold") cold = true;
     else if (a == "--diagonal") o.diagonal_hessian = true;
     else if (a == "--proxqp") o.dual_newton = false;
+    else if (a == "--no-fallback") o.proxqp_fallback = false;
     else if (a == "--backend" && k + 1 < argc) o.dense_backend = std::atoi(argv[++k]);
     else if (a == "--eps" && k + 1 < argc) o.eps_abs = std::atof(argv[++k]);
     else { std::fprintf(stderr, "unknown argument %s\n", a.c_str()); return 2; }

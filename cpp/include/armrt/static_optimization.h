@@ -2,7 +2,9 @@
 // [0, max_activation] minimising sum w_i a_i^2 with the rigid-tendon muscle forces supplying the inverse
 // dynamics' moments, optionally with GHstab <= a bound as a polygon of linear constraints on the GH force: the
 // QP python/armrt/control.py's StaticOptimizer(tendon="rigid") solves, in C++ for the 1 kHz loop
-// (docs/control.md): a dual projected Newton method, ProxQP where it does not converge. Set-up allocates (the ProxQP workspace); a solve does not.
+// (docs/control.md): a dual projected Newton method, ProxQP where it does not converge. Set-up allocates (the ProxQP
+// workspace); a solve by the Newton method does not (cpp/tests/test_alloc.cc), the ProxQP fallback may (inside
+// proxsuite, when its active set changes).
 #pragma once
 
 #include <memory>
@@ -40,6 +42,10 @@ struct StaticOptimizationOptions {
   // First the dual projected Newton method (static_optimization.cc dual_newton: exact on this QP's structure, a
   // diagonal Hessian and few rows), ProxQP where it does not converge; false: ProxQP only.
   bool dual_newton = true;
+  // Where the Newton method does not converge: ProxQP decides (and gives the closest solution when infeasible),
+  // or, false, the solve is reported kNotConverged at once with the Newton iterate's residuals: a bounded time
+  // and no allocation, what the 1 kHz loop takes (it applies zero excitation then anyway).
+  bool proxqp_fallback = true;
   int dense_backend = 0;
 };
 
