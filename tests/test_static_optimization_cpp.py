@@ -115,3 +115,31 @@ def test_cpp_follows_the_arms_settings():
     assert not np.any(after.activation[tri])
     np.testing.assert_allclose(after.activation, ref.activation, atol=2e-6)
     assert np.abs(after.activation - before.activation).max() > 1e-3
+
+
+def test_cpp_agrees_with_python_on_das3():
+    """das3 (11 DOFs, 138 elements, the girdle's contact and conoid forces in the inverse dynamics) about its
+    settled pose, the girdle held, with and without a GH bound."""
+    arm = armrt.Arm("das3")
+    arm.settle()
+    rng = np.random.default_rng(4)
+    q0 = arm.q.copy()
+    moving = np.array([j not in arm.model.girdle_dofs for j in range(arm.n_dofs)], float)
+    for gh in (None, 0.5):
+        cpp = armrt.StaticOptimizer(arm, tendon="rigid", gh_stab_max=gh, backend="cpp")
+        py = armrt.StaticOptimizer(arm, tendon="rigid", gh_stab_max=gh, backend="python")
+        solved = 0
+        for k in range(3):
+            q = q0 + rng.uniform(-0.05, 0.05, arm.n_dofs) * moving
+            qd = rng.uniform(-0.5, 0.5, arm.n_dofs) * moving
+            qdd = rng.uniform(-2, 2, arm.n_dofs) * moving
+            rc = cpp.solve(q, qd, qdd, [0, -5.0, 0], on_infeasible="return")
+            rp = py.solve(q, qd, qdd, [0, -5.0, 0], on_infeasible="return")
+            assert rc.feasible or not rp.feasible
+            if rc.feasible and rp.feasible:
+                solved += 1
+                assert np.abs(rc.residual).max() < 1e-6
+                np.testing.assert_allclose(rc.activation, rp.activation, atol=2e-6)
+                if gh is not None:
+                    assert rc.gh_stab <= gh + 1e-9
+        assert solved >= 2
