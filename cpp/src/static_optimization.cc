@@ -67,6 +67,10 @@ struct StaticOptimizationSolver {
   bool z_ready = false;
   double s_[kMaxElements], a_[kMaxElements], g_[kMaxRows], dz_[kMaxRows], zt_[kMaxRows], Hs_[kMaxRows * kMaxRows];
   int rows_[kMaxRows], free_[kMaxElements];
+  // The elastic SQP's iterate and warm start: activations, CE lengths, the paths they were found at.
+  double a_elastic[kMaxElements], lce_prev[kMaxElements], L_prev[kMaxElements];
+  double d_sqp[kMaxElements], lin_sqp[kMaxElements];  // the QP's Hessian diagonal and linear term (proximal mu)
+  bool elastic_ready = false;
 };
 
 StaticOptimizationWorkspace::StaticOptimizationWorkspace() = default;
@@ -195,6 +199,7 @@ void static_optimization_reset(StaticOptimizationWorkspace& w) {
   w.solver->qp_ready = false;
   w.solver->slack_ready = false;
   w.solver->z_ready = false;
+  w.solver->elastic_ready = false;
 }
 
 namespace {
@@ -237,22 +242,23 @@ bool cholesky_solve(double* H, int n, double* b) {
 // exact. Warm started from the previous solve's z. Returns true with a = a(z) when the moments balance to tol_eq,
 // the GH rows hold to tol_in and nu is complementary; false (after max_iter, or a step that makes no progress)
 // hands the problem to ProxQP, which also decides infeasibility.
-bool dual_newton(StaticOptimizationSolver& s, int n, int m, int p, const double* amax, double tol_eq, double tol_in,
-                 int max_iter, int* iterations) {
+// d: the Hessian's diagonal (s.d: 2 w); lin: a linear term of the objective (+ lin' a), or nullptr.
+bool dual_newton(StaticOptimizationSolver& s, int n, int m, int p, const double* amax, const double* d,
+                 const double* lin, double tol_eq, double tol_in, int max_iter, int* iterations) {
   const int nr = m + p;
   constexpr int E = kMaxElements;
   auto primal = [&](const double* z, double* a, double* phi) {
     double val = 0;
     for (int r = 0; r < nr; ++r) val += z[r] * s.k[r];
-    for (int i = 0; i < n; ++i) s.s_[i] = 0;
+    for (int i = 0; i < n; ++i) s.s_[i] = lin ? -lin[i] : 0.0;
     for (int r = 0; r < nr; ++r) {
       if (z[r] == 0) continue;
       const double* Kr = &s.K[r * E];
       for (int i = 0; i < n; ++i) s.s_[i] += Kr[i] * z[r];
     }
     for (int i = 0; i < n; ++i) {
-      a[i] = std::clamp(s.s_[i] / s.d[i], 0.0, amax[i]);
-      val += 0.5 * s.d[i] * a[i] * a[i] - s.s_[i] * a[i];
+      a[i] = std::clamp(s.s_[i] / d[i], 0.0, amax[i]);
+      val += 0.5 * d[i] * a[i] * a[i] - s.s_[i] * a[i];
     }
     *phi = val;
   };
@@ -263,10 +269,14 @@ bool dual_newton(StaticOptimizationSolver& s, int n, int m, int p, const double*
     for (int r = 0; r < m; ++r)
       for (int c = 0; c <= r; ++c) {
         double h = 0;
-        for (int i = 0; i < n; ++i) h += s.K[r * E + i] * s.K[c * E + i] / s.d[i];
+        for (int i = 0; i < n; ++i) h += s.K[r * E + i] * s.K[c * E + i] / d[i];
         s.Hs_[r * m + c] = s.Hs_[c * m + r] = h;
       }
-    for (int r = 0; r < m; ++r) s.dz_[r] = s.k[r];
+    for (int r = 0; r < m; ++r) {
+      s.dz_[r] = s.k[r];
+      if (lin)  // the unbounded minimiser is D^-1 (A^T lambda - lin): A D^-1 A^T lambda = b + A D^-1 lin
+        for (int i = 0; i < n; ++i) s.dz_[r] += s.K[r * E + i] * lin[i] / d[i];
+    }
     if (!cholesky_solve(s.Hs_, m, s.dz_)) return false;
     for (int r = 0; r < m; ++r) z[r] = s.dz_[r];
   }
@@ -292,7 +302,7 @@ bool dual_newton(StaticOptimizationSolver& s, int n, int m, int p, const double*
       if (r < m || z[r] > 0 || s.g_[r] > 0) s.rows_[ns++] = r;
     int nf = 0;
     for (int i = 0; i < n; ++i) {
-      const double x = s.s_[i] / s.d[i];
+      const double x = s.s_[i] / d[i];
       if (x > 0 && x < amax[i]) s.free_[nf++] = i;
     }
     double trace = 0;
@@ -303,7 +313,7 @@ bool dual_newton(StaticOptimizationSolver& s, int n, int m, int p, const double*
         double h = 0;
         for (int f = 0; f < nf; ++f) {
           const int i = s.free_[f];
-          h += Ka[i] * Kb[i] / s.d[i];
+          h += Ka[i] * Kb[i] / d[i];
         }
         s.Hs_[a * ns + b] = s.Hs_[b * ns + a] = h;
       }
@@ -361,6 +371,91 @@ pq::QPSolverOutput run(QP& qp, bool& ready, const RowMatrix& H, const Eigen::Vec
   return qp.results.info.status;
 }
 
+// The QP's rows for forces F = Fa a + Fp (s.Fa, s.Fp): moments R^T diag(Fa) a = tau_required - R^T Fp (rows
+// 0..nq-1 of K, k) and the GH rows c . (f0 + P (Fa a + Fp)) <= 0, i.e. (c P) diag(Fa) a <= -c . (f0 + P Fp) (rows
+// nq.. of K, k, negated).
+void fill_rows(const StaticOptimizationWorkspace& w, StaticOptimizationSolver& s, int n, int nq, int n_in,
+               const double* tau_required, const double* f0) {
+  constexpr int E = kMaxElements;
+  for (int j = 0; j < nq; ++j) {
+    const double* Rj = &s.R[j * E];
+    double* Kj = &s.K[j * E];
+    double passive = 0;
+    for (int i = 0; i < n; ++i) {
+      Kj[i] = Rj[i] * s.Fa[i];
+      passive += Rj[i] * s.Fp[i];
+    }
+    s.k[j] = tau_required[j] - passive;
+  }
+  double f_passive[3];
+  for (int k = 0; k < 3; ++k) {
+    double acc = f0[k];
+    for (int i = 0; i < n; ++i) acc += s.P[k * E + i] * s.Fp[i];
+    f_passive[k] = acc;
+  }
+  for (int row = 0; row < n_in; ++row) {
+    const double* c = &w.gh_rows[3 * row];
+    double* Kr = &s.K[(nq + row) * E];
+    for (int i = 0; i < n; ++i) Kr[i] = -(c[0] * s.P[i] + c[1] * s.P[E + i] + c[2] * s.P[2 * E + i]) * s.Fa[i];
+    s.k[nq + row] = c[0] * f_passive[0] + c[1] * f_passive[1] + c[2] * f_passive[2];  // -u
+  }
+}
+
+// The state's inverse dynamics, paths, GH directions (as P, the (normal, major, minor) components per unit tendon
+// force), fibre velocities dL/dt = -R qd and the upper bounds; f0: the GH force of everything but the muscles.
+void prepare(const Model& m, const Data& d, StaticOptimizationWorkspace& w, const double* q, const double* qd,
+             const double* qdd, const double* hand_force, const double* hand_moment, InverseDynamics* id, double* f0,
+             StaticOptimizationReport& r) {
+  const ModelDef& def = *m.def;
+  StaticOptimizationSolver& s = *w.solver;
+  const int n = m.num_elements, nq = m.num_dofs;
+  inverse_dynamics(m, d.settings.gravity.data(), q, qd, qdd, hand_force, hand_moment, id);
+  def.muscle_paths(q, s.L, s.R);  // R[j * kMaxElements + i]: element i's moment arm about DOF j
+  def.gh_directions(q, s.dir);
+  for (int k = 0; k < 3; ++k) {
+    const double* ax = &w.glenoid_axes[3 * k];
+    f0[k] = ax[0] * id->gh_force_without_muscles[0] + ax[1] * id->gh_force_without_muscles[1] +
+            ax[2] * id->gh_force_without_muscles[2];
+  }
+  for (int i = 0; i < n; ++i) {
+    double v = 0;  // dL/dt: moment arms are -dL/dq
+    for (int j = 0; j < nq; ++j) v -= s.R[j * kMaxElements + i] * qd[j];
+    r.fibre_velocity[i] = v;
+    for (int k = 0; k < 3; ++k) {
+      const double* ax = &w.glenoid_axes[3 * k];
+      s.P[k * kMaxElements + i] = ax[0] * s.dir[3 * i] + ax[1] * s.dir[3 * i + 1] + ax[2] * s.dir[3 * i + 2];
+    }
+    s.ubox(i) = d.settings.max_activation[i];
+  }
+  for (int j = 0; j < nq; ++j) r.tau_required[j] = id->tau_muscle[j];
+}
+
+// The report's GH force (scapula frame) of f0 and r.force, its GHstab, whether a polygon row binds, the elements at
+// their upper bound.
+void finish_report(const ModelDef& def, const StaticOptimizationWorkspace& w, const StaticOptimizationSolver& s,
+                   int n, int n_in, const double* f0, const double* amax, const double* activation,
+                   StaticOptimizationReport& r) {
+  double gh_local[3];
+  for (int k = 0; k < 3; ++k) {
+    double acc = f0[k];
+    for (int i = 0; i < n; ++i) acc += s.P[k * kMaxElements + i] * r.force[i];
+    gh_local[k] = acc;
+  }
+  for (int k = 0; k < 3; ++k)
+    r.gh_force[k] = w.glenoid_axes[k] * gh_local[0] + w.glenoid_axes[3 + k] * gh_local[1] +
+                    w.glenoid_axes[6 + k] * gh_local[2];
+  r.gh_stab = gh_stability(def, r.gh_force).stab;
+  r.gh_bound_active = false;
+  for (int row = 0; row + 1 < n_in; ++row) {
+    const double* c = &w.gh_rows[3 * row];
+    if (c[0] * gh_local[0] + c[1] * gh_local[1] + c[2] * gh_local[2] > -1e-6 * std::max(1.0, std::abs(gh_local[0])))
+      r.gh_bound_active = true;
+  }
+  r.at_upper_bound = 0;
+  for (int i = 0; i < n; ++i)
+    if (amax[i] > 0 && activation[i] >= amax[i] - 1e-6) ++r.at_upper_bound;
+}
+
 }  // namespace
 
 void static_optimization_rigid(const Model& m, const Data& d, StaticOptimizationWorkspace& w, const double* q,
@@ -375,55 +470,16 @@ void static_optimization_rigid(const Model& m, const Data& d, StaticOptimization
   StaticOptimizationReport& r = *rep;
 
   InverseDynamics id;
-  inverse_dynamics(m, d.settings.gravity.data(), q, qd, qdd, hand_force, hand_moment, &id);
-  def.muscle_paths(q, s.L, s.R);  // R[j * kMaxElements + i]: element i's moment arm about DOF j
-  def.gh_directions(q, s.dir);
   double f0[3];
-  for (int k = 0; k < 3; ++k) {
-    const double* ax = &w.glenoid_axes[3 * k];
-    f0[k] = ax[0] * id.gh_force_without_muscles[0] + ax[1] * id.gh_force_without_muscles[1] +
-            ax[2] * id.gh_force_without_muscles[2];
-  }
+  prepare(m, d, w, q, qd, qdd, hand_force, hand_moment, &id, f0, r);
   for (int i = 0; i < n; ++i) {
-    double v = 0;  // dL/dt: moment arms are -dL/dq
-    for (int j = 0; j < nq; ++j) v -= s.R[j * kMaxElements + i] * qd[j];
-    r.fibre_velocity[i] = v;
-    const RigidTendonForce f = muscle_rigid_tendon_force(data_element(m, d, i), m.fibre_damping, s.L[i], v);
+    const RigidTendonForce f = muscle_rigid_tendon_force(data_element(m, d, i), m.fibre_damping, s.L[i], r.fibre_velocity[i]);
     r.lce[i] = f.lce;
     s.Fa[i] = f.force_per_activation;
     s.Fp[i] = f.passive_force;
-    for (int k = 0; k < 3; ++k) {
-      const double* ax = &w.glenoid_axes[3 * k];
-      s.P[k * kMaxElements + i] = ax[0] * s.dir[3 * i] + ax[1] * s.dir[3 * i + 1] + ax[2] * s.dir[3 * i + 2];
-    }
-    s.ubox(i) = amax[i];
   }
-  // Moments: R^T diag(Fa) a = tau_required - R^T Fp (rows 0..nq-1 of K, k).
   constexpr int E = kMaxElements;
-  for (int j = 0; j < nq; ++j) {
-    const double* Rj = &s.R[j * E];
-    double* Kj = &s.K[j * E];
-    double passive = 0;
-    for (int i = 0; i < n; ++i) {
-      Kj[i] = Rj[i] * s.Fa[i];
-      passive += Rj[i] * s.Fp[i];
-    }
-    s.k[j] = id.tau_muscle[j] - passive;
-    r.tau_required[j] = id.tau_muscle[j];
-  }
-  // GH rows c . (f0 + P (Fa a + Fp)) <= 0: (c P) diag(Fa) a <= -c . (f0 + P Fp) (rows nq.. of K, k, negated).
-  double f_passive[3];
-  for (int k = 0; k < 3; ++k) {
-    double acc = f0[k];
-    for (int i = 0; i < n; ++i) acc += s.P[k * E + i] * s.Fp[i];
-    f_passive[k] = acc;
-  }
-  for (int row = 0; row < n_in; ++row) {
-    const double* c = &w.gh_rows[3 * row];
-    double* Kr = &s.K[(nq + row) * E];
-    for (int i = 0; i < n; ++i) Kr[i] = -(c[0] * s.P[i] + c[1] * s.P[E + i] + c[2] * s.P[2 * E + i]) * s.Fa[i];
-    s.k[nq + row] = c[0] * f_passive[0] + c[1] * f_passive[1] + c[2] * f_passive[2];  // -u
-  }
+  fill_rows(w, s, n, nq, n_in, id.tau_muscle, f0);
   auto balance = [&](const double* sol) {
     double worst = 0;
     for (int i = 0; i < n; ++i) {
@@ -447,7 +503,7 @@ void static_optimization_rigid(const Model& m, const Data& d, StaticOptimization
   r.solver = StaticOptimizationSolverUsed::kDualNewton;
   bool solved = false;
   if (w.options.dual_newton) {
-    solved = dual_newton(s, n, nq, n_in, amax, 1e-9, 1e-9, 50, &r.newton_iterations);
+    solved = dual_newton(s, n, nq, n_in, amax, s.d, nullptr, 1e-9, 1e-9, 50, &r.newton_iterations);
     if (solved) {
       balance(s.a_);
       solved = r.residual_max < kStaticOptimizationMomentTolerance;
@@ -489,26 +545,108 @@ void static_optimization_rigid(const Model& m, const Data& d, StaticOptimization
       s.qp_ready = false;
     }
   }
-  // GH force of these forces (scapula frame), its GHstab, whether a polygon row binds.
-  double gh_local[3];
-  for (int k = 0; k < 3; ++k) {
-    double acc = f0[k];
-    for (int i = 0; i < n; ++i) acc += s.P[k * kMaxElements + i] * r.force[i];
-    gh_local[k] = acc;
+  finish_report(def, w, s, n, n_in, f0, amax, activation, r);
+}
+
+void static_optimization_elastic(const Model& m, const Data& d, StaticOptimizationWorkspace& w, const double* q,
+                                 const double* qd, const double* qdd, const double* hand_force,
+                                 const double* hand_moment, double* activation, StaticOptimizationReport* rep) {
+  if (!w.solver || w.num_elements != m.num_elements || w.num_dofs != m.num_dofs)
+    throw std::invalid_argument("static_optimization_elastic: the workspace was not set up for this model");
+  const ModelDef& def = *m.def;
+  StaticOptimizationSolver& s = *w.solver;
+  const int n = m.num_elements, nq = m.num_dofs, n_in = w.num_gh_rows;
+  const double* amax = d.settings.max_activation.data();
+  StaticOptimizationReport& r = *rep;
+  constexpr int E = kMaxElements;
+  InverseDynamics id;
+  double f0[3];
+  prepare(m, d, w, q, qd, qdd, hand_force, hand_moment, &id, f0, r);
+  // Start: the previous solve's activations and CE lengths if the paths moved little since (control.py's rule),
+  // else 0.05 (capped) and the rigid tendon's lengths.
+  double moved = s.elastic_ready ? 0.0 : 1.0;
+  for (int i = 0; i < n && s.elastic_ready; ++i) moved = std::max(moved, std::abs(s.L[i] - s.L_prev[i]));
+  const bool warm = moved <= 0.01;
+  double* a = s.a_elastic;
+  for (int i = 0; i < n; ++i) {
+    if (!warm) {
+      a[i] = std::min(0.05, amax[i]);
+      s.lce_prev[i] = muscle_rigid_tendon_force(data_element(m, d, i), m.fibre_damping, s.L[i], r.fibre_velocity[i]).lce;
+    }
+    a[i] = std::clamp(a[i], 0.0, amax[i]);
+    s.L_prev[i] = s.L[i];
   }
-  for (int k = 0; k < 3; ++k)
-    r.gh_force[k] = w.glenoid_axes[k] * gh_local[0] + w.glenoid_axes[3 + k] * gh_local[1] +
-                    w.glenoid_axes[6 + k] * gh_local[2];
-  r.gh_stab = gh_stability(def, r.gh_force).stab;
-  r.gh_bound_active = false;
-  for (int row = 0; row + 1 < n_in; ++row) {
-    const double* c = &w.gh_rows[3 * row];
-    if (c[0] * gh_local[0] + c[1] * gh_local[1] + c[2] * gh_local[2] > -1e-6 * std::max(1.0, std::abs(gh_local[0])))
-      r.gh_bound_active = true;
+  // Sequential QP (control.py's _sqp): each QP is the rigid one's with the elastic element's linearisation
+  // F(a') ~ F(a) + dF/da (a' - a), solved by the dual Newton method. control.py's safeguards at the damper floor's
+  // kink: once the moment residual stops halving, slopes over +-1e-3 in activation; if it stalls again a proximal
+  // term mu sum w (a' - a)^2, mu x4 per further stall (the fixed point is unchanged: the linearisation passes
+  // through F(a)).
+  bool converged = false;
+  double step = 1e300, last_resid = 1e300, mu = 0;
+  int stalls = 0;
+  const double* wts = w.options.weights.data();
+  r.qps = 0;
+  r.qp_iterations = 0;
+  r.newton_iterations = 0;
+  r.solver = StaticOptimizationSolverUsed::kDualNewton;
+  for (int it = 0; it <= 50; ++it) {
+    double worst = 0;
+    for (int i = 0; i < n; ++i) {
+      const SteadyForce f = muscle_steady_force(data_element(m, d, i), m.fibre_damping, s.L[i], a[i], r.fibre_velocity[i],
+                                                s.lce_prev[i]);
+      s.lce_prev[i] = r.lce[i] = f.lce;
+      r.force[i] = f.force;
+      s.Fa[i] = f.dforce_da;
+      s.Fp[i] = f.force - f.dforce_da * a[i];
+    }
+    for (int j = 0; j < nq; ++j) {
+      double tau = 0;
+      for (int i = 0; i < n; ++i) tau += s.R[j * E + i] * r.force[i];
+      r.tau_muscle[j] = tau;
+      r.residual[j] = tau - r.tau_required[j];
+      worst = std::max(worst, std::abs(r.residual[j]));
+    }
+    r.residual_max = worst;
+    if (worst < 1e-7 && step < 1e-6) { converged = true; break; }
+    if (it == 50) break;
+    if (r.qps > 1 && worst > 1e-7 && worst > 0.5 * last_resid) {
+      ++stalls;
+      if (stalls > 1) mu = mu == 0 ? 1.0 : 4.0 * mu;
+    }
+    last_resid = worst;
+    if (stalls) {
+      constexpr double h = 1e-3;
+      for (int i = 0; i < n; ++i) {
+        const double lo = std::max(a[i] - h, 0.0), hi = a[i] + h;
+        const ElementConstants e = data_element(m, d, i);
+        const double Fhi = muscle_steady_force(e, m.fibre_damping, s.L[i], hi, r.fibre_velocity[i], r.lce[i]).force;
+        const double Flo = muscle_steady_force(e, m.fibre_damping, s.L[i], lo, r.fibre_velocity[i], r.lce[i]).force;
+        s.Fa[i] = (Fhi - Flo) / (hi - lo);
+        s.Fp[i] = r.force[i] - s.Fa[i] * a[i];
+      }
+    }
+    for (int i = 0; i < n; ++i) {
+      s.d_sqp[i] = 2.0 * wts[i] * (1.0 + mu);
+      s.lin_sqp[i] = -2.0 * mu * wts[i] * a[i];
+    }
+    fill_rows(w, s, n, nq, n_in, id.tau_muscle, f0);
+    int newton = 0;
+    const bool ok = dual_newton(s, n, nq, n_in, amax, s.d_sqp, mu > 0 ? s.lin_sqp : nullptr, 1e-9, 1e-9, 50, &newton);
+    r.newton_iterations += newton;
+    ++r.qps;
+    s.z_ready = ok;
+    if (!ok) break;
+    step = 0;
+    for (int i = 0; i < n; ++i) {
+      step = std::max(step, std::abs(s.a_[i] - a[i]));
+      a[i] = s.a_[i];
+    }
   }
-  r.at_upper_bound = 0;
-  for (int i = 0; i < n; ++i)
-    if (amax[i] > 0 && activation[i] >= amax[i] - 1e-6) ++r.at_upper_bound;
+  for (int i = 0; i < n; ++i) activation[i] = a[i];
+  r.feasible = converged && r.residual_max < kStaticOptimizationMomentTolerance;
+  r.status = r.feasible ? StaticOptimizationStatus::kSolved : StaticOptimizationStatus::kNotConverged;
+  s.elastic_ready = r.feasible;  // the next solve starts from these activations only if they are a solution
+  finish_report(def, w, s, n, n_in, f0, amax, activation, r);
 }
 
 }  // namespace armrt

@@ -219,3 +219,52 @@ TEST_CASE("static optimisation (rigid tendon): infeasible requests reported with
   bad.gh_stab_max = -1;
   CHECK_THROWS_AS(static_optimization_setup(arm.model, bad, w), std::invalid_argument);
 }
+
+TEST_CASE("static optimisation (elastic tendon): the engine's element at the returned CE lengths supplies the moments") {
+  // Independent of the optimiser's linearisation: muscle_element (forward()'s element) at (L, lce, a) must give the
+  // forces whose R^T F is the inverse dynamics' moments and fibre velocities equal to the path's dL/dt.
+  Arm arm(armrt_test::das2(), Integrator::kRos2, 1e-3);
+  const Model& m = arm.model;
+  const int n = m.num_elements, nq = m.num_dofs;
+  for (double gh : {0.0, 0.3}) {
+    CAPTURE(gh);
+    StaticOptimizationOptions o;
+    o.gh_stab_max = gh;
+    StaticOptimizationWorkspace w;
+    static_optimization_setup(m, o, w);
+    std::mt19937 rng(9);
+    const double hand[3] = {0, -9.81, 0}, zero[3] = {};
+    double q[kMaxDofs], qd[kMaxDofs], qdd[kMaxDofs], a[kMaxElements];
+    StaticOptimizationReport rep;
+    int solved = 0;
+    for (int trial = 0; trial < 6; ++trial) {
+      random_state(*m.def, rng, q, qd, qdd);
+      if (trial < 2) std::fill(qd, qd + nq, 0.0);  // static equilibrium: no approximation in the velocity
+      static_optimization_elastic(m, arm.data, w, q, qd, qdd, hand, zero, a, &rep);
+      if (!rep.feasible) {
+        CHECK(rep.status == StaticOptimizationStatus::kNotConverged);
+        continue;
+      }
+      ++solved;
+      std::vector<double> L(n), R(n * nq);
+      muscle_paths_by_element(*m.def, q, L.data(), R.data());
+      InverseDynamics id;
+      inverse_dynamics(m, arm.data.settings.gravity.data(), q, qd, qdd, hand, zero, &id);
+      std::vector<double> tau(nq, 0.0);
+      double worst_v = 0;
+      for (int i = 0; i < n; ++i) {
+        CHECK(a[i] >= 0.0);
+        CHECK(a[i] <= arm.data.settings.max_activation[i]);
+        const MuscleOut out = muscle_element(data_element(m, arm.data, i), m.fibre_damping, L[i], rep.lce[i], a[i]);
+        double v = 0;
+        for (int j = 0; j < nq; ++j) v -= R[i * nq + j] * qd[j];
+        worst_v = std::max(worst_v, std::abs(out.fibre_velocity - v));
+        for (int j = 0; j < nq; ++j) tau[j] += R[i * nq + j] * out.force;
+      }
+      CHECK(worst_v < 1e-8);
+      for (int j = 0; j < nq; ++j) CHECK(std::abs(tau[j] - id.tau_muscle[j]) < 1e-6);
+      if (gh > 0) CHECK(rep.gh_stab <= gh + 1e-6);
+    }
+    CHECK(solved >= 4);
+  }
+}
