@@ -112,6 +112,13 @@ int main(int argc, char** argv) {
   app.add_option("--state-rate", cfg.state_rate_hz, "state packets per second, rate / an integer (0: none)")->capture_default_str();
   app.add_flag("--forces", cfg.send_forces, "append the muscle forces to state packets");
   app.add_flag("--excitations", cfg.send_excitation, "append the applied element excitations to state packets");
+  app.add_flag("--static-optimization", cfg.static_optimization,
+               "feedforward: the owner sends targets (packet type 8: desired q, qdot, qddot) and every cycle the runner "
+               "solves the rigid-tendon static optimisation for them and applies the activations (docs/realtime.md)");
+  app.add_option("--so-gh-stab-max", cfg.so_gh_stab_max, "with --static-optimization: GHstab <= S in the solve (0: none)");
+  app.add_option("--so-kp", cfg.so_kp, "with --static-optimization: qddot += KP (q_d - q), 1/s^2, the solve then at "
+                                       "the arm's state (computed torque; 0 with --so-kd 0: pure feedforward)");
+  app.add_option("--so-kd", cfg.so_kd, "with --static-optimization: qddot += KD (qdot_d - qdot), 1/s");
   app.add_option("--timeout", cfg.input_timeout, "s of input silence after which the session ends and the excitation "
                                                  "falls to zero (2 periods .. 10 s)")->capture_default_str();
   app.add_option("--resume-grace", cfg.resume_grace, "s after the hold that follows a timeout in which only the timed-out "

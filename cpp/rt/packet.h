@@ -51,6 +51,8 @@ enum PacketType : std::uint16_t {
   kOffer = 17,              // runner -> controller, count 0: the session id to put in excitation packets
   kSessionEnded = 18,       // runner -> the owner whose session timed out, count 3: reason (1: timeout), hold (s),
                             // resume grace (s); the session field is the ended session's id (docs/realtime.md)
+  kTarget = 8,              // count = 3 * DOFs, only with --static-optimization: the desired joint angles (rad),
+                            // velocities (rad/s) and accelerations (rad/s^2), in the model's DOF order
 };
 
 enum PacketFlags : std::uint16_t {

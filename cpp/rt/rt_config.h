@@ -56,6 +56,15 @@ struct RtConfig {
   // packets drive the channels (values beyond a channel's limits are clamped and counted) and state packets
   // carry the applied stimulation and each channel's fatigue.
   std::string stimulation;
+  // Feedforward by static optimisation (cpp/src/static_optimization.cc, docs/realtime.md): the owner sends
+  // kTarget packets (desired q, qdot, qddot) instead of excitations, and every cycle the runner solves the
+  // rigid-tendon static optimisation for qddot_cmd = qddot_d + so_kp (q_d - q) + so_kd (qdot_d - qdot) at the
+  // arm's state (so_kp = so_kd = 0: at the desired state, pure feedforward) and applies the activations as
+  // excitations; zero excitation without a target, when infeasible, or once the session ends.
+  bool static_optimization = false;
+  double so_gh_stab_max = 0;   // > 0: GHstab <= this in the solve (the GH polygon); 0: none
+  double so_kp = 0;            // 1/s^2, the computed-torque loop's stiffness on the joint angles
+  double so_kd = 0;            // 1/s, its damping on the joint velocities
   double rx_budget_us = 0;     // receive work per cycle: drain the socket until empty or this long; 0: min(150 us, period / 4)
 };
 

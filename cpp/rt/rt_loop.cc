@@ -102,6 +102,38 @@ void RtLoop::apply_command(const double* u, const double* stimulation) {
   std::copy(stimulation, stimulation + kStimInputs * nc, sim_->data.stimulation.begin());
 }
 
+void RtLoop::static_optimization_cycle() {
+  Data& d = sim_->data;
+  const Model& m = sim_->model;
+  const int nq = m.num_dofs, n = m.num_elements;
+  if (!session_->has_target()) {
+    std::fill(so_activation_.begin(), so_activation_.begin() + n, 0.0);
+    data_set_excitation(m, d, so_activation_.data());
+    return;
+  }
+  const double* t = session_->target();  // q_d, qdot_d, qddot_d
+  const double* q = &d.x[q_offset(m)];
+  const double* qd = &d.x[qd_offset(m)];
+  double qdd_cmd[kMaxDofs];
+  const bool feedback = cfg_.so_kp > 0 || cfg_.so_kd > 0;
+  for (int j = 0; j < nq; ++j)
+    qdd_cmd[j] = t[2 * nq + j] + cfg_.so_kp * (t[j] - q[j]) + cfg_.so_kd * (t[nq + j] - qd[j]);
+  const std::int64_t t0 = now_ns();
+  // Feedforward: at the desired state; with gains, computed-torque style at the arm's own state.
+  static_optimization_rigid(m, d, so_, feedback ? q : t, feedback ? qd : t + nq, qdd_cmd, d.hand_force.data(),
+                            d.hand_moment.data(), so_activation_.data(), &so_report_);
+  so_hist_.record(now_ns() - t0);
+  ++so_solves_;
+  if (so_report_.status == StaticOptimizationStatus::kNotConverged) ++so_not_converged_;
+  if (!so_report_.feasible) {  // fail safe: no excitation rather than the closest solution
+    ++so_infeasible_;
+    std::fill(so_activation_.begin(), so_activation_.begin() + n, 0.0);
+  } else {
+    so_residual_max_ = std::max(so_residual_max_, so_report_.residual_max);
+  }
+  data_set_excitation(m, d, so_activation_.data());
+}
+
 StateValues RtLoop::state_values(double& lag, double& overruns) {
   Data& d = sim_->data;
   const Model& m = sim_->model;
@@ -147,6 +179,21 @@ RtLoop::RtLoop(const RtConfig& config) : cfg_(config) {
                                 (cfg_.send_excitation ? ", --excitations" : "") + ": " + std::to_string(sent.count) +
                                 " state values, more than one packet carries (" + std::to_string(kMaxValues) + ")");
   session_ = std::make_unique<Session>(cfg_, *def, sim_->data.stimulation_map, warnings_);
+  if (cfg_.static_optimization) {
+    if (cfg_.listen.empty()) throw std::invalid_argument("--static-optimization needs --listen (the targets come from a client)");
+    if (nc > 0) throw std::invalid_argument("--static-optimization with --stimulation: the solve computes element excitations, "
+                                            "which a stimulation map's channels would override");
+    StaticOptimizationOptions o;
+    o.gh_stab_max = cfg_.so_gh_stab_max;
+    // No ProxQP fallback in the loop: a solve the Newton method does not finish is reported not converged and
+    // gives zero excitation, in bounded time and without the fallback's allocations (docs/realtime.md).
+    o.proxqp_fallback = false;
+    try {
+      static_optimization_setup(sim_->model, o, so_);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--so-gh-stab-max: ") + e.what());
+    }
+  }
 }
 
 RtLoop::~RtLoop() {
@@ -236,6 +283,7 @@ void RtLoop::run_cycles(std::int64_t n) {
     if (session_) {
       session_->receive(static_cast<double>(woke - t_start) * 1e-9);
       if (session_->take_changed()) apply_command(session_->command(), session_->stimulation_command());
+      if (cfg_.static_optimization) static_optimization_cycle();
     }
     const bool ok = sim_->step();  // measures its TET (step(), stepper.cc: the one place)
     if (!ok) {
@@ -356,6 +404,17 @@ RtStats RtLoop::stats() const {
   st.resume_grace_s = session_->resume_grace_s();
   st.rcvbuf_bytes = session_->rcvbuf_bytes();
   st.owner_rcvbuf_bytes = session_->owner_rcvbuf_bytes();
+  st.static_optimization = cfg_.static_optimization;
+  if (st.static_optimization) {
+    st.so_solve = rt::percentiles(so_hist_);
+    st.so_solves = so_solves_;
+    st.so_infeasible = so_infeasible_;
+    st.so_not_converged = so_not_converged_;
+    st.so_gh_stab_max = cfg_.so_gh_stab_max;
+    st.so_kp = cfg_.so_kp;
+    st.so_kd = cfg_.so_kd;
+    st.so_residual_max = so_residual_max_;
+  }
   return st;
 }
 

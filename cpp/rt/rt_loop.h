@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "armrt/arm.h"
+#include "armrt/static_optimization.h"
 #include "packet.h"
 #include "rt_config.h"
 #include "rt_session.h"
@@ -68,6 +69,8 @@ class RtLoop {
   // The loop's only contact with the engine core's Model / Data (the core's redesign adapts these).
   void make_simulator(const ModelDef& def, const Schedule& sched);
   void apply_command(const double* u, const double* stimulation);
+  // --static-optimization: the cycle's solve at the session's target, its activations applied (zero without one).
+  void static_optimization_cycle();
   StateValues state_values(double& lag, double& overruns);
 
   RtConfig cfg_;
@@ -77,6 +80,13 @@ class RtLoop {
   double period_ns_ = 0;
   CycleRecorder rec_{0};
   bool overrun_since_state_ = false;
+  // --static-optimization (rt_config.h): the solver's workspace, the solve times and counts.
+  StaticOptimizationWorkspace so_;
+  StaticOptimizationReport so_report_;
+  std::array<double, kMaxElements> so_activation_{};
+  LogHistogram so_hist_;
+  std::int64_t so_solves_ = 0, so_infeasible_ = 0, so_not_converged_ = 0;
+  double so_residual_max_ = 0;
 
   // Loop state and results.
   std::atomic<bool> stop_{false}, by_signal_{false}, running_{false}, finished_{false};

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "armrt/clock.h"
+#include "armrt/model.h"
 
 namespace armrt::rt {
 
@@ -86,6 +87,14 @@ Session::Session(const RtConfig& cfg, const ModelDef& def, const StimulationMap&
   }
   level_scratch_.assign(n_el_, NameLevel::kUnnamed);
   command_.assign(n_el_, 0.0);
+  if (cfg.static_optimization) {  // kTarget packets: desired q, qdot, qddot; their joint angles checked as the Python API
+    target_count_ = 3 * n_dofs_;
+    target_.assign(target_count_, 0.0);
+    for (int j = 0; j < n_dofs_; ++j) {
+      dof_lo_.push_back(def.dofs[j].range_min - kJointRangeMargin);
+      dof_hi_.push_back(def.dofs[j].range_max + kJointRangeMargin);
+    }
+  }
 
   // The hold after a timeout: at zero excitation each activation decays as exp(-t / tdeact) (the model's
   // activation dynamics, da/dt = (c1 u + c2)(u - a) with c2 = 1/tdeact, He et al. 1991); ln(100) time
@@ -237,6 +246,7 @@ void Session::send_offer(const sockaddr_in& to) {
 void Session::end_session(bool released) {
   for (int i = 0; i < n_el_; ++i) command_[i] = 0.0;  // safety default: no excitation, no stimulation
   std::fill(stim_command_.begin(), stim_command_.end(), 0.0);
+  has_target_ = false;  // --static-optimization: no target, zero excitation
   changed_ = true;
   if (released) ++pk_.releases;
   else ++pk_.timeouts;
@@ -291,8 +301,11 @@ void Session::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in
     case kExcitationGroups: map = &groups_; expected = map->size(); break;
     case kExcitationChannels: map = &channels_; expected = map->size(); break;
     case kStimulation: expected = 3 * map_.num_channels; break;  // 0 without a map: refused as bad_count
+    case kTarget: expected = target_count_; break;  // 0 without --static-optimization: refused as bad_count
     default: ++pk_.bad_type; return;
   }
+  // With --static-optimization the runner computes the excitations: excitation packets are refused.
+  if (target_count_ && h.type != kTarget && h.type != kStimulation) { ++pk_.bad_type; return; }
   if (h.count != expected || expected == 0) { ++pk_.bad_count; return; }
   if (h.session != session_id_) {
     // Not (or no longer) this session's: never applied. The sender learns the current id, so a
@@ -311,7 +324,20 @@ void Session::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in
     values_[k] = get_f64(buf + kHeaderSize + 8 * k);
     if (!std::isfinite(values_[k])) { ++pk_.non_finite; return; }  // the whole packet: nothing applied
   }
+  if (h.type == kTarget) {
+    // StaticOptimizer's own check (checks.joint_range without warning: the engine's state margin): a joint angle
+    // beyond its range by more is refused, the previous target kept.
+    for (int j = 0; j < n_dofs_; ++j)
+      if (values_[j] < dof_lo_[j] || values_[j] > dof_hi_[j]) { ++pk_.bad_target; return; }
+  }
   if (!accept_sequence(h, from)) return;
+  if (h.type == kTarget) {
+    std::copy(values_.begin(), values_.begin() + h.count, target_.begin());
+    has_target_ = true;
+    ++pk_.targets_applied;
+    applied(h, now_s);
+    return;
+  }
   if (h.type == kStimulation) {
     // Beyond a channel's limits (pulse width, amplitude, frequency, charge per phase; negative values) the
     // runner clamps and counts, where the Python API refuses: a person may be wired to the output, and

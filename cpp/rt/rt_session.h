@@ -70,6 +70,9 @@ class Session {
   }
   const double* command() const { return command_.data(); }
   const double* stimulation_command() const { return stim_command_.data(); }
+  // --static-optimization: the owner's last kTarget (q, qdot, qddot: 3 * DOFs), valid while has_target().
+  bool has_target() const { return has_target_; }
+  const double* target() const { return target_.data(); }
   int num_channels() const { return map_.num_channels; }
 
   bool wants_state() const { return sock_ >= 0 && (!subscribers_.empty() || have_owner_ || notify_previous_); }
@@ -115,6 +118,9 @@ class Session {
   const StimulationMap& map_;
   std::vector<double> stim_command_;    // 3 per channel
   bool changed_ = false;
+  int target_count_ = 0;                // 3 * DOFs with --static-optimization, else 0 (kTarget refused)
+  std::vector<double> target_, dof_lo_, dof_hi_;
+  bool has_target_ = false;
 
   // UDP.
   static constexpr int kBatch = 32;     // datagrams per recvmmsg

@@ -74,7 +74,8 @@ std::string stats_json(const RtStats& s) {
                   {"foreign", k.foreign}, {"not_allowed", k.not_allowed}, {"bad_magic", k.bad_magic},
                   {"bad_version", k.bad_version}, {"bad_size", k.bad_size}, {"bad_type", k.bad_type},
                   {"bad_count", k.bad_count}, {"bad_auth", k.bad_auth}, {"bad_session", k.bad_session},
-                  {"non_finite", k.non_finite}, {"stale", k.stale}, {"out_of_order", k.out_of_order},
+                  {"non_finite", k.non_finite}, {"targets_applied", k.targets_applied}, {"bad_target", k.bad_target},
+                  {"stale", k.stale}, {"out_of_order", k.out_of_order},
                   {"clipped", k.clipped}, {"stimulation_applied", k.stimulation_applied},
                   {"stimulation_clamped", k.stimulation_clamped}, {"hellos", k.hellos}, {"offers", k.offers},
                   {"replies_limited", k.replies_limited}, {"held_off", k.held_off}, {"session_ended", k.session_ended},
@@ -82,6 +83,16 @@ std::string stats_json(const RtStats& s) {
                   {"owner_changes", k.owner_changes}, {"releases", k.releases}, {"timeouts", k.timeouts},
                   {"rx_budget_hits", k.rx_budget_hits}, {"state_sent", k.state_sent},
                   {"send_errors", k.send_errors}};
+  if (s.static_optimization) {
+    j["static_optimization"] = {{"solve_ns", json_pct(s.so_solve)}, {"solves", s.so_solves},
+                                {"infeasible", s.so_infeasible}, {"not_converged", s.so_not_converged},
+                                {"residual_max_Nm", s.so_residual_max},
+                                {"gh_stab_max", s.so_gh_stab_max > 0 ? nlohmann::ordered_json(s.so_gh_stab_max)
+                                                                     : nlohmann::ordered_json(nullptr)},
+                                {"kp", s.so_kp}, {"kd", s.so_kd}, {"tendon", "rigid"}};
+  } else {
+    j["static_optimization"] = nullptr;
+  }
   return j.dump(2) + "\n";
 }
 

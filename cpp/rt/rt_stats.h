@@ -28,6 +28,8 @@ struct PacketCounters {
   std::uint64_t bad_auth = 0;      // missing or wrong HMAC tag (with a key)
   std::uint64_t bad_session = 0;   // excitation without the current session id
   std::uint64_t non_finite = 0;    // NaN / inf values
+  std::uint64_t targets_applied = 0;  // kTarget packets applied (--static-optimization)
+  std::uint64_t bad_target = 0;    // kTarget packets refused: a joint angle beyond its range (as the Python API)
   std::uint64_t stale = 0;         // duplicate sequence number in the session
   std::uint64_t out_of_order = 0;  // sequence number older than the session's last applied one
   std::uint64_t clipped = 0;       // excitation packets with values outside [0, 1] (applied, clipped)
@@ -49,7 +51,7 @@ struct PacketCounters {
   std::uint64_t send_errors = 0;
   std::uint64_t dropped() const {
     return foreign + not_allowed + bad_magic + bad_version + bad_size + bad_type + bad_count + bad_auth +
-           bad_session + non_finite + stale + out_of_order;
+           bad_session + non_finite + bad_target + stale + out_of_order;
   }
 };
 
@@ -84,6 +86,14 @@ struct RtStats {
   double resume_grace_s = 0;      // then the timed-out owner alone may claim the session (--resume-grace)
   int rcvbuf_bytes = 0;           // the shared receive queue's buffer, as getsockopt(SO_RCVBUF) reports it
   int owner_rcvbuf_bytes = 0;     // the owner's queue's (0: none)
+  // --static-optimization: the solve each cycle (its time is inside cycle, before the step).
+  bool static_optimization = false;
+  Percentiles so_solve;             // ns per solve
+  std::int64_t so_solves = 0;       // solves run (cycles with a target)
+  std::int64_t so_infeasible = 0;   // of which infeasible or not converged (excitation set to zero)
+  std::int64_t so_not_converged = 0;  // of which the dual Newton method did not finish (no ProxQP fallback in the loop)
+  double so_gh_stab_max = 0, so_kp = 0, so_kd = 0;
+  double so_residual_max = 0;       // N m, the largest moment residual of a feasible solve
 };
 
 // The cycle records: three histograms and the overrun / missed-period counts.

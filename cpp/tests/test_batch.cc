@@ -13,16 +13,9 @@ using namespace armrt;
 using armrt_test::kDas2Dofs, armrt_test::kQ, armrt_test::kQd, armrt_test::kLce;
 
 // Counts every malloc in the process while enabled, including the OpenMP runtime's (libgomp calls
-// malloc directly, not operator new): this executable's malloc interposes the C library's.
-extern "C" void* __libc_malloc(std::size_t);
-namespace {
-std::atomic<bool> g_count_mallocs{false};
-std::atomic<long> g_mallocs{0};
-}  // namespace
-extern "C" void* malloc(std::size_t size) {
-  if (g_count_mallocs.load(std::memory_order_relaxed)) g_mallocs.fetch_add(1, std::memory_order_relaxed);
-  return __libc_malloc(size);
-}
+// malloc directly, not operator new): this executable's malloc (test_alloc.cc) interposes the C library's.
+extern std::atomic<bool> g_count_mallocs;
+extern std::atomic<long> g_mallocs;
 
 namespace {
 

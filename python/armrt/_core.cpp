@@ -16,6 +16,7 @@
 #include "armrt/recorder.h"
 #include "armrt/arm.h"
 #include "armrt/snapshot.h"
+#include "armrt/static_optimization.h"
 
 namespace py = pybind11;
 using namespace armrt;
@@ -275,6 +276,67 @@ PYBIND11_MODULE(_core, mod) {
   // linearize()'s workspace (engine.h), held by a Python Arm and reused, so that no call after the first allocates in
   // the engine.
   py::class_<LinearizeWorkspace>(mod, "LinearizeWorkspace").def(py::init([]() { return std::make_unique<LinearizeWorkspace>(); }));
+  // static_optimization.h: the rigid-tendon static optimisation of an arm (python/armrt/control.py's
+  // StaticOptimizer(backend="cpp") drives it). solve(arm, q, qd, qdd, hand_force, hand_moment) -> (activation (n,),
+  // report dict); the solve runs without the GIL.
+  mod.def("gh_polygon", [](double theta_a, double phi_a, double bound, int sides) {
+    if (sides < 3 || sides > kMaxGhPolygonSides) throw py::value_error("sides must be in [3, " + std::to_string(kMaxGhPolygonSides) + "]");
+    Array rows({sides, 3});
+    gh_polygon(theta_a, phi_a, bound, sides, rows.mutable_data());
+    return rows;
+  }, py::arg("theta_a"), py::arg("phi_a"), py::arg("bound"), py::arg("sides"));
+  py::class_<StaticOptimizationWorkspace>(mod, "StaticOptimizationWorkspace")
+      .def(py::init([](const Arm& s, double gh_stab_max, py::object weights, int sides, bool dual_newton) {
+        StaticOptimizationOptions o;
+        o.gh_stab_max = gh_stab_max;
+        o.polygon_sides = sides;
+        o.dual_newton = dual_newton;
+        if (!weights.is_none()) {
+          const Array w = weights.cast<Array>();
+          const double* p = checked(w, s.model.num_elements, "weights");
+          o.weights.assign(p, p + s.model.num_elements);
+        }
+        auto ws = std::make_unique<StaticOptimizationWorkspace>();
+        static_optimization_setup(s.model, o, *ws);
+        return ws;
+      }), py::arg("arm"), py::arg("gh_stab_max"), py::arg("weights"), py::arg("polygon_sides"), py::arg("dual_newton") = true)
+      .def("reset", [](StaticOptimizationWorkspace& w) { static_optimization_reset(w); })
+      .def("solve", [](StaticOptimizationWorkspace& w, const Arm& s, const Array& q, const Array& qd, const Array& qdd,
+                       const Array& hf, const Array& hm) {
+        const int n = s.model.num_elements, nq = s.model.num_dofs;
+        const double *qp = checked(q, nq, "q"), *qdp = checked(qd, nq, "qdot"), *qddp = checked(qdd, nq, "qddot");
+        const double *hfp = checked(hf, 3, "hand force"), *hmp = checked(hm, 3, "hand moment");
+        Array a({n});
+        StaticOptimizationReport r;
+        {
+          py::gil_scoped_release release;
+          static_optimization_rigid(s.model, s.data, w, qp, qdp, qddp, hfp, hmp, a.mutable_data(), &r);
+        }
+        auto vec = [](const double* p, py::ssize_t k) {
+          Array out({k});
+          std::copy(p, p + k, out.mutable_data());
+          return out;
+        };
+        const char* status = r.status == StaticOptimizationStatus::kSolved ? "solved"
+                             : r.status == StaticOptimizationStatus::kInfeasible ? "infeasible" : "not_converged";
+        py::dict d;
+        d["feasible"] = r.feasible;
+        d["status"] = status;
+        d["solver"] = r.solver == StaticOptimizationSolverUsed::kDualNewton ? "dual_newton" : "proxqp";
+        d["newton_iterations"] = r.newton_iterations;
+        d["qp_iterations"] = r.qp_iterations;
+        d["qps"] = r.qps;
+        d["tau_required"] = vec(r.tau_required, nq);
+        d["tau_muscle"] = vec(r.tau_muscle, nq);
+        d["residual"] = vec(r.residual, nq);
+        d["gh_force"] = vec(r.gh_force, 3);
+        d["gh_stab"] = r.gh_stab;
+        d["gh_bound_active"] = r.gh_bound_active;
+        d["lce"] = vec(r.lce, n);
+        d["force"] = vec(r.force, n);
+        d["fibre_velocity"] = vec(r.fibre_velocity, n);
+        return py::make_tuple(a, d);
+      }, py::arg("arm"), py::arg("q"), py::arg("qdot"), py::arg("qddot"), py::arg("hand_force"), py::arg("hand_moment"));
 
   py::class_<Arm>(mod, "Arm")
       .def(py::init([](const std::string& model, const std::string& integrator, double dt, int substeps) {

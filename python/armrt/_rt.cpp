@@ -50,6 +50,7 @@ PYBIND11_MODULE(_rt, m) {
   types["hello"] = static_cast<int>(kHello);
   types["state"] = static_cast<int>(kStatePacket);
   types["offer"] = static_cast<int>(kOffer);
+  types["target"] = static_cast<int>(kTarget);
   types["stimulation"] = static_cast<int>(kStimulation);
   types["session_ended"] = static_cast<int>(kSessionEnded);
   m.attr("TYPES") = types;
@@ -131,7 +132,7 @@ PYBIND11_MODULE(_rt, m) {
                        std::vector<std::string> channels, double rx_budget_us,
                        std::vector<std::string> max_activation, const std::string& stimulation,
                        std::vector<std::string> strength, const std::string& profile, double settle,
-                       double resume_grace) {
+                       double resume_grace, bool static_optimization, double so_gh_stab_max, double so_kp, double so_kd) {
              RtConfig c;
              c.model = model;
              c.integrator = integrator;
@@ -162,6 +163,10 @@ PYBIND11_MODULE(_rt, m) {
              c.profile = profile;
              c.settle_s = settle;
              c.resume_grace = resume_grace;
+             c.static_optimization = static_optimization;
+             c.so_gh_stab_max = so_gh_stab_max;
+             c.so_kp = so_kp;
+             c.so_kd = so_kd;
              return std::make_unique<RtLoop>(c);
            }),
            py::arg("model") = "das2", py::arg("integrator") = RtConfig{}.integrator, py::arg("rate_hz") = 1000.0,
@@ -175,7 +180,8 @@ PYBIND11_MODULE(_rt, m) {
            py::arg("rx_budget_us") = 0.0, py::arg("max_activation") = std::vector<std::string>{},
            py::arg("stimulation") = "", py::arg("strength") = std::vector<std::string>{},
            py::arg("profile") = "", py::arg("settle") = 0.0,
-           py::arg("resume_grace") = RtConfig{}.resume_grace)
+           py::arg("resume_grace") = RtConfig{}.resume_grace, py::arg("static_optimization") = false,
+           py::arg("so_gh_stab_max") = 0.0, py::arg("so_kp") = 0.0, py::arg("so_kd") = 0.0)
       .def("start", [](RtLoop& l) {
         py::gil_scoped_release release;
         l.start();

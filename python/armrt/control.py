@@ -153,7 +153,9 @@ def gh_polygon(theta_a: float, phi_a: float, bound: float, sides: int = POLYGON_
         eu = u[:, None] + (un - u)[:, None] * t
         ev = v[:, None] + (vn - v)[:, None] * t
         stab = (np.arctan(eu) / theta_a) ** 2 + (np.arctan(ev) / phi_a) ** 2
-        if stab.max() <= bound:
+        # The vertices lie on the ellipse: rounding puts some 1e-16 above it, which must not shrink the polygon
+        # (it did, by 1 %, at bounds such as 0.3, and differently in the engine's copy of this function).
+        if stab.max() <= bound * (1 + 1e-12):
             break
         scale *= 0.99
     # Counter-clockwise vertices: the outward normal of edge k is (dv, -du); n . (u, v) <= n . p_k.
@@ -205,10 +207,15 @@ class StaticOptimizer:
     1981). tendon: "elastic" (the engine's element at the CE length where its fibre velocity equals the path's
     dL/dt, solved by sequential QP until the moments balance to MOMENT_TOLERANCE) or "rigid" (linear in a, one QP).
     gh_stab_max: None or a bound > 0 on GHstab (paper eq. 5) as gh_polygon's linear constraints on the GH force.
-    weights: None (1) or (n,) > 0. Bounds [0, max_activation] come from the arm's settings at each solve."""
+    weights: None (1) or (n,) > 0. Bounds [0, max_activation] come from the arm's settings at each solve.
+    backend: "auto" (the default: "cpp" for tendon="rigid" with criterion="squared", else "python"), "cpp" (the
+    engine's cpp/src/static_optimization.cc: the same QP solved in C++ by a dual projected Newton method with
+    ProxQP as its fallback, for a 1 kHz loop; rigid tendon and squared activations only, ValueError otherwise) or
+    "python" (ProxQP from Python, as below). The two agree to the solver's tolerance (tests/test_static_optimization.py)."""
 
     def __init__(self, arm_or_model, gh_stab_max=None, weights=None, criterion: str = "squared",
-                 tendon: str = "elastic", polygon_sides: int = POLYGON_SIDES, max_iterations: int = 50):
+                 tendon: str = "elastic", polygon_sides: int = POLYGON_SIDES, max_iterations: int = 50,
+                 backend: str = "auto"):
         self._sim, self.model, self._default_load = _target(arm_or_model)
         self._arm_or_model = arm_or_model
         n = self.model.n_elements
@@ -235,6 +242,21 @@ class StaticOptimizer:
             self._gh_rows = np.vstack([gh_polygon(g["rim_half_angle_major"], g["rim_half_angle_minor"], s, polygon_sides),
                                        [-1.0, 0.0, 0.0]])  # F.normal >= 0
             self.gh_stab_max = float(s)
+        if backend not in ("auto", "cpp", "python"):
+            raise ValueError(f"backend must be 'auto', 'cpp' or 'python', got {backend!r}")
+        cpp_able = tendon == "rigid" and criterion == "squared"
+        if backend == "cpp" and not cpp_able:
+            raise ValueError(f"backend='cpp' solves the rigid tendon with squared activations only (got tendon="
+                             f"{tendon!r}, criterion={criterion!r}); use backend='python' or 'auto'")
+        from . import _core  # noqa: PLC0415 (the extension, not an armrt module: no cycle)
+        engine_arm = isinstance(self._sim, _core.Arm)  # not a stand-in with the same methods (tests)
+        if backend == "cpp" and not engine_arm:
+            raise TypeError("backend='cpp' needs an armrt.Arm or armrt.Model (the engine's arm)")
+        self.backend = "cpp" if backend == "cpp" or (backend == "auto" and cpp_able and engine_arm) else "python"
+        self._cpp = None
+        if self.backend == "cpp":
+            self._cpp = _core.StaticOptimizationWorkspace(self._sim, 0.0 if self.gh_stab_max is None else self.gh_stab_max,
+                                                          None if weights is None else self.weights, int(polygon_sides))
         self._qp = None
         self._qp_slack = None
         self._initialised = {}
@@ -280,6 +302,8 @@ class StaticOptimizer:
         q, qd, qdd = _state(model, q, qdot, qddot)
         f_hand, m_hand = _hand_load(hand_load, self._default_load if not hasattr(self._arm_or_model, "_sim") else
                                     (np.array(sim.hand_force), np.array(sim.hand_moment)))
+        if self._cpp is not None:
+            return self._solve_cpp(q, qd, qdd, f_hand, m_hand, on_infeasible)
         if hasattr(self._arm_or_model, "_sim"):
             idyn = sim.inverse_dynamics(q, qd, qdd, f_hand, m_hand)
         else:
@@ -310,6 +334,32 @@ class StaticOptimizer:
         ok = ok and float(np.abs(R.T @ F - tau_req).max()) < 1e-6
         res = self._result(a, lce, F, L, v, R, P, f0, tau_req, amax, it, feasible=ok)
         if ok:
+            self.last_activation = a
+        elif on_infeasible == "raise":
+            raise StaticOptimizationInfeasible(res.report, res)
+        return res
+
+    def _solve_cpp(self, q, qd, qdd, f_hand, m_hand, on_infeasible):
+        """One solve by the engine's static_optimization_rigid (backend "cpp"): the result as _result builds it."""
+        sim, model = self._sim, self.model
+        a, r = self._cpp.solve(sim, q, qd, qdd, f_hand, m_hand)
+        amax = sim.get_max_activation()
+        L, R = sim.muscle_paths(q)
+        _, Fe, _ = sim.steady_forces(L, r["fibre_velocity"], a, r["lce"])
+        names = model.element_names
+        upper = tuple(names[i] for i in np.flatnonzero((amax > 0) & (a >= amax - 1e-6)))
+        it = 1 if r["solver"] == "dual_newton" else r["qps"]  # QPs solved, as the Python path counts them
+        feasible = bool(r["feasible"])
+        res = StaticOptimizationResult(
+            activation=a, lce=r["lce"], force=r["force"], tau_required=r["tau_required"], tau_muscle=r["tau_muscle"],
+            residual=r["residual"], gh_force=r["gh_force"], gh_stab=float(r["gh_stab"]), feasible=feasible,
+            iterations=int(it), objective=self._objective(a), criterion=self.criterion, tendon=self.tendon,
+            gh_stab_max=self.gh_stab_max, at_upper_bound=upper, gh_bound_active=bool(r["gh_bound_active"]),
+            elastic_residual=R.T @ Fe - r["tau_required"],
+            report="" if feasible else self._report(r["residual"], int(it), R, amax, upper, bool(r["gh_bound_active"]),
+                                                    float(r["gh_stab"])),
+            fibre_velocity=r["fibre_velocity"])
+        if feasible:
             self.last_activation = a
         elif on_infeasible == "raise":
             raise StaticOptimizationInfeasible(res.report, res)
@@ -425,6 +475,29 @@ class StaticOptimizer:
         it = qps
         return a, it, converged
 
+    def _report(self, resid, it, R, amax, upper, gh_active, stab) -> str:
+        """The infeasible solve's message: residual moment per DOF, DOFs no active element crosses, elements at
+        their bound, whether the GH bound binds."""
+        model = self.model
+        bad = [(model.dof_names[j], resid[j]) for j in np.flatnonzero(np.abs(resid) > 1e-6)]
+        lines = [f"static optimisation infeasible: the muscles cannot supply the required moments"
+                 + (f" with GHstab <= {self.gh_stab_max:g}" if self.gh_stab_max is not None else "")
+                 + f" (closest solution after {it} iterations):",
+                 "  residual moment (achieved - required) per DOF: "
+                 + (", ".join(f"{d} {r:+.4g} N m" for d, r in bad) or "none above 1e-6 N m")]
+        paralysed_dofs = [model.dof_names[j] for j in range(model.n_dofs)
+                          if not np.any((np.abs(R[:, j]) > 1e-9) & (amax > 0))]
+        if paralysed_dofs:
+            lines.append(f"  no active element crosses {', '.join(paralysed_dofs)} (all paralysed)")
+        lines.append(f"  elements at their upper bound (max_activation): {len(upper)}"
+                     + (f" ({', '.join(upper[:12])}{', ...' if len(upper) > 12 else ''})" if upper else ""))
+        if self.gh_stab_max is not None:
+            lines.append(f"  GH bound {'binding' if gh_active else 'not binding'} (GHstab of this solution {stab:.4g}, "
+                         f"bound {self.gh_stab_max:g}"
+                         + ("; not even the bound can be met: the GH force of the loads and passive forces "
+                            "alone leaves it" if stab > self.gh_stab_max + 1e-9 else "") + ")")
+        return "\n".join(lines)
+
     def _result(self, a, lce, F, L, v, R, P, f0, tau_req, amax, it, feasible):
         model = self.model
         tau = R.T @ F
@@ -439,26 +512,7 @@ class StaticOptimizer:
         if self.tendon == "rigid":
             _, Fe, _ = self._sim.steady_forces(L, v, a, self._rigid[0])
             elastic_resid = R.T @ Fe - tau_req
-        report = ""
-        if not feasible:
-            bad = [(model.dof_names[j], resid[j]) for j in np.flatnonzero(np.abs(resid) > 1e-6)]
-            lines = [f"static optimisation infeasible: the muscles cannot supply the required moments"
-                     + (f" with GHstab <= {self.gh_stab_max:g}" if self.gh_stab_max is not None else "")
-                     + f" (closest solution after {it} iterations):",
-                     "  residual moment (achieved - required) per DOF: "
-                     + (", ".join(f"{d} {r:+.4g} N m" for d, r in bad) or "none above 1e-6 N m")]
-            paralysed_dofs = [model.dof_names[j] for j in range(model.n_dofs)
-                              if not np.any((np.abs(R[:, j]) > 1e-9) & (amax > 0))]
-            if paralysed_dofs:
-                lines.append(f"  no active element crosses {', '.join(paralysed_dofs)} (all paralysed)")
-            lines.append(f"  elements at their upper bound (max_activation): {len(upper)}"
-                         + (f" ({', '.join(upper[:12])}{', ...' if len(upper) > 12 else ''})" if upper else ""))
-            if self.gh_stab_max is not None:
-                lines.append(f"  GH bound {'binding' if gh_active else 'not binding'} (GHstab of this solution {stab:.4g}, "
-                             f"bound {self.gh_stab_max:g}"
-                             + ("; not even the bound can be met: the GH force of the loads and passive forces "
-                                "alone leaves it" if stab > self.gh_stab_max + 1e-9 else "") + ")")
-            report = "\n".join(lines)
+        report = "" if feasible else self._report(resid, it, R, amax, upper, gh_active, stab)
         return StaticOptimizationResult(
             activation=a, lce=np.asarray(lce), force=np.asarray(F), tau_required=tau_req, tau_muscle=tau,
             residual=resid, gh_force=gh_force, gh_stab=stab, feasible=feasible, iterations=it,
@@ -468,7 +522,8 @@ class StaticOptimizer:
 
 
 def static_optimization(arm_or_model, q, qdot=0.0, qddot=0.0, hand_load=None, gh_stab_max=None, weights=None,
-                        criterion: str = "squared", tendon: str = "elastic", on_infeasible: str = "raise"):
+                        criterion: str = "squared", tendon: str = "elastic", on_infeasible: str = "raise",
+                        backend: str = "auto"):
     """Per-element activations (n,) in [0, max_activation] whose muscle forces supply the inverse dynamics'
     moments at (q, qdot, qddot) with the hand load, minimising sum w_i a_i^2 (criterion="cubed": sum w_i a_i^3),
     with GHstab <= gh_stab_max if given (StaticOptimizer has the details and a warm-started loop).
@@ -477,6 +532,7 @@ def static_optimization(arm_or_model, q, qdot=0.0, qddot=0.0, hand_load=None, gh
     StaticOptimizationInfeasible (a ValueError, .result holds the closest solution and .report names the DOFs
     with residual moments and the binding constraints) when no activations within the bounds supply the moments,
     unless on_infeasible="return". ValueError for NaN or wrongly shaped q/qdot/qddot, gh_stab_max <= 0, bad
-    weights. Sources: docs/control.md."""
-    so = StaticOptimizer(arm_or_model, gh_stab_max=gh_stab_max, weights=weights, criterion=criterion, tendon=tendon)
+    weights. backend: as StaticOptimizer's. Sources: docs/control.md."""
+    so = StaticOptimizer(arm_or_model, gh_stab_max=gh_stab_max, weights=weights, criterion=criterion, tendon=tendon,
+                         backend=backend)
     return so.solve(q, qdot, qddot, hand_load, on_infeasible=on_infeasible)

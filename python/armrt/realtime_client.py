@@ -16,7 +16,7 @@ import numpy as np
 
 from . import _rt
 from .realtime_packets import (EXC_CHANNELS, EXC_ELEMENTS, EXC_GROUPS, EXC_MUSCLES, HELLO, OFFER, RELEASE,
-                               SESSION_ENDED, STATE, STIMULATION, PacketError, StatePacket, _key_bytes, decode_packet, encode_packet,
+                               SESSION_ENDED, STATE, STIMULATION, TARGET, PacketError, StatePacket, _key_bytes, decode_packet, encode_packet,
                                state_fields, state_packet_fields)
 
 MAPPING_TYPES = {"elements": EXC_ELEMENTS, "muscles": EXC_MUSCLES, "groups": EXC_GROUPS, "channels": EXC_CHANNELS}
@@ -191,6 +191,8 @@ class UdpClient:
         self.state_table = state_packet_fields(model, self.stimulation.names if self.stimulation else ())
         self.mapping = mapping if isinstance(mapping, GroupMapping) else GroupMapping.from_model(mapping, model, channels)
         self.key = _key_bytes(key)
+        self.model = model
+        self._model = None  # armrt.Model, loaded by the first send_target (its DOF names and ranges)
         self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         self.sock.bind(("127.0.0.1" if self.address[0].startswith("127.") else "", bind_port))
         self.sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 1 << 20)
@@ -322,6 +324,34 @@ class UdpClient:
         if seq is None:
             seq = self._next_seq()
         self.sock.sendto(encode_packet(STIMULATION, seq, values, session=self.session, key=self.key), self.address)
+        return seq
+
+    def send_target(self, q, qdot=0.0, qddot=0.0, seq: int | None = None) -> int:
+        """Sends one target to a runner started with --static-optimization (RealtimeSession(static_optimization=
+        True)): the desired joint angles q (ndof,) rad, velocities qdot (rad/s) and accelerations qddot (rad/s^2)
+        (each may be 0), in the model's DOF order; the runner solves the static optimisation for them every cycle
+        and applies the activations. Returns the sequence number. ValueError (nothing sent) for what
+        StaticOptimizer.solve refuses: NaN, wrong shapes, q beyond the joint ranges by more than the engine's
+        margin (with a hint when it looks like degrees); RuntimeError without a session (join(timeout) first)."""
+        from .checks import dof_vector, joint_range, real_scalar  # noqa: PLC0415 (light: numpy only)
+        if self._model is None:
+            from .model import Model  # noqa: PLC0415 (the model's DOF names and ranges, once)
+            self._model = Model(self.model)
+        m = self._model
+
+        def vec(v, what):
+            if np.isscalar(v) and not isinstance(v, (str, bytes)):
+                if real_scalar(v, what) != 0:
+                    raise ValueError(f"{what}: a scalar must be 0 (for every DOF); give an array of shape ({m.n_dofs},)")
+                return np.zeros(m.n_dofs)
+            return np.asarray(dof_vector(v, what, m.dof_names), dtype=float)
+
+        q = joint_range(vec(q, "q"), m.dof_names, m.dof_ranges, warn=False)
+        values = np.concatenate([q, vec(qdot, "qdot"), vec(qddot, "qddot")])
+        self._require_session()
+        if seq is None:
+            seq = self._next_seq()
+        self.sock.sendto(encode_packet(TARGET, seq, values, session=self.session, key=self.key), self.address)
         return seq
 
     def send_raw(self, data: bytes) -> None:

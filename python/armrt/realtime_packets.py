@@ -48,6 +48,7 @@ EXC_ELEMENTS, EXC_MUSCLES, EXC_GROUPS, EXC_CHANNELS = (TYPES[k] for k in ("eleme
 RELEASE, HELLO, STATE, OFFER = (TYPES[k] for k in ("release", "hello", "state", "offer"))
 STIMULATION: int = TYPES["stimulation"]
 SESSION_ENDED: int = TYPES["session_ended"]  # runner -> a timed-out owner: [reason (1 timeout), hold s, grace s]
+TARGET: int = TYPES["target"]  # --static-optimization: desired q, qdot, qddot
 FLAG_FORCES, FLAG_STOPPED, FLAG_ERROR, FLAG_TIMED_OUT = (FLAGS[k] for k in ("forces", "stopped", "error", "timed_out"))
 FLAG_AUTH, FLAG_OVERRUN, FLAG_EXCITATION = (FLAGS[k] for k in ("auth", "overrun", "excitation"))
 FLAG_STIMULATION: int = FLAGS["stimulation"]

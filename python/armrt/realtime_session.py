@@ -68,7 +68,10 @@ class RealtimeSession:
     stimulation (a map: "per_muscle",
     "default" (the model's shipped map), a .json/.toml path or a dict, docs/fes.md; stimulation packets then drive its channels, clamped to their
     limits and counted, zeroed when the session ends; state packets carry the applied stimulation and the
-    fatigue). Bad values raise ValueError naming the option.
+    fatigue), static_optimization (True: feedforward by the rigid-tendon static optimisation each cycle, the
+    client sending targets with UdpClient.send_target; so_kp (1/s^2) and so_kd (1/s): computed-torque gains, the
+    solve then at the arm's state; so_gh_stab_max: GHstab bound in the solve; docs/realtime.md; the solve-time
+    statistics in stats()["static_optimization"]). Bad values raise ValueError naming the option.
     """
 
     def __init__(self, **config):
