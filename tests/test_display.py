@@ -53,6 +53,26 @@ def test_server_serves_both_pages():
             urllib.request.urlopen(d.url + "nothing", timeout=10)
 
 
+def test_a_port_probe_prints_nothing_and_pages_are_announced(capsys):
+    """A TCP connection closed without a request (a port scan, a browser's pre-connect) used to print websockets'
+    25-line traceback into the session's terminal; a page coming and going is one line each (announce=True)."""
+    import socket
+
+    from websockets.sync.client import connect
+    with display.DisplayServer(port=0, announce=True) as d:
+        socket.create_connection(("127.0.0.1", d.port), timeout=5).close()
+        with connect(f"ws://127.0.0.1:{d.port}/ws?page=participant"):
+            assert d.wait_for_page("participant", 10)
+        deadline = time.monotonic() + 10
+        while d.connected["participant"] and time.monotonic() < deadline:
+            time.sleep(0.02)
+        time.sleep(0.2)   # the probe's handshake failure is logged on the server's thread
+        cap = capsys.readouterr()
+    assert "Traceback" not in cap.err and "handshake" not in cap.err, cap.err
+    assert "a participant page connected" in cap.out
+    assert "a participant page disconnected (0 still open): the participant sees nothing" in cap.out
+
+
 def test_stop_closes_open_pages_so_the_process_can_end():
     """websockets runs each connection on a non-daemon thread: an open kiosk page must not keep the session alive."""
     import threading

@@ -24,7 +24,9 @@ server measures state-to-frame latency on its own clock (DisplayServer.acks; ben
 from __future__ import annotations
 
 import json
+import logging
 import math
+import sys
 import threading
 import time
 from dataclasses import dataclass
@@ -163,6 +165,33 @@ class Ack:
     page_time_ms: float
 
 
+# s a page gets to answer the close handshake when the session ends (it is closed without the answer after that).
+CLOSE_TIMEOUT_S = 0.5
+
+
+class _OneLine(logging.Handler):
+    """websockets' log records as one line on stderr, without their tracebacks; a connection that closed before
+    sending a request (a port probe) is not worth a line."""
+
+    def emit(self, record) -> None:
+        msg = record.getMessage()
+        exc = record.exc_info[1] if record.exc_info else None
+        if exc is not None and "did not receive a valid HTTP request" in f"{exc} {exc.__cause__}":
+            return
+        if record.levelno >= logging.WARNING:
+            extra = f": {exc}" if exc is not None else ""
+            print(f"armrt display: {msg}{extra}", file=sys.stderr, flush=True)
+
+
+def _one_line_logger() -> logging.Logger:
+    log = logging.getLogger("armrt.display.server")
+    if not log.handlers:
+        log.addHandler(_OneLine())
+        log.propagate = False
+        log.setLevel(logging.INFO)
+    return log
+
+
 class DisplayServer:
     """Serves the participant page at http://host:port/, the operator page at /operator and the state stream at
     /ws (port 0: a free one, see .port). publish(state) hands the newest state (a display_state dict) to every
@@ -170,8 +199,9 @@ class DisplayServer:
     frame that drew a state: .acks holds an Ack per drawn state. Use as a context manager or start()/stop()."""
 
     def __init__(self, plane: TaskPlane | None = None, host: str = "127.0.0.1", port: int = 8090,
-                 keep_acks: int = 100000):
+                 keep_acks: int = 100000, announce: bool = False):
         self.plane = plane if plane is not None else TaskPlane()
+        self.announce = bool(announce)   # a line on stdout when a page connects or goes away
         self.host = host
         self._port = checks.count(port, "port")
         self._cond = threading.Condition()
@@ -200,8 +230,11 @@ class DisplayServer:
 
     def start(self) -> "DisplayServer":
         from websockets.sync.server import serve
+        # close_timeout: a page that stopped reading must not hold stop() up for websockets' default 10 s per page;
+        # the logger turns the server's tracebacks (a port probe without a request, a page gone mid-handshake) into
+        # one line each instead of 25 in the session's terminal.
         self._server = serve(self._handle, self.host, self._port, process_request=self._http,
-                             compression=None)
+                             compression=None, close_timeout=CLOSE_TIMEOUT_S, logger=_one_line_logger())
         self._thread = threading.Thread(target=self._server.serve_forever, name="armrt-display", daemon=True)
         self._thread.start()
         return self
@@ -283,6 +316,8 @@ class DisplayServer:
             self.connected[page] = self.connected.get(page, 0) + 1
             self._connections.add(ws)
             self._cond.notify_all()
+        if self.announce:
+            print(f"armrt display: a {page} page connected", flush=True)
         th.start()
         try:
             for text in ws:
@@ -301,6 +336,11 @@ class DisplayServer:
             with self._cond:
                 self.connected[page] -= 1
                 self._connections.discard(ws)
+                left, closed = self.connected[page], self._closed
+            if self.announce and not closed:
+                print(f"armrt display: a {page} page disconnected ({left} still open)"
+                      + (": the participant sees nothing until it reconnects" if page == "participant" and not left
+                         else ""), flush=True)
 
 
 class FrameFeed:

@@ -383,7 +383,7 @@ def _run_live_with(args, task, driver, extra, max_time) -> dict:
         if args.display:
             from .display import DisplayServer, fit_plane
             plane = fit_plane(task.targets, centre=args.centre, points=extra)
-            server = DisplayServer(plane, host=args.display_host, port=args.display_port).start()
+            server = DisplayServer(plane, host=args.display_host, port=args.display_port, announce=True).start()
             print(f"participant display: chromium --kiosk {server.url}\noperator page: {server.operator_url}",
                   flush=True)
             if args.display_wait > 0:
