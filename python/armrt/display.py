@@ -513,6 +513,8 @@ def _cmd_display(args) -> int:
             feed.stop()
     print(f"drew {feed.frames} states ({source.packets} packets, {source.bad_packets} refused)"
           + (f"; last refused pose: {feed.error}" if feed.error else ""))
+    if source.bad_packets:   # e.g. a runner of another model, or another key: say why, not only how many
+        print(f"armrt display: refused datagrams: {source.last_error}", file=sys.stderr)
     return 0
 
 
