@@ -325,6 +325,18 @@ class ChannelStaticOptimizer(StaticOptimizer):
 
 
 # ------------------------------------------------------------------------------------------ controllers
+def _check_gains(params, names) -> None:
+    """The named fields of a controller's parameters as finite floats >= 0 (ValueError naming the field), the
+    control interval > 0."""
+    for k in names:
+        v = real_scalar(getattr(params, k), k)
+        if not (v >= 0 and math.isfinite(v)):
+            raise ValueError(f"{k} must be finite and >= 0, got {v}")
+        setattr(params, k, v)
+    if not params.control_interval_s > 0:
+        raise ValueError("control_interval_s must be > 0")
+
+
 @dataclass
 class PIDParams:
     """Feedback gains of FeedforwardPID on the joint-angle error (per DOF, the same for all): kp s^-2, ki s^-3,
@@ -358,13 +370,7 @@ class PIDParams:
         return cls(kp=4 * w ** 3 * tau, ki=w ** 4 * tau, kd=6 * w ** 2 * tau, **kw)
 
     def __post_init__(self):
-        for k in ("kp", "ki", "kd", "preview_s", "integral_limit", "control_interval_s"):
-            v = real_scalar(getattr(self, k), k)
-            if not (v >= 0 and math.isfinite(v)):
-                raise ValueError(f"{k} must be finite and >= 0, got {v}")
-            setattr(self, k, v)
-        if not self.control_interval_s > 0:
-            raise ValueError("control_interval_s must be > 0")
+        _check_gains(self, ("kp", "ki", "kd", "preview_s", "integral_limit", "control_interval_s"))
         if self.gh_stab_max is not None:
             v = real_scalar(self.gh_stab_max, "gh_stab_max")
             if not v > 0:
@@ -439,13 +445,7 @@ class PDParams:
     control_interval_s: float = CONTROL_INTERVAL_S
 
     def __post_init__(self):
-        for k in ("kp", "kd", "control_interval_s"):
-            v = real_scalar(getattr(self, k), k)
-            if not (v >= 0 and math.isfinite(v)):
-                raise ValueError(f"{k} must be finite and >= 0, got {v}")
-            setattr(self, k, v)
-        if not self.control_interval_s > 0:
-            raise ValueError("control_interval_s must be > 0")
+        _check_gains(self, ("kp", "kd", "control_interval_s"))
 
 
 @dataclass
