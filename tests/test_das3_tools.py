@@ -195,8 +195,8 @@ def test_viewer_moves_the_girdle(result):
 def test_live_page_shows_the_girdle_moving(tmp_path):
     """The served page in headless Chromium: the girdle's pixels (the difference between the page with
     the girdle shown and hidden, the simulation paused) are there, and elsewhere a second later."""
-    import test_view as tv
-    if tv._chromium() is None:
+    import chromium_helpers as tv
+    if tv.chromium() is None:
         pytest.skip("chromium is not installed (Debian package 'chromium')")
     pytest.importorskip("viser", reason="viser is not installed (pip install viser)")
     from armrt.view import SimulationSource, serve
@@ -204,7 +204,7 @@ def test_live_page_shows_the_girdle_moving(tmp_path):
     def excitation(t):
         return {"serratus_anterior": 0.25 * (1 + np.sin(2 * np.pi * 0.5 * t)), "trapezius": 0.15,
                 "rotator_cuff": 0.08, "deltoid": 0.1}
-    v = serve(SimulationSource(model="das3", excitation=excitation), host="127.0.0.1", port=tv._free_port(),
+    v = serve(SimulationSource(model="das3", excitation=excitation), host="127.0.0.1", port=tv.free_port(),
               fps=30, block=False)
     out_dir = tmp_path / "shots"
     out_dir.mkdir()
@@ -227,7 +227,7 @@ def test_live_page_shows_the_girdle_moving(tmp_path):
         region = (slice(int(0.15 * h), h), slice(0, int(0.64 * w)))   # the 3D view, not the panel
         return np.abs(shown[region].astype(int) - hidden[region].astype(int)).max(axis=2) > 40
     try:
-        with tv._chromium_page(v.url, tmp_path) as page:
+        with tv.chromium_page(v.url, tmp_path) as page:
             deadline = time.monotonic() + 30
             while not page.eval("!!document.querySelector('canvas') && document.body.innerText.includes('GHstab')"):
                 assert time.monotonic() < deadline, "the page never showed the scene and the GHstab panel"
