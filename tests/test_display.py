@@ -240,3 +240,10 @@ def test_cli_display_serves_the_pages(capsys):
     assert main(["display", "--udp", "127.0.0.1:0", "--port", "0", "--duration", "0.3"]) == 0
     out = capsys.readouterr().out
     assert "chromium --kiosk http://127.0.0.1:" in out and "/operator" in out and "drew 0 states" in out
+
+
+def test_urls_of_wildcard_and_ipv6_hosts():
+    import socket
+    d = display.DisplayServer(host="0.0.0.0", port=8123)
+    assert d.url == f"http://{socket.gethostname()}:8123/"
+    assert display.DisplayServer(host="::1", port=8123).operator_url == "http://[::1]:8123/operator"

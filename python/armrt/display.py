@@ -222,11 +222,19 @@ class DisplayServer:
 
     @property
     def url(self) -> str:
-        return f"http://{self.host}:{self.port}/"
+        return f"http://{self._url_host()}:{self.port}/"
 
     @property
     def operator_url(self) -> str:
-        return f"http://{self.host}:{self.port}/operator"
+        return f"http://{self._url_host()}:{self.port}/operator"
+
+    def _url_host(self) -> str:
+        """The host as a browser on another machine types it: a wildcard bind is reached by this machine's name,
+        an IPv6 address in brackets (RFC 3986)."""
+        if self.host in ("0.0.0.0", "::", ""):
+            import socket
+            return socket.gethostname()
+        return f"[{self.host}]" if ":" in self.host else self.host
 
     def start(self) -> "DisplayServer":
         from websockets.sync.server import serve
