@@ -89,3 +89,41 @@ def test_controller_drives_a_running_session_and_holds_when_the_decoder_is_silen
     assert stats["packets"]["targets_applied"] == n
     assert ctl.last_applied_seq == ctl.sent[-1][0]
     assert len(ctl.applied_latency_s) == n and min(ctl.applied_latency_s) > 0
+
+
+def test_task_sample_to_cursor_target_reads_the_task_state_channels():
+    from armrt.simulated_decoder_lsl import task_sample_to_cursor_target
+    c, t = task_sample_to_cursor_target([0.5, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 2, 0, 0.1])
+    assert np.allclose(c, [0.1, 0.2, 0.3]) and np.allclose(t, [0.4, 0.5, 0.6])
+    c, t = task_sample_to_cursor_target([0.5, 0.1, 0.2, 0.3, np.nan, np.nan, np.nan, -1, 0, 0.1])
+    assert t is None
+    with pytest.raises(ValueError, match="channels"):
+        task_sample_to_cursor_target([0.0] * 3)
+
+
+def test_decoder_process_pushes_velocities_towards_the_target_over_lsl():
+    """The decoder process closes the loop over LSL: task state in (cursor at 0, target at +10 cm x), the simulated
+    decoder's velocity (gain 4/s x 0.1 m = 0.4 m/s along x, no noise, no lag) out, one command per task sample."""
+    from lsl_helpers import pylsl_or_skip, unique_id
+    pylsl_or_skip()
+    from armrt import tasks
+    from armrt.lsl_bridge import LslEndpointDecoder, TaskStateOutlet
+    from armrt.simulated_decoder_lsl import DecoderProcess
+    uid = unique_id("d")
+    outlet = TaskStateOutlet(f"ts-{uid}", f"{uid}-ts", 100.0)
+    dec = DecoderProcess(tasks.SimulatedDecoder(4.0, 0.0, 0.0, 0.01), f"ts-{uid}", f"dec-{uid}", f"{uid}-dec",
+                         wait_s=10)
+    rx = LslEndpointDecoder(f"dec-{uid}", source_id=f"{uid}-dec", wait_s=10)
+    try:
+        import time
+        got = []
+        deadline = time.monotonic() + 10
+        while len(got) < 20 and time.monotonic() < deadline:
+            outlet.push([0.0, 0.0, 0.0, 0.0, 0.1, 0.0, 0.0, 0, 0, np.nan], outlet.pylsl.local_clock())
+            dec.step(0.05)
+            got += rx.poll()
+        assert len(got) >= 20 and dec.task_samples == len(dec.sent_stamps) >= 20
+        v = np.array([c.hand_velocity for c in got])
+        assert np.allclose(v, [0.4, 0.0, 0.0], atol=1e-9)
+    finally:
+        rx.close()
