@@ -276,3 +276,18 @@ def test_integrators_run(integrator, dt):
     a = armrt.Arm(integrator=integrator, dt=dt)
     res = a.simulate({"elbow_flexors": 0.3, "rotator_cuff": 0.05}, duration=0.2)
     assert np.all(np.isfinite(res.q)) and a.integrator == integrator
+
+
+def test_simulate_into_storage_refuses_rows_that_do_not_fit(arm):
+    # The binding leaves this check to the engine (recorder.cc): it must still refuse, before stepping.
+    sim = arm._sim
+    out = {k: np.zeros(shape) for k, shape in sim.recording_shapes(5).items()}
+    u = np.zeros((1, 102))
+    t0 = arm.time
+    with pytest.raises(ValueError, match="7 rows to record, room for 3"):   # 6 steps: their 6 starts and the end
+        sim.simulate(u, 6, 1, out=out, row=2)
+    assert arm.time == t0
+    done = sim.simulate(u, 2, 1, out=out, row=2)
+    assert done == {"steps": 2, "rows": 3}
+    with pytest.raises(ValueError, match="row outside"):
+        sim.simulate(u, 1, 1, out=out, row=6)
