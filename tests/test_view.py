@@ -398,3 +398,28 @@ def test_viewer_replays_a_mot_motion(tmp_path, arm):
         assert f.activation is None and np.isnan(f.gh_stab)
     finally:
         v.stop()
+
+
+def test_state_listener_refuses_what_is_not_its_models_state_and_names_a_taken_port():
+    # The one decoder behind UdpSource, display --udp and task --runner-state (armrt.realtime.StateListener).
+    realtime = pytest.importorskip("armrt.realtime", reason="armrt.realtime (the armrt-rt codec) is not built")
+    fixed = np.concatenate([[0.5], np.zeros(5), np.zeros(5), np.zeros(3), [0.2, 0, 0, 0.3, 0, 3, 0.0, 0]])
+    assert len(fixed) == realtime.STATE_FIXED_VALUES
+    good = realtime.encode_packet(realtime.STATE, 2, np.concatenate([fixed, np.zeros(102)]),
+                                  flags=realtime.FLAG_EXCITATION, key=b"k" * 16)
+    other_model = realtime.encode_packet(realtime.STATE, 3, np.concatenate([fixed, np.zeros(50)]),
+                                         flags=realtime.FLAG_EXCITATION, key=b"k" * 16)
+    unsigned = realtime.encode_packet(realtime.STATE, 4, np.concatenate([fixed, np.zeros(102)]),
+                                      flags=realtime.FLAG_EXCITATION)
+    listener = realtime.StateListener("127.0.0.1", 0, "das2", key=b"k" * 16)
+    try:
+        assert listener.decode(b"junk") is None and listener.bad_packets == 1 and listener.last_error
+        assert listener.decode(other_model) is None and listener.bad_packets == 2
+        assert listener.decode(unsigned) is None and listener.bad_packets == 3
+        assert listener.packets == 0
+        pkt = listener.decode(good)
+        assert pkt.time == 0.5 and pkt.gh_stab == 0.2 and listener.packets == 1 and listener.bad_packets == 3
+        with pytest.raises(OSError, match=rf"127\.0\.0\.1:{listener.port}"):
+            realtime.StateListener("127.0.0.1", listener.port, "das2")
+    finally:
+        listener.close()

@@ -25,7 +25,7 @@ from .realtime_packets import (  # noqa: F401 (armrt.realtime's names, as before
     MAGIC, MAX_VALUES, OFFER, RELEASE, SESSION_ENDED, STATE, STATE_FIELDS, STIMULATION, STATE_FIXED_VALUES, TAG_SIZE, TYPES, VERSION, Packet,
     PacketError, StatePacket, decode_packet, encode_packet, read_key_file, state_fields, state_packet_fields)
 from .realtime_client import (MAPPING_TYPES, GroupMapping, SessionEnd, SessionEnded, StimulationChannels,  # noqa: F401
-                              UdpClient, parse_endpoint)
+                              StateListener, UdpClient, parse_endpoint)
 from .realtime_session import RealtimeSession, rt_main, runner_args, runner_path  # noqa: F401
 
 

@@ -405,3 +405,41 @@ class UdpClient:
 
     def __exit__(self, *exc):
         self.close()
+
+
+class StateListener:
+    """The receiving end of an armrt-rt --state-to stream (docs/realtime.md "State packets"), for whoever only
+    watches the arm (armrt view / display --udp, armrt task --runner-state). Binds host:port (UDP; host parsed as
+    the runner parses it, loopback unless another address is named; port 0 picks one, then .port says which).
+    decode(datagram) -> StatePacket of the model, or None for a datagram that is not one (another model's runner,
+    unsigned or wrongly signed when key is set, junk): counted in .bad_packets with the reason in .last_error, so
+    nothing refused is drawn or scored and nothing is silently lost. Raises OSError naming host:port when it
+    cannot bind, ValueError for a bad host or port."""
+
+    def __init__(self, host: str = "127.0.0.1", port: int = 9870, model: str = "das2", key: bytes | None = None):
+        host, port = parse_endpoint(f"{host}:{int(port)}")
+        self.model = model
+        self.fields = state_packet_fields(model)
+        self.key = key
+        self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        try:
+            self.sock.bind((host, port))
+        except OSError as exc:
+            self.sock.close()
+            raise OSError(f"cannot listen for the runner's state on {host}:{port}: {exc.strerror}") from None
+        self.host, self.port = host, self.sock.getsockname()[1]
+        self.packets = self.bad_packets = 0
+        self.last_error = ""
+
+    def decode(self, data: bytes) -> StatePacket | None:
+        try:
+            pkt = StatePacket.from_packet(decode_packet(data, self.key), self.fields)
+        except Exception as exc:  # a datagram from the network may be malformed any way: refused, reason kept
+            self.bad_packets += 1
+            self.last_error = str(exc)
+            return None
+        self.packets += 1
+        return pkt
+
+    def close(self) -> None:
+        self.sock.close()

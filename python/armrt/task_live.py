@@ -110,28 +110,19 @@ class RunnerDriver:
                  dt_s: float = 0.002, wait_s: float = 5.0, max_silence_s: float = 1.0):
         import socket
 
-        from . import _core, realtime
+        from . import realtime
         from .geometry import ArmGeometry
-        host, port = realtime.parse_endpoint(f"{host}:{int(port)}")
         self.dt_s = checks.real_scalar(dt_s, "dt_s")
         if not (math.isfinite(self.dt_s) and self.dt_s > 0):
             raise ValueError(f"dt_s must be a finite number of seconds > 0, got {dt_s}")
         self.max_silence_s = checks.real_scalar(max_silence_s, "max_silence_s")
         if not self.max_silence_s > 0:
             raise ValueError(f"max_silence_s must be > 0 s, got {max_silence_s}")
-        self._rt, self._key = realtime, key
-        self._fields = realtime.state_packet_fields(model)
-        self._n = len(_core.model_info(model)["elements"])
         self.geometry = ArmGeometry(model)
-        self._sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-        try:
-            self._sock.bind((host, port))
-        except OSError as exc:
-            self._sock.close()
-            raise OSError(f"cannot listen for the runner's state on {host}:{port}: {exc.strerror}") from None
-        self.port = self._sock.getsockname()[1]
-        self.packets = self.bad_packets = 0
-        self.last_error = ""
+        self._listener = realtime.StateListener(host, port, model, key)
+        self._sock = self._listener.sock
+        self.port = self._listener.port
+        host = self._listener.host
         self.stale_s = 0.0
         self.packet = None
         self._last = None
@@ -146,19 +137,19 @@ class RunnerDriver:
                                f"(is the runner started with --state-to {host}:{self.port}?)") from None
         self._sock.setblocking(False)
 
+    # Packet counts and the last refusal's reason are the listener's.
+    packets = property(lambda self: self._listener.packets)
+    bad_packets = property(lambda self: self._listener.bad_packets)
+    last_error = property(lambda self: self._listener.last_error)
+
     def _take(self, data: bytes) -> None:
-        rt = self._rt
-        try:
-            pkt = rt.StatePacket.from_packet(rt.decode_packet(data, self._key), self._fields, self._n)
-        except Exception as exc:
-            self.bad_packets += 1
-            self.last_error = str(exc)
+        pkt = self._listener.decode(data)
+        if pkt is None:
             return
         now = time.perf_counter()
         if self._last is not None:
             self.stale_s = max(self.stale_s, now - self._last)
         self._last = now
-        self.packets += 1
         self.packet = pkt
 
     def poll(self) -> None:

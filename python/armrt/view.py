@@ -239,43 +239,35 @@ class UdpSource:
         except ImportError as exc:
             raise RuntimeError("the UDP source needs armrt.realtime (the armrt-rt packet codec), which is "
                                "not available in this build") from exc
-        import socket
-        host, port = realtime.parse_endpoint(f"{host}:{int(port)}")
-        self._realtime = realtime
-        self._key = key
         self.model = model
         from . import _core
         self.element_names = [e["name"] for e in _core.model_info(model)["elements"]]
-        self._state_fields = realtime.state_packet_fields(model)
-        self._sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-        self._sock.bind((host, int(port)))
-        self.port = self._sock.getsockname()[1]
+        self._listener = realtime.StateListener(host, port, model, key)
+        self._sock = self._listener.sock
+        self.port = self._listener.port
         self._sock.settimeout(0.2)
         self._frame: Frame | None = None
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
-        self.packets = 0
-        self.bad_packets = 0
-        self.last_error = ""   # why the last bad datagram was refused (e.g. a runner of another model)
+
+    # Packet counts and why the last bad datagram was refused (e.g. a runner of another model): the listener's.
+    packets = property(lambda self: self._listener.packets)
+    bad_packets = property(lambda self: self._listener.bad_packets)
+    last_error = property(lambda self: self._listener.last_error)
 
     def _run(self) -> None:
-        rt = self._realtime
         while not self._stop.is_set():
             try:
                 data, _ = self._sock.recvfrom(65536)
             except OSError:
                 continue
-            try:
-                s = rt.StatePacket.from_packet(rt.decode_packet(data, self._key), self._state_fields,
-                                         len(self.element_names))
+            s = self._listener.decode(data)
+            if s is not None:
                 self._frame = Frame(time=s.time, q=np.asarray(s.q, dtype=float), activation=s.excitation,
                                     gh_stab=s.gh_stab, gh_rim_margin=s.gh_rim_margin,
                                     gh_rim_direction=s.gh_rim_direction, lag=s.lag, overrun=s.overrun, timed_out=s.timed_out,
                                     kind="excitation received")
-                self.packets += 1
-            except Exception as exc:
-                self.bad_packets += 1
-                self.last_error = str(exc)
+
     def start(self) -> None:
         if self._thread is None:
             self._thread = threading.Thread(target=self._run, name="armrt-udp", daemon=True)
