@@ -1462,12 +1462,44 @@ def test_runner_settle_starts_from_the_relaxed_arm():
     np.testing.assert_allclose(a.q, b.q, atol=1e-12)
 
 
+def test_runner_support_holds_the_joints_until_s_after_the_first_command():
+    """RealtimeSession(support=S) / --support S: the joints stay where the loop started, at rest, while no controller
+    has commanded anything and for S s after its first command; then the arm moves (das2's rest posture with zero
+    excitation is no equilibrium). The C++ test checks the muscles go on meanwhile."""
+    arm = armrt.Arm()
+    watcher = rt.StateListener("127.0.0.1", 0, "das2")   # a --state-to subscriber sees the arm before any command
+    watcher.sock.settimeout(2.0)
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, support=0.3,
+                            state_to=f"127.0.0.1:{watcher.port}") as s, \
+            rt.UdpClient(s.port, mapping="groups") as c:
+        time.sleep(0.4)                                # longer than S, and nothing sent yet: held
+        waiting = None
+        while waiting is None or waiting.time < 0.35:
+            waiting = watcher.decode(watcher.sock.recv(65536)) or waiting
+        watcher.close()
+        c.join()
+        first = _state_after(c, waiting.time)          # the first commands
+        during = _state_after(c, first.time + 0.15)
+        after = _state_after(c, first.time + 0.6)
+        stats = s.stop()
+    assert stats["error"] == "" and stats["support_s"] == pytest.approx(0.3)
+    for st in (waiting, first, during):
+        np.testing.assert_array_equal(st.q, arm.rest_posture)
+        np.testing.assert_array_equal(st.qdot, np.zeros(arm.n_dofs))
+    assert np.abs(after.q - arm.rest_posture).max() > 1e-4
+
+
 def test_settle_bad_values_are_refused():
     for bad in (-1.0, float("nan"), float("inf")):
         with pytest.raises(ValueError, match=r"--settle must be a finite number of seconds >= 0"):
             rt.RealtimeSession(settle=bad)
     r = subprocess.run([runner(), "--settle", "-0.5", "--duration", "0.1"], capture_output=True, text=True, timeout=20)
     assert r.returncode == 2 and "--settle must be a finite number of seconds >= 0, got -0.5" in r.stderr, r.stderr
+    for bad in (-1.0, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match=r"--support must be a finite number of seconds >= 0"):
+            rt.RealtimeSession(support=bad)
+    r = subprocess.run([runner(), "--support", "-0.5", "--duration", "0.1"], capture_output=True, text=True, timeout=20)
+    assert r.returncode == 2 and "--support must be a finite number of seconds >= 0, got -0.5" in r.stderr, r.stderr
 
 
 def test_runner_profile_is_arm_apply_profile():

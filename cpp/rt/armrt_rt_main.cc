@@ -93,6 +93,9 @@ int main(int argc, char** argv) {
                                   "(das2: GHy,GHz,GHyy,ELx,PSy; default: rest posture)")
       ->delimiter(',')->expected(1, armrt::kMaxDofs)->type_name("Q,Q,...");  // CLI11 would say FLOAT: one number
   app.add_option("--duration", cfg.duration, "run for S seconds (0: until SIGINT/SIGTERM)")->capture_default_str();
+  app.add_option("--support", cfg.support_s, "hold the joints where the loop starts (qdot 0) until S seconds after "
+                                           "the first command applied, the muscles responding as usual: the arm "
+                                           "supported while stimulation builds up (fes_control.run_offline's hold_s)");
   app.add_option("--settle", cfg.settle_s, "first relax the arm S seconds with zero excitation, then start the loop "
                                          "at time 0 (Arm.settle; das3's start posture is not its equilibrium)")
       ->capture_default_str();

@@ -105,6 +105,8 @@ Schedule check_config(RtConfig& cfg) {
   // Arm.settle's own check and wording (arm.py): any finite duration >= 0.
   if (!std::isfinite(cfg.settle_s) || cfg.settle_s < 0)
     throw std::invalid_argument("--settle must be a finite number of seconds >= 0, got " + fmt(cfg.settle_s));
+  if (!std::isfinite(cfg.support_s) || cfg.support_s < 0)
+    throw std::invalid_argument("--support must be a finite number of seconds >= 0, got " + fmt(cfg.support_s));
   if (cfg.rx_budget_us == 0) cfg.rx_budget_us = std::min(150.0, 0.25e6 * s.period_s);
   check_range("--rx-budget", cfg.rx_budget_us, 1.0, 0.5e6 * s.period_s, "us (at most half the period)");
   check_range("--state-rate", cfg.state_rate_hz, 0.0, cfg.rate_hz, "Hz (at most --rate)");

@@ -25,6 +25,12 @@ struct RtConfig {
   double duration = 0;         // s; 0: until stop() / a signal
   // s of relaxation before the loop starts (Arm.settle: zero excitation, then the clock back to 0); 0: none.
   double settle_s = 0;
+  // > 0: the joints are held where the loop started (q and qdot written back after every cycle's step; activations,
+  // fibre lengths and the stimulation chain evolve as usual) from the start until support_s s after the first
+  // command the runner applies (excitation, stimulation or target; without --listen, the first support_s s): the
+  // arm supported while a controller's stimulation builds up, as fes_control.run_offline(hold_s=...) starts a
+  // trial, however long the controller takes to come; 0: none.
+  double support_s = 0;
   // Real-time set-up.
   bool realtime = true;        // try SCHED_FIFO; false: normal scheduling on purpose
   int priority = 80;           // SCHED_FIFO priority (1..99)

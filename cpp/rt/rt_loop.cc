@@ -22,6 +22,9 @@ namespace armrt::rt {
 
 namespace {
 
+// What --support writes back after each step: the joint angles and velocities.
+constexpr unsigned kSupportSignature = snapshot_bit(SnapshotPart::q) | snapshot_bit(SnapshotPart::qdot);
+
 inline timespec to_timespec(std::int64_t ns) {
   timespec ts;
   ts.tv_sec = static_cast<time_t>(ns / 1000000000LL);
@@ -92,6 +95,27 @@ void RtLoop::make_simulator(const ModelDef& def, const Schedule& sched) {
     const auto n = static_cast<std::int64_t>(std::llround(cfg_.settle_s / sched.period_s));
     if (!sim_->settle(n)) throw SettleError("--settle " + fmt(cfg_.settle_s) + " s: " + sim_->error_message());
   }
+  // --support holds the joints where the loop starts (after --settle), at rest.
+  support_cycles_ = static_cast<std::int64_t>(std::llround(cfg_.support_s / sched.period_s));
+  const int nq = sim_->model.num_dofs;
+  std::copy_n(sim_->data.x.begin() + q_offset(sim_->model), nq, support_state_.begin());
+  std::fill_n(support_state_.begin() + nq, nq, 0.0);
+  if (support_cycles_ > 0) set_snapshot(sim_->model, sim_->data, sim_->stepper, kSupportSignature, support_state_.data());
+}
+
+bool RtLoop::supported(std::int64_t cycle) {
+  if (support_cycles_ == 0) return false;
+  if (support_end_ < 0) {
+    // Held while no controller has commanded anything: it may take seconds to start. Without --listen nothing
+    // will: the first support_cycles_ cycles.
+    const bool listening = !cfg_.listen.empty();
+    if (listening) {
+      const PacketCounters& pk = session_->counters();
+      if (pk.applied + pk.targets_applied == 0) return true;
+    }
+    support_end_ = (listening ? cycle : 0) + support_cycles_;
+  }
+  return cycle < support_end_;
 }
 
 void RtLoop::apply_command(const double* u, const double* stimulation) {
@@ -292,6 +316,9 @@ void RtLoop::run_cycles(std::int64_t n) {
       ++cycle;
       break;
     }
+    // Supported: the joints back where they were (the integrator restarts its memory: no allocation for ROS2's).
+    if (supported(cycle))
+      set_snapshot(sim_->model, sim_->data, sim_->stepper, kSupportSignature, support_state_.data());
     if (sched_.state_every > 0 && (cycle + 1) % sched_.state_every == 0) send_state();
     const std::int64_t t_end = now_ns();
 
@@ -401,6 +428,7 @@ RtStats RtLoop::stats() const {
   st.integrator = cfg_.integrator;
   st.authenticated = session_->authenticated();
   st.session_hold_s = session_->hold_s();
+  st.support_s = static_cast<double>(support_cycles_) * sched_.period_s;
   st.resume_grace_s = session_->resume_grace_s();
   st.rcvbuf_bytes = session_->rcvbuf_bytes();
   st.owner_rcvbuf_bytes = session_->owner_rcvbuf_bytes();

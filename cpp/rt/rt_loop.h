@@ -84,6 +84,11 @@ class RtLoop {
   StaticOptimizationWorkspace so_;
   StaticOptimizationReport so_report_;
   std::array<double, kMaxElements> so_activation_{};
+  // --support: the cycles it lasts after the first command, the cycle it ends (-1: no command yet) and the
+  // joints' (q, qdot) held, a q|qdot snapshot (snapshot.h).
+  bool supported(std::int64_t cycle);
+  std::int64_t support_cycles_ = 0, support_end_ = -1;
+  std::array<double, 2 * kMaxDofs> support_state_{};
   LogHistogram so_hist_;
   std::int64_t so_solves_ = 0, so_infeasible_ = 0, so_not_converged_ = 0;
   double so_residual_max_ = 0;

@@ -63,6 +63,7 @@ std::string stats_json(const RtStats& s) {
   j["authenticated"] = s.authenticated;
   j["session_hold_s"] = s.session_hold_s;
   j["resume_grace_s"] = s.resume_grace_s;
+  j["support_s"] = s.support_s;
   j["rcvbuf_bytes"] = s.rcvbuf_bytes;
   j["owner_rcvbuf_bytes"] = s.owner_rcvbuf_bytes;
   j["units"] = "ns";

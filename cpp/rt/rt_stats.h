@@ -83,6 +83,7 @@ struct RtStats {
   std::string integrator;
   bool authenticated = false;
   double session_hold_s = 0;      // zero held after an owner's timeout (ln(100) * the largest tdeact, rt_session.h)
+  double support_s = 0;           // the joints were held where the loop started for this long (--support)
   double resume_grace_s = 0;      // then the timed-out owner alone may claim the session (--resume-grace)
   int rcvbuf_bytes = 0;           // the shared receive queue's buffer, as getsockopt(SO_RCVBUF) reports it
   int owner_rcvbuf_bytes = 0;     // the owner's queue's (0: none)

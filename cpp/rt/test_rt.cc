@@ -1180,6 +1180,62 @@ TEST_CASE("--settle: the loop starts from the arm relaxed with zero excitation, 
   }
 }
 
+TEST_CASE("--support: the joints held until S s after the first command while the muscles go on, then released") {
+  RtConfig c = test_config();
+  c.state_rate_hz = 0;
+  c.input_timeout = 1.0;
+  c.support_s = 0.04;
+  RtLoop held(c);
+  RtLoop free_arm(test_config());
+  const armrt::Arm& a = held.arm();
+  const armrt::Arm& b = free_arm.arm();
+  const int iq = q_offset(a.model), iqd = qd_offset(a.model), ia = act_offset(a.model);
+  const int nq = a.model.num_dofs, n = a.model.num_elements;
+  const std::vector<double> q0(a.data.x.begin() + iq, a.data.x.begin() + iq + nq);
+  auto joints_held = [&] {
+    for (int j = 0; j < nq; ++j)
+      if (a.data.x[iq + j] != q0[j] || a.data.x[iqd + j] != 0.0) return false;
+    return true;
+  };
+  auto moved = [&](const armrt::Arm& arm) {
+    double m = 0;
+    for (int j = 0; j < nq; ++j) m = std::max(m, std::fabs(arm.data.x[iq + j] - q0[j]));
+    return m;
+  };
+  // No controller yet: held however long it takes to come (here 60 cycles, longer than S).
+  for (int k = 0; k < 60; ++k) {
+    held.run_cycles(1);
+    free_arm.run_cycles(1);
+    REQUIRE(joints_held());
+  }
+  CHECK(moved(b) > 1e-4);  // unsupported, the rest posture is no equilibrium: the joints move
+  // Activation dynamics do not depend on q (He et al. 1991): the held arm's muscles went on as the free arm's.
+  for (int i = 0; i < n; ++i) CHECK(a.data.x[ia + i] == doctest::Approx(b.data.x[ia + i]).epsilon(1e-12));
+  // The first command starts the S s count: held for 40 more cycles with the muscles excited, then released.
+  Controller ctl(held.bound_port());
+  ctl.join(held);
+  REQUIRE(ctl.session != 0);
+  ctl.send(kExcitationElements, std::vector<double>(n, 0.2));
+  usleep(2000);
+  const double a_before = a.data.x[ia];
+  for (int k = 0; k < 40; ++k) {
+    held.run_cycles(1);
+    if (k % 10 == 9) ctl.send(kExcitationElements, std::vector<double>(n, 0.2));  // within the input timeout
+    REQUIRE(joints_held());
+  }
+  CHECK(a.data.x[ia] > a_before + 0.01);  // the excitation raised the activations while the arm was held
+  held.run_cycles(30);
+  CHECK(!joints_held());
+  CHECK(moved(a) > 1e-5);
+  CHECK(held.stats().support_s == doctest::Approx(0.04));
+  CHECK(held.stats_json().find("\"support_s\": 0.04") != std::string::npos);
+  for (double bad : {-1.0, std::nan(""), HUGE_VAL}) {
+    c.support_s = bad;
+    CHECK_THROWS_WITH_AS(RtLoop{c}, doctest::Contains("--support must be a finite number of seconds >= 0"),
+                         std::invalid_argument);
+  }
+}
+
 TEST_CASE("--strength: fmax scaled by element, muscle or group names, the most specific name winning") {
   RtConfig c = test_config();
   RtLoop intact(c);

@@ -54,7 +54,9 @@ class RealtimeSession:
     Parameters are those of armrt-rt (docs/realtime.md): model, integrator, rate_hz, integration_step
     (the integrator's largest step, s; `dt`, its old name, is deprecated: dt is the control step, here
     1/rate_hz), q0, settle (s, finite and >= 0: first relax the arm with zero excitation, then start the loop at
-    time 0, as Arm.settle; a simulation failure while settling raises RuntimeError), duration,
+    time 0, as Arm.settle; a simulation failure while settling raises RuntimeError), support (s, finite and >= 0:
+    the joints held where the loop starts, at rest, for its first `support` s while the muscles respond as usual,
+    the arm supported while stimulation builds up, as fes_control.run_offline(hold_s=...)), duration,
     realtime, priority, lock_memory (mlockall of the whole Python process; off by default), require_rt,
     cpu, busy_wait_us, max_lag, profile (a participant profile, as Arm.apply_profile takes it: a DAS-format .mat,
     an armrt model file or a model name such as "participant_A_FES"; resolved here with armrt.profile into one
