@@ -9,7 +9,12 @@ Law (every solve_every steps, at the arm's state q, qdot):
     activations = StaticOptimizer.solve(q, qdot, qddot_d)          (armrt.control: the muscle-force distribution)
 and the excitations are set to those activations until the next solve. The J+ mapping of a task-space acceleration
 is resolved-acceleration / operational-space control (Luh, Walker & Paul 1980; Khatib 1987, IEEE J Robot Autom 3:43).
-A position command sets x_ref and v_ref = 0; a velocity command v integrates x_ref += v dt and sets v_ref = v.
+A position command sets x_ref and v_ref = 0. A velocity command alone sets v_ref = v and makes x_ref follow the hand
+(x_ref = x at each solve, then x_ref += v dt): the controller is a velocity servo, a_d = kd (v_ref - xdot), and the
+position loop is the decoder's (the user aims from the cursor they see). A velocity command after a position command
+in the same step is the position's feed-forward velocity (x_ref kept). Why (docs/control.md#endpoint-control): an
+x_ref integrated from a decoder that already closes a loop on the hand winds up while the hand lags, and the two
+loops in series oscillated (measured: hand - x_ref up to 0.34 m, growing oscillation, GH events).
 """
 from __future__ import annotations
 
@@ -65,6 +70,8 @@ class EndpointController:
         self.x_ref = self.hand_position()
         self.v_ref = np.zeros(3)
         self._n = 0
+        self.velocity_mode = False     # True while velocity commands alone drive the hand (x_ref follows it)
+        self._position_this_step = False
         self.n_solves = 0
         self.n_infeasible = 0
         self.activation = None
@@ -74,16 +81,24 @@ class EndpointController:
         return self.arm.model.hand_position(self.arm.q)
 
     def command_position(self, x) -> None:
+        """Hold the hand at x (3,) m: x_ref = x, v_ref = 0 (position mode)."""
         self.x_ref = _vec3(x, "hand position command").copy()
         self.v_ref = np.zeros(3)
+        self.velocity_mode = False
+        self._position_this_step = True
 
     def command_velocity(self, v) -> None:
+        """Move the hand at v (3,) m/s. Alone (no position command in this step): velocity mode, x_ref follows
+        the hand. After command_position in the same step: the feed-forward velocity of that position."""
         self.v_ref = _vec3(v, "hand velocity command").copy()
+        self.velocity_mode = not self._position_this_step
 
     def _solve(self):
         arm, g = self.arm, self.gains
         q, qd = arm.q, arm.qdot
         x = arm.model.hand_position(q)
+        if self.velocity_mode:
+            self.x_ref = x.copy()   # no reference of its own to wind up: the decoder closes the position loop
         J, _ = arm.model.hand_jacobian(q)
         a = g.kp * (self.x_ref - x) + g.kd * (self.v_ref - J @ qd)
         Jp = np.linalg.pinv(J)
@@ -100,6 +115,7 @@ class EndpointController:
         if self._n % self.gains.solve_every == 0:
             self._solve()
         self._n += 1
+        self._position_this_step = False
         self.arm.step(1)
 
 
