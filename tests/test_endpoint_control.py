@@ -148,3 +148,12 @@ def test_decoder_driven_fitts_block_with_throughput():
     for res in m["fitts"].values():
         assert 0 < res["We_m"] < 0.1 and 0 < res["TP_bits_per_s"] < 20
     assert gap.max() < 0.01
+
+
+def test_tendon_choice_selects_the_static_optimisation():
+    arm = armrt.Arm("das2")
+    assert EndpointController(arm)._so.tendon == "elastic"
+    rigid = EndpointController(arm, tendon="rigid")._so
+    assert rigid.tendon == "rigid" and rigid.backend == "cpp"
+    with pytest.raises(ValueError, match="tendon"):
+        EndpointController(arm, tendon="stiff")

@@ -58,15 +58,18 @@ def _vec3(v, what):
 class EndpointController:
     """Drives arm's hand: command_position(x) (3,) m or command_velocity(v) (3,) m/s, then step() once per arm
     step (it steps the arm). State: x_ref, v_ref (3,), the last solve's activations (n,) and its feasibility.
-    ValueError for bad commands or gains; an infeasible solve keeps its best activations (counted in
+    tendon: the static optimisation's tendon, "elastic" (the default: the element as simulated, Python SQP around
+    ProxQP) or "rigid" (one QP, solved by the engine's C++ static optimisation; its activations are those of a
+    different muscle model than the one simulated, see docs/tasks.md for what that did on a Fitts block).
+    ValueError for bad commands, gains or tendon; an infeasible solve keeps its best activations (counted in
     n_infeasible)."""
 
-    def __init__(self, arm, gains: EndpointGains | None = None):
+    def __init__(self, arm, gains: EndpointGains | None = None, tendon: str = "elastic"):
         self.arm = arm
         self.gains = gains if gains is not None else EndpointGains()
         if not isinstance(self.gains, EndpointGains):
             raise TypeError(f"gains must be an EndpointGains, got {type(self.gains).__name__}")
-        self._so = StaticOptimizer(arm, gh_stab_max=self.gains.gh_stab_max)
+        self._so = StaticOptimizer(arm, gh_stab_max=self.gains.gh_stab_max, tendon=tendon)
         self.x_ref = self.hand_position()
         self.v_ref = np.zeros(3)
         self._n = 0
