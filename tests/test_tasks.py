@@ -287,6 +287,27 @@ def test_cli_task_drives_the_arm(tmp_path, capsys):
     assert len(data["trials"]) == 2 and data["block"]["success_rate"] == 1.0
 
 
+def test_cli_fitts_drives_the_arm_and_reports_effective_throughput(tmp_path, capsys):
+    """armrt task fitts --arm das2 (docs/tasks.md "The Fitts task with the arm"): 3 targets of 20 mm 8 cm apart
+    through the simulated decoder and the endpoint controller are acquired without GH events (before velocity
+    mode no trial of such a block succeeded), and the block prints and writes the condition's effective-width
+    throughput, consistent with its own IDe / MT."""
+    pytest.importorskip("proxsuite", reason="proxsuite (pip install proxsuite) is not installed")
+    import json
+    from armrt.cli import main
+    out = tmp_path / "fitts.json"
+    assert main(["task", "fitts", "--arm", "das2", "--fitts", "0.08:0.02", "--per-condition", "3",
+                 "--out", str(out)]) == 0
+    printed = capsys.readouterr().out
+    assert "das2 hand" in printed and "fitts D=0.08 W=0.02: We_m" in printed
+    block = json.loads(out.read_text())["block"]
+    assert block["success_rate"] == 1.0 and block["gh_unstable_events"] == 0
+    r = block["fitts"]["D=0.08 W=0.02"]
+    assert r["TP_bits_per_s"] == pytest.approx(r["IDe_bits"] / r["MT_s"])
+    assert r["IDe_bits"] == pytest.approx(math.log2(r["De_m"] / r["We_m"] + 1))
+    assert block["fitts_TP_bits_per_s"] == pytest.approx(r["TP_bits_per_s"])
+
+
 def test_cli_task_json_is_strict_and_bad_geometry_names_the_option(tmp_path, capsys):
     import json
 
