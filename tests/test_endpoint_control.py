@@ -157,3 +157,25 @@ def test_tendon_choice_selects_the_static_optimisation():
     assert rigid.tendon == "rigid" and rigid.backend == "cpp"
     with pytest.raises(ValueError, match="tendon"):
         EndpointController(arm, tendon="stiff")
+
+
+def test_start_at_rest_holds_the_hand_where_velocity_mode_would_let_it_fall():
+    """Velocity commands of 0 for 1 s: from start_at_rest the hand stays put; from a plain reset (zero activation)
+    it falls until the muscles activate, and velocity mode does not bring it back (no reference of its own)."""
+    from armrt.endpoint_control import start_at_rest
+    moved = {}
+    for how in ("at_rest", "plain_reset"):
+        arm = armrt.Arm("das2")
+        if how == "at_rest":
+            a = start_at_rest(arm, Q0)
+            assert np.all(a >= 0) and a.max() > 0.01 and np.allclose(arm.activation, a)
+        else:
+            arm.reset(q=Q0)
+        ctl = EndpointController(arm)
+        x0 = ctl.hand_position().copy()
+        for _ in range(1000):
+            ctl.command_velocity(np.zeros(3))
+            ctl.step()
+        moved[how] = float(np.linalg.norm(ctl.hand_position() - x0))
+    assert moved["at_rest"] < 0.001, moved
+    assert moved["plain_reset"] > 0.01, moved

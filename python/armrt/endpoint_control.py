@@ -122,6 +122,18 @@ class EndpointController:
         self.arm.step(1)
 
 
+def start_at_rest(arm, q) -> np.ndarray:
+    """Reset arm at q (ndof,) rad, at rest, with the activations that hold it there: the static optimisation
+    (elastic tendon) at (q, qdot = 0, qddot = 0), as armrt.track_motion starts its arm. Without it an arm reset with zero activation falls
+    until its muscles activate, which a velocity decoder then has to undo (measured: 57 mm in 1 s with v = 0,
+    docs/control.md#endpoint-control). Returns the activations (n,); an infeasible solve's best effort is used."""
+    arm.reset(q=q)
+    r = StaticOptimizer(arm).solve(arm.q, 0.0, 0.0, on_infeasible="return")
+    a = np.minimum(r.activation, arm.max_activation)
+    arm.reset(q=q, activation=a)
+    return a
+
+
 def run_task(task, controller: EndpointController, decoder=None, max_time_s: float = 600.0):
     """Close the loop with the arm: each arm step the task sees the hand (model.hand_position at the arm's q, m)
     and the GH stability (gh_stable = arm.gh_stab <= 1, paper eq. 5, so a loss emits a 'gh_unstable' event);
