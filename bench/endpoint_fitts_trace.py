@@ -1,6 +1,7 @@
 """Endpoint control on a Fitts block: why trials fail and where the time goes (issue 29 item 1; not a test).
 
-Runs armrt.endpoint_control.run_task's loop on das2 (q = 30 60 10 60 80 deg, the CLI's start) over an ISO 9241-9
+Runs armrt.endpoint_control.run_task's loop on das2 (q = 30 60 10 60 80 deg, the CLI's start posture, after a plain
+arm.reset: zero activation, as the CLI started before start_at_rest, so older controllers run the same) over an ISO 9241-9
 Fitts block (armrt.tasks.fitts_targets around the start hand) driven by the simulated decoder (velocity commands;
 the CLI's defaults) or, with --position, by the targets as position commands, and records each step the hand, the
 controller's reference x_ref and GHstab. Prints per trial success / entries / GH events, the hand - x_ref distance
