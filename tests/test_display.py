@@ -247,3 +247,48 @@ def test_urls_of_wildcard_and_ipv6_hosts():
     d = display.DisplayServer(host="0.0.0.0", port=8123)
     assert d.url == f"http://{socket.gethostname()}:8123/"
     assert display.DisplayServer(host="::1", port=8123).operator_url == "http://[::1]:8123/operator"
+
+
+def _ipv6_loopback():
+    import socket
+    try:
+        with socket.socket(socket.AF_INET6) as s:
+            s.bind(("::1", 0))
+        return True
+    except OSError:
+        return False
+
+
+def _page_status(url_host, port):
+    with urllib.request.urlopen(f"http://{url_host}:{port}/", timeout=10) as r:
+        return r.status, r.headers["Content-Type"]
+
+
+def test_wildcard_ipv4_host_binds_and_serves():
+    with display.DisplayServer(host="0.0.0.0", port=0) as d:
+        assert d._server.socket.getsockname()[0] == "0.0.0.0"
+        assert _page_status("127.0.0.1", d.port) == (200, "text/html; charset=utf-8")
+
+
+@pytest.mark.skipif(not _ipv6_loopback(), reason="this machine cannot bind ::1 (no IPv6 loopback)")
+def test_ipv6_hosts_bind_and_serve():
+    """websockets' serve took IPv4 as the family of any host: '::1' and '::' failed to bind ("Address family for
+    hostname not supported"). '::1' serves on IPv6 loopback; '::' on IPv6, and on IPv4 too where dual stack is."""
+    import socket
+    with display.DisplayServer(host="::1", port=0) as d:
+        assert d.url == f"http://[::1]:{d.port}/"
+        assert _page_status("[::1]", d.port) == (200, "text/html; charset=utf-8")
+    with display.DisplayServer(host="::", port=0) as d:
+        assert d.url == f"http://{socket.gethostname()}:{d.port}/"
+        assert _page_status("[::1]", d.port)[0] == 200
+        if socket.has_dualstack_ipv6():
+            assert _page_status("127.0.0.1", d.port)[0] == 200
+
+
+@pytest.mark.skipif(not _ipv6_loopback(), reason="this machine cannot bind ::1 (no IPv6 loopback)")
+def test_cli_task_display_on_an_ipv6_host_prints_a_url_a_browser_opens(capsys):
+    from armrt.cli import main
+    assert main(["task", "posture", "--trials", "1", "--dwell", "0.05", "--display", "--display-host", "::1",
+                 "--display-port", "0", "--display-wait", "0", "--hold", "0"]) == 0
+    out = capsys.readouterr().out
+    assert "chromium --kiosk http://[::1]:" in out and "operator page: http://[::1]:" in out

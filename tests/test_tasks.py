@@ -225,6 +225,24 @@ def test_simulated_decoder_noise_sd_and_lag_measured_back():
     assert not np.array_equal(np.array([other.step(p, target) for p in cursor[:100]]), out[:100])
 
 
+def test_held_cursor_spread_from_decoder_noise_is_the_ar1_answer():
+    """docs/tasks.md "What widths the decoder's noise allows": without lag, a point cursor held at a target by the
+    decoder is x_k+1 = (1 - g dt) x_k + dt n_k, whose stationary variance per axis is dt sd^2 / (g (2 - g dt))
+    (AR(1)); the 50 ms lag makes the spread larger, not smaller."""
+    g, sd, dt = 4.0, 0.05, 0.002
+    exact = math.sqrt(dt * sd ** 2 / (g * (2 - g * dt)))
+    spread = {}
+    for lag in (0.0, 0.05):
+        dec = tasks.SimulatedDecoder(gain_per_s=g, noise_sd_m_s=sd, lag_s=lag, dt_s=dt, seed=4)
+        p, xs = C.copy(), []
+        for _ in range(75000):   # 150 s; the first 5 s (20 time constants) dropped
+            p = p + dt * dec.step(p, C)
+            xs.append(p - C)
+        spread[lag] = float(np.std(np.array(xs[2500:])))   # pooled over the 3 axes
+    assert spread[0.0] == pytest.approx(exact, rel=0.08)   # ~900 correlation times: SD estimate within ~3 %
+    assert spread[0.05] > 1.05 * spread[0.0]
+
+
 def test_simulated_decoder_closes_a_centre_out_block():
     targets = tasks.centre_out_targets(C, 0.1, 0.015, n_targets=8)
     task = tasks.TargetTask(targets, dwell_s=0.3, timeout_s=5.0, iti_s=0.2)
@@ -267,6 +285,27 @@ def test_cli_task_drives_the_arm(tmp_path, capsys):
     assert "das2 hand" in capsys.readouterr().out
     data = json.loads(out.read_text())
     assert len(data["trials"]) == 2 and data["block"]["success_rate"] == 1.0
+
+
+def test_cli_fitts_drives_the_arm_and_reports_effective_throughput(tmp_path, capsys):
+    """armrt task fitts --arm das2 (docs/tasks.md "The Fitts task with the arm"): 3 targets of 20 mm 8 cm apart
+    through the simulated decoder and the endpoint controller are acquired without GH events (before velocity
+    mode no trial of such a block succeeded), and the block prints and writes the condition's effective-width
+    throughput, consistent with its own IDe / MT."""
+    pytest.importorskip("proxsuite", reason="proxsuite (pip install proxsuite) is not installed")
+    import json
+    from armrt.cli import main
+    out = tmp_path / "fitts.json"
+    assert main(["task", "fitts", "--arm", "das2", "--fitts", "0.08:0.02", "--per-condition", "3",
+                 "--out", str(out)]) == 0
+    printed = capsys.readouterr().out
+    assert "das2 hand" in printed and "fitts D=0.08 W=0.02: We_m" in printed
+    block = json.loads(out.read_text())["block"]
+    assert block["success_rate"] == 1.0 and block["gh_unstable_events"] == 0
+    r = block["fitts"]["D=0.08 W=0.02"]
+    assert r["TP_bits_per_s"] == pytest.approx(r["IDe_bits"] / r["MT_s"])
+    assert r["IDe_bits"] == pytest.approx(math.log2(r["De_m"] / r["We_m"] + 1))
+    assert block["fitts_TP_bits_per_s"] == pytest.approx(r["TP_bits_per_s"])
 
 
 def test_cli_task_json_is_strict_and_bad_geometry_names_the_option(tmp_path, capsys):

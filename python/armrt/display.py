@@ -241,8 +241,17 @@ class DisplayServer:
         # close_timeout: a page that stopped reading must not hold stop() up for websockets' default 10 s per page;
         # the logger turns the server's tracebacks (a port probe without a request, a page gone mid-handshake) into
         # one line each instead of 25 in the session's terminal.
+        # websockets hands host and port to socket.create_server, whose family defaults to IPv4: an IPv6 host
+        # ('::1', '::') failed with "Address family for hostname not supported". '::' is bound dual stack where
+        # the system can, so IPv4 browsers reach it too (as '0.0.0.0' would).
+        import socket
+        family = {}
+        if ":" in self.host:
+            family["family"] = socket.AF_INET6
+            if self.host == "::" and socket.has_dualstack_ipv6():
+                family["dualstack_ipv6"] = True
         self._server = serve(self._handle, self.host, self._port, process_request=self._http,
-                             compression=None, close_timeout=CLOSE_TIMEOUT_S, logger=_one_line_logger())
+                             compression=None, close_timeout=CLOSE_TIMEOUT_S, logger=_one_line_logger(), **family)
         self._thread = threading.Thread(target=self._server.serve_forever, name="armrt-display", daemon=True)
         self._thread.start()
         return self

@@ -9,7 +9,12 @@ Law (every solve_every steps, at the arm's state q, qdot):
     activations = StaticOptimizer.solve(q, qdot, qddot_d)          (armrt.control: the muscle-force distribution)
 and the excitations are set to those activations until the next solve. The J+ mapping of a task-space acceleration
 is resolved-acceleration / operational-space control (Luh, Walker & Paul 1980; Khatib 1987, IEEE J Robot Autom 3:43).
-A position command sets x_ref and v_ref = 0; a velocity command v integrates x_ref += v dt and sets v_ref = v.
+A position command sets x_ref and v_ref = 0. A velocity command alone sets v_ref = v and makes x_ref follow the hand
+(x_ref = x at each solve, then x_ref += v dt): the controller is a velocity servo, a_d = kd (v_ref - xdot), and the
+position loop is the decoder's (the user aims from the cursor they see). A velocity command after a position command
+in the same step is the position's feed-forward velocity (x_ref kept). Why (docs/control.md#endpoint-control): an
+x_ref integrated from a decoder that already closes a loop on the hand winds up while the hand lags, and the two
+loops in series oscillated (measured: hand - x_ref up to 0.34 m, growing oscillation, GH events).
 """
 from __future__ import annotations
 
@@ -53,18 +58,23 @@ def _vec3(v, what):
 class EndpointController:
     """Drives arm's hand: command_position(x) (3,) m or command_velocity(v) (3,) m/s, then step() once per arm
     step (it steps the arm). State: x_ref, v_ref (3,), the last solve's activations (n,) and its feasibility.
-    ValueError for bad commands or gains; an infeasible solve keeps its best activations (counted in
+    tendon: the static optimisation's tendon, "elastic" (the default: the element as simulated, Python SQP around
+    ProxQP) or "rigid" (one QP, solved by the engine's C++ static optimisation; its activations are those of a
+    different muscle model than the one simulated, see docs/tasks.md for what that did on a Fitts block).
+    ValueError for bad commands, gains or tendon; an infeasible solve keeps its best activations (counted in
     n_infeasible)."""
 
-    def __init__(self, arm, gains: EndpointGains | None = None):
+    def __init__(self, arm, gains: EndpointGains | None = None, tendon: str = "elastic"):
         self.arm = arm
         self.gains = gains if gains is not None else EndpointGains()
         if not isinstance(self.gains, EndpointGains):
             raise TypeError(f"gains must be an EndpointGains, got {type(self.gains).__name__}")
-        self._so = StaticOptimizer(arm, gh_stab_max=self.gains.gh_stab_max)
+        self._so = StaticOptimizer(arm, gh_stab_max=self.gains.gh_stab_max, tendon=tendon)
         self.x_ref = self.hand_position()
         self.v_ref = np.zeros(3)
         self._n = 0
+        self.velocity_mode = False     # True while velocity commands alone drive the hand (x_ref follows it)
+        self._position_this_step = False
         self.n_solves = 0
         self.n_infeasible = 0
         self.activation = None
@@ -74,16 +84,24 @@ class EndpointController:
         return self.arm.model.hand_position(self.arm.q)
 
     def command_position(self, x) -> None:
+        """Hold the hand at x (3,) m: x_ref = x, v_ref = 0 (position mode)."""
         self.x_ref = _vec3(x, "hand position command").copy()
         self.v_ref = np.zeros(3)
+        self.velocity_mode = False
+        self._position_this_step = True
 
     def command_velocity(self, v) -> None:
+        """Move the hand at v (3,) m/s. Alone (no position command in this step): velocity mode, x_ref follows
+        the hand. After command_position in the same step: the feed-forward velocity of that position."""
         self.v_ref = _vec3(v, "hand velocity command").copy()
+        self.velocity_mode = not self._position_this_step
 
     def _solve(self):
         arm, g = self.arm, self.gains
         q, qd = arm.q, arm.qdot
         x = arm.model.hand_position(q)
+        if self.velocity_mode:
+            self.x_ref = x.copy()   # no reference of its own to wind up: the decoder closes the position loop
         J, _ = arm.model.hand_jacobian(q)
         a = g.kp * (self.x_ref - x) + g.kd * (self.v_ref - J @ qd)
         Jp = np.linalg.pinv(J)
@@ -100,7 +118,20 @@ class EndpointController:
         if self._n % self.gains.solve_every == 0:
             self._solve()
         self._n += 1
+        self._position_this_step = False
         self.arm.step(1)
+
+
+def start_at_rest(arm, q) -> np.ndarray:
+    """Reset arm at q (ndof,) rad, at rest, with the activations that hold it there: the static optimisation
+    (elastic tendon) at (q, qdot = 0, qddot = 0), as armrt.track_motion starts its arm. Without it an arm reset with zero activation falls
+    until its muscles activate, which a velocity decoder then has to undo (measured: 57 mm in 1 s with v = 0,
+    docs/control.md#endpoint-control). Returns the activations (n,); an infeasible solve's best effort is used."""
+    arm.reset(q=q)
+    r = StaticOptimizer(arm).solve(arm.q, 0.0, 0.0, on_infeasible="return")
+    a = np.minimum(r.activation, arm.max_activation)
+    arm.reset(q=q, activation=a)
+    return a
 
 
 def run_task(task, controller: EndpointController, decoder=None, max_time_s: float = 600.0):

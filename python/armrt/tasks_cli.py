@@ -233,9 +233,10 @@ def _cmd_task(args) -> int:
     if args.arm is not None:
         import numpy as np
         from .arm import Arm
+        from .endpoint_control import start_at_rest
         arm = Arm(args.arm)
         q0 = np.radians(args.q_deg)
-        arm.reset(q=q0)
+        start_at_rest(arm, q0)   # held at q0 from the first step, not falling until the muscles activate
         args.dt = arm.dt
         if args.centre is None:
             args.centre = arm.model.hand_position(q0).tolist()
