@@ -452,6 +452,9 @@ def _run_live_with(args, task, driver, extra, max_time, record=None) -> dict:
                 print(f"waiting up to {args.display_wait:g} s for the participant page...", flush=True)
                 if not server.wait_for_page("participant", args.display_wait):
                     print("no participant page connected: the task starts anyway", flush=True)
+        if hasattr(driver, "poll"):   # a runner's state: what queued while the page was awaited is not a gap
+            driver.poll()
+            driver.stale_s = 0.0
         task_live.run_live(task, driver, display=server, markers=markers, task_stream=stream,
                            fps=args.display_fps, max_time_s=max_time,
                            hold_s=args.hold if server is not None else 0.0, stats=stats)
