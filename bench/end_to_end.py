@@ -178,7 +178,7 @@ def run(minutes: float, distance: float, tmp: Path, so_kp: float | None = None, 
         "commands": {"decoder_pushed": int(len(pushed)), "controller_received": int(len(received)),
                      "lost": int(len(np.setdiff1d(pushed, received))),
                      "received_not_pushed": int(len(np.setdiff1d(received, pushed)))},
-        "task_samples": {"published": (tk.get("real_time") or {}).get("samples"),
+        "task_samples": {"published": (tk.get("real_time") or {}).get("task_stream_samples"),
                          "read_by_decoder": int(d["task_samples"]) if "task_samples" in d else None},
         "targets": {"sent": int(len(sent)), "runner_targets_applied": rs["packets"].get("targets_applied"),
                     "last_sent_seq": int(sent[-1, 0]) if len(sent) else None,
@@ -192,7 +192,7 @@ def run(minutes: float, distance: float, tmp: Path, so_kp: float | None = None, 
         },
         "runner": {"tet_ns": rs.get("tet_ns"), "cycle_ns": rs.get("cycle_ns"), "overruns": rs.get("overruns"),
                    "cycles": rs.get("cycles"), "missed_deadlines": rs.get("missed_deadlines"),
-                   "wakeup_latency_ns": rs.get("latency_ns"), "scheduler": rs.get("scheduler"),
+                   "wakeup_latency_ns": rs.get("latency_ns"), "scheduler": rs.get("scheduler"), "priority": rs.get("priority"),
                    "rt_note": rs.get("rt_note"), "stop_reason": rs.get("stop_reason"), "solve_ns": so.get("solve_ns"), "solves": so.get("solves"),
                    "infeasible": so.get("infeasible"), "not_converged": so.get("not_converged"),
                    "so_kp": so.get("kp"), "so_kd": so.get("kd"), "packets": rs.get("packets")},
@@ -224,20 +224,24 @@ def markdown(r: dict, cmd: str) -> str:
         f"Started {r['started_utc']} UTC on {r['machine']} ({r['cpus']} CPUs shared with other work), "
         f"{r['task_wall_s']:.0f} s of centre-out trials (8 targets at {r['distance_m']:g} m, das2 from q0 = "
         f"{' '.join(map(str, r['q0_deg']))} deg). 1-min load average {r['load_avg_before'][0]:.2f} before, "
-        f"{r['load_avg_after'][0]:.2f} after: a loaded machine, normal scheduling (no SCHED_FIFO, no mlock).", "",
+        f"{r['load_avg_after'][0]:.2f} after: a loaded machine. The runner's scheduler: {ru['scheduler']} at "
+        + (f"priority {ru['priority']}" if ru.get("priority") else "its default priority (80, cpp/rt/rt_config.h)")
+        + ", memory not locked (--no-mlock); the Python processes and Chromium at normal priority.",
+        "",
         "## Losses", "",
         "| link | sent | received / applied | lost |", "|---|---|---|---|",
         f"| decoder -> controller (LSL commands, by timestamp) | {c['decoder_pushed']} | {c['controller_received']} | "
         f"{c['lost']} |",
         f"| task -> decoder (LSL task state samples) | {r['task_samples']['published']} | "
-        f"{r['task_samples']['read_by_decoder']} | - |",
+        f"{r['task_samples']['read_by_decoder']} | "
+        f"{(r['task_samples']['published'] or 0) - (r['task_samples']['read_by_decoder'] or 0)} |",
         f"| controller -> runner (UDP targets) | {tg['sent']} | {tg['runner_targets_applied']} (last applied seq "
         f"{tg['controller_last_applied_seq']}, last sent {tg['last_sent_seq']}) | "
         f"{tg['sent'] - (tg['runner_targets_applied'] or 0)} |", "",
         "## Latencies (ms)", "",
         "| path | n | p50 | p90 | p99 | max | clock and what it includes |", "|---|---|---|---|---|---|---|",
         row("task state push -> decoder read", L["task_state_to_decoder"],
-            "LSL clock (one machine); includes up to one 100 ms decoder wait when idle"),
+            "LSL clock (one machine); the decoder wakes on the first sample in"),
         row("decoder push -> controller poll", L["decoder_to_controller"],
             "LSL clock (one machine); includes up to one 5 ms controller period"),
         row("target sent -> applied (upper bound)", L["target_sent_to_applied_upper_bound"],
@@ -278,7 +282,15 @@ def main(argv=None) -> int:
     ap.add_argument("--so-kp", type=float, default=None, help="the runner's --so-kp, 1/s^2 (default: not passed)")
     ap.add_argument("--so-kd", type=float, default=None, help="the runner's --so-kd, 1/s (default: not passed)")
     ap.add_argument("--json", default=str(ROOT / "bench" / "results" / "end_to_end.json"))
+    ap.add_argument("--render", metavar="JSON", default=None,
+                    help="do not run: write the markdown of a finished run's JSON beside it (and print it)")
     a = ap.parse_args(argv)
+    if a.render:
+        r = json.loads(Path(a.render).read_text())
+        md = markdown(r, r["command"])
+        Path(a.render).with_suffix(".md").write_text(md)
+        print(md)
+        return 0
     if not (a.minutes > 0 and a.distance > 0):
         raise SystemExit("end_to_end: --minutes and --distance must be > 0")
     with tempfile.TemporaryDirectory() as tmp:

@@ -32,3 +32,12 @@ def test_the_chain_runs_and_loses_no_command(tmp_path):
     assert r["latency_ms"]["state_to_display_frame_upper_bound"]["drawn"] > 10
     assert r["latency_ms"]["decoder_to_controller"]["p50"] > 0
     assert "| decoder -> controller" in markdown(r, "test")
+
+
+def test_percentiles_of_known_latencies():
+    """bench.end_to_end.percentiles_ms: 1..100 ms -> linear-interpolation percentiles 50.5, 90.1, 99.01, max 100;
+    none -> the count and None."""
+    from bench.end_to_end import percentiles_ms
+    p = percentiles_ms([k / 1e3 for k in range(1, 101)])
+    assert p == pytest.approx({"n": 100, "p50": 50.5, "p90": 90.1, "p99": 99.01, "max": 100.0})
+    assert percentiles_ms([]) == {"n": 0, "p50": None, "p90": None, "p99": None, "max": None}

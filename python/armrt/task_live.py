@@ -253,7 +253,8 @@ def run_live(task, driver, display=None, plane=None, markers=None, fps: float = 
     markers (lsl_bridge.MarkerOutlet) as Event.marker() at the LSL time of its sample (the loop's LSL start time
     + the event's task time) and handed to on_event; each sample's state goes on task_stream
     (lsl_bridge.TaskStateOutlet) at the same clock. After the task the last state stays on the display for
-    hold_s (s). Returns dict(task, samples, lag_s, published, markers): the dict stats if given, filled as the loop
+    hold_s (s). Returns dict(task, samples, lag_s, published, markers, streamed: samples pushed on task_stream): the
+    dict stats if given, filled as the loop
     runs (so a caller has the figures of a loop stopped by an exception)."""
     dt = float(driver.dt_s)
     fps = checks.real_scalar(fps, "fps")
@@ -266,7 +267,7 @@ def run_live(task, driver, display=None, plane=None, markers=None, fps: float = 
     clock = markers if markers is not None else task_stream
     lsl_t0 = clock.pylsl.local_clock() if clock is not None else 0.0
     stats = stats if stats is not None else {}
-    stats.update({"task": task, "samples": 0, "lag_s": 0.0, "published": 0, "markers": 0})
+    stats.update({"task": task, "samples": 0, "lag_s": 0.0, "published": 0, "markers": 0, "streamed": 0})
     user = task.on_event
 
     def events(ev):
@@ -294,6 +295,7 @@ def run_live(task, driver, display=None, plane=None, markers=None, fps: float = 
             if task_stream is not None:
                 tp = st.target_position if st.target_position is not None else (math.nan,) * 3
                 task_stream.push([t, *cursor, *tp, st.target_index, float(st.inside), driver.gh_stab], lsl_t0 + t)
+                stats["streamed"] += 1
             if display is not None and (i % every == 0 or task.done):
                 display.publish(live_state(plane, task, driver, view, t))
                 stats["published"] += 1

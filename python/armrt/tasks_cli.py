@@ -463,7 +463,8 @@ def _run_live_with(args, task, driver, extra, max_time, record=None) -> dict:
     finally:
         if stats:
             record["real_time"] = {"samples": stats["samples"], "dt_s": driver.dt_s,
-                                   "largest_lateness_ms": stats["lag_s"] * 1e3, "markers": stats["markers"]}
+                                   "largest_lateness_ms": stats["lag_s"] * 1e3, "markers": stats["markers"],
+                                   "task_stream_samples": stats["streamed"]}
         if server is not None:
             from .display import ack_summary
             if server.published:
