@@ -3,6 +3,7 @@ pages in real headless Chromium, where the target, the cursor and the arm are fo
 task geometry predicts (computed here from the thorax-frame axes, not with the module's projection)."""
 import json
 import os
+import threading
 import time
 from pathlib import Path
 import urllib.error
@@ -292,3 +293,96 @@ def test_cli_task_display_on_an_ipv6_host_prints_a_url_a_browser_opens(capsys):
                  "--display-port", "0", "--display-wait", "0", "--hold", "0"]) == 0
     out = capsys.readouterr().out
     assert "chromium --kiosk http://[::1]:" in out and "operator page: http://[::1]:" in out
+
+
+def test_ack_summary_percentiles_of_hand_made_acks():
+    """Latencies 1..100 ms on the participant page (linear-interpolation percentiles: p50 50.5, p90 90.1, p99 99.01,
+    max 100), draw -> next frame 5 ms (to draw: 45.5 at p50), one frame per 40 ms on the page's clock (25 frames/s);
+    the operator page's acks are not counted; no acks: counts only."""
+    from armrt.display import Ack, ack_summary
+    acks = [Ack(k + 1, (k + 1) / 1e3, 0.005, "participant", k, 40.0 * k) for k in range(100)]
+    acks += [Ack(k + 1, 9.0, 0.005, "operator", k, 40.0 * k) for k in range(10)]
+    s = ack_summary(acks, published=150)
+    assert s["published"] == 150 and s["drawn"] == 100
+    assert s["latency_ms"] == pytest.approx({"p50": 50.5, "p90": 90.1, "p99": 99.01, "max": 100.0})
+    assert s["to_draw_ms"]["p50"] == pytest.approx(45.5)
+    assert s["page_frames_per_s"] == pytest.approx(25.0)
+    empty = ack_summary([], published=7)
+    assert empty["drawn"] == 0 and empty["latency_ms"]["p50"] is None and empty["page_frames_per_s"] is None
+
+
+def test_task_cli_records_the_pages_acks(tmp_path, capsys):
+    """armrt task --display --out: the participant page's acknowledgements become the state -> display latency in
+    the JSON and the summary. A Python WebSocket client stands in for the page (acks every state it receives, as the
+    page does after drawing it); the latencies must be positive and below the whole run's wall time."""
+    import json
+    websocket = pytest.importorskip("websocket", reason="websocket-client is not installed")
+    from armrt.cli import main
+    port, out = free_port(), tmp_path / "m.json"
+    rc = {}
+    args = ["task", "centre-out", "--targets", "2", "--display", "--display-port", str(port), "--display-wait", "30",
+            "--hold", "0", "--out", str(out)]
+    th = threading.Thread(target=lambda: rc.setdefault("rc", main(args)), daemon=True)
+    t0 = time.perf_counter()
+    th.start()
+    deadline = time.monotonic() + 30
+    while True:
+        try:
+            ws = websocket.create_connection(f"ws://127.0.0.1:{port}/ws?page=participant", timeout=5)
+            break
+        except OSError:
+            assert time.monotonic() < deadline, "the display server did not start"
+            time.sleep(0.1)
+    n = 0
+    try:
+        while th.is_alive():
+            try:
+                msg = json.loads(ws.recv())
+            except Exception:   # the server closed the page at the end
+                break
+            n += 1
+            ws.send(json.dumps({"seq": msg["seq"], "draw_ms": 10.0 * n, "next_frame_ms": 10.0 * n + 4.0, "ticks": n}))
+    finally:
+        ws.close()
+    th.join(timeout=30)
+    wall_ms = (time.perf_counter() - t0) * 1e3
+    assert rc.get("rc") == 0
+    d = json.loads(out.read_text())["display"]
+    assert d["page"] == "participant" and 0 < d["drawn"] <= n and d["drawn"] <= d["published"]
+    L = d["latency_ms"]
+    assert 0 < L["p50"] <= L["p90"] <= L["p99"] <= L["max"] < wall_ms
+    assert d["to_draw_ms"]["p50"] == pytest.approx(L["p50"] - 4.0, abs=1.0)   # the stand-in's 4 ms draw -> frame
+    assert d["page_frames_per_s"] == pytest.approx(100.0)                      # 10 ms per tick on its clock
+    assert f"display: {d['published']} states published, {d['drawn']} drawn" in capsys.readouterr().out
+
+
+@pytest.mark.slow
+@needs_chromium
+def test_task_cli_records_a_real_pages_acks(tmp_path, capsys):
+    """The same with the participant page in headless Chromium: every state it drew is acknowledged from its
+    animation frames, and the task's JSON and summary give the latency percentiles of a real page."""
+    from armrt.cli import main
+    port, out = free_port(), tmp_path / "m.json"
+    rc = {}
+    args = ["task", "centre-out", "--targets", "2", "--display", "--display-port", str(port), "--display-wait", "60",
+            "--hold", "0", "--out", str(out)]
+    th = threading.Thread(target=lambda: rc.setdefault("rc", main(args)), daemon=True)
+    th.start()
+    deadline = time.monotonic() + 30
+    while True:   # the server is up when its page answers
+        try:
+            urllib.request.urlopen(f"http://127.0.0.1:{port}/", timeout=2).close()
+            break
+        except OSError:
+            assert time.monotonic() < deadline, "the display server did not start"
+            time.sleep(0.1)
+    with chromium_page(f"http://127.0.0.1:{port}/", tmp_path) as page:
+        page.wait_for("window.armrtTicks !== undefined", "the participant page did not load")
+        th.join(timeout=120)
+    assert not th.is_alive() and rc.get("rc") == 0
+    d = json.loads(out.read_text())["display"]
+    assert d["drawn"] > 10 and d["published"] >= d["drawn"]
+    L = d["latency_ms"]
+    assert 0 < L["p50"] <= L["p90"] <= L["p99"] <= L["max"]
+    assert d["page_frames_per_s"] > 1
+    assert "state -> frame latency p50" in capsys.readouterr().out

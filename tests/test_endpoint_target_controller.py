@@ -127,3 +127,19 @@ def test_decoder_process_pushes_velocities_towards_the_target_over_lsl():
         assert np.allclose(v, [0.4, 0.0, 0.0], atol=1e-9)
     finally:
         rx.close()
+
+
+def test_controller_without_a_decoder_yet_holds_the_start_posture():
+    """decoder None (the process waiting for the decoder's stream): v = 0, so the target stays the start posture,
+    and it is sent every period (the runner's session does not time out and every target is applied)."""
+    from armrt import realtime as rt
+    m = armrt.Model("das2")
+    with rt.RealtimeSession(listen="127.0.0.1:0", q0=Q, static_optimization=True, so_kp=KP, so_kd=KD,
+                            state_rate_hz=200, input_timeout=0.2) as s, rt.UdpClient(s.port) as c:
+        c.join(timeout=2.0)
+        ctl = TargetController(m, c, None, Q, rate_hz=200.0)
+        ctl.run(0.6)     # three times the runner's input timeout
+        stats = s.stop()
+    np.testing.assert_array_equal(ctl.q_d, Q)
+    assert len(ctl.sent) > 50 and stats["packets"]["targets_applied"] == len(ctl.sent)
+    assert stats["packets"]["timeouts"] == 0 and ctl.received_stamps == []

@@ -374,3 +374,34 @@ def test_cli_task_sigterm_reports_the_finished_trials(tmp_path):
     assert "terminated: the" in stderr
     rows = list(csv.DictReader(out.open()))
     assert 0 < len(rows) < 8
+
+
+def test_cli_task_repeat_runs_blocks_and_gives_metrics_per_block(tmp_path, capsys):
+    """--repeat N: the target sequence N times; each block's metrics are block_metrics of its own trials (computed
+    here again from the trial rows), and the overall block is over every trial."""
+    import csv
+    import json
+    from armrt.cli import main
+    out = tmp_path / "m.json"
+    assert main(["task", "centre-out", "--targets", "4", "--repeat", "3", "--out", str(out)]) == 0
+    data = json.loads(out.read_text())
+    rows = data["trials"]
+    assert len(rows) == 12 and [r["target"] for r in rows] == [0, 1, 2, 3] * 3
+    assert [r["block"] for r in rows] == [0] * 4 + [1] * 4 + [2] * 4
+    assert len(data["blocks"]) == 3 and data["block"]["n_trials"] == 12
+    for k, b in enumerate(data["blocks"]):
+        mine = [r for r in rows if r["block"] == k]
+        assert b["n_trials"] == 4
+        assert b["median_time_to_target_s"] == pytest.approx(np.median([r["time_to_target_s"] for r in mine]))
+    text = capsys.readouterr().out
+    assert "block 2: n_trials 4" in text and "all blocks:" in text
+    csv_out = tmp_path / "m.csv"
+    assert main(["task", "centre-out", "--targets", "2", "--repeat", "2", "--out", str(csv_out)]) == 0
+    assert [r["block"] for r in csv.DictReader(csv_out.open())] == ["0", "0", "1", "1"]
+    capsys.readouterr()
+    for bad in ("0", "-2", "1.5", "x"):
+        with pytest.raises(SystemExit):
+            main(["task", "centre-out", "--repeat", bad])
+        assert "--repeat: expected a" in capsys.readouterr().err
+    assert main(["task", "posture", "--repeat", "2"]) == 2
+    assert "--repeat is for centre-out and fitts" in capsys.readouterr().err

@@ -165,6 +165,28 @@ class Ack:
     page_time_ms: float
 
 
+def ack_summary(acks, published: int, page: str = "participant") -> dict:
+    """State -> display latency of a session from its acknowledgements (DisplayServer.acks; Ack above) of one page:
+    published (states sent, DisplayServer.published), drawn (acks of that page), latency_ms p50 / p90 / p99 / max
+    (ack received - published, server clock: an upper bound, it includes the ack's loopback hop back),
+    to_draw_ms p50 / p99 (the same minus the page's draw -> next-frame interval: state published -> drawn) and
+    page_frames_per_s (animation frames between the first and last ack, page clock). Empty acks: the counts, and
+    None for every figure (nothing was drawn)."""
+    mine = [a for a in acks if a.page == page]
+    lat = np.array([a.latency_s for a in mine], dtype=float) * 1e3
+    to_draw = lat - np.array([a.draw_to_frame_s for a in mine], dtype=float) * 1e3
+
+    def pct(x, q):
+        return float(np.percentile(x, q)) if len(x) else None
+    span_s = (mine[-1].page_time_ms - mine[0].page_time_ms) / 1e3 if len(mine) > 1 else 0.0
+    return {"page": page, "published": int(published), "drawn": len(mine),
+            "latency_ms": {"p50": pct(lat, 50), "p90": pct(lat, 90), "p99": pct(lat, 99), "max": pct(lat, 100)},
+            "to_draw_ms": {"p50": pct(to_draw, 50), "p99": pct(to_draw, 99)},
+            "page_frames_per_s": (mine[-1].ticks - mine[0].ticks) / span_s if span_s > 0 else None,
+            "note": "latency: state published -> the page's next animation frame after drawing it, acknowledged "
+                    "back over the WebSocket (server clock; an upper bound: includes that loopback hop)"}
+
+
 # s a page gets to answer the close handshake when the session ends (it is closed without the answer after that).
 CLOSE_TIMEOUT_S = 0.5
 
@@ -281,6 +303,12 @@ class DisplayServer:
         with self._cond:
             return self._cond.wait_for(lambda: self.connected.get(page, 0) > 0 or self._closed, timeout=timeout_s) \
                 and not self._closed
+
+    @property
+    def published(self) -> int:
+        """States published so far (the newest sequence number)."""
+        with self._cond:
+            return self._seq
 
     def publish(self, state: dict) -> int:
         """Sends state (display_state) to the pages; returns its sequence number."""

@@ -19,6 +19,7 @@ import argparse
 import math
 import signal
 import sys
+import threading
 import time
 
 import numpy as np
@@ -70,6 +71,8 @@ class TargetController:
         self.states = 0
 
     def _take_decoder(self):
+        if self.decoder is None:
+            return
         cmds = self.decoder.poll()
         if cmds:
             now = self.decoder.pylsl.local_clock() if hasattr(self.decoder, "pylsl") else math.nan
@@ -78,8 +81,11 @@ class TargetController:
                 self.decoder_latency_s.append(now - c.timestamp)
 
     def velocity(self) -> np.ndarray:
-        """The decoder's newest velocity (3,) m/s, zero when it went silent for its hold_s."""
+        """The decoder's newest velocity (3,) m/s, zero when it went silent for its hold_s (or there is none yet:
+        decoder None)."""
         self._take_decoder()
+        if self.decoder is None:
+            return np.zeros(3)
         fresh = self.decoder._last is not None and time.perf_counter() - self.decoder._last <= self.decoder.hold_s
         v = self.decoder.velocity if (fresh and self.decoder.velocity is not None) else np.zeros(3)
         return np.asarray(v, dtype=float)
@@ -146,12 +152,30 @@ def main(argv=None) -> int:
     signal.signal(signal.SIGTERM, lambda *_: stop.append(1))
     client = realtime.UdpClient(port, host, model=a.model)
     client.join(timeout=5.0)
-    dec = LslEndpointDecoder(a.decoder, wait_s=a.wait, hold_s=a.hold)
-    if not dec.has[0]:
-        raise SystemExit(f"endpoint_target_controller: the stream {a.decoder!r} has no hand_velocity channels")
-    ctl = TargetController(model, client, dec, np.radians(a.q0_deg), a.rate, a.damping)
-    print(f"controller: decoder {a.decoder!r} -> targets to {a.runner} at {a.rate:g} Hz", flush=True)
+    ctl = TargetController(model, client, None, np.radians(a.q0_deg), a.rate, a.damping)
+    # The start posture is held (targets sent, v = 0) while the decoder's stream is looked for: a silent owner's
+    # session ends after the runner's --timeout and its excitation falls to zero, so the arm would drop before the
+    # task (whose centre is the hand where the arm is) and the decoder start.
+    found = {}
+
+    def resolve():
+        try:
+            found["decoder"] = LslEndpointDecoder(a.decoder, wait_s=a.wait, hold_s=a.hold)
+        except Exception as exc:   # raised below, in the main thread
+            found["error"] = exc
+    threading.Thread(target=resolve, daemon=True).start()
+    print(f"controller: holding the start posture, waiting up to {a.wait:g} s for the decoder {a.decoder!r}",
+          flush=True)
     try:
+        ctl.run(a.wait + 5.0, stop=lambda: bool(found) or bool(stop))
+        if "error" in found:
+            raise SystemExit(f"endpoint_target_controller: {found['error']}")
+        if "decoder" not in found:
+            raise SystemExit(f"endpoint_target_controller: no decoder stream {a.decoder!r} after {a.wait:g} s")
+        dec = ctl.decoder = found["decoder"]
+        if not dec.has[0]:
+            raise SystemExit(f"endpoint_target_controller: the stream {a.decoder!r} has no hand_velocity channels")
+        print(f"controller: decoder {a.decoder!r} -> targets to {a.runner} at {a.rate:g} Hz", flush=True)
         ctl.run(a.duration, stop=lambda: bool(stop))
     except KeyboardInterrupt:
         pass

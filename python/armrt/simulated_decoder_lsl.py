@@ -34,7 +34,8 @@ def task_sample_to_cursor_target(sample) -> tuple[np.ndarray, np.ndarray | None]
 class DecoderProcess:
     """Reads the task-state stream named task_stream (waits up to wait_s s: RuntimeError naming it), runs decoder
     (tasks.SimulatedDecoder) on each sample and pushes its velocity (3,) m/s on the endpoint stream `name`
-    (source_id). .sent_stamps holds every pushed sample's LSL timestamp (s), .task_samples the samples read."""
+    (source_id). .sent_stamps holds every pushed sample's LSL timestamp (s), .task_samples the samples read and
+    .task_latency_s each one's delay from its task-state timestamp to its read (s, LSL clock: one machine)."""
 
     def __init__(self, decoder, task_stream: str = "armrt_task_state", name: str = "dec",
                  source_id: str = "armrt-simulated-decoder", wait_s: float = 30.0):
@@ -53,10 +54,17 @@ class DecoderProcess:
         self.decoder = decoder
         self.sent_stamps: list[float] = []
         self.task_samples = 0
+        self.task_latency_s: list[float] = []
 
     def step(self, timeout: float = 0.1) -> int:
         """Takes the task samples that arrived (waiting up to timeout s for the first); pushes one command each."""
-        samples, _ = self.inlet.pull_chunk(timeout=timeout)
+        # min_samples=1: return as soon as one sample is there. pylsl's default waits until max_samples (1024) are
+        # in or the timeout passes (its pull_chunk docstring), which would batch the task state by up to timeout s
+        # and delay every command by as much.
+        samples, stamps = self.inlet.pull_chunk(timeout=timeout, min_samples=1)
+        if samples:
+            now = self.pylsl.local_clock()
+            self.task_latency_s.extend(now - t for t in stamps)
         for s in samples:
             cursor, target = task_sample_to_cursor_target(s)
             v = self.decoder.step(cursor, target)
@@ -79,7 +87,8 @@ def main(argv=None) -> int:
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--wait", type=float, default=30.0, help="s to wait for the task stream")
     ap.add_argument("--duration", type=float, default=math.inf, help="s to run (default: until SIGINT/SIGTERM)")
-    ap.add_argument("--out", default=None, help="write the pushed samples' LSL timestamps (.npz: sent_stamps)")
+    ap.add_argument("--out", default=None, help="write the pushed samples' LSL timestamps and the task samples' "
+                                                "read latencies (.npz: sent_stamps, task_samples, task_latency_s)")
     a = ap.parse_args(argv)
     dec = tasks.SimulatedDecoder(a.gain, a.noise_sd, a.lag, a.dt, seed=a.seed)
     stop = []
@@ -93,7 +102,8 @@ def main(argv=None) -> int:
     except KeyboardInterrupt:
         pass
     if a.out:
-        np.savez(a.out, sent_stamps=np.array(proc.sent_stamps))
+        np.savez(a.out, sent_stamps=np.array(proc.sent_stamps), task_samples=proc.task_samples,
+                 task_latency_s=np.array(proc.task_latency_s))
     print(f"decoder: {proc.task_samples} task samples read, {len(proc.sent_stamps)} commands pushed", flush=True)
     return 0
 

@@ -219,19 +219,24 @@ class _TargetView:
             self.metrics.append(trial_metrics(self.task.trials[ev.trial], self.task.dwell_s))
 
 
+# Finished trials' rows sent with each state for the operator page: the newest this many. All of them would make every
+# state of a long session (--repeat: hundreds of trials) larger and slower to build, at 60 states per second.
+OPERATOR_ROWS = 50
+
+
 def live_state(plane, task, driver, view: _TargetView, t: float) -> dict:
-    """The display_state of a live task at task time t (s)."""
+    """The display_state of a live task at task time t (s); metrics: the newest OPERATOR_ROWS finished trials."""
     from .display import display_state
     tg = view.target
     return display_state(plane, cursor=driver.cursor(), target=None if tg is None else tg.position,
                          target_radius_m=0.0 if tg is None else tg.radius_m, target_state=view.state,
                          arm_points=driver.arm_points(), time_s=t, gh_stab=driver.gh_stab,
                          trial=min(task._trial, len(task.targets) - 1), n_trials=len(task.targets),
-                         phase="done" if task.done else task._phase, metrics=view.metrics)
+                         phase="done" if task.done else task._phase, metrics=view.metrics[-OPERATOR_ROWS:])
 
 
 def run_live(task, driver, display=None, plane=None, markers=None, fps: float = 60.0, max_time_s: float = 600.0,
-             realtime: bool = True, hold_s: float = 1.0, on_event=None, task_stream=None):
+             realtime: bool = True, hold_s: float = 1.0, on_event=None, task_stream=None, stats: dict | None = None):
     """Runs task with driver (CursorDriver / ArmDriver) one sample per driver.dt_s until the task is done or
     max_time_s passes, paced to wall-clock time when realtime (a late sample is run at once, never skipped:
     .lag_s in the returned stats is the largest lateness). Every 1/fps s of task time (rounded to whole samples)
@@ -239,7 +244,9 @@ def run_live(task, driver, display=None, plane=None, markers=None, fps: float = 
     markers (lsl_bridge.MarkerOutlet) as Event.marker() at the LSL time of its sample (the loop's LSL start time
     + the event's task time) and handed to on_event; each sample's state goes on task_stream
     (lsl_bridge.TaskStateOutlet) at the same clock. After the task the last state stays on the display for
-    hold_s (s). Returns dict(task, samples, lag_s, published, markers)."""
+    hold_s (s). Returns dict(task, samples, lag_s, published, markers, streamed: samples pushed on task_stream): the
+    dict stats if given, filled as the loop
+    runs (so a caller has the figures of a loop stopped by an exception)."""
     dt = float(driver.dt_s)
     fps = checks.real_scalar(fps, "fps")
     if not (math.isfinite(fps) and fps > 0):
@@ -250,7 +257,8 @@ def run_live(task, driver, display=None, plane=None, markers=None, fps: float = 
     view = _TargetView(task)
     clock = markers if markers is not None else task_stream
     lsl_t0 = clock.pylsl.local_clock() if clock is not None else 0.0
-    stats = {"task": task, "samples": 0, "lag_s": 0.0, "published": 0, "markers": 0}
+    stats = stats if stats is not None else {}
+    stats.update({"task": task, "samples": 0, "lag_s": 0.0, "published": 0, "markers": 0, "streamed": 0})
     user = task.on_event
 
     def events(ev):
@@ -278,6 +286,7 @@ def run_live(task, driver, display=None, plane=None, markers=None, fps: float = 
             if task_stream is not None:
                 tp = st.target_position if st.target_position is not None else (math.nan,) * 3
                 task_stream.push([t, *cursor, *tp, st.target_index, float(st.inside), driver.gh_stab], lsl_t0 + t)
+                stats["streamed"] += 1
             if display is not None and (i % every == 0 or task.done):
                 display.publish(live_state(plane, task, driver, view, t))
                 stats["published"] += 1

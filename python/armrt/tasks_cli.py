@@ -54,6 +54,9 @@ def add_cli(sub, formatter) -> None:
                    help="fitts: conditions, distance:width in m")
     p.add_argument("--per-condition", type=int, default=9, help="fitts: targets per condition (odd)")
     p.add_argument("--trials", type=int, default=3, help="posture: number of holds")
+    p.add_argument("--repeat", type=_blocks, default=1, metavar="N",
+                   help="centre-out/fitts: run the target sequence N times in a row, one block each (a long "
+                        "session); the metrics are given per block and over all trials")
     p.add_argument("--dwell", type=float, default=0.3, help="dwell (posture: hold) time, s")
     p.add_argument("--timeout", type=float, default=5.0, help="trial timeout, s")
     p.add_argument("--iti", type=float, default=0.2, help="inter-trial interval, s")
@@ -104,6 +107,17 @@ def _fps(text: str) -> float:
     return v
 
 
+def _blocks(text: str) -> int:
+    """--repeat: a whole number of blocks >= 1."""
+    try:
+        v = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number of blocks, got {text!r}") from None
+    if v < 1:
+        raise argparse.ArgumentTypeError(f"expected a number of blocks >= 1, got {text!r}")
+    return v
+
+
 def _out_arg(text: str) -> str:
     """--out: refused before the task runs (a session's metrics must not be lost at its end)."""
     if not (text.endswith(".csv") or text.endswith(".json")):
@@ -143,13 +157,22 @@ def _fmt(v):
 
 
 def _make_task(args):
+    """The task of the options; --repeat N: the target sequence N times (block k: trials k*n .. (k+1)*n - 1)."""
+    repeat = getattr(args, "repeat", 1)
     if args.kind == "centre-out":
         targets = tasks.centre_out_targets(args.centre, args.distance, args.radius, args.targets)
-        return tasks.TargetTask(targets, args.dwell, args.timeout, args.iti)
+        return tasks.TargetTask(targets * repeat, args.dwell, args.timeout, args.iti)
     if args.kind == "fitts":
         targets = tasks.fitts_targets(args.centre, _conditions(args.fitts), args.per_condition)
-        return tasks.TargetTask(targets, args.dwell, args.timeout, args.iti)
+        return tasks.TargetTask(targets * repeat, args.dwell, args.timeout, args.iti)
+    if repeat != 1:
+        raise ValueError("--repeat is for centre-out and fitts: a posture block's length is --trials")
     return tasks.PostureTask(args.centre, args.radius, args.dwell, args.timeout, args.trials, args.iti)
+
+
+def _block_size(args, task) -> int:
+    """Trials per block: the whole target sequence once (--repeat 1: every trial)."""
+    return len(task.targets) // getattr(args, "repeat", 1)
 
 
 def _cmd_task_runner(args) -> int:
@@ -164,6 +187,7 @@ def _cmd_task_runner(args) -> int:
     driver = task_live.RunnerDriver(host, port, model=args.runner_model, dt_s=args.dt, wait_s=args.runner_wait,
                                     max_silence_s=RUNNER_SILENCE_S)
     stopped = 0
+    record = {}
     try:
         if args.centre is None:
             args.centre = driver.cursor().tolist()   # the hand where the runner's arm is now
@@ -173,7 +197,7 @@ def _cmd_task_runner(args) -> int:
             raise _option_error(exc) from None
         max_time = len(task.targets) * (args.timeout + args.iti) + 1.0
         try:
-            _run_live_with(args, task, driver, [driver.shoulder()], max_time)
+            _run_live_with(args, task, driver, [driver.shoulder()], max_time, record)
         except task_live.RunnerSilent as exc:
             print(f"armrt task: error: {exc}", file=sys.stderr)
             stopped = 1
@@ -188,7 +212,9 @@ def _cmd_task_runner(args) -> int:
           f"{driver.stale_s * 1e3:.1f} ms, dt {args.dt} s (real time)")
     if driver.bad_packets:
         print(f"armrt task: warning: {driver.bad_packets} datagrams refused: {driver.last_error}", file=sys.stderr)
-    return _finish(args, task, stopped)
+    record["runner_state"] = {"packets": driver.packets, "refused": driver.bad_packets,
+                              "longest_gap_ms": driver.stale_s * 1e3}
+    return _finish(args, task, stopped, record)
 
 
 # What the task functions call their parameters, as the options a user typed (errors name the option).
@@ -253,6 +279,7 @@ def _cmd_task(args) -> int:
     live = args.display or args.markers is not None or args.task_stream is not None or args.decoder != "simulated"
     decoder = None
     stopped = 0
+    record = {}
     try:
         if args.decoder == "simulated":
             try:
@@ -274,7 +301,7 @@ def _cmd_task(args) -> int:
                     ctl = EndpointController(arm)  # posture: hold the hand where it starts, against gravity
                     run_task(task, ctl, dec, max_time_s=max_time)
             else:
-                _run_live(args, task, arm, dec, start, max_time)
+                _run_live(args, task, arm, dec, start, max_time, record)
         except KeyboardInterrupt:
             stopped = 130
         except _Stopped:
@@ -287,7 +314,7 @@ def _cmd_task(args) -> int:
           + (" (real time)" if live else ""))
     if decoder is not None:
         _decoder_summary(decoder)
-    return _finish(args, task, stopped)
+    return _finish(args, task, stopped, record)
 
 
 def _decoder_summary(decoder) -> None:
@@ -301,14 +328,15 @@ def _decoder_summary(decoder) -> None:
               "commands", file=sys.stderr)
 
 
-def _finish(args, task, stopped: int) -> int:
-    """The report of a run (stopped: 0, or the exit code of an interrupted one: only its finished trials)."""
+def _finish(args, task, stopped: int, record=None) -> int:
+    """The report of a run (stopped: 0, or the exit code of an interrupted one: only its finished trials); record:
+    the live run's figures (real_time, display, runner_state), printed and written to a JSON --out."""
     import sys
     if stopped:
         task.trials = [r for r in task.trials if math.isfinite(r.end_time_s)]
         how = {130: "interrupted", 143: "terminated"}.get(stopped, "stopped")
         print(f"armrt task: {how}: the {len(task.trials)} trials finished so far", file=sys.stderr, flush=True)
-    _report(args, task)
+    _report(args, task, record or {})
     return stopped
 
 
@@ -324,35 +352,60 @@ def _json_ready(v):
     return v
 
 
-def _report(args, task) -> None:
-    """The metrics table on stdout, and --out."""
+def _report(args, task, record=None) -> None:
+    """The metrics table on stdout, and --out (JSON: with the live run's record)."""
+    record = record or {}
     rows, block = task.trial_metrics(), task.block_metrics()
-    print("  ".join(TRIAL_COLUMNS))
+    columns, blocks = TRIAL_COLUMNS, None
+    if getattr(args, "repeat", 1) > 1:   # a long session: which block each trial is in, and each block's metrics
+        n = _block_size(args, task)
+        for r in rows:   # target: its place in the sequence (the task itself numbers the repeated list's entries)
+            r["block"], r["target"] = r["trial"] // n, r["target"] % n
+        columns = ("block",) + TRIAL_COLUMNS
+        blocks = [tasks.block_metrics(rows[k:k + n]) for k in range(0, len(rows), n)]
+    print("  ".join(columns))
     for r in rows:
-        print("  ".join(f"{_fmt(r[c]):>{len(c)}}" for c in TRIAL_COLUMNS))
-    print("block:")
+        print("  ".join(f"{_fmt(r[c]):>{len(c)}}" for c in columns))
+    if blocks is not None:
+        print(f"blocks ({_block_size(args, task)} trials each; the last may be unfinished):")
+        for k, b in enumerate(blocks):
+            print(f"  block {k}: n_trials {b['n_trials']}, success_rate {_fmt(b['success_rate'])}, "
+                  f"median_time_to_target_s {_fmt(b['median_time_to_target_s'])}, median_path_efficiency "
+                  f"{_fmt(b['median_path_efficiency'])}, median_dial_in_time_s {_fmt(b['median_dial_in_time_s'])}")
+        print("all blocks:")
+    else:
+        print("block:")
+    disp = record.get("display")
     for k, v in block.items():
         if k == "fitts":
             for cond, res in v.items():
                 print(f"  fitts {cond}: " + ", ".join(f"{a} {_fmt(b)}" for a, b in res.items()))
         else:
             print(f"  {k}: {_fmt(v)}")
+    if disp is not None:
+        L = disp["latency_ms"]
+        figures = ("no state was drawn" if L["p50"] is None else
+                   "state -> frame latency p50 {:.1f}, p90 {:.1f}, p99 {:.1f}, max {:.1f} ms (upper bound: includes "
+                   "the ack's hop back)".format(L["p50"], L["p90"], L["p99"], L["max"]))
+        print(f"display: {disp['published']} states published, {disp['drawn']} drawn by the {disp['page']} page; "
+              + figures)
     if args.out:
         if args.out.endswith(".csv"):
             with open(args.out, "w", newline="") as fh:
                 w = csv.writer(fh)
-                w.writerow(TRIAL_COLUMNS)
+                w.writerow(columns)
                 for r in rows:
-                    w.writerow([r[c] for c in TRIAL_COLUMNS])
+                    w.writerow([r[c] for c in columns])
         elif args.out.endswith(".json"):
             with open(args.out, "w") as fh:   # strict JSON: undefined metrics (NaN) are null
-                json.dump(_json_ready({"trials": rows, "block": block}), fh, indent=1, default=str, allow_nan=False)
+                doc = {"trials": rows, "block": block} | ({"blocks": blocks} if blocks is not None else {}) | record
+                json.dump(_json_ready(doc), fh, indent=1, default=str, allow_nan=False)
         else:
             raise ValueError(f"--out must end in .json or .csv, got {args.out!r}")
         print(f"wrote {args.out}")
 
 
-def _run_live(args, task, arm, dec, start, max_time) -> dict:
+def _run_live(args, task, arm, dec, start, max_time, record=None) -> dict:
     """The task in real time: the display pages (--display), the marker stream (--markers)."""
     from . import task_live
     if arm is None:
@@ -362,12 +415,21 @@ def _run_live(args, task, arm, dec, start, max_time) -> dict:
         from .endpoint_control import EndpointController
         driver = task_live.ArmDriver(EndpointController(arm), dec)
         extra = [driver.shoulder(), driver.cursor()]
-    return _run_live_with(args, task, driver, extra, max_time)
+    return _run_live_with(args, task, driver, extra, max_time, record)
 
 
-def _run_live_with(args, task, driver, extra, max_time) -> dict:
+# s the display's acknowledgements of the last states get to arrive before the latencies are summed up (a page
+# answers at its next animation frame: tens of ms on a loaded machine).
+ACK_WAIT_S = 0.3
+
+
+def _run_live_with(args, task, driver, extra, max_time, record=None) -> dict:
     """task paced in real time with driver: the display pages (--display), the LSL outlets (--markers,
-    --task-stream); extra: points the display plane must hold besides the targets (the shoulder)."""
+    --task-stream); extra: points the display plane must hold besides the targets (the shoulder). record (dict):
+    filled with real_time (samples, largest lateness) and, with --display, display (display.ack_summary of the
+    participant page), also when the run is stopped by an exception (Ctrl-C, SIGTERM, a silent runner)."""
+    record = record if record is not None else {}
+    stats = {}
     from . import task_live
     model = args.arm or (args.runner_model if args.runner_state is not None else "cursor")
     server = markers = stream = None
@@ -391,13 +453,24 @@ def _run_live_with(args, task, driver, extra, max_time) -> dict:
                 print(f"waiting up to {args.display_wait:g} s for the participant page...", flush=True)
                 if not server.wait_for_page("participant", args.display_wait):
                     print("no participant page connected: the task starts anyway", flush=True)
-        stats = task_live.run_live(task, driver, display=server, markers=markers, task_stream=stream,
-                                   fps=args.display_fps,
-                                   max_time_s=max_time, hold_s=args.hold if server is not None else 0.0)
+        if hasattr(driver, "poll"):   # a runner's state: what queued while the page was awaited is not a gap
+            driver.poll()
+            driver.stale_s = 0.0
+        task_live.run_live(task, driver, display=server, markers=markers, task_stream=stream,
+                           fps=args.display_fps, max_time_s=max_time,
+                           hold_s=args.hold if server is not None else 0.0, stats=stats)
         if markers is not None or stream is not None:
             time.sleep(LSL_LINGER_S)
     finally:
+        if stats:
+            record["real_time"] = {"samples": stats["samples"], "dt_s": driver.dt_s,
+                                   "largest_lateness_ms": stats["lag_s"] * 1e3, "markers": stats["markers"],
+                                   "task_stream_samples": stats["streamed"]}
         if server is not None:
+            from .display import ack_summary
+            if server.published:
+                time.sleep(ACK_WAIT_S)
+            record["display"] = ack_summary(list(server.acks), server.published)
             server.stop()
     print(f"real time: {stats['samples']} samples, largest lateness {stats['lag_s'] * 1e3:.1f} ms, "
           f"{stats['published']} display states, {stats['markers']} markers", flush=True)
