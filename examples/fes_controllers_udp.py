@@ -21,7 +21,9 @@ import sys
 import numpy as np
 
 POSTURE_LIMIT = 0.03   # (c)'s GHstab bound over UDP: below the unloaded hold's 0.038, so that it binds
-LEAD_S = 2.0   # s of simulated time the controller first holds the start posture (the arm hung while it started)
+# s of simulated time the controller first holds the start posture; the runner supports the arm meanwhile
+# (--support: the joints held until LEAD_S after the first command), as the offline runs hold it (run_offline hold_s).
+LEAD_S = 2.0
 
 
 def build_controller(kind: str, t_start: float, setup):
@@ -99,9 +101,13 @@ def main(argv=None) -> dict:
     import armrt
     from armrt.realtime import RealtimeSession
     load0 = os.getloadavg()[0]
+    from armrt import fes_controllers_validation as v
     arm = armrt.Arm("das2")
+    q0 = arm.rest_posture.copy()   # (a) and (b) start at rest; (c) is supported at the posture it holds, as offline
+    if a.controller == "posture":
+        q0[arm.dof_index("GHy")] += v.POSTURE_GHY_RAD
     with RealtimeSession(model="das2", profile="participant_A_FES", stimulation="per_muscle", listen="127.0.0.1:0",
-                         state_rate_hz=1000, input_timeout=5.0, q0=arm.rest_posture) as s:
+                         state_rate_hz=1000, input_timeout=5.0, q0=q0, support=LEAD_S) as s:
         proc = subprocess.run([sys.executable, os.path.abspath(__file__), "--controller", a.controller,
                                "--client", str(s.port)], capture_output=True, text=True, timeout=600)
         stats = s.stop()
