@@ -16,8 +16,6 @@ import argparse
 import json
 import os
 import platform
-import shutil
-import socket
 import subprocess
 import tempfile
 import time
@@ -25,20 +23,9 @@ from pathlib import Path
 
 import numpy as np
 
+from bench._local import chromium, free_port
+
 ROOT = Path(__file__).resolve().parents[1]
-
-
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def _chromium() -> str:
-    for name in ("chromium", "chromium-browser", "google-chrome"):
-        if shutil.which(name):
-            return shutil.which(name)
-    raise SystemExit("display_latency: chromium is not installed")
 
 
 def _pct(x, q):
@@ -67,9 +54,9 @@ def run(duration: float, fps: float, arm_model: str | None, window=(1280, 800)) 
     targets = tasks.centre_out_targets(centre, 0.1, 0.015, 8) * 1000   # more than the run needs: it stops on time
     task = tasks.TargetTask(targets, 0.3, 5.0, 0.2)
     load0 = os.getloadavg()
-    with DisplayServer(fit_plane(targets[:8], centre=centre, points=extra), port=_free_port()) as server, \
+    with DisplayServer(fit_plane(targets[:8], centre=centre, points=extra), port=free_port()) as server, \
             tempfile.TemporaryDirectory() as profile:
-        proc = subprocess.Popen([_chromium(), "--headless=new", "--no-sandbox", "--use-angle=swiftshader",
+        proc = subprocess.Popen([chromium("display_latency"), "--headless=new", "--no-sandbox", "--use-angle=swiftshader",
                                  "--enable-unsafe-swiftshader", "--no-first-run", "--disable-extensions",
                                  f"--window-size={window[0]},{window[1]}", f"--user-data-dir={profile}", server.url],
                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)

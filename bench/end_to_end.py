@@ -25,7 +25,6 @@ import argparse
 import json
 import os
 import platform
-import shutil
 import signal
 import socket
 import subprocess
@@ -36,6 +35,8 @@ from pathlib import Path
 
 import numpy as np
 
+from bench._local import chromium, free_port
+
 ROOT = Path(__file__).resolve().parents[1]
 # das2's start posture, deg (GHy GHz GHyy ELx PSy): the one whose centre-out targets docs/tasks.md and
 # tests/test_endpoint_control.py check for reachability.
@@ -44,19 +45,6 @@ STATE_RATE_HZ = 200     # runner -> task and controller
 CONTROLLER_RATE_HZ = 200
 SETTLE_S = 3.0          # s the controller holds the start posture before the task takes the hand as its centre
 MIN_TRIAL_S = 0.5       # the shortest a trial can be: the task's default dwell 0.3 s + inter-trial interval 0.2 s
-
-
-def _free_port(kind=socket.SOCK_DGRAM) -> int:
-    with socket.socket(socket.AF_INET, kind) as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def _chromium() -> str:
-    for name in ("chromium", "chromium-browser", "google-chrome"):
-        if shutil.which(name):
-            return shutil.which(name)
-    raise SystemExit("end_to_end: chromium is not installed")
 
 
 def percentiles_ms(x_s) -> dict:
@@ -96,7 +84,7 @@ def run(minutes: float, distance: float, tmp: Path, so_kp: float | None = None, 
     gains = [a for k, v in (("--so-kp", so_kp), ("--so-kd", so_kd)) if v is not None for a in (k, str(v))]
     py = sys.executable
     bindir = Path(py).parent
-    P, S, H = _free_port(), _free_port(), _free_port(socket.SOCK_STREAM)
+    P, S, H = free_port(socket.SOCK_DGRAM), free_port(socket.SOCK_DGRAM), free_port()
     uid = f"{os.getpid()}-{int(time.time())}"
     task_stream, dec_stream = f"e2e-task-{uid}", f"e2e-dec-{uid}"
     q0 = ",".join(f"{np.radians(d):.9f}" for d in Q0_DEG)
@@ -138,7 +126,7 @@ def run(minutes: float, distance: float, tmp: Path, so_kp: float | None = None, 
         _wait_for(logs["controller"], "controller: decoder", ctl, 120, "the controller")
         _wait_for(logs["task"], "participant display:", task, 120, "the task")
         with tempfile.TemporaryDirectory() as profile:
-            start("chromium", [_chromium(), "--headless=new", "--no-sandbox", "--use-angle=swiftshader",
+            start("chromium", [chromium("end_to_end"), "--headless=new", "--no-sandbox", "--use-angle=swiftshader",
                                "--enable-unsafe-swiftshader", "--no-first-run", "--disable-extensions",
                                "--window-size=1280,800", f"--user-data-dir={profile}", f"http://127.0.0.1:{H}/"])
             _wait_for(logs["task"], "a participant page connected", task, 120, "the task")
