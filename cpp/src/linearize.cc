@@ -51,8 +51,10 @@ void held_force_acceleration(const Model& m, const Data& d, const double* q, con
   skeleton_dynamics(m, d.settings.gravity.data(), q, qd, tau, M, qdd);
 }
 
-// The full tangent of forward() at x into t (xdot: forward()'s derivative there).
-void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, double* xdot) {
+// The full tangent of forward() at x into t (xdot: forward()'s derivative there). The mechanical block by central
+// differences, or with one_sided by forward ones (half the path and skeleton evaluations; O(eps) = 1e-6 relative, for
+// the tangent at the second stage, which enters A and B only multiplied by h).
+void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, double* xdot, bool one_sided = false) {
   const int nq = m.num_dofs, n = m.num_elements;
   const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
   StepJacobian& jac = t.jac;
@@ -72,23 +74,34 @@ void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, dou
   // The velocity columns move only the passive joints and the skeleton: the rest of the torque is taken once.
   double tau_held[kMaxDofs], tau_held_x[kMaxDofs];
   held_joint_torque(m, d, q, R, t.force.data(), tau_held_x);
+  double a0[kMaxDofs];
+  if (one_sided) held_force_acceleration(m, d, q, qd, tau_held_x, a0);
+  const double span = one_sided ? 1.0 : 2.0;  // the differences' width in steps
   for (int k = 0; k < nq; ++k) {
     std::copy(q, q + nq, qp);
     qp[k] = q[k] + kJointAngleStep;
     m.def->muscle_paths(qp, Lp, Rp);
     held_joint_torque(m, d, qp, Rp, t.force.data(), tau_held);
     held_force_acceleration(m, d, qp, qd, tau_held, ap);
-    qp[k] = q[k] - kJointAngleStep;
-    m.def->muscle_paths(qp, Lp, Rp);
-    held_joint_torque(m, d, qp, Rp, t.force.data(), tau_held);
-    held_force_acceleration(m, d, qp, qd, tau_held, am);
-    for (int j = 0; j < nq; ++j) t.dqdd_dq[j * nq + k] = (ap[j] - am[j]) / (2 * kJointAngleStep);
+    if (one_sided) {
+      std::copy(a0, a0 + nq, am);
+    } else {
+      qp[k] = q[k] - kJointAngleStep;
+      m.def->muscle_paths(qp, Lp, Rp);
+      held_joint_torque(m, d, qp, Rp, t.force.data(), tau_held);
+      held_force_acceleration(m, d, qp, qd, tau_held, am);
+    }
+    for (int j = 0; j < nq; ++j) t.dqdd_dq[j * nq + k] = (ap[j] - am[j]) / (span * kJointAngleStep);
     std::copy(qd, qd + nq, qdp);
     qdp[k] = qd[k] + kJointVelocityStep;
     held_force_acceleration(m, d, q, qdp, tau_held_x, ap);
-    qdp[k] = qd[k] - kJointVelocityStep;
-    held_force_acceleration(m, d, q, qdp, tau_held_x, am);
-    for (int j = 0; j < nq; ++j) t.dqdd_dqd[j * nq + k] = (ap[j] - am[j]) / (2 * kJointVelocityStep);
+    if (one_sided) {
+      std::copy(a0, a0 + nq, am);
+    } else {
+      qdp[k] = qd[k] - kJointVelocityStep;
+      held_force_acceleration(m, d, q, qdp, tau_held_x, am);
+    }
+    for (int j = 0; j < nq; ++j) t.dqdd_dqd[j * nq + k] = (ap[j] - am[j]) / (span * kJointVelocityStep);
   }
   // G = M^-1 R^T (by DOF, stride kMaxElements): how a tendon force moves qdd. M^-1 column by column.
   double Minv[kMaxDofs * kMaxDofs], e[kMaxDofs], col[kMaxDofs];
@@ -774,7 +787,7 @@ void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, 
   jacobian_factor(m, W, hg);
   jacobian_solve(m, W, w.f.data(), w.k1.data());
   for (int k = 0; k < ns; ++k) w.x2[k] = x[k] + h * w.k1[k];
-  tangent_at(m, d, w.x2.data(), w.at_x2, w.f2.data());
+  tangent_at(m, d, w.x2.data(), w.at_x2, w.f2.data(), true);
   for (int k = 0; k < ns; ++k) w.f2[k] -= 2.0 * w.k1[k];
   jacobian_solve(m, W, w.f2.data(), w.k2.data());
   // How J moves: per element with its lce, a and u; with each joint angle and velocity, applied to k1 and k2.
