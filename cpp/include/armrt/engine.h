@@ -211,7 +211,7 @@ struct ForwardTangent {
   std::array<double, kMaxElements> act_rate_dlag{};             // 1/s, d(c1 u + c2)/du
   std::array<double, kMaxDofs * kMaxElements> scratch_moment_arm{};  // m, paths at the difference points
 };
-// What linearize() works in: fixed size (about 0.8 MB: hold it on the heap), so no call allocates.
+// What linearize() works in: fixed size (about 1.2 MB: hold it on the heap), so no call allocates.
 struct LinearizeWorkspace {
   ForwardTangent at_x, at_x2;  // the tangent at x and at the second stage x2 = x + h k1
   StepJacobian step_jacobian;  // the step's own J (fibre limiter applied) and its factorisation
