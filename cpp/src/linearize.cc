@@ -26,25 +26,35 @@ namespace {
 constexpr double kJointAngleStep = 1e-6;     // rad
 constexpr double kJointVelocityStep = 1e-6;  // rad/s
 
-// qdd (rad/s^2) at (q, qd) with the tendon forces F (N) held, paths L, R at q given (R by DOF): the skeleton stage
-// with every q-dependent generalised force (R^T F, passive joints, hand load, girdle) as forward() sums them.
-void held_force_acceleration(const Model& m, const Data& d, const double* q, const double* qd, const double* R,
-                             const double* force, double* qdd) {
+// The generalised forces (N m) at q that do not move with qd, the tendon forces F (N) held, paths R at q given (by
+// DOF): R^T F, the hand load and the girdle, as forward() sums them.
+void held_joint_torque(const Model& m, const Data& d, const double* q, const double* R, const double* force,
+                       double* tau) {
   const int nq = m.num_dofs, n = m.num_elements;
-  double tau_muscle[kMaxDofs], tau_passive[kMaxDofs], tau_ext[kMaxDofs], tau_girdle[kMaxDofs];
+  double tau_muscle[kMaxDofs], tau_ext[kMaxDofs], tau_girdle[kMaxDofs];
   double f_ext[3], t_ext[3];
   generalised_force(R, force, n, nq, tau_muscle, m.dof_elements_begin.data(), m.dof_elements_end.data());
-  passive_joint_torque(*m.def, q, qd, tau_passive);
   external_load(m, q, d.hand_force.data(), d.hand_moment.data(), f_ext, t_ext, tau_ext);
   if (m.def->girdle) girdle_forces(m, q, tau_girdle, nullptr, nullptr);
   else std::fill(tau_girdle, tau_girdle + nq, 0.0);
-  double tau[kMaxDofs], M[kMaxDofs * kMaxDofs];
-  for (int j = 0; j < nq; ++j) tau[j] = tau_muscle[j] + tau_passive[j] + tau_ext[j] + tau_girdle[j];
+  for (int j = 0; j < nq; ++j) tau[j] = tau_muscle[j] + tau_ext[j] + tau_girdle[j];
+}
+
+// qdd (rad/s^2) at (q, qd) from held_joint_torque's tau_held at q plus the passive joints at (q, qd): the skeleton
+// stage with every generalised force as forward() has it, the tendon forces held.
+void held_force_acceleration(const Model& m, const Data& d, const double* q, const double* qd, const double* tau_held,
+                             double* qdd) {
+  const int nq = m.num_dofs;
+  double tau_passive[kMaxDofs], tau[kMaxDofs], M[kMaxDofs * kMaxDofs];
+  passive_joint_torque(*m.def, q, qd, tau_passive);
+  for (int j = 0; j < nq; ++j) tau[j] = tau_held[j] + tau_passive[j];
   skeleton_dynamics(m, d.settings.gravity.data(), q, qd, tau, M, qdd);
 }
 
-// The full tangent of forward() at x into t (xdot: forward()'s derivative there).
-void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, double* xdot) {
+// The full tangent of forward() at x into t (xdot: forward()'s derivative there). The mechanical block by central
+// differences, or with one_sided by forward ones (half the path and skeleton evaluations; O(eps) = 1e-6 relative, for
+// the tangent at the second stage, which enters A and B only multiplied by h).
+void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, double* xdot, bool one_sided = false) {
   const int nq = m.num_dofs, n = m.num_elements;
   const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
   StepJacobian& jac = t.jac;
@@ -61,21 +71,37 @@ void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, dou
   double qp[kMaxDofs], qdp[kMaxDofs], ap[kMaxDofs], am[kMaxDofs];
   double Lp[kMaxElements];
   double* Rp = t.scratch_moment_arm.data();
+  // The velocity columns move only the passive joints and the skeleton: the rest of the torque is taken once.
+  double tau_held[kMaxDofs], tau_held_x[kMaxDofs];
+  held_joint_torque(m, d, q, R, t.force.data(), tau_held_x);
+  double a0[kMaxDofs];
+  if (one_sided) held_force_acceleration(m, d, q, qd, tau_held_x, a0);
+  const double span = one_sided ? 1.0 : 2.0;  // the differences' width in steps
   for (int k = 0; k < nq; ++k) {
     std::copy(q, q + nq, qp);
     qp[k] = q[k] + kJointAngleStep;
     m.def->muscle_paths(qp, Lp, Rp);
-    held_force_acceleration(m, d, qp, qd, Rp, t.force.data(), ap);
-    qp[k] = q[k] - kJointAngleStep;
-    m.def->muscle_paths(qp, Lp, Rp);
-    held_force_acceleration(m, d, qp, qd, Rp, t.force.data(), am);
-    for (int j = 0; j < nq; ++j) t.dqdd_dq[j * nq + k] = (ap[j] - am[j]) / (2 * kJointAngleStep);
+    held_joint_torque(m, d, qp, Rp, t.force.data(), tau_held);
+    held_force_acceleration(m, d, qp, qd, tau_held, ap);
+    if (one_sided) {
+      std::copy(a0, a0 + nq, am);
+    } else {
+      qp[k] = q[k] - kJointAngleStep;
+      m.def->muscle_paths(qp, Lp, Rp);
+      held_joint_torque(m, d, qp, Rp, t.force.data(), tau_held);
+      held_force_acceleration(m, d, qp, qd, tau_held, am);
+    }
+    for (int j = 0; j < nq; ++j) t.dqdd_dq[j * nq + k] = (ap[j] - am[j]) / (span * kJointAngleStep);
     std::copy(qd, qd + nq, qdp);
     qdp[k] = qd[k] + kJointVelocityStep;
-    held_force_acceleration(m, d, q, qdp, R, t.force.data(), ap);
-    qdp[k] = qd[k] - kJointVelocityStep;
-    held_force_acceleration(m, d, q, qdp, R, t.force.data(), am);
-    for (int j = 0; j < nq; ++j) t.dqdd_dqd[j * nq + k] = (ap[j] - am[j]) / (2 * kJointVelocityStep);
+    held_force_acceleration(m, d, q, qdp, tau_held_x, ap);
+    if (one_sided) {
+      std::copy(a0, a0 + nq, am);
+    } else {
+      qdp[k] = qd[k] - kJointVelocityStep;
+      held_force_acceleration(m, d, q, qdp, tau_held_x, am);
+    }
+    for (int j = 0; j < nq; ++j) t.dqdd_dqd[j * nq + k] = (ap[j] - am[j]) / (span * kJointVelocityStep);
   }
   // G = M^-1 R^T (by DOF, stride kMaxElements): how a tendon force moves qdd. M^-1 column by column.
   double Minv[kMaxDofs * kMaxDofs], e[kMaxDofs], col[kMaxDofs];
@@ -117,28 +143,45 @@ void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, dou
   }
 }
 
-// df/dx (ns x ns) and df/du (ns x num_elements), row-major, from the tangent t.
+// Zeroes p[0, count) in pieces of at most 1 kB: glibc's memset switches to `rep stosb` above 2 kB, which is as fast
+// but which callgrind counts once per byte (the instruction counts of bench.linearize would mostly measure it).
+inline void zero_fill(double* p, long count) {
+  constexpr long kPiece = 128;
+  for (long k = 0; k < count; k += kPiece) std::fill(p + k, p + std::min(count, k + kPiece), 0.0);
+}
+
+// df/dx (ns x ns) and df/du (ns x num_elements), row-major, from the tangent t: each row zeroed (zero_fill) and its
+// few entries set.
 void write_dense(const Model& m, const ForwardTangent& t, double* dfdx, double* dfdu) {
   const int nq = m.num_dofs, n = m.num_elements, ns = state_size(m);
   const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
   const StepJacobian& jac = t.jac;
-  std::fill(dfdx, dfdx + static_cast<long>(ns) * ns, 0.0);
-  std::fill(dfdu, dfdu + static_cast<long>(ns) * n, 0.0);
+  zero_fill(dfdu, static_cast<long>(ns) * n);
   for (int j = 0; j < nq; ++j) {
-    dfdx[(iq + j) * ns + iqd + j] = 1.0;
+    double* row = dfdx + static_cast<long>(iq + j) * ns;
+    zero_fill(row, ns);
+    row[iqd + j] = 1.0;
+  }
+  for (int j = 0; j < nq; ++j) {
     double* row = dfdx + static_cast<long>(iqd + j) * ns;
     for (int k = 0; k < nq; ++k) {
       row[iq + k] = t.dqdd_dq[j * nq + k];
       row[iqd + k] = t.dqdd_dqd[j * nq + k];
     }
     for (int i = 0; i < n; ++i) row[il + i] = t.accel_per_force[j * kMaxElements + i] * jac.dforce_dlce[i];
+    zero_fill(row + ia, n);
   }
   for (int i = 0; i < n; ++i) {
     double* row = dfdx + static_cast<long>(il + i) * ns;
+    zero_fill(row + iqd, ns - iqd);
     for (int k = 0; k < nq; ++k) row[iq + k] = -jac.dvel_dL[i] * jac.moment_arm[k * kMaxElements + i];
     row[il + i] = jac.dvel_dlce[i];
     row[ia + i] = jac.dvel_da[i];
-    dfdx[static_cast<long>(ia + i) * ns + ia + i] = -jac.act_rate[i];
+  }
+  for (int i = 0; i < n; ++i) {
+    double* row = dfdx + static_cast<long>(ia + i) * ns;
+    zero_fill(row, ns);
+    row[ia + i] = -jac.act_rate[i];
     dfdu[static_cast<long>(ia + i) * n + i] = t.act_rate_du[i];
   }
 }
@@ -147,6 +190,22 @@ void write_dense(const Model& m, const ForwardTangent& t, double* dfdx, double* 
 // steps kept); xdot = f(x).
 void step_jacobian_at(const Model& m, Data& d, const double* x, double h, StepJacobian& jac, double* xdot) {
   forward(m, d, x, xdot, false, &jac);
+  const auto limited = d.limited_fibre_steps;
+  limit_fibre_overshoot(m, d, jac, x, xdot, h);
+  d.limited_fibre_steps = limited;
+}
+
+// step_jacobian_at for an x whose joint angles are those the paths in `paths` were evaluated at (x differs there in
+// velocities, CE lengths or activations, or u does): the paths are copied, not evaluated again (the limiter reads them
+// from jac; whole blocks of eight, so moment_arm_dot's ghost lanes come along).
+void step_jacobian_with_paths(const Model& m, Data& d, const double* x, const StepJacobian& paths, double h,
+                              StepJacobian& jac, double* xdot) {
+  const int n8 = (m.num_elements + 7) / 8 * 8;
+  std::copy(paths.muscle_length.begin(), paths.muscle_length.begin() + n8, jac.muscle_length.begin());
+  for (int j = 0; j < m.num_dofs; ++j)
+    std::copy(paths.moment_arm.begin() + j * kMaxElements, paths.moment_arm.begin() + j * kMaxElements + n8,
+              jac.moment_arm.begin() + j * kMaxElements);
+  forward_from_paths(m, d, x, jac.muscle_length.data(), jac.moment_arm.data(), xdot, false, &jac);
   const auto limited = d.limited_fibre_steps;
   limit_fibre_overshoot(m, d, jac, x, xdot, h);
   d.limited_fibre_steps = limited;
@@ -202,13 +261,14 @@ void element_derivatives(const Model& m, Data& d, LinearizeWorkspace& w, double 
     for (int sgn = 0; sgn < 2; ++sgn) {
       std::copy(x, x + ns, w.x_shift.begin());
       for (int i = 0; i < n; ++i) w.x_shift[off + i] += sgn == 0 ? eps[i] : -eps[i];
-      step_jacobian_at(m, d, w.x_shift.data(), h, sgn == 0 ? w.jac_plus : w.jac_minus, w.f_shift.data());
+      step_jacobian_with_paths(m, d, w.x_shift.data(), w.at_x.jac, h, sgn == 0 ? w.jac_plus : w.jac_minus,
+                               w.f_shift.data());
     }
   } else {
     double u_held[kMaxElements];
     std::copy(d.excitation.begin(), d.excitation.begin() + n, u_held);
     for (int i = 0; i < n; ++i) d.excitation[i] = u_held[i] + eps[i];
-    step_jacobian_at(m, d, x, h, w.jac_plus, w.f_shift.data());
+    step_jacobian_with_paths(m, d, x, w.at_x.jac, h, w.jac_plus, w.f_shift.data());
     std::copy(u_held, u_held + n, d.excitation.begin());
   }
   for (int i = 0; i < n; ++i) {
@@ -364,104 +424,360 @@ void apply_tile(const Model& m, const ForwardTangent& tg, const double* v, doubl
   for (int a = 0; a < nq; ++a) std::copy(v + (iqd + a) * kT, v + (iqd + a) * kT + kT, out + (iq + a) * kT);
 }
 
-// Column c's part of a stage's right-hand side that the column adds: hg dJ_c k (k the stage vector, R_k = R k_q) for
-// column c of [A | B] (c < ns: state entry c; else excitation c - ns), written into tile column t of r.
-void add_column_term(const Model& m, const LinearizeWorkspace& w, int c, int stage, double hg, double* r, int t) {
-  const int nq = m.num_dofs, ns = state_size(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
-  const double* k = stage == 1 ? w.k1.data() : w.k2.data();
-  const double* R_k = stage == 1 ? w.R_k1.data() : w.R_k2.data();
-  const std::array<std::array<double, kMaxElements>, kElementEntries>* dJ;
-  int i;
-  if (c < 2 * nq) {
-    const StateVec& d = stage == 1 ? w.dJ_k1[c] : w.dJ_k2[c];
-    for (int s = 0; s < ns; ++s) r[s * kT + t] += hg * d[s];
-    return;
-  } else if (c < ia) {
-    dJ = &w.dJ_dlce, i = c - il;
-  } else if (c < ns) {
-    dJ = &w.dJ_da, i = c - ia;
-  } else {
-    dJ = &w.dJ_du, i = c - ns;
-  }
-  r[(il + i) * kT + t] += hg * (-(*dJ)[0][i] * R_k[i] + (*dJ)[1][i] * k[il + i] + (*dJ)[2][i] * k[ia + i]);
-  const double df = hg * (-(*dJ)[3][i] * R_k[i] + (*dJ)[4][i] * k[il + i]);
-  for (int j = 0; j < nq; ++j) r[(iqd + j) * kT + t] += w.at_x.accel_per_force[j * kMaxElements + i] * df;
-}
-
-// Column c of df/dx (write_dense's entries, from the tangent's structure rather than the dense matrix, whose columns
-// are strided in memory) into tile column t of r (zero there before).
-void tangent_column(const Model& m, const ForwardTangent& tg, int c, double* r, int t) {
-  const int nq = m.num_dofs, n = m.num_elements, iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m),
-            ia = act_offset(m);
+// Mechanical column c (< 2 n_dofs: joint angle c, or velocity c - n_dofs) of df/dx (write_dense's entries, from the
+// tangent's structure rather than the dense matrix, whose columns are strided in memory) added into tile column t of r.
+void add_tangent_column(const Model& m, const ForwardTangent& tg, int c, double* r, int t) {
+  const int nq = m.num_dofs, n = m.num_elements, iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m);
   const StepJacobian& jac = tg.jac;
   if (c < iqd) {
     const int k = c - iq;
-    for (int j = 0; j < nq; ++j) r[(iqd + j) * kT + t] = tg.dqdd_dq[j * nq + k];
-    for (int i = 0; i < n; ++i) r[(il + i) * kT + t] = -jac.dvel_dL[i] * jac.moment_arm[k * kMaxElements + i];
-  } else if (c < il) {
-    const int k = c - iqd;
-    r[(iq + k) * kT + t] = 1.0;
-    for (int j = 0; j < nq; ++j) r[(iqd + j) * kT + t] = tg.dqdd_dqd[j * nq + k];
-  } else if (c < ia) {
-    const int i = c - il;
-    for (int j = 0; j < nq; ++j) r[(iqd + j) * kT + t] = tg.accel_per_force[j * kMaxElements + i] * jac.dforce_dlce[i];
-    r[(il + i) * kT + t] = jac.dvel_dlce[i];
+    for (int j = 0; j < nq; ++j) r[(iqd + j) * kT + t] += tg.dqdd_dq[j * nq + k];
+    for (int i = 0; i < n; ++i) r[(il + i) * kT + t] -= jac.dvel_dL[i] * jac.moment_arm[k * kMaxElements + i];
   } else {
-    const int i = c - ia;
-    r[(il + i) * kT + t] = jac.dvel_da[i];
-    r[(ia + i) * kT + t] = -jac.act_rate[i];
+    const int k = c - iqd;
+    r[(iq + k) * kT + t] += 1.0;
+    for (int j = 0; j < nq; ++j) r[(iqd + j) * kT + t] += tg.dqdd_dqd[j * nq + k];
   }
 }
 
-// The columns of A and B, kT at a time (see linearize_step_n for the algebra).
+// The 2 n_dofs mechanical columns of A (joint angles and velocities), kT at a time as full state-long vectors: their
+// dJ_W terms (w.dJ_k1, dJ_k2) are dense (see linearize_step_n for the algebra).
 template <int nq>
-void step_columns(const Model& m, LinearizeWorkspace& w, double h, double* A, double* B) {
-  const int n = m.num_elements, ns = state_size(m), ia = act_offset(m);
+void mechanical_columns(const Model& m, LinearizeWorkspace& w, double h, double* A) {
+  const int ns = state_size(m);
   const double hg = kRos2Gamma * h;
   const StepJacobian& W = w.step_jacobian;
   double* r = w.tile_r.data();
   double* dk1 = w.tile_dk1.data();
   double* y = w.tile_y.data();
   double* dk2 = w.tile_dk2.data();
-  const int total = ns + n;
+  const int total = 2 * nq;
   for (int c0 = 0; c0 < total; c0 += kT) {
     const int width = std::min(kT, total - c0);
-    std::fill(r, r + ns * kT, 0.0);
-    for (int t = 0; t < width; ++t) {
-      const int c = c0 + t;
-      if (c < ns) {
-        tangent_column(m, w.at_x, c, r, t);
-      } else {
-        const int i = c - ns;
-        r[(ia + i) * kT + t] = w.at_x.act_rate_du[i] - hg * w.at_x.act_rate_dlag[i] * w.k1[ia + i];
-      }
-      add_column_term(m, w, c, 1, hg, r, t);
+    // r = hg dJ_c k1 + J(x) e_c, assigned lane by lane (no zeroing pass over the tile), unused lanes zero.
+    for (int s = 0; s < ns; ++s) {
+      double* rs = r + s * kT;
+      for (int t = 0; t < width; ++t) rs[t] = hg * w.dJ_k1[c0 + t][s];
+      for (int t = width; t < kT; ++t) rs[t] = 0.0;
     }
+    for (int t = 0; t < width; ++t) add_tangent_column(m, w.at_x, c0 + t, r, t);
     solve_tile<nq>(m, W, r, dk1);
     for (int s = 0; s < ns * kT; ++s) y[s] = h * dk1[s];
-    for (int t = 0; t < width; ++t)
-      if (c0 + t < ns) y[(c0 + t) * kT + t] += 1.0;
+    for (int t = 0; t < width; ++t) y[(c0 + t) * kT + t] += 1.0;
     apply_tile<nq>(m, w.at_x2, y, r);
-    for (int s = 0; s < ns * kT; ++s) r[s] -= 2.0 * dk1[s];
-    for (int t = 0; t < width; ++t) {
-      const int c = c0 + t;
-      if (c >= ns) {
-        const int i = c - ns;
-        r[(ia + i) * kT + t] += w.at_x2.act_rate_du[i] - hg * w.at_x2.act_rate_dlag[i] * w.k2[ia + i];
-      }
-      add_column_term(m, w, c, 2, hg, r, t);
+    for (int s = 0; s < ns; ++s) {
+      double* rs = r + s * kT;
+      const double* ds = dk1 + s * kT;
+      for (int t = 0; t < width; ++t) rs[t] += hg * w.dJ_k2[c0 + t][s] - 2.0 * ds[t];
+      for (int t = width; t < kT; ++t) rs[t] -= 2.0 * ds[t];
     }
     solve_tile<nq>(m, W, r, dk2);
-    // dk1 <- h (3/2 dk1 + 1/2 dk2), then row by row into A (columns < ns) and B (the rest), contiguous runs.
-#pragma omp simd
-    for (int s = 0; s < ns * kT; ++s) dk1[s] = h * (1.5 * dk1[s] + 0.5 * dk2[s]);
-    const int in_A = std::max(0, std::min(width, ns - c0));
+    // h (3/2 dk1 + 1/2 dk2), row by row into A's first 2 n_dofs columns.
     for (int s = 0; s < ns; ++s) {
-      const double* v = dk1 + s * kT;
-      if (in_A > 0) std::copy(v, v + in_A, A + static_cast<long>(s) * ns + c0);
-      if (in_A < width) std::copy(v + in_A, v + width, B + static_cast<long>(s) * n + (c0 + in_A - ns));
+      const double* a = dk1 + s * kT;
+      const double* b = dk2 + s * kT;
+      double* out = A + static_cast<long>(s) * ns + c0;
+      for (int t = 0; t < width; ++t) out[t] = h * (1.5 * a[t] + 0.5 * b[t]);
     }
-    for (int t = 0; t < in_A; ++t) A[static_cast<long>(c0 + t) * ns + c0 + t] += 1.0;
+    for (int t = 0; t < width; ++t) A[static_cast<long>(c0 + t) * ns + c0 + t] += 1.0;
+  }
+}
+
+// ---- Element columns: the 3 n columns of [A | B] that perturb one element's CE length (type 0), activation (1) or
+// excitation (2), column c = type * n + i, in block form rather than as state-long vectors. W and J couple an element
+// to the others only through the joints, so W^-1 and J applied to such a column keep
+//   the DOF rows (q, qd)     dense, n_dofs per column;
+//   the activation rows      the column's own element only (W's and J's activation rows are diagonal);
+//   the CE-length rows       the own element's entry plus terms d (.) (R V): a per-element diagonal d times the moment
+//                            arms R (at x or at x2) times a DOF-row vector V of the column (a stage's k_q),
+// and a solve costs n_dofs^2 per column (the Schur complement's LU, with R^T diag(.) R formed once per term) instead
+// of solve_tile's sweep over every element; only writing A and B is state-long per column.
+constexpr int kEC = LinearizeWorkspace::kElementColumns;
+
+// A CE-length-row term d (.) (R V) of the element columns: d per element, R by DOF (stride kMaxElements), V by DOF
+// (stride kEC).
+struct LowRankTerm {
+  const double* d;
+  const double* R;
+  const double* V;
+};
+
+// W k = r for the element columns: r's DOF rows rq (nullptr: zero), rqd, own entries rl (CE length), ra
+// (activation) and CE-length terms; out: k's DOF rows kq, kqd and own entries kl, ka. k's CE-length rows are
+// kl + sum_t (inv_lce d_t) (.) (R_t V_t) - lce_from_q (.) (R kq): solve_tile's algebra, the terms reaching the joints
+// through R^T diag(hg dF/dlce inv_lce d_t) R_t (P, n_dofs^2 scratch). rhs: n_dofs x kEC scratch.
+template <int nq>
+void solve_element_columns(const Model& m, const StepJacobian& W, const double* rq, const double* rqd,
+                           const double* rl, const double* ra, const LowRankTerm* terms, int num_terms, double* P,
+                           double* rhs, double* kq, double* kqd, double* kl, double* ka) {
+  const int n = m.num_elements, C = 3 * n;
+  const double hg = W.hg;
+  const double* R = W.moment_arm.data();
+  for (int t = 0; t < 3; ++t)
+    for (int i = 0; i < n; ++i) {
+      const int c = t * n + i;
+      ka[c] = ra[c] * W.inv_act[i];
+      kl[c] = W.inv_lce[i] * (rl[c] + hg * W.dvel_da[i] * ka[c]);
+    }
+  // rhs = M r_qd + hg K r_q (row by row over the columns).
+  for (int a = 0; a < nq; ++a) {
+    double* out = rhs + a * kEC;
+    {
+      const double mab = W.mass_matrix[a * nq], kab = hg * W.stiffness[a * nq];
+      for (int c = 0; c < C; ++c) out[c] = mab * rqd[c] + (rq ? kab * rq[c] : 0.0);
+    }
+    for (int b = 1; b < nq; ++b) {
+      const double mab = W.mass_matrix[a * nq + b], kab = hg * W.stiffness[a * nq + b];
+      const double* vqd = rqd + b * kEC;
+      if (rq) {
+        const double* vq = rq + b * kEC;
+        for (int c = 0; c < C; ++c) out[c] += mab * vqd[c] + kab * vq[c];
+      } else {
+        for (int c = 0; c < C; ++c) out[c] += mab * vqd[c];
+      }
+    }
+  }
+  // + R^T hg dF/dlce p for the own entries (each column's element, over its run's DOFs).
+  for (int run = 0; run < m.num_element_runs; ++run) {
+    const Model::ElementRun& er = m.element_runs[run];
+    for (int i = er.begin; i < std::min(er.end, n); ++i) {
+      const double fs = hg * W.dforce_dlce[i];
+      for (int a = er.dof_lo; a <= er.dof_hi; ++a) {
+        const double coef = R[a * kMaxElements + i] * fs;
+        for (int t = 0; t < 3; ++t) rhs[a * kEC + t * n + i] += coef * kl[t * n + i];
+      }
+    }
+  }
+  // + (R^T diag(hg dF/dlce inv_lce d) R_t) V_t for the low-rank terms.
+  for (int k = 0; k < num_terms; ++k) {
+    const LowRankTerm& lr = terms[k];
+    std::fill(P, P + nq * nq, 0.0);
+    for (int run = 0; run < m.num_element_runs; ++run) {
+      const Model::ElementRun& er = m.element_runs[run];
+      for (int e = er.begin; e < std::min(er.end, n); ++e) {
+        const double we = hg * W.dforce_dlce[e] * W.inv_lce[e] * lr.d[e];
+        for (int a = er.dof_lo; a <= er.dof_hi; ++a) {
+          const double ra_e = R[a * kMaxElements + e] * we;
+          for (int b = er.dof_lo; b <= er.dof_hi; ++b) P[a * nq + b] += ra_e * lr.R[b * kMaxElements + e];
+        }
+      }
+    }
+    for (int a = 0; a < nq; ++a) {
+      double* out = rhs + a * kEC;
+      for (int b = 0; b < nq; ++b) {
+        const double p = P[a * nq + b];
+        if (p == 0.0) continue;
+        const double* v = lr.V + b * kEC;
+        for (int c = 0; c < C; ++c) out[c] += p * v[c];
+      }
+    }
+  }
+  // The Schur complement's LU (jacobian_factor), column-parallel as in solve_tile, in place in kqd.
+  for (int a = 0; a < nq; ++a) std::copy(rhs + W.schur_perm[a] * kEC, rhs + W.schur_perm[a] * kEC + C, kqd + a * kEC);
+  const double* lu = W.schur_lu.data();
+  for (int c = 0; c < nq; ++c)
+    for (int a = c + 1; a < nq; ++a) {
+      const double l = lu[a * nq + c];
+      const double* yc = kqd + c * kEC;
+      double* ya = kqd + a * kEC;
+      for (int j = 0; j < C; ++j) ya[j] -= l * yc[j];
+    }
+  for (int c = nq - 1; c >= 0; --c) {
+    const double inv = W.schur_inv_diag[c];
+    double* kc = kqd + c * kEC;
+    for (int j = 0; j < C; ++j) kc[j] *= inv;
+    for (int a = 0; a < c; ++a) {
+      const double u = lu[a * nq + c];
+      double* ya = kqd + a * kEC;
+      for (int j = 0; j < C; ++j) ya[j] -= u * kc[j];
+    }
+  }
+  for (int a = 0; a < nq; ++a) {
+    const double* vqd = kqd + a * kEC;
+    double* out = kq + a * kEC;
+    if (rq) {
+      const double* vq = rq + a * kEC;
+      for (int c = 0; c < C; ++c) out[c] = vq[c] + hg * vqd[c];
+    } else {
+      for (int c = 0; c < C; ++c) out[c] = hg * vqd[c];
+    }
+  }
+}
+
+// The element columns of A (its last 2 n columns) and B (all of it), the algebra of linearize_step_n in block form:
+//   dk1 = W^-1 (J(x) e + hg dJ_e k1)                    DOF rows q1, qd1; own lce1, act1; CE-length term -lq (R q1)
+//   y = e + h dk1;  r2 = J(x2) y - 2 dk1 + hg dJ_e k2 (+ df/du(x2) - dW/du k2 for excitations)
+//                                                       CE-length terms lq (2 - h dvc2) (R q1) and -h dvl2 (R2 q1)
+//   dk2 = W^-1 r2                                       q2, qd2; lce2, act2; terms il d (R q1), il d (R2 q1), -lq (R q2)
+//   column = e + h (3/2 dk1 + 1/2 dk2)
+// (lq = lce_from_q, il = inv_lce of W; dvc2, dvl2 the CE velocity's derivatives at x2; R the moment arms at x, R2 at x2).
+template <int nq>
+void element_columns(const Model& m, LinearizeWorkspace& w, double h, double* A, double* B) {
+  const int n = m.num_elements, C = 3 * n, ns = state_size(m), off = 2 * nq;
+  const int il = lce_offset(m), ia = act_offset(m);
+  const double hg = kRos2Gamma * h;
+  const StepJacobian& W = w.step_jacobian;
+  const ForwardTangent& tx = w.at_x;
+  const ForwardTangent& t2 = w.at_x2;
+  const double* Rw = W.moment_arm.data();
+  const double* R2 = t2.jac.moment_arm.data();
+  const double* Gx = tx.accel_per_force.data();
+  const double* G2 = t2.accel_per_force.data();
+  const double* lq = W.lce_from_q.data();
+  const double* k1 = w.k1.data();
+  const double* k2 = w.k2.data();
+  double* rq = w.ec_rq.data();
+  double* rqd = w.ec_rqd.data();
+  double* rl = w.ec_rl.data();
+  double* ra = w.ec_ra.data();
+  double *q1 = w.ec_q1.data(), *qd1 = w.ec_qd1.data(), *q2 = w.ec_q2.data(), *qd2 = w.ec_qd2.data();
+  double *lce1 = w.ec_lce1.data(), *act1 = w.ec_act1.data(), *lce2 = w.ec_lce2.data(), *act2 = w.ec_act2.data();
+  double *dA = w.ec_d1.data(), *dB = w.ec_d2.data();
+  double* P = w.ec_P.data();
+  double s[kEC];  // each column's tendon-force change (N) reaching qdd through M^-1 R^T
+  auto dJ_of = [&](int t) -> const std::array<std::array<double, kMaxElements>, kElementEntries>& {
+    return t == 0 ? w.dJ_dlce : (t == 1 ? w.dJ_da : w.dJ_du);
+  };
+  // Stage 1: r1 = J(x) e_c + hg dJ_c k1 (+ df/du - dW/du k1 for excitations); its DOF rows: q none, qd M^-1 R^T s.
+  for (int t = 0; t < 3; ++t) {
+    const auto& dJ = dJ_of(t);
+    for (int i = 0; i < n; ++i) {
+      const int c = t * n + i;
+      rl[c] = (t == 0 ? tx.jac.dvel_dlce[i] : (t == 1 ? tx.jac.dvel_da[i] : 0.0)) +
+              hg * (-dJ[0][i] * w.R_k1[i] + dJ[1][i] * k1[il + i] + dJ[2][i] * k1[ia + i]);
+      ra[c] = t == 1 ? -tx.jac.act_rate[i]
+                     : (t == 2 ? tx.act_rate_du[i] - hg * tx.act_rate_dlag[i] * k1[ia + i] : 0.0);
+      s[c] = (t == 0 ? tx.jac.dforce_dlce[i] : 0.0) + hg * (-dJ[3][i] * w.R_k1[i] + dJ[4][i] * k1[il + i]);
+    }
+  }
+  for (int j = 0; j < nq; ++j)
+    for (int t = 0; t < 3; ++t) {
+      const double* g = Gx + j * kMaxElements;
+      double* out = rqd + j * kEC + t * n;
+      const double* st = s + t * n;
+      for (int i = 0; i < n; ++i) out[i] = g[i] * st[i];
+    }
+  solve_element_columns<nq>(m, W, nullptr, rqd, rl, ra, nullptr, 0, P, w.ec_rhs.data(), q1, qd1, lce1, act1);
+
+  // Stage 2. y = e + h dk1: DOF rows h q1, h qd1; own h lce1 (+1), h act1 (+1); CE-length term -h lq (R q1).
+  // J(x2) y's qd rows: M2^-1 R2^T dvc... = G2 dF/dlce2 y_own + Q q1 + h (D_q q1 + D_qd qd1), with
+  // Q = G2 diag(dF/dlce2 (-h lq)) R (the CE-length term through the tendons).
+  const StepJacobian& j2 = t2.jac;
+  std::fill(P, P + nq * nq, 0.0);
+  for (int run = 0; run < m.num_element_runs; ++run) {
+    const Model::ElementRun& er = m.element_runs[run];
+    for (int e = er.begin; e < std::min(er.end, n); ++e) {
+      const double we = -h * j2.dforce_dlce[e] * lq[e];
+      for (int a = 0; a < nq; ++a) {
+        const double ge = G2[a * kMaxElements + e] * we;
+        for (int b = er.dof_lo; b <= er.dof_hi; ++b) P[a * nq + b] += ge * Rw[b * kMaxElements + e];
+      }
+    }
+  }
+  for (int a = 0; a < nq * nq; ++a) P[a] += h * t2.dqdd_dq[a];
+  for (int t = 0; t < 3; ++t) {
+    const auto& dJ = dJ_of(t);
+    for (int i = 0; i < n; ++i) {
+      const int c = t * n + i;
+      const double yl = h * lce1[c] + (t == 0 ? 1.0 : 0.0), ya = h * act1[c] + (t == 1 ? 1.0 : 0.0);
+      rl[c] = j2.dvel_dlce[i] * yl + j2.dvel_da[i] * ya - 2.0 * lce1[c] +
+              hg * (-dJ[0][i] * w.R_k2[i] + dJ[1][i] * k2[il + i] + dJ[2][i] * k2[ia + i]);
+      ra[c] = -j2.act_rate[i] * ya - 2.0 * act1[c] +
+              (t == 2 ? t2.act_rate_du[i] - hg * t2.act_rate_dlag[i] * k2[ia + i] : 0.0);
+      s[c] = hg * (-dJ[3][i] * w.R_k2[i] + dJ[4][i] * k2[il + i]);
+      lce2[c] = j2.dforce_dlce[i] * yl;  // scratch: the own tendon-force change at x2
+    }
+  }
+  for (int a = 0; a < nq; ++a) {
+    double* outq = rq + a * kEC;
+    double* out = rqd + a * kEC;
+    const double* vq = q1 + a * kEC;
+    const double* vqd = qd1 + a * kEC;
+    for (int c = 0; c < C; ++c) {
+      outq[c] = h * vqd[c] - 2.0 * vq[c];
+      out[c] = -2.0 * vqd[c];
+    }
+    for (int t = 0; t < 3; ++t) {
+      const double* gx = Gx + a * kMaxElements;
+      const double* g2 = G2 + a * kMaxElements;
+      double* o = out + t * n;
+      const double* st = s + t * n;
+      const double* f2 = lce2 + t * n;
+      for (int i = 0; i < n; ++i) o[i] += gx[i] * st[i] + g2[i] * f2[i];
+    }
+    for (int b = 0; b < nq; ++b) {
+      const double p = P[a * nq + b], dqd = h * t2.dqdd_dqd[a * nq + b];
+      const double* v1 = q1 + b * kEC;
+      const double* v2 = qd1 + b * kEC;
+      for (int c = 0; c < C; ++c) out[c] += p * v1[c] + dqd * v2[c];
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    dA[i] = lq[i] * (2.0 - h * j2.dvel_dlce[i]);
+    dB[i] = -h * j2.dvel_dL[i];
+  }
+  const LowRankTerm terms2[2] = {{dA, Rw, q1}, {dB, R2, q1}};
+  solve_element_columns<nq>(m, W, rq, rqd, rl, ra, terms2, 2, P, w.ec_rhs.data(), q2, qd2, lce2, act2);
+
+  // column = e + h (3/2 dk1 + 1/2 dk2), row by row: A's columns off.. (lce, activation), B's (excitation).
+  for (int a = 0; a < nq; ++a)
+    for (int blk = 0; blk < 2; ++blk) {
+      const double* v1 = (blk == 0 ? q1 : qd1) + a * kEC;
+      const double* v2 = (blk == 0 ? q2 : qd2) + a * kEC;
+      const int row = (blk == 0 ? q_offset(m) : qd_offset(m)) + a;
+      double* outA = A + static_cast<long>(row) * ns + off;
+      double* outB = B + static_cast<long>(row) * n - 2 * n;
+      for (int c = 0; c < 2 * n; ++c) outA[c] = h * (1.5 * v1[c] + 0.5 * v2[c]);
+      for (int c = 2 * n; c < C; ++c) outB[c] = h * (1.5 * v1[c] + 0.5 * v2[c]);
+    }
+  for (int run = 0; run < m.num_element_runs; ++run) {
+    const Model::ElementRun& er = m.element_runs[run];
+    for (int r = er.begin; r < std::min(er.end, n); ++r) {
+      // CE-length row r: sum_j (cW1 Rw_jr + c21 R2_jr) q1_j + cW2 Rw_jr q2_j over the run's DOFs.
+      const double cW1 = h * (-1.5 * lq[r] + 0.5 * W.inv_lce[r] * dA[r]);
+      const double c21 = 0.5 * h * W.inv_lce[r] * dB[r];
+      const double cW2 = -0.5 * h * lq[r];
+      double al[kMaxDofs], be[kMaxDofs];
+      const int j0 = er.dof_lo, nj = er.dof_hi - er.dof_lo + 1;
+      for (int j = 0; j < nj; ++j) {
+        al[j] = cW1 * Rw[(j0 + j) * kMaxElements + r] + c21 * R2[(j0 + j) * kMaxElements + r];
+        be[j] = cW2 * Rw[(j0 + j) * kMaxElements + r];
+      }
+      double* outA = A + static_cast<long>(il + r) * ns + off;
+      double* outB = B + static_cast<long>(il + r) * n - 2 * n;
+      auto lce_row = [&](double* out, int cb, int ce) {
+        {
+          const double* v1 = q1 + j0 * kEC;
+          const double* v2 = q2 + j0 * kEC;
+          for (int c = cb; c < ce; ++c) out[c] = al[0] * v1[c] + be[0] * v2[c];
+        }
+        for (int j = 1; j < nj; ++j) {
+          const double* v1 = q1 + (j0 + j) * kEC;
+          const double* v2 = q2 + (j0 + j) * kEC;
+          for (int c = cb; c < ce; ++c) out[c] += al[j] * v1[c] + be[j] * v2[c];
+        }
+      };
+      lce_row(outA, 0, 2 * n);
+      lce_row(outB, 2 * n, C);
+      for (int t = 0; t < 3; ++t) {
+        const int c = t * n + r;
+        const double own = h * (1.5 * lce1[c] + 0.5 * lce2[c]) + (t == 0 ? 1.0 : 0.0);
+        (t < 2 ? outA : outB)[c] += own;
+      }
+      // Activation row r: its own entries only.
+      double own_a[3];
+      for (int t = 0; t < 3; ++t) {
+        const int c = t * n + r;
+        own_a[t] = h * (1.5 * act1[c] + 0.5 * act2[c]) + (t == 1 ? 1.0 : 0.0);
+      }
+      double* actA = A + static_cast<long>(ia + r) * ns + off;
+      double* actB = B + static_cast<long>(ia + r) * n;
+      zero_fill(actA, 2 * n);
+      zero_fill(actB, n);
+      actA[r] = own_a[0];
+      actA[n + r] = own_a[1];
+      actB[r] = own_a[2];
+    }
   }
 }
 
@@ -481,7 +797,7 @@ void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, 
   jacobian_factor(m, W, hg);
   jacobian_solve(m, W, w.f.data(), w.k1.data());
   for (int k = 0; k < ns; ++k) w.x2[k] = x[k] + h * w.k1[k];
-  tangent_at(m, d, w.x2.data(), w.at_x2, w.f2.data());
+  tangent_at(m, d, w.x2.data(), w.at_x2, w.f2.data(), true);
   for (int k = 0; k < ns; ++k) w.f2[k] -= 2.0 * w.k1[k];
   jacobian_solve(m, W, w.f2.data(), w.k2.data());
   // How J moves: per element with its lce, a and u; with each joint angle and velocity, applied to k1 and k2.
@@ -499,7 +815,8 @@ void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, 
     const double eps = c < nq ? kJointAngleStep : kJointVelocityStep;
     std::copy(x, x + ns, w.x_shift.begin());
     w.x_shift[c] += eps;
-    step_jacobian_at(m, d, w.x_shift.data(), h, w.jac_plus, w.f_shift.data());
+    if (c < nq) step_jacobian_at(m, d, w.x_shift.data(), h, w.jac_plus, w.f_shift.data());
+    else step_jacobian_with_paths(m, d, w.x_shift.data(), w.at_x.jac, h, w.jac_plus, w.f_shift.data());
     structured_apply<nq>(m, w.jac_plus, w.k1.data(), p1);
     structured_apply<nq>(m, w.jac_plus, w.k2.data(), p2);
     for (int k = 0; k < ns; ++k) {
@@ -512,7 +829,8 @@ void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, 
   // B: u enters f through the activation rows, W through their rate c1 u + c2 (d W_aa/du = hg c1) and through the
   // fibre limiter (dJ_du): dk1 = W^-1 (df/du - dW/du k1), dk2 = W^-1 (J(x2) h dk1 + df/du(x2) - 2 dk1 - dW/du k2),
   // B = h (3/2 dk1 + 1/2 dk2).
-  step_columns<nq>(m, w, h, A, B);
+  mechanical_columns<nq>(m, w, h, A);
+  element_columns<nq>(m, w, h, A, B);
 }
 
 }  // namespace

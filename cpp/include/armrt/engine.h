@@ -211,7 +211,7 @@ struct ForwardTangent {
   std::array<double, kMaxElements> act_rate_dlag{};             // 1/s, d(c1 u + c2)/du
   std::array<double, kMaxDofs * kMaxElements> scratch_moment_arm{};  // m, paths at the difference points
 };
-// What linearize() works in: fixed size (about 0.8 MB: hold it on the heap), so no call allocates.
+// What linearize() works in: fixed size (about 1.2 MB: hold it on the heap), so no call allocates.
 struct LinearizeWorkspace {
   ForwardTangent at_x, at_x2;  // the tangent at x and at the second stage x2 = x + h k1
   StepJacobian step_jacobian;  // the step's own J (fibre limiter applied) and its factorisation
@@ -230,6 +230,15 @@ struct LinearizeWorkspace {
   // side by side, so that every operation runs over the tile's columns in SIMD lanes.
   static constexpr int kTile = 16;
   std::array<double, kMaxState * kTile> tile_r{}, tile_dk1{}, tile_y{}, tile_dk2{};
+  // The 3 n element columns (each element's lce, activation, excitation; column c = type * n + element) in block form
+  // (linearize.cc "Element columns"): DOF rows [dof][column] of the stage derivatives and of one right-hand side,
+  // each column's own entries (its element's lce and activation rows), and the joint-space matrices of the low-rank
+  // CE-length rows.
+  static constexpr int kElementColumns = 3 * kMaxElements;
+  std::array<double, kMaxDofs * kElementColumns> ec_q1{}, ec_qd1{}, ec_q2{}, ec_qd2{}, ec_rq{}, ec_rqd{}, ec_rhs{};
+  std::array<double, kElementColumns> ec_lce1{}, ec_act1{}, ec_lce2{}, ec_act2{}, ec_rl{}, ec_ra{};
+  std::array<double, kMaxElements> ec_d1{}, ec_d2{}, ec_d3{}, ec_d4{};  // per-element diagonals of the low-rank terms
+  std::array<double, kMaxDofs * kMaxDofs> ec_P{};
 };
 // At d.x with d's excitation u (num_elements, as the dynamics use it) and loads: df/dx (ns x ns, row-major,
 // ns = state_size) and df/du (ns x num_elements) of forward(); with A non-null also A = dx+/dx (ns x ns) and
