@@ -126,13 +126,17 @@ def _controller(port: int, key, stop: threading.Event, counts: dict, ready: thre
 
 
 def run(packets: int = 1_000_000, duration: float = 120.0, senders: int = 2, use_key: bool = False,
-        extra: list[str] | None = None) -> dict:
-    """Runs the fuzz; returns {"runner": the runner's statistics, "controller": ..., "fuzz": ...}."""
+        extra: list[str] | None = None, timeout_s: float = 0.1) -> dict:
+    """Runs the fuzz; returns {"runner": the runner's statistics, "controller": ..., "fuzz": ...}.
+
+    timeout_s is the runner's --timeout: 0.1 s (the bench's default) asks the controller thread to send every
+    5 ms through the flood; a test on a loaded 2-core machine gives it longer so that the senders' CPU
+    starving a Python thread is not mistaken for the runner taking the arm away."""
     from armrt import realtime as rt
     exe = rt.runner_path()
     with tempfile.TemporaryDirectory() as tmp:
         out_json = Path(tmp) / "stats.json"
-        args = [exe, "--listen", "127.0.0.1:0", "--state-rate", "100", "--timeout", "0.1", "--json", str(out_json),
+        args = [exe, "--listen", "127.0.0.1:0", "--state-rate", "100", "--timeout", str(timeout_s), "--json", str(out_json),
                 *(extra or [])]
         key = None
         if use_key:

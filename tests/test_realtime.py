@@ -273,7 +273,8 @@ def test_runner_quiet_still_prints_the_port():
 def test_runner_fuzzing_with_a_legitimate_controller():
     """Reduced bench/rt_fuzz.py: junk of every kind from two other processes, a controller alongside."""
     from bench.rt_fuzz import run
-    r = run(packets=40000, duration=5.0, senders=2)
+    # CI failed once with --timeout 0.1: two flooding processes starved the controller thread past it on 2 cores.
+    r = run(packets=40000, duration=5.0, senders=2, timeout_s=1.0)
     st, c = r["runner"], r["controller"]
     k = st["packets"]
     assert r["returncode"] == 0, r["stderr"]
