@@ -18,7 +18,9 @@ MuJoCo: myosuite's myoArm (as bench/bench_mujoco.py finds it, from PyPI wheels) 
 per thread (1 and 2 threads). Skipped with a message when mujoco/myo-sim/myosuite are missing
 (pip install mujoco myo-sim; pip install --no-deps myosuite).
 
-The machine may be shared: figures are noisy; the JSON records the load average and the command.
+The machine may be shared: figures are noisy; the JSON records the load average, the command and, per run, the
+cores other processes kept busy (bench/_contention.py): a 2-thread speed-up measured while they took more than a
+quarter of a core is marked contended, not reported as scaling.
 """
 from __future__ import annotations
 
@@ -31,6 +33,8 @@ import time
 from pathlib import Path
 
 import numpy as np
+
+from bench._contention import CONTENDED_CORES, Window, contended
 
 ROOT = Path(__file__).resolve().parent.parent
 RESULTS = ROOT / "bench" / "results"
@@ -54,14 +58,16 @@ def bench_armrt(ns, threads, seconds: float, reps: int) -> dict:
         k = max(1, int(round(seconds / per_step)))
         for t in threads:
             batch.threads = t
-            walls, cpus = [], []
+            walls, cpus, others = [], [], []
             for _ in range(reps):
                 batch.reset()
                 batch.set_excitation({"rotator_cuff": 0.05, "elbow_flexors": 0.3})
-                c0, t0 = time.process_time(), time.perf_counter()
-                batch.step(k, outputs=False)
-                walls.append(time.perf_counter() - t0)
+                c0 = time.process_time()
+                with Window() as w:
+                    batch.step(k, outputs=False)
+                walls.append(w.wall_s)
                 cpus.append(time.process_time() - c0)
+                others.append(w.other_cores)
             if batch.diverged.any():
                 raise RuntimeError(f"arms diverged in the benchmark: {batch.errors}")
             best = int(np.argmin(walls))
@@ -69,7 +75,8 @@ def bench_armrt(ns, threads, seconds: float, reps: int) -> dict:
             rate = n * k / wall
             out[f"n{n}_t{t}"] = {"n": n, "threads": t, "steps_per_arm": k, "wall_s": wall, "cpu_s": cpu,
                                  "arm_steps_per_s": rate, "arm_steps_per_cpu_s": n * k / cpu,
-                                 "sim_s_per_wall_s_per_core": rate * batch.dt / t}
+                                 "sim_s_per_wall_s_per_core": rate * batch.dt / t,
+                                 "other_processes_cores": others[best]}
         meta = {"integrator": batch.integrator, "dt": batch.dt, "substeps": batch.substeps,
                 "elements": batch.n_elements, "dofs": batch.n_dofs}
     for n in ns:
@@ -77,6 +84,8 @@ def bench_armrt(ns, threads, seconds: float, reps: int) -> dict:
             r1, r2 = out[f"n{n}_t1"]["arm_steps_per_s"], out[f"n{n}_t2"]["arm_steps_per_s"]
             out[f"n{n}_t2"]["speedup"] = r2 / r1
             out[f"n{n}_t2"]["scaling_efficiency"] = r2 / r1 / 2
+            out[f"n{n}_t2"]["contended"] = contended(out[f"n{n}_t1"]["other_processes_cores"],
+                                                     out[f"n{n}_t2"]["other_processes_cores"])
             # Robust to other processes taking a core: work per CPU-second of this process (threads
             # spinning at barriers count as CPU time, so parallel overhead still shows).
             out[f"n{n}_t2"]["cpu_time_efficiency"] = out[f"n{n}_t2"]["arm_steps_per_cpu_s"] / out[f"n{n}_t1"]["arm_steps_per_cpu_s"]
@@ -143,18 +152,28 @@ def bench_myoarm(nbatch: int, sim_s: float, threads, reps: int) -> dict:
            "mujoco": mujoco.__version__, "runs": {}}
     for t in threads:
         datas = [mujoco.MjData(m) for _ in range(t)]
-        walls = []
+        walls, others = [], []
         for _ in range(reps):
-            t0 = time.perf_counter()
-            rollout.rollout(m, datas, initial, control)
-            walls.append(time.perf_counter() - t0)
-        wall = min(walls)
+            with Window() as w:
+                rollout.rollout(m, datas, initial, control)
+            walls.append(w.wall_s)
+            others.append(w.other_cores)
+        best = int(np.argmin(walls))
+        wall = walls[best]
         steps = nbatch * nstep
         out["runs"][f"t{t}"] = {"threads": t, "wall_s": wall, "steps_per_s": steps / wall,
-                                "sim_s_per_wall_s_per_core": nbatch * sim_s / wall / t}
+                                "sim_s_per_wall_s_per_core": nbatch * sim_s / wall / t,
+                                "other_processes_cores": others[best]}
     if "t1" in out["runs"] and "t2" in out["runs"]:
         out["runs"]["t2"]["scaling_efficiency"] = out["runs"]["t2"]["steps_per_s"] / out["runs"]["t1"]["steps_per_s"] / 2
+        out["runs"]["t2"]["contended"] = contended(out["runs"]["t1"]["other_processes_cores"],
+                                                   out["runs"]["t2"]["other_processes_cores"])
     return out
+
+
+def _cores(run: dict) -> str:
+    c = run.get("other_processes_cores")
+    return "?" if c is None else f"{c:.2f}"
 
 
 def markdown(res: dict) -> str:
@@ -163,16 +182,22 @@ def markdown(res: dict) -> str:
              f"{res['cpus']} CPUs: a shared machine, figures are noisy).", "",
              f"### ArmBatch: arm-steps per second ({a['integrator']}, dt {a['dt'] * 1e3:g} ms, {a['substeps']} substeps, "
              f"{a['elements']} elements)", "",
-             "| arms | 1 thread | 2 threads | speed-up | scaling efficiency | CPU-time efficiency | sim s / wall s per core (2 threads) |",
-             "|---:|---:|---:|---:|---:|---:|---:|"]
+             "| arms | 1 thread | 2 threads | speed-up | scaling efficiency | CPU-time efficiency | sim s / wall s per core (2 threads) | other processes (cores, 1 / 2 threads) |",
+             "|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for n in NS:
         r1, r2 = a["runs"].get(f"n{n}_t1"), a["runs"].get(f"n{n}_t2")
         if r1 and r2:
-            lines.append(f"| {n} | {r1['arm_steps_per_s']:.0f} | {r2['arm_steps_per_s']:.0f} | {r2['speedup']:.2f}x | "
-                         f"{r2['scaling_efficiency']:.0%} | {r2['cpu_time_efficiency']:.0%} | {r2['sim_s_per_wall_s_per_core']:.1f} |")
+            # A run that shared its cores is no scaling figure: the speed-up is withheld, not printed low.
+            speedup, eff = (("contended", "-") if r2.get("contended")
+                            else (f"{r2['speedup']:.2f}x", f"{r2['scaling_efficiency']:.0%}"))
+            lines.append(f"| {n} | {r1['arm_steps_per_s']:.0f} | {r2['arm_steps_per_s']:.0f} | {speedup} | "
+                         f"{eff} | {r2['cpu_time_efficiency']:.0%} | {r2['sim_s_per_wall_s_per_core']:.1f} | "
+                         f"{_cores(r1)} / {_cores(r2)} |")
     lines += ["", "Scaling efficiency = (2-thread rate / 1-thread rate) / 2, by the wall clock. CPU-time efficiency = "
                   "arm-steps per CPU-second of this process at 2 threads / at 1 thread: it does not suffer when another "
-                  "process takes a core, but still counts threads spinning at barriers."]
+                  "process takes a core, but still counts threads spinning at barriers. Other processes: the cores the "
+                  "rest of the machine kept busy during the run (/proc/stat less this process, bench/_contention.py); "
+                  f"above {CONTENDED_CORES} in either run the speed-up is marked contended and is no scaling figure."]
     v = res.get("vector_env")
     if v:
         lines += ["", f"### Vector env ({v['task']}, env_dt {v['env_dt'] * 1e3:g} ms = {v['frame_skip']} arm steps): "
@@ -187,6 +212,9 @@ def markdown(res: dict) -> str:
                              f"{v2['env_steps_per_s']:.0f} | {v2['vs_sync']:.2f}x |")
     m = res.get("mujoco", {})
     lines += ["", "### Per core against MuJoCo myoArm (batch rollout)", ""]
+    if m.get("runs", {}).get("t2", {}).get("contended"):
+        lines += ["MuJoCo's 2-thread run shared its cores with other processes "
+                  f"({_cores(m['runs']['t1'])} / {_cores(m['runs']['t2'])} cores): its per-core figure is not a scaling figure.", ""]
     if "skipped" in m:
         lines.append(f"MuJoCo skipped: {m['skipped']}")
     else:
