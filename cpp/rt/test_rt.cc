@@ -1318,8 +1318,25 @@ TEST_CASE("state packet bytes: identical to the version-3 capture") {
   std::string golden;
   for (int ch; (ch = std::fgetc(f)) != EOF;) if (ch != '\n') golden += static_cast<char>(ch);
   std::fclose(f);
-  CHECK(hex.size() == golden.size());
-  CHECK(hex == golden);
+  // The header's bytes must match exactly; the body is little-endian doubles computed by the engine,
+  // and -march=native (ARMRT_NATIVE) lets the compiler contract and vectorise differently on another
+  // CPU (the AVX-512 CI machine differed from the capture in the last 1-4 ulps of 4 of 254 values):
+  // each double within 1e-9 relative. A shifted or missing field moves values by far more than that.
+  REQUIRE(hex.size() == golden.size());
+  CHECK(hex.substr(0, 2 * kHeaderSize) == golden.substr(0, 2 * kHeaderSize));
+  int mismatched = 0;
+  for (std::size_t k = 2 * kHeaderSize; k + 16 <= golden.size(); k += 16) {
+    std::uint8_t mine[8], theirs[8];
+    for (int j = 0; j < 8; ++j) {
+      mine[j] = static_cast<std::uint8_t>(std::stoul(hex.substr(k + 2 * j, 2), nullptr, 16));
+      theirs[j] = static_cast<std::uint8_t>(std::stoul(golden.substr(k + 2 * j, 2), nullptr, 16));
+    }
+    const double x = get_f64(mine), g = get_f64(theirs);
+    const bool same = (std::isnan(x) && std::isnan(g)) || std::abs(x - g) <= 1e-9 * std::max(1.0, std::abs(g));
+    if (!same && ++mismatched <= 5)
+      MESSAGE("double " << (k - 2 * kHeaderSize) / 16 << ": " << x << " against the capture's " << g);
+  }
+  CHECK(mismatched == 0);
 }
 
 // One rule for overlapping names (armrt/names.h): the most specific name wins whatever the order
