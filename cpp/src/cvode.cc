@@ -79,9 +79,11 @@ bool CvodeIntegrator::advance(double dt) {
   inputs_changed |= d_.stimulation_map.num_channels > 0;
   for (int k = 0; k < 3; ++k)
     inputs_changed |= d_.hand_force[k] != last_load_[k] || d_.hand_moment[k] != last_load_[3 + k];
+  for (int j = 0; j < m_.num_dofs; ++j) inputs_changed |= d_.applied_moment[j] != last_load_[6 + j];
   if (inputs_changed) {
     for (int i = 0; i < m_.num_elements; ++i) last_excitation_[i] = d_.excitation[i];
     for (int k = 0; k < 3; ++k) last_load_[k] = d_.hand_force[k], last_load_[3 + k] = d_.hand_moment[k];
+    for (int j = 0; j < m_.num_dofs; ++j) last_load_[6 + j] = d_.applied_moment[j];
     have_inputs_ = true;
     reinit();
   }

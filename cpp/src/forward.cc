@@ -58,7 +58,7 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
 
   // Skeleton.
   double tau[kMaxDofs];
-  for (int j = 0; j < nq; ++j) tau[j] = tau_muscle[j] + tau_passive[j] + tau_ext[j] + tau_girdle[j];
+  for (int j = 0; j < nq; ++j) tau[j] = tau_muscle[j] + tau_passive[j] + tau_ext[j] + tau_girdle[j] + d.applied_moment[j];
   double M[kMaxDofs * kMaxDofs];
   double qdd[kMaxDofs];
   skeleton_dynamics(m, d.settings.gravity.data(), q, qd, tau, M, qdd);
@@ -71,8 +71,7 @@ void forward_from_paths(const Model& m, Data& d, const double* x, const double* 
   if (!record) return;
   std::copy(q, q + nq, d.output_q.begin());
   std::copy(x, x + state_size(m), d.output_state.begin());
-  d.output_loads = {d.hand_force[0], d.hand_force[1], d.hand_force[2], d.hand_moment[0], d.hand_moment[1],
-                    d.hand_moment[2], d.settings.gravity[0], d.settings.gravity[1], d.settings.gravity[2]};
+  output_loads_of(d, d.output_loads.data());
   d.output_settings_version = d.settings_version;
   d.outputs_computed = true;
   std::copy(L, L + n, d.muscle_length.begin());

@@ -27,7 +27,7 @@ constexpr double kJointAngleStep = 1e-6;     // rad
 constexpr double kJointVelocityStep = 1e-6;  // rad/s
 
 // The generalised forces (N m) at q that do not move with qd, the tendon forces F (N) held, paths R at q given (by
-// DOF): R^T F, the hand load and the girdle, as forward() sums them.
+// DOF): R^T F, the hand load, the girdle and the applied moments, as forward() sums them.
 void held_joint_torque(const Model& m, const Data& d, const double* q, const double* R, const double* force,
                        double* tau) {
   const int nq = m.num_dofs, n = m.num_elements;
@@ -37,7 +37,7 @@ void held_joint_torque(const Model& m, const Data& d, const double* q, const dou
   external_load(m, q, d.hand_force.data(), d.hand_moment.data(), f_ext, t_ext, tau_ext);
   if (m.def->girdle) girdle_forces(m, q, tau_girdle, nullptr, nullptr);
   else std::fill(tau_girdle, tau_girdle + nq, 0.0);
-  for (int j = 0; j < nq; ++j) tau[j] = tau_muscle[j] + tau_ext[j] + tau_girdle[j];
+  for (int j = 0; j < nq; ++j) tau[j] = tau_muscle[j] + tau_ext[j] + tau_girdle[j] + d.applied_moment[j];
 }
 
 // qdd (rad/s^2) at (q, qd) from held_joint_torque's tau_held at q plus the passive joints at (q, qd): the skeleton

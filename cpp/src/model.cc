@@ -106,9 +106,8 @@ void data_apply_settings(const Model& m, Data& d) {
 
 bool outputs_current(const Model& m, const Data& d) {
   if (!d.outputs_computed || d.output_settings_version != d.settings_version) return false;
-  const std::array<double, 9> loads = {d.hand_force[0], d.hand_force[1], d.hand_force[2], d.hand_moment[0],
-                                       d.hand_moment[1], d.hand_moment[2], d.settings.gravity[0],
-                                       d.settings.gravity[1], d.settings.gravity[2]};
+  std::array<double, 9 + kMaxDofs> loads;
+  output_loads_of(d, loads.data());
   // Bitwise: a state that differs in any bit (or a NaN) is another state.
   return std::memcmp(loads.data(), d.output_loads.data(), sizeof loads) == 0 &&
          std::memcmp(d.x.data(), d.output_state.data(), sizeof(double) * state_size(m)) == 0;
@@ -190,6 +189,7 @@ void data_reset(const Model& m, Data& d, const double* q) {
   fresh.excitation = d.excitation;
   fresh.hand_force = d.hand_force;
   fresh.hand_moment = d.hand_moment;
+  fresh.applied_moment = d.applied_moment;
   fresh.stimulation_map = d.stimulation_map;
   fresh.stimulation = d.stimulation;
   d = fresh;

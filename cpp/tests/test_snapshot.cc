@@ -46,9 +46,9 @@ TEST_CASE("snapshot layout: sizes and offsets follow the table's rows") {
   const int nq = 2, n = 5;
   CHECK(snapshot_size(def, kSnapshotTime) == 1);
   CHECK(snapshot_size(def, kSnapshotPhysics) == 2 * nq + 2 * n);
-  CHECK(snapshot_size(def, kSnapshotInputs) == n + 3 + 3);
+  CHECK(snapshot_size(def, kSnapshotInputs) == n + 3 + 3 + nq);
   CHECK(snapshot_size(def, kSnapshotIntegrator) == 4 + 2 * nq);
-  CHECK(snapshot_size(def, kSnapshotFull) == 1 + (2 * nq + 2 * n) + (n + 6) + (4 + 2 * nq));
+  CHECK(snapshot_size(def, kSnapshotFull) == 1 + (2 * nq + 2 * n) + (n + 6 + nq) + (4 + 2 * nq));
   CHECK(snapshot_offset(def, kSnapshotFull, SnapshotPart::q) == 1);
   CHECK(snapshot_offset(def, kSnapshotFull, SnapshotPart::excitation) == 1 + 2 * nq + 2 * n);
   CHECK(snapshot_offset(def, kSnapshotPhysics, SnapshotPart::time) == -1);

@@ -558,9 +558,14 @@ TEST_CASE("stage forward(): with record the outputs equal the stages called one 
   std::copy(u, u + 5, d.excitation.begin());
   d.hand_force = {3.0, -8.0, 1.5};
   d.hand_moment = {0.2, -0.1, 0.4};
+  d.applied_moment[0] = 0.7, d.applied_moment[1] = -0.3;  // N m at ELx, PSy (qfrc_applied)
   d.settings.gravity = {1.0, -9.0, 0.5};  // the arm's own gravity, not the model file's
   StateVec xdot{};
   forward(m, d, d.x.data(), xdot.data(), true);
+  CHECK(outputs_current(m, d));
+  d.applied_moment[1] = -0.31;  // the outputs depend on the applied moments too
+  CHECK_FALSE(outputs_current(m, d));
+  d.applied_moment[1] = -0.3;
   CHECK(outputs_current(m, d));
 
   // The stages one by one on the same state.
@@ -576,7 +581,7 @@ TEST_CASE("stage forward(): with record the outputs equal the stages called one 
   double f_ext[3], t_ext[3], tau_e[kMaxDofs];
   external_load(m, q, d.hand_force.data(), d.hand_moment.data(), f_ext, t_ext, tau_e);
   double tau[kMaxDofs], M[4], qdd[2];
-  for (int j = 0; j < 2; ++j) tau[j] = tau_m[j] + tau_p[j] + tau_e[j];
+  for (int j = 0; j < 2; ++j) tau[j] = tau_m[j] + tau_p[j] + tau_e[j] + d.applied_moment[j];
   skeleton_dynamics(m, d.settings.gravity.data(), q, qd, tau, M, qdd);
   double p_hand[3], gh[3], th[3];
   hand_position_in_thorax(m, q, p_hand);

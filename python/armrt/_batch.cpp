@@ -92,6 +92,10 @@ PYBIND11_MODULE(_batch, mod) {
       })
       .def_property_readonly("hand_force", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.hand_force.data(), 3, self); })
       .def_property_readonly("hand_moment", [](py::object self) { auto& b = self.cast<Batch&>(); return arm_view(b, b.arm(0).data.hand_moment.data(), 3, self); })
+      .def_property_readonly("applied_moment", [](py::object self) {
+        auto& b = self.cast<Batch&>();
+        return arm_view(b, b.arm(0).data.applied_moment.data(), b.arm(0).model.num_dofs, self);
+      })
       // A zero-copy (n,) or (n, width) view of one ARMRT_OUTPUTS row (layouts.h) of every arm; AttributeError for
       // a girdle row of a model without girdle forces, KeyError for a name that is not a row.
       .def("output_view", [](py::object self, const std::string& name) -> py::array {

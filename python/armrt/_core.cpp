@@ -367,6 +367,10 @@ PYBIND11_MODULE(_core, mod) {
       })
       .def_property_readonly("hand_force", [](py::object self) { return view(self.cast<Arm&>().data.hand_force.data(), {3}, self); })
       .def_property_readonly("hand_moment", [](py::object self) { return view(self.cast<Arm&>().data.hand_moment.data(), {3}, self); })
+      .def_property_readonly("applied_moment", [](py::object self) {
+        auto& s = self.cast<Arm&>();
+        return view(s.data.applied_moment.data(), {s.model.num_dofs}, self);
+      })
       .def("reset", [](Arm& s, py::object q, py::object qd, py::object act) {
         Array qa, qda, aa;
         const double *qp = nullptr, *qdp = nullptr, *ap = nullptr;

@@ -252,6 +252,18 @@ class Arm:
         with self._exclusive():
             self.data.set_hand_load(force, moment)
 
+    def set_applied_moment(self, moment=0.0) -> None:
+        """Generalised forces (ndof,) N m applied at the joints, held over the next steps (MuJoCo's
+        qfrc_applied): joint friction, a device, a push. An array per DOF, {dof name: value} or 0; KeyError
+        for an unknown DOF, ValueError for another shape or NaN (Data.set_applied_moment)."""
+        with self._exclusive():
+            self.data.set_applied_moment(moment)
+
+    @property
+    def applied_moment(self) -> np.ndarray:
+        """(ndof,) N m applied at the joints (set_applied_moment), a copy."""
+        return self.data.applied_moment
+
     @property
     def strength(self) -> np.ndarray:
         """Per-element strength scale (multiplies DAS3 fmax, 1 = intact)."""

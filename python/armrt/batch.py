@@ -19,7 +19,7 @@ os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
 from . import _batch, _core  # noqa: E402
 from .arm import Arm, SimulationError  # noqa: E402
-from .checks import count, each_row, joint_range_rows, real_array  # noqa: E402
+from .checks import applied_moments, count, each_row, joint_range_rows, real_array  # noqa: E402
 from .snapshot import StatePart, part_slices, signature  # noqa: E402
 
 # The engine counts its arms in a C int.
@@ -153,6 +153,7 @@ class ArmBatch:
         self._views = views
         self._excitation = self._raw.excitation
         self._hand_force, self._hand_moment = self._raw.hand_force, self._raw.hand_moment
+        self._applied_moment = self._raw.applied_moment
         if stimulation is not None:
             self._raw.set_stimulation_map_json(self._arm._sim.stimulation_map_json())
         self.channel_names = self._arm.channel_names
@@ -317,6 +318,31 @@ class ArmBatch:
             if not np.all(np.isfinite(a)):
                 raise ValueError(f"hand {name} contains NaN or infinite values")
             target[...] = a
+
+    def set_applied_moment(self, moment=0.0) -> None:
+        """Generalised forces N m applied at the joints (as Arm.set_applied_moment): (n, ndof) per arm, (ndof,)
+        or {dof name: value} for every arm, or 0. KeyError for an unknown DOF, ValueError for another shape or
+        NaN/infinite values."""
+        names = self._arm.model.dof_names
+        nd = len(names)
+        if isinstance(moment, Mapping) or (np.isscalar(moment) and moment == 0):
+            a = applied_moments(np.zeros(nd) if not isinstance(moment, Mapping) else moment, names)
+        else:
+            a = real_array(moment, "applied moment")
+            if a.shape == (self.n, nd):
+                if not np.all(np.isfinite(a)):
+                    raise ValueError("applied moment contains NaN or infinite values")
+            else:
+                if a.shape != (nd,):
+                    raise ValueError(f"applied moment must have shape ({self.n}, {nd}) or ({nd},) "
+                                     f"({', '.join(names)}), got {a.shape}")
+                a = applied_moments(a, names)
+        self._applied_moment[...] = a
+
+    @property
+    def applied_moment(self) -> np.ndarray:
+        """(n, ndof) N m applied at each arm's joints, a copy."""
+        return np.array(self._applied_moment)
 
     @property
     def strength(self) -> np.ndarray:

@@ -189,6 +189,20 @@ def dof_vector(v, what: str, dof_names) -> np.ndarray:
     return a
 
 
+def applied_moments(values, dof_names, what: str = "applied moment") -> np.ndarray:
+    """(ndof,) N m from an array of one value per DOF or {dof name: value} (DOFs not named get 0): KeyError
+    naming an unknown DOF and the model's DOFs, ValueError for another shape or NaN/infinite values."""
+    if isinstance(values, Mapping):
+        unknown = [k for k in values if k not in dof_names]
+        if unknown:
+            raise KeyError(f"{what}: unknown DOF(s) {unknown}; the model's DOFs are {', '.join(dof_names)}")
+        out = np.zeros(len(dof_names))
+        for k, v in values.items():
+            out[list(dof_names).index(k)] = real_scalar(v, f"{what}[{k!r}]")
+        values = out
+    return dof_vector(values, what, dof_names)
+
+
 def hand_load(force, moment) -> tuple[np.ndarray, np.ndarray]:
     """(force (3,) N, moment (3,) N m) checked: ValueError for another shape or NaN/infinite values."""
     values = []

@@ -19,7 +19,7 @@ from dataclasses import InitVar, dataclass, field, fields
 import numpy as np
 
 from . import _core
-from .checks import hand_load, per_element, real_array
+from .checks import applied_moments, hand_load, per_element, real_array
 from .errors import ConcurrentUseError
 from .integrators import DEFAULT_INTEGRATOR
 from .model import Model
@@ -35,7 +35,8 @@ class State:
     Fields (ndof DOFs, n elements): model (name), source_hash (SHA-256 of the model file), time (s),
     q (ndof,) rad, qdot (ndof,) rad/s, lce (n,) m (fibre lengths), activation (n,), excitation (n,) in
     [0, 1], hand_force (3,) N and hand_moment (3,) N m (thorax frame), path_anchors (k, ndof) rad or None,
-    path_anchor_steps (2 ints), previous_step (s).
+    path_anchor_steps (2 ints), previous_step (s), applied_moment (ndof,) N m (generalised forces applied at
+    the joints; empty in a State saved before 2026-12-04, restored as zero).
 
     path_anchors, path_anchor_steps and previous_step are ROS2's memory (docs/engine.md): it evaluates the
     muscle-path polynomials at one step in three of a run of equal steps and extrapolates them from the last
@@ -64,11 +65,13 @@ class State:
     # empty without a map.
     stimulation: np.ndarray = field(default_factory=lambda: np.zeros(0))
     stimulation_state: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    # (ndof,) N m applied at the joints (Data.set_applied_moment); empty: a State from before 2026-12-04 (zero).
+    applied_moment: np.ndarray = field(default_factory=lambda: np.zeros(0))
     # armrt before 2026-11-30 saved ROS2's memory as previous_q: accepted when read back, and dropped (below).
     previous_q: InitVar[np.ndarray | None] = None
 
     _ARRAYS = ("q", "qdot", "lce", "activation", "excitation", "hand_force", "hand_moment", "stimulation",
-               "stimulation_state")
+               "stimulation_state", "applied_moment")
 
     def _array_fields(self) -> tuple:
         """The array fields this State holds: _ARRAYS, and path_anchors unless it is None."""
@@ -171,6 +174,8 @@ def _snapshot_from_state(model: Model, sim, state: State) -> np.ndarray:
             x[sl] = history
         else:
             a = getattr(state, name)
+            if name == "applied_moment" and a.size == 0:
+                a = np.zeros(sl.stop - sl.start)  # a State saved before applied moments: none were applied
             if a.shape != (sl.stop - sl.start,):
                 raise ValueError(f"State.{name} must have shape ({sl.stop - sl.start},), got {a.shape}")
             x[sl] = a
@@ -190,8 +195,9 @@ class Data:
 
     State (read-only views that follow the simulation): time (s), q, qdot ((ndof,) rad, rad/s), lce ((n,) m),
     activation ((n,)), state (the whole engine state vector [q, qdot, lce, activation]).
-    Inputs: excitation ((n,), a copy), hand_force, hand_moment ((3,) N, N m, thorax frame; copies); set with
-    set_excitation(u) and set_hand_load(force, moment).
+    Inputs: excitation ((n,), a copy), hand_force, hand_moment ((3,) N, N m, thorax frame; copies),
+    applied_moment ((ndof,) N m at the joints, a copy); set with set_excitation(u), set_hand_load(force,
+    moment) and set_applied_moment(moment).
     Per-arm settings: strength, max_activation ((n,), set with arrays, scalars or {name: value}).
     Outputs: outputs() evaluates them at the current state.
     Snapshots: get_state() -> State, set_state(State); get_state_vector(parts) -> a flat array of the parts
@@ -356,6 +362,19 @@ class Data:
         with self._exclusive():
             self._sim.hand_force[:], self._sim.hand_moment[:] = f, m
 
+    def set_applied_moment(self, moment=0.0) -> None:
+        """Generalised forces (ndof,) N m applied at the joints and held over the next steps, as MuJoCo's
+        qfrc_applied: joint friction, an exoskeleton's or a perturbation's moments, added to the muscles',
+        passive joints', gravity's and the hand load's in the equations of motion (not to the muscles' share
+        that inverse_dynamics returns). moment: an array of one value per DOF (positive along the DOF),
+        {dof name: value} (other DOFs 0), or 0 to remove them. KeyError for an unknown DOF name, ValueError
+        for another shape or NaN/infinite values."""
+        if np.isscalar(moment) and not isinstance(moment, (str, bytes)) and moment == 0:
+            moment = np.zeros(self.model.n_dofs)
+        a = applied_moments(moment, self.model.dof_names)
+        with self._exclusive():
+            self._sim.applied_moment[:] = a
+
     # ------------------------------------------------------------------ per-arm settings
     @property
     def strength(self) -> np.ndarray:
@@ -395,6 +414,12 @@ class Data:
     def hand_moment(self) -> np.ndarray:
         with self._exclusive():
             return self._sim.hand_moment.copy()
+
+    @property
+    def applied_moment(self) -> np.ndarray:
+        """(ndof,) N m applied at the joints (set_applied_moment), a copy."""
+        with self._exclusive():
+            return self._sim.applied_moment.copy()
 
     # ------------------------------------------------------------------ outputs
     def outputs(self) -> dict:

@@ -5,8 +5,8 @@ as armrt.StatePart flags, as MuJoCo's mjtState names the parts mj_getState copie
     arm.set_state_vector(x, armrt.StatePart.PHYSICS)    # checked in the engine (snapshot_error)
 
 Parts, in vector order (one bit each): TIME (s), Q (rad), QDOT (rad/s), LCE (m), ACTIVATION, EXCITATION (the
-held excitation, capped at max_activation), HAND_FORCE (N), HAND_MOMENT (N m), ROS2_PATH_HISTORY (ROS2's memory,
-4 + 2 ndof values). Groups: PHYSICS (the state vector), INPUTS, INTEGRATOR, FULL (everything: what armrt.State
+held excitation, capped at max_activation), HAND_FORCE (N), HAND_MOMENT (N m), APPLIED_MOMENT (N m per DOF),
+STIMULATION, STIMULATION_STATE, ROS2_PATH_HISTORY (ROS2's memory, 4 + 2 ndof values). Groups: PHYSICS (the state vector), INPUTS, INTEGRATOR, FULL (everything: what armrt.State
 holds).
 """
 from __future__ import annotations

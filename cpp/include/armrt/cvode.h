@@ -31,7 +31,7 @@ class CvodeIntegrator {
   void* user_ = nullptr;
   bool have_inputs_ = false;
   double last_excitation_[kMaxElements] = {};
-  double last_load_[6] = {};
+  double last_load_[6 + kMaxDofs] = {};  // hand force, hand moment, applied moments
   double xdot_scratch_[kMaxState] = {};  // the derivative of the outputs' forward(), discarded
 };
 

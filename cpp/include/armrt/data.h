@@ -84,6 +84,9 @@ struct Data {
   std::array<double, kMaxElements> excitation{};  // neural excitation u in [0, 1]
   std::array<double, 3> hand_force{};   // N, applied at the hand point, thorax frame
   std::array<double, 3> hand_moment{};  // N m, applied to the hand, thorax frame
+  // N m per DOF, added to the generalised forces as they are (MuJoCo's qfrc_applied): joint friction, an
+  // exoskeleton's or a perturbation's moments; held over the steps like the hand load.
+  std::array<double, kMaxDofs> applied_moment{};
 
   // Stimulation (stimulation.h): the map (a setting: which channels reach which elements), each channel's
   // command held over the steps [pulse width (s), amplitude (A), frequency (Hz)] x num_channels, and the chain's
@@ -110,7 +113,8 @@ struct Data {
   // the settings' version. outputs_current() compares them with now, so that outputs are read, not recomputed,
   // while they still describe the arm (and recomputed once when anything they depend on changed).
   StateVec output_state{};
-  std::array<double, 9> output_loads{};  // hand force (N), hand moment (N m), gravity (m/s^2)
+  // hand force (N), hand moment (N m), gravity (m/s^2), applied moments (N m, kMaxDofs)
+  std::array<double, 9 + kMaxDofs> output_loads{};
   std::uint64_t output_settings_version = 0;
   bool outputs_computed = false;
 
@@ -145,9 +149,15 @@ void data_init(const Model& m, Data& d);
 // Derives d.muscles and the rest fibre rate from d.settings (after a change of strength or maximum activation;
 // gravity and the speed bound need nothing), and caps the held excitation at the new maximum activation. Throws std::invalid_argument for a setting out of range.
 void data_apply_settings(const Model& m, Data& d);
-// Whether d's outputs describe its current state, hand load, gravity and settings (computed by forward() with
+// Whether d's outputs describe its current state, hand load, applied moments, gravity and settings (computed by forward() with
 // record at exactly these).
 bool outputs_current(const Model& m, const Data& d);
+// What the outputs depend on besides the state and settings, in output_loads' order (9 + kMaxDofs values; the
+// applied moments beyond the model's DOFs are 0).
+inline void output_loads_of(const Data& d, double* out) {
+  for (int k = 0; k < 3; ++k) out[k] = d.hand_force[k], out[3 + k] = d.hand_moment[k], out[6 + k] = d.settings.gravity[k];
+  for (int j = 0; j < kMaxDofs; ++j) out[9 + j] = d.applied_moment[j];
+}
 // One element's constants under d.settings (what d.muscles holds, as a struct): for scalar uses.
 ElementConstants data_element(const Model& m, const Data& d, int i);
 // Back to time 0 at q (num_dofs or nullptr: rest posture), at rest, zero activation, CE lengths in static

@@ -125,6 +125,8 @@ inline constexpr int kNumChannels = static_cast<int>(Channel::kCount);
   X(excitation, kElements, "1", "neural excitation held over the steps (capped at max_activation)") \
   X(hand_force, kThree, "N", "force at the hand point, thorax frame")                          \
   X(hand_moment, kThree, "N m", "moment on the hand, thorax frame")                             \
+  X(applied_moment, kDofs, "N m",                                                              \
+    "generalised forces applied at the joints (as MuJoCo's qfrc_applied): friction, a device, a push") \
   X(stimulation, kChannelInputs, "s, A, Hz",                                                   \
     "per channel: pulse width (s), amplitude (A), frequency (Hz) held over the steps")
 // The stimulation chain's memory per channel (stimulation.h StimState): calcium sum, CN, force level, fatigue

@@ -1,0 +1,116 @@
+"""Applied joint moments (Arm.set_applied_moment; MuJoCo's qfrc_applied): what the equations of motion see, checked
+against the hand-load stage (a hand force's J^T F applied as joint moments moves the joints identically), kept by
+snapshots, in the linearisation's step, in ArmBatch as in Arm, and refused when malformed."""
+import numpy as np
+import pytest
+
+import armrt
+from armrt.data import State
+
+
+def _moving_das2():
+    arm = armrt.Arm("das2")
+    arm.reset()
+    arm.set_excitation({"bicl": 0.4, "tric_long": 0.2, "delt_clav": 0.3})
+    for _ in range(30):
+        arm.step()
+    return arm
+
+
+def test_a_hand_force_and_its_generalised_forces_as_applied_moments_move_the_joints_alike():
+    loaded, applied = _moving_das2(), _moving_das2()
+    loaded.set_hand_load(force=(4.0, -12.0, 3.0), moment=(0.3, 0.0, -0.2))
+    tau_ext = loaded.outputs()["external_torque"].copy()
+    assert np.abs(tau_ext).max() > 1.0  # a load the joints feel
+    applied.set_applied_moment(tau_ext)
+    out = applied.outputs()
+    assert np.all(out["external_torque"] == 0.0)
+    np.testing.assert_allclose(out["qddot"], loaded.outputs()["qddot"], rtol=1e-12, atol=1e-9)
+    # Over steps, re-applied at each step's start: the hand load's J(q)^T F follows q inside the step too (ROS2's
+    # second stage and its Jacobian see it), the applied moment is held, so they part by the step's O(h^2)
+    # change of J^T F: 1.5e-5 rad in 50 ms of this motion (measured), not a bit-level identity.
+    for _ in range(50):
+        applied.set_applied_moment(loaded.outputs()["external_torque"])
+        loaded.step()
+        applied.step()
+    np.testing.assert_allclose(applied.q, loaded.q, rtol=0, atol=1e-4)
+    free = _moving_das2()
+    for _ in range(50):
+        free.step()
+    assert np.abs(free.q - loaded.q).max() > 1e-2  # the load itself moved the arm 100 times more
+
+
+def test_applied_moments_give_qddot_plus_m_inverse_a():
+    arm = _moving_das2()
+    q = arm.q.copy()
+    before = arm.outputs()["qddot"].copy()
+    a = np.array([0.5, -0.3, 0.2, 1.0, -0.1])
+    arm.set_applied_moment(a)
+    after = arm.outputs()["qddot"]
+    np.testing.assert_allclose(after - before, np.linalg.solve(arm.mass_matrix(q), a), rtol=1e-9, atol=1e-9)
+
+
+def test_names_zero_and_errors():
+    arm = armrt.Arm("das2")
+    arm.set_applied_moment({"ELx": 1.5})
+    assert arm.applied_moment.tolist() == [0, 0, 0, 1.5, 0]
+    arm.set_applied_moment(0)
+    assert not arm.applied_moment.any()
+    with pytest.raises(KeyError, match="unknown DOF.*'EL'.*GHy, GHz, GHyy, ELx, PSy"):
+        arm.set_applied_moment({"EL": 1.0})
+    with pytest.raises(ValueError, match=r"shape \(5,\)"):
+        arm.set_applied_moment([1.0, 2.0])
+    with pytest.raises(ValueError, match="NaN or infinite.*ELx"):
+        arm.set_applied_moment({"ELx": np.inf})
+    assert not arm.applied_moment.any()  # refused inputs change nothing
+
+
+def test_a_state_keeps_the_applied_moments_and_an_older_state_restores_none():
+    arm = _moving_das2()
+    arm.set_applied_moment({"ELx": -2.0, "GHy": 0.7})
+    state = arm.get_state()
+    assert state.applied_moment.tolist() == [0.7, 0, 0, -2.0, 0]
+    other = armrt.Arm("das2")
+    other.set_state(state)
+    assert other.applied_moment.tolist() == [0.7, 0, 0, -2.0, 0]
+    for _ in range(20):
+        arm.step()
+        other.step()
+    assert np.array_equal(arm.q, other.q)
+    # A State saved before applied moments existed has none: restored as zero.
+    d = state.as_dict()
+    d["applied_moment"] = np.zeros(0)
+    other.set_state(State(**d))
+    assert not other.applied_moment.any()
+    flat = arm.get_state_vector(armrt.StatePart.APPLIED_MOMENT)
+    assert flat.tolist() == [0.7, 0, 0, -2.0, 0]
+
+
+def test_the_linearisation_steps_with_the_applied_moments():
+    arm = _moving_das2()
+    arm.set_applied_moment({"ELx": 3.0, "GHz": -1.0})
+    lin = arm.linearize()
+    x0 = arm.get_state_vector(armrt.StatePart.PHYSICS)
+    arm.set_state_vector(x0, armrt.StatePart.PHYSICS)  # a state set from outside, as linearize steps it
+    arm.step()
+    np.testing.assert_allclose(lin.x0_next, arm.get_state_vector(armrt.StatePart.PHYSICS), rtol=0, atol=1e-12)
+
+
+def test_arm_batch_applies_per_arm_moments_as_arm_does():
+    moments = np.array([[0.0, 0.0, 0.0, 1.0, 0.0], [0.5, -0.5, 0.0, -1.0, 0.2]])
+    batch = armrt.ArmBatch(2, "das2", threads=1)
+    batch.reset()
+    batch.set_applied_moment(moments)
+    arms = [armrt.Arm("das2") for _ in range(2)]
+    for arm, a in zip(arms, moments):
+        arm.reset()
+        arm.set_applied_moment(a)
+    for _ in range(100):
+        batch.step()
+        for arm in arms:
+            arm.step()
+    for k, arm in enumerate(arms):
+        assert np.array_equal(batch.q[k], arm.q)
+    assert np.array_equal(batch.applied_moment, moments)
+    with pytest.raises(ValueError, match=r"shape \(2, 5\) or \(5,\)"):
+        batch.set_applied_moment(np.zeros((3, 5)))
