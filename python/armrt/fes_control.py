@@ -545,13 +545,17 @@ class ControlRun:
         return out
 
 
-def run_offline(plant, controller, duration: float, reference=None, hand_load=None, hold_s: float = 0.0) -> ControlRun:
+def run_offline(plant, controller, duration: float, reference=None, hand_load=None, hold_s: float = 0.0,
+                joint_moment=None) -> ControlRun:
     """Runs `controller` on the Arm `plant` (with a stimulation map) for `duration` s from the plant's present state,
     one update every controller.params.control_interval_s. hold_s: for the first hold_s s the joints are held at
     their start (q and qdot restored after each interval, every other state kept): the arm supported while the
     stimulation builds up from rest, as a trial starts from a supported arm. reference: a callable t -> q_ref (ndof,)
     recorded beside q (default: the controller's own reference, or its target). hand_load: None or a callable
-    t -> (force (3,), moment (3,)) N, N m applied before each interval (a disturbance). ValueError for a plant without a map."""
+    t -> (force (3,), moment (3,)) N, N m applied before each interval (a disturbance). joint_moment: None or a
+    callable (t, q, qdot) -> (ndof,) N m applied at the joints (Arm.set_applied_moment) before each of the plant's
+    steps, so a state-dependent moment such as joint friction follows the arm at its step rate, not the controller's.
+    ValueError for a plant without a map."""
     if not plant.channel_names or list(plant.channel_names) != list(controller.coding.channel_names):
         raise ValueError("the plant's stimulation channels must be the controller's coding's channels")
     h = controller.params.control_interval_s
@@ -589,7 +593,12 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
             f, m = hand_load(plant.time)
             plant.set_hand_load(f, m)
         plant.set_stimulation(cmd)
-        plant.step(steps)
+        if joint_moment is None:
+            plant.step(steps)
+        else:
+            for _ in range(steps):
+                plant.set_applied_moment(joint_moment(plant.time, plant.q, plant.qdot))
+                plant.step()
         if plant.time - t_start <= hold_s + 1e-9:
             x = plant.get_state_vector()
             x[sl["q"]], x[sl["qdot"]] = held[sl["q"]], held[sl["qdot"]]

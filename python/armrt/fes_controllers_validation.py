@@ -224,7 +224,10 @@ def _plot_blana(rows, path):
 #: formulas and the cost's weight were not retrieved: ours are the mean over the trial of the mean |angle - target|
 #: of the two moving joints (deg) and the mean muscle force (N, each muscle's elements summed, the 22 averaged).
 JAGODNIK_PUBLISHED = {"generality": (5.50, 1.17, 25.10, 0), "weakened": (7.51, 4.59, 17.31, 122),
-                      "doubled mass": (6.18, 1.55, 34.50, 0)}
+                      "added friction": (6.08, 4.06, 26.83, 14), "doubled mass": (6.18, 1.55, 34.50, 0)}
+#: Table 4's footnote: "Added friction was 1.0 N m" (at their two joints, shoulder and elbow: our GHy and ELx). Its
+#: law was not retrieved; ours is dry (Coulomb) friction of that size, stick and slip, as below.
+JAGODNIK_FRICTION_NM = 1.0
 PD_DOFS = ("GHy", "ELx")
 #: The random postures' box (rad): shoulder GHy from rest (0.43) to 0.9, elbow from 0.5 (29 deg) to 1.4 (80 deg),
 #: inside what the weakened flexors hold (a static hold at rest + 70 deg, 1.88 rad, is feasible: blana() prints it).
@@ -275,9 +278,39 @@ def elbow_weight_load(arm, q) -> np.ndarray:
     return np.array([0.0, -g / (g1 - g), 0.0])
 
 
-def pd_trial(kp: float, kd: float, movement, setup, hand_force=None, strength_scale=None) -> dict:
+def joint_friction(arm, friction_Nm: float = JAGODNIK_FRICTION_NM, dofs=PD_DOFS, iterations: int = 30):
+    """A callable (t, q, qdot) -> (ndof,) N m for fes_control.run_offline's joint_moment: dry friction of at most
+    friction_Nm at each of `dofs` (Jagodnik & van den Bogert 2010's added-friction test, Table 4: 1.0 N m), the
+    time-stepping form of Coulomb friction (Stewart & Trinkle 1996; MuJoCo's joint frictionloss, a velocity-level
+    constraint with box bounds): each step the moments a (|a_j| <= friction_Nm) that bring the joints' velocity
+    after the step, qdot + h (qddot_free + M^-1 a), closest to zero in M's metric (the box-constrained QP
+    min 0.5 a^T W a + a^T b, W = (M^-1)_FF, b = (qdot + h qddot_free)_F / h, by projected Gauss-Seidel): a joint that
+    the other moments cannot move past friction_Nm sticks, one that they can slides against friction_Nm. qddot_free
+    and M are the arm's at the step's start (its outputs less the moments applied now), h its step. The arm it is
+    made for must be the one run_offline steps (its outputs and mass matrix are read)."""
+    cols = np.array([arm.dof_index(d) for d in dofs])
+    nd, h = arm.n_dofs, arm.dt  # the moment is held over one control step (run_offline steps one at a time)
+
+    def moment(t, q, qdot):
+        Minv = np.linalg.inv(arm.mass_matrix(q))
+        qdd_free = arm.outputs()["qddot"] - Minv @ arm.applied_moment
+        W = Minv[np.ix_(cols, cols)]
+        b = (np.asarray(qdot)[cols] + h * qdd_free[cols]) / h
+        a = np.zeros(cols.size)
+        for _ in range(iterations):
+            for i in range(cols.size):
+                r = b[i] + W[i] @ a - W[i, i] * a[i]
+                a[i] = np.clip(-r / W[i, i], -friction_Nm, friction_Nm)
+        out = np.zeros(nd)
+        out[cols] = a
+        return out
+    return moment
+
+
+def pd_trial(kp: float, kd: float, movement, setup, hand_force=None, strength_scale=None, friction_Nm=None) -> dict:
     """One reaching trial of (b): the PD holds the start for PD_HOLD_S (arm supported), then the target steps and
-    PD_TRIAL_S s follow. Returns error_deg, ss_error_deg (None if failed), effort_N, failed, run."""
+    PD_TRIAL_S s follow. friction_Nm: Coulomb friction at GHy and ELx (joint_friction), None for none. Returns
+    error_deg, ss_error_deg (None if failed), effort_N, failed, run."""
     arm, coding, _ = setup
     start, target = movement
     plant = copy.deepcopy(arm)
@@ -288,8 +321,9 @@ def pd_trial(kp: float, kd: float, movement, setup, hand_force=None, strength_sc
     load = None
     if hand_force is not None:
         load = lambda t: (tuple(hand_force), (0.0, 0.0, 0.0))  # noqa: E731
+    friction = None if friction_Nm is None else joint_friction(plant, friction_Nm)
     run = fc.run_offline(plant, ctl, PD_HOLD_S + PD_TRIAL_S, reference=lambda t: target if t >= PD_HOLD_S else start,
-                         hold_s=PD_HOLD_S, hand_load=load)
+                         hold_s=PD_HOLD_S, hand_load=load, joint_moment=friction)
     sel = run.time > PD_HOLD_S + 1e-9
     cols = [plant.dof_index(d) for d in PD_DOFS]
     err = np.degrees(np.abs(run.q[sel][:, cols] - target[cols]))   # (K, 2)
@@ -353,9 +387,10 @@ def saved_pd_gains() -> tuple[float, float]:
 
 
 def jagodnik(out: Path | None = None, n_test: int = 20, seed: int = 2, gains=None) -> dict:
-    """(b): the saved gains on n_test random test movements (not the training set) in four conditions: generality
-    (nominal), weakened (strength x U(WEAKEN_RANGE) per muscle), doubled mass (elbow_weight_load), doubled mass and
-    weakened. Prints the table docs/control.md gives beside Jagodnik 2010's Table 4."""
+    """(b): the saved gains on n_test random test movements (not the training set) in five conditions: generality
+    (nominal), weakened (strength x U(WEAKEN_RANGE) per muscle), added friction (JAGODNIK_FRICTION_NM at GHy and ELx,
+    joint_friction), doubled mass (elbow_weight_load), doubled mass and weakened. Prints the table docs/control.md
+    gives beside Jagodnik 2010's Table 4."""
     setup = _setup()
     arm = setup[0]
     kp, kd = gains if gains is not None else saved_pd_gains()
@@ -368,12 +403,13 @@ def jagodnik(out: Path | None = None, n_test: int = 20, seed: int = 2, gains=Non
     print(f"(b) Jagodnik 2010 PD, kp {kp:.4g} per rad, kd {kd:.4g} per rad/s, {n_test} test movements (seed {seed})")
     loads = [-elbow_weight_load(arm, mv[0])[1] for mv in movements]
     print(f"doubled mass: downward hand force {min(loads):.1f}-{max(loads):.1f} N (elbow_weight_load at each start)")
-    for cond in ("generality", "weakened", "doubled mass", "doubled mass + weakened"):
+    for cond in ("generality", "weakened", "added friction", "doubled mass", "doubled mass + weakened"):
         rows = []
         for mv in movements:
             scale = rng.uniform(*WEAKEN_RANGE, len(arm.muscle_names))[muscle_of] if "weakened" in cond else None
             load = elbow_weight_load(arm, mv[0]) if "doubled" in cond else None
-            rows.append(pd_trial(kp, kd, mv, setup, hand_force=load, strength_scale=scale))
+            friction = JAGODNIK_FRICTION_NM if cond == "added friction" else None
+            rows.append(pd_trial(kp, kd, mv, setup, hand_force=load, strength_scale=scale, friction_Nm=friction))
         ok = [r for r in rows if not r["failed"]]
         # Which side of its target a failed trial ends on: below (q < target in the joint further off) is the
         # gravity side for both GHy (elevation) and ELx (flexion).
