@@ -114,3 +114,71 @@ def test_arm_batch_applies_per_arm_moments_as_arm_does():
     assert np.array_equal(batch.applied_moment, moments)
     with pytest.raises(ValueError, match=r"shape \(2, 5\) or \(5,\)"):
         batch.set_applied_moment(np.zeros((3, 5)))
+
+
+def test_an_arm_data_and_state_pickled_before_applied_moments_load_with_none():
+    """Pickles of 2026-12-02 .. 2026-12-03 hold a full snapshot without the applied_moment row, and States without
+    the field: they load, with the applied moment zero and everything else as it was."""
+    import pickle
+
+    from armrt.arm import _unpickle_arm
+    from armrt.data import _unpickle_data
+    arm = _moving_das2()
+    arm.set_applied_moment({"ELx": 1.0})
+    settings, snapshot = arm._snapshot()
+    cut = arm.state_vector_slices()["applied_moment"]
+    old = np.delete(snapshot, np.arange(cut.start, cut.stop))
+    loaded = _unpickle_arm(armrt.Arm, arm.model, settings, old, {})
+    assert not loaded.applied_moment.any()
+    assert np.array_equal(loaded.q, arm.q) and np.array_equal(loaded.lce, arm.lce)
+    assert np.array_equal(loaded.excitation, arm.excitation)
+    data = _unpickle_data(arm.model, settings, old)
+    assert not data.applied_moment.any() and np.array_equal(data.q, arm.q)
+    with pytest.raises(ValueError, match="expected"):
+        _unpickle_data(arm.model, settings, old[:-1])   # any other length is still refused
+    state = arm.get_state()
+    fields = dict(state.__dict__)
+    for k in ("applied_moment", "stimulation", "stimulation_state"):
+        del fields[k]
+    old_state = State.__new__(State)
+    old_state.__setstate__(fields)          # what unpickling an older State does
+    restored = pickle.loads(pickle.dumps(old_state))
+    assert restored.applied_moment.size == 0 and not restored.applied_moment.flags.writeable
+    other = armrt.Arm("das2")
+    other.set_applied_moment({"GHy": 2.0})
+    other.set_state(restored)
+    assert not other.applied_moment.any() and np.array_equal(other.q, arm.q)
+
+
+def test_scalar_zero_and_per_arm_errors():
+    arm = armrt.Arm("das2")
+    arm.set_applied_moment({"ELx": 1.0})
+    arm.set_applied_moment(np.array(0.0))
+    assert not arm.applied_moment.any()
+    with pytest.raises(ValueError, match="a single number must be 0"):
+        arm.set_applied_moment(2.0)
+    batch = armrt.ArmBatch(3, "das2", threads=1)
+    bad = np.zeros((3, 5))
+    bad[2, 3] = np.nan
+    with pytest.raises(ValueError, match="of arm 2 contains NaN.*ELx"):
+        batch.set_applied_moment(bad)
+    assert not batch.applied_moment.any()
+
+
+def test_arm_batch_outputs_follow_a_change_between_steps():
+    """After set_applied_moment or set_hand_load between steps, ArmBatch's outputs describe the changed arm, as
+    Arm.outputs() does (they were the outputs before the change until the next step)."""
+    batch = armrt.ArmBatch(2, "das2", threads=1)
+    batch.reset()
+    batch.step(10)
+    arm = armrt.Arm("das2")
+    arm.reset()
+    arm.step(10)
+    view = batch.qddot
+    batch.set_applied_moment({"ELx": 2.0})
+    arm.set_applied_moment({"ELx": 2.0})
+    np.testing.assert_array_equal(batch.outputs()["qddot"][1], arm.outputs()["qddot"])
+    np.testing.assert_array_equal(view[0], arm.outputs()["qddot"])   # a view taken before is updated in place
+    batch.set_hand_load(force=(0.0, 0.0, -20.0))
+    arm.set_hand_load(force=(0.0, 0.0, -20.0))
+    np.testing.assert_array_equal(batch.gh_force[0], arm.outputs()["gh_force"])

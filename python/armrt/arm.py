@@ -344,7 +344,8 @@ class Arm:
     def reset(self, q=None, qdot=None, activation=None, time: float = 0.0) -> None:
         """Back to a state: q (ndof, rad; default the rest posture), qdot (default 0), activations (n,
         default 0, or a dict of names; capped at max_activation with a RuntimeWarning); contractile
-        elements start in static equilibrium.
+        elements start in static equilibrium. The inputs are kept: the held excitation (or stimulation), hand load
+        and applied moment act on the first step after reset as before it (set them to zero to start unloaded).
         time: finite, s. Raises ValueError for NaN/infinite values, TypeError for non-numbers."""
         q = None if q is None else self._check_girdle_contact(self._check_range(self._dof_vector(q, "q")))
         qdot = None if qdot is None else self._dof_vector(qdot, "qdot")
@@ -692,8 +693,11 @@ class Arm:
 
     # ------------------------------------------------------------------ linearisation
     def linearize(self, continuous: bool = False) -> Linearization:
-        """The dynamics linearised at the current state x0 = [q | qdot | lce | activation] and excitation u0, hand load
-        and settings as set (armrt.linearization.Linearization: A, B, dfdx, dfdu, slices by block name, units).
+        """The dynamics linearised at the current state x0 = [q | qdot | lce | activation] and excitation u0, hand load,
+        applied moment and settings as set (armrt.linearization.Linearization: A, B, dfdx, dfdu, slices by block
+        name, units). The inputs u are the excitations only: the hand load and the applied moment are held at their
+        values (their effect is in x0_next and A, not a column of B; an applied moment a enters as
+        d qddot / d a = M^-1, arm.mass_matrix()).
 
         continuous=False (default): A = dx+/dx (ns, ns) and B = dx+/du (ns, n_elements) of one ROS2 step of dt taken
         from x0 as a step from a state set from outside takes it (muscle paths evaluated at both stages), the step

@@ -98,7 +98,10 @@ class ArmBatch:
 
     State and outputs are read-only numpy views into the engine's memory: they follow the
     simulation without copies (copy them to keep a snapshot). Outputs (forces, hand position, GH
-    force and stability) describe each arm's current state after step() and reset().
+    force and stability) describe each arm's current state after step() and reset(); after a change
+    between steps (set_hand_load, set_applied_moment, strength, max_activation, set_state_vector) the
+    next read of an output evaluates them at the changed arms first (a view taken before it is updated
+    in place). step(..., outputs=False) leaves them as they were until evaluate_outputs().
 
     An arm that diverges stops alone: step() returns its index, `diverged` marks it, `errors` says
     which state went bad and when, and a RuntimeWarning names it; the other arms go on. reset() that
@@ -158,6 +161,10 @@ class ArmBatch:
             self._raw.set_stimulation_map_json(self._arm._sim.stimulation_map_json())
         self.channel_names = self._arm.channel_names
         self._raw.reset(np.arange(self.n))  # outputs at the rest posture
+        # True after an input, setting or state was changed between steps: the output views then describe the
+        # arms before the change, and reading one (outputs(), gh_force, ...) evaluates them first, as
+        # Arm.outputs() would at the changed arm.
+        self._outputs_stale = False
 
     # ------------------------------------------------------------------ configuration
     @property
@@ -318,26 +325,14 @@ class ArmBatch:
             if not np.all(np.isfinite(a)):
                 raise ValueError(f"hand {name} contains NaN or infinite values")
             target[...] = a
+        self._outputs_stale = True
 
     def set_applied_moment(self, moment=0.0) -> None:
         """Generalised forces N m applied at the joints (as Arm.set_applied_moment): (n, ndof) per arm, (ndof,)
         or {dof name: value} for every arm, or 0. KeyError for an unknown DOF, ValueError for another shape or
         NaN/infinite values."""
-        names = self._arm.model.dof_names
-        nd = len(names)
-        if isinstance(moment, Mapping) or (np.isscalar(moment) and moment == 0):
-            a = applied_moments(np.zeros(nd) if not isinstance(moment, Mapping) else moment, names)
-        else:
-            a = real_array(moment, "applied moment")
-            if a.shape == (self.n, nd):
-                if not np.all(np.isfinite(a)):
-                    raise ValueError("applied moment contains NaN or infinite values")
-            else:
-                if a.shape != (nd,):
-                    raise ValueError(f"applied moment must have shape ({self.n}, {nd}) or ({nd},) "
-                                     f"({', '.join(names)}), got {a.shape}")
-                a = applied_moments(a, names)
-        self._applied_moment[...] = a
+        self._applied_moment[...] = applied_moments(moment, self._arm.model.dof_names, rows=self.n)
+        self._outputs_stale = True
 
     @property
     def applied_moment(self) -> np.ndarray:
@@ -354,6 +349,7 @@ class ArmBatch:
     def strength(self, values) -> None:
         s = self._per_arm(values, "strength", 0.0, None, clip=False, current=self.strength)
         self._raw.set_strength_and_max_activation(s, self._raw.get_max_activation())
+        self._outputs_stale = True
 
     @property
     def max_activation(self) -> np.ndarray:
@@ -364,6 +360,7 @@ class ArmBatch:
     def max_activation(self, values) -> None:
         m = self._per_arm(values, "max_activation", 0.0, 1.0, clip=False, current=self.max_activation)
         self._raw.set_strength_and_max_activation(self._raw.get_strength(), m)
+        self._outputs_stale = True
 
     # ------------------------------------------------------------------ state
     def _arms(self, arms) -> np.ndarray:
@@ -435,6 +432,7 @@ class ArmBatch:
         if rows is None:
             raise ValueError("state vector: expected an array, got None")
         self._raw.set_snapshot(sig, idx, rows)
+        self._outputs_stale = True
         for i in idx:
             self._errors.pop(int(i), None)
 
@@ -451,6 +449,8 @@ class ArmBatch:
         evaluation per arm and call; evaluate_outputs() brings them up to date)."""
         k = count(k, "k (number of steps)")
         failed = self._raw.step(k, self._threads, bool(outputs))
+        if outputs:
+            self._outputs_stale = False
         for i in failed:
             msg = self._raw.error_message(int(i))
             self._errors[int(i)] = msg
@@ -462,6 +462,14 @@ class ArmBatch:
     def evaluate_outputs(self) -> None:
         """Outputs of every live arm at its current state (after step(..., outputs=False))."""
         self._raw.evaluate_outputs(self._threads)
+        self._outputs_stale = False
+
+    def _output(self, name: str) -> np.ndarray:
+        """The view of output `name`, evaluated first if an input, setting or state changed since the last
+        evaluation (not after step(..., outputs=False), whose caller chose to leave them)."""
+        if self._outputs_stale:
+            self.evaluate_outputs()
+        return self._views[name]
 
     def outputs(self) -> dict:
         """Copies of the outputs at each arm's current state (as Arm.outputs(), one row per arm):
@@ -469,7 +477,7 @@ class ArmBatch:
         (n, 3), gh_theta, gh_phi, gh_stab, gh_rim_margin, gh_rim_direction (n,); for a model whose scapula moves (das3) also girdle_torque
         (n, dofs) N m, contact_distance and contact_force (n, contact points: TS, AI) m and N, conoid_length
         (n,) m and conoid_tension (n,) N. Rows of diverged arms are as they stopped."""
-        return {k: np.array(self._views[k]) for k in ("qddot", "muscle_force", "muscle_length", "hand_position",
+        return {k: np.array(self._output(k)) for k in ("qddot", "muscle_force", "muscle_length", "hand_position",
                                                       "gh_force", "gh_theta", "gh_phi", "gh_stab",
                                                       "gh_rim_margin", "gh_rim_direction")
                 + (GIRDLE_OUTPUTS if self.info["girdle"] else ())}
@@ -495,24 +503,24 @@ class ArmBatch:
     lce = property(lambda self: self._views["lce"], doc="(n, elements) contractile-element lengths, m")
     activation = property(lambda self: self._views["activation"], doc="(n, elements) activations")
     time = property(lambda self: self._views["time"], doc="(n,) simulated time of each arm, s")
-    hand_position = property(lambda self: self._views["hand_position"], doc="(n, 3) m, thorax frame")
-    gh_force = property(lambda self: self._views["gh_force"], doc="(n, 3) N, humeral head on glenoid, scapula frame")
-    gh_stab = property(lambda self: self._views["gh_stab"], doc="(n,) GH stability; > 1: dislocating")
-    gh_theta = property(lambda self: self._views["gh_theta"], doc="(n,) rad, GH force from the glenoid normal, major axis")
-    gh_phi = property(lambda self: self._views["gh_phi"], doc="(n,) rad, minor axis")
-    gh_rim_margin = property(lambda self: self._views["gh_rim_margin"],
+    hand_position = property(lambda self: self._output("hand_position"), doc="(n, 3) m, thorax frame")
+    gh_force = property(lambda self: self._output("gh_force"), doc="(n, 3) N, humeral head on glenoid, scapula frame")
+    gh_stab = property(lambda self: self._output("gh_stab"), doc="(n,) GH stability; > 1: dislocating")
+    gh_theta = property(lambda self: self._output("gh_theta"), doc="(n,) rad, GH force from the glenoid normal, major axis")
+    gh_phi = property(lambda self: self._output("gh_phi"), doc="(n,) rad, minor axis")
+    gh_rim_margin = property(lambda self: self._output("gh_rim_margin"),
                              doc="(n,) rad, how far the GH force can still turn towards the rim; < 0 beyond it")
-    gh_rim_direction = property(lambda self: self._views["gh_rim_direction"],
+    gh_rim_direction = property(lambda self: self._output("gh_rim_direction"),
                                 doc="(n,) rad, psi = atan2(phi, theta): 0 superior, pi/2 anterior")
-    muscle_force = property(lambda self: self._views["muscle_force"], doc="(n, elements) N, tendon forces")
-    muscle_length = property(lambda self: self._views["muscle_length"], doc="(n, elements) m, muscle-tendon lengths")
-    qddot = property(lambda self: self._views["qddot"], doc="(n, dofs) rad/s^2")
+    muscle_force = property(lambda self: self._output("muscle_force"), doc="(n, elements) N, tendon forces")
+    muscle_length = property(lambda self: self._output("muscle_length"), doc="(n, elements) m, muscle-tendon lengths")
+    qddot = property(lambda self: self._output("qddot"), doc="(n, dofs) rad/s^2")
 
     def _girdle_view(self, name: str) -> np.ndarray:
         if name not in self._views:
             raise AttributeError(f"ArmBatch.{name}: model {self.info['name']} has no moving girdle "
                                  "(the girdle outputs are for models whose scapula moves, such as das3)")
-        return self._views[name]
+        return self._output(name)
 
     girdle_torque = property(lambda self: self._girdle_view("girdle_torque"),
                              doc="(n, dofs) N m, generalised forces of the thorax contact and the conoid (das3)")

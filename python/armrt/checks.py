@@ -189,9 +189,27 @@ def dof_vector(v, what: str, dof_names) -> np.ndarray:
     return a
 
 
-def applied_moments(values, dof_names, what: str = "applied moment") -> np.ndarray:
-    """(ndof,) N m from an array of one value per DOF or {dof name: value} (DOFs not named get 0): KeyError
-    naming an unknown DOF and the model's DOFs, ValueError for another shape or NaN/infinite values."""
+def applied_moments(values, dof_names, what: str = "applied moment", rows: int | None = None) -> np.ndarray:
+    """(ndof,) N m from an array of one value per DOF, {dof name: value} (DOFs not named get 0) or the number 0
+    (none); with rows (ArmBatch), (rows, ndof) arrays are accepted too. KeyError naming an unknown DOF and the
+    model's DOFs, ValueError for another shape or NaN/infinite values (naming the DOF, and the arm)."""
+    if not isinstance(values, (Mapping, str, bytes)) and np.ndim(values) == 0:
+        if real_scalar(values, what) != 0.0:
+            raise ValueError(f"{what}: a single number must be 0 (no applied moment), got {values!r}; give one "
+                             f"value per DOF ({', '.join(dof_names)}) or {{dof name: value}}")
+        return np.zeros(len(dof_names))
+    if rows is not None and not isinstance(values, Mapping):
+        a = real_array(values, what)
+        if a.ndim == 2:
+            if a.shape != (rows, len(dof_names)):
+                raise ValueError(f"{what} must have shape ({rows}, {len(dof_names)}) or ({len(dof_names)},) "
+                                 f"({', '.join(dof_names)}), got {a.shape}")
+            for i in range(rows):
+                dof_vector(a[i], f"{what} of arm {i}", dof_names)
+            return a
+        if a.shape != (len(dof_names),):
+            raise ValueError(f"{what} must have shape ({rows}, {len(dof_names)}) or ({len(dof_names)},) "
+                             f"({', '.join(dof_names)}), got {a.shape}")
     if isinstance(values, Mapping):
         unknown = [k for k in values if k not in dof_names]
         if unknown:

@@ -14,7 +14,7 @@ from __future__ import annotations
 import threading
 import warnings
 from contextlib import contextmanager
-from dataclasses import InitVar, dataclass, field, fields
+from dataclasses import MISSING, InitVar, dataclass, field, fields
 
 import numpy as np
 
@@ -102,6 +102,17 @@ class State:
                              f"{self.path_anchor_steps}")
         object.__setattr__(self, "time", float(self.time))
         object.__setattr__(self, "previous_step", float(self.previous_step))
+
+    def __setstate__(self, state: dict) -> None:
+        """Unpickling: a State pickled before a field existed gets that field's empty default (an empty
+        stimulation or applied_moment, restored as none and zero), as State(...) would give it; the arrays are
+        read-only again (pickle gives writeable copies)."""
+        for f in fields(self):
+            if f.name not in state and f.default_factory is not MISSING:
+                state[f.name] = f.default_factory()
+        self.__dict__.update(state)
+        for k in self._array_fields():
+            getattr(self, k).flags.writeable = False
 
     def __eq__(self, other) -> bool:
         """Exactly equal (every bit of every value)."""
@@ -369,8 +380,6 @@ class Data:
         that inverse_dynamics returns). moment: an array of one value per DOF (positive along the DOF),
         {dof name: value} (other DOFs 0), or 0 to remove them. KeyError for an unknown DOF name, ValueError
         for another shape or NaN/infinite values."""
-        if np.isscalar(moment) and not isinstance(moment, (str, bytes)) and moment == 0:
-            moment = np.zeros(self.model.n_dofs)
         a = applied_moments(moment, self.model.dof_names)
         with self._exclusive():
             self._sim.applied_moment[:] = a
@@ -487,9 +496,14 @@ class Data:
         return part_slices(self._sim, parts)
 
     def _load_snapshot(self, x) -> None:
-        """Writes a full snapshot as is (Arm.__deepcopy__ copies a diverged state too)."""
+        """Writes a full snapshot as is (Arm.__deepcopy__ copies a diverged state too). A snapshot pickled by
+        armrt 2026-12-02 .. 2026-12-03, before the applied_moment row, is read with a zero applied moment."""
+        x = np.asarray(x, dtype=float).ravel()
         with self._exclusive():
-            self._sim.set_snapshot(_core.SNAPSHOT_FULL, np.asarray(x, dtype=float), False)
+            applied = part_slices(self._sim, StatePart.FULL)["applied_moment"]
+            if x.size == self._sim.snapshot_size(_core.SNAPSHOT_FULL) - (applied.stop - applied.start):
+                x = np.concatenate([x[:applied.start], np.zeros(applied.stop - applied.start), x[applied.start:]])
+            self._sim.set_snapshot(_core.SNAPSHOT_FULL, x, False)
 
 
 
