@@ -1,5 +1,6 @@
 """The reference FES controllers (armrt.fes_control; docs/control.md "Reference FES controllers"): their building
 blocks cross-checked against the engine, and short versions of the papers' protocols against the published bounds."""
+import copy
 import math
 
 import numpy as np
@@ -214,20 +215,21 @@ def test_pd_tracks_with_doubled_forearm_weight_and_weakened_muscles(setup):
     assert err > np.mean([r["error_deg"] for r in nominal])   # and the load and weakness cost accuracy
 
 
-def _free_fall_with_friction(friction_Nm, dofs, steps=200):
-    """The das2 arm unstimulated from rest at an elevated, flexed posture (gravity's moment about GHy and ELx well
-    above 1 N m), its joints under joint_friction: the arm, and per step (a, qdot before the step)."""
-    arm = armrt.Arm("das2")
+def _free_fall_with_friction(friction_Nm, dofs, steps=200, model="das2"):
+    """The arm unstimulated from rest at an elevated, flexed posture (gravity's moment about GHy and ELx well above
+    1 N m), its joints under joint_friction: the arm, and per step (a, qdot after the step)."""
+    arm = armrt.Arm(model)
     q0 = arm.rest_posture.copy()
     q0[arm.dof_index("GHy")], q0[arm.dof_index("ELx")] = 0.8, 1.2
     arm.reset(q=q0)
     friction = v.joint_friction(arm, friction_Nm, dofs)
     log = []
     for _ in range(steps):
+        arm.set_applied_moment(0)  # the moments besides friction, as run_offline holds them while it is called
         a = friction(arm.time, arm.q, arm.qdot)
-        log.append((a, arm.qdot.copy()))
         arm.set_applied_moment(a)
         arm.step()
+        log.append((a, arm.qdot.copy()))
     return arm, q0, log
 
 
@@ -246,10 +248,55 @@ def test_joint_friction_sticks_below_its_bound_and_slides_against_it_above():
     assert len(moving) > 100
     for a, qd in moving:
         np.testing.assert_allclose(a, -np.sign(qd), rtol=0, atol=1e-9)   # sliding: the bound, against the motion
-    assert all(a @ qd <= 1e-12 for a, qd in log)                           # dissipative at every step
+    assert all(a @ qd <= 1e-12 for a, qd in log)         # dissipative at every step: a opposes the velocity it leaves
     # the friction slows the fall but does not stop it (gravity's moments exceed 1 N m)
     fell, fell_free = (q0 - sliding.q)[cols], (q0 - free.q)[cols]
     assert np.all(fell > 0.02) and np.all(fell < fell_free)
+
+
+def test_joint_friction_follows_a_stiff_implicit_step_and_refuses_a_negative_bound():
+    """das3 (its girdle stiff under ROS2's implicit step): a joint that sticks ends each step at rest to 1e-5 rad/s
+    (3.7e-7 measured; 4e-3 without the re-centring) and no step's friction pushes along the velocity it leaves (the
+    moments are solved on the arm's own step, not on an explicit prediction qdot + h qddot, which on das3 gave
+    moments along the motion, adding 1.2e-3 J in 300 steps)."""
+    arm, q0, log = _free_fall_with_friction(1e3, ["GHy", "ELx"], steps=100, model="das3")
+    cols = [arm.dof_index(d) for d in ("GHy", "ELx")]
+    assert max(np.abs(qd[cols]).max() for _, qd in log) < 1e-5
+    # within a step a stuck joint still moves while the girdle settles (velocity-level friction holds the step's
+    # end): 3e-4 rad in 100 steps, against 0.06 and 0.11 rad of the free fall
+    assert np.abs(arm.q[cols] - q0[cols]).max() < 1e-3
+    _, _, log = _free_fall_with_friction(1.0, ["GHy", "ELx"], steps=100, model="das3")
+    assert all(a @ qd <= 1e-12 for a, qd in log)
+    for bad in (-1.0, np.nan, np.inf):
+        with pytest.raises(ValueError, match="friction_Nm must be finite and >= 0"):
+            v.joint_friction(arm, bad)
+
+
+def test_run_offline_adds_the_joint_moment_to_the_plants_own_and_restores_it(setup):
+    """joint_moment is added to the moment the plant holds (an exoskeleton's, say), the callable sees copies of
+    q and qdot and the plant without its previous output, and the plant's own moment is back after the run."""
+    arm, coding, _ = setup
+    plant = copy.deepcopy(arm)
+    plant.reset()
+    own = np.zeros(plant.n_dofs)
+    own[plant.dof_index("ELx")] = 0.4
+    plant.set_applied_moment(own)
+    ctl = fc.PDController(arm, coding, plant.q.copy(), fc.PDParams(1.0, 0.1))
+    seen = []
+
+    def extra(t, q, qdot):
+        seen.append(plant.applied_moment)
+        q[:] = 99.0  # a copy: the plant is not touched
+        out = np.zeros(plant.n_dofs)
+        out[plant.dof_index("GHy")] = -0.25
+        return out
+    run = fc.run_offline(plant, ctl, 0.05, joint_moment=extra)
+    assert len(seen) == round(0.05 / plant.dt) and all(np.array_equal(s, own) for s in seen)
+    assert np.all(np.abs(run.q) < 10.0)
+    assert np.array_equal(plant.applied_moment, own)
+    with pytest.raises(ValueError, match="joint_moment.*NaN"):
+        fc.run_offline(plant, ctl, 0.01, joint_moment=lambda t, q, qd: np.full(plant.n_dofs, np.nan))
+    assert np.array_equal(plant.applied_moment, own)   # restored after a refused moment too
 
 
 def test_pd_tracks_with_added_joint_friction(setup):

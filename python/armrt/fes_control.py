@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .checks import real_array, real_scalar
+from .checks import applied_moments, real_array, real_scalar
 from .control import _INF, StaticOptimizer, _state
 
 #: Implanted-system coding (docs/fes.md): pulse width modulated at a held 20 mA (the intramuscular channels'
@@ -553,8 +553,10 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
     stimulation builds up from rest, as a trial starts from a supported arm. reference: a callable t -> q_ref (ndof,)
     recorded beside q (default: the controller's own reference, or its target). hand_load: None or a callable
     t -> (force (3,), moment (3,)) N, N m applied before each interval (a disturbance). joint_moment: None or a
-    callable (t, q, qdot) -> (ndof,) N m applied at the joints (Arm.set_applied_moment) before each of the plant's
-    steps, so a state-dependent moment such as joint friction follows the arm at its step rate, not the controller's.
+    callable (t, q (ndof,) rad, qdot (ndof,) rad/s, copies) -> (ndof,) N m added at the joints to the moment the
+    plant had applied when called (Arm.set_applied_moment) before each of the plant's steps, so a state-dependent
+    moment such as joint friction follows the arm at its step rate, not the controller's; while it is called the
+    plant holds only its own moment, and that moment is the plant's again when the run ends (or raises).
     ValueError for a plant without a map."""
     if not plant.channel_names or list(plant.channel_names) != list(controller.coding.channel_names):
         raise ValueError("the plant's stimulation channels must be the controller's coding's channels")
@@ -582,6 +584,16 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
         out.force_total[k] = float(np.sum(plant.outputs()["muscle_force"]))
 
     record(0, np.zeros((C, 3)), 0.0)
+    base_moment = plant.applied_moment
+    try:
+        _control_loop(plant, controller, n, steps, hand_load, joint_moment, base_moment, hold_s, record)
+    finally:
+        plant.set_applied_moment(base_moment)
+    return out
+
+
+def _control_loop(plant, controller, n, steps, hand_load, joint_moment, base_moment, hold_s, record) -> None:
+    """run_offline's loop: n controller updates of `steps` plant steps each."""
     sl = plant.state_vector_slices()
     held = plant.get_state_vector()
     t_start = plant.time
@@ -597,11 +609,12 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
             plant.step(steps)
         else:
             for _ in range(steps):
-                plant.set_applied_moment(joint_moment(plant.time, plant.q, plant.qdot))
+                plant.set_applied_moment(base_moment)
+                extra = joint_moment(plant.time, plant.q.copy(), plant.qdot.copy())
+                plant.set_applied_moment(base_moment + applied_moments(extra, plant.dof_names, "joint_moment"))
                 plant.step()
         if plant.time - t_start <= hold_s + 1e-9:
             x = plant.get_state_vector()
             x[sl["q"]], x[sl["qdot"]] = held[sl["q"]], held[sl["qdot"]]
             plant.set_state_vector(x)
         record(k + 1, cmd, dt_upd)
-    return out

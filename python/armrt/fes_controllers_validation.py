@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from . import fes_control as fc
+from .checks import real_scalar
 
 PROFILE = "participant_A_FES"
 HOLD_S = 1.0    # s the arm is supported at the start while the stimulation builds up (run_offline hold_s)
@@ -278,30 +279,56 @@ def elbow_weight_load(arm, q) -> np.ndarray:
     return np.array([0.0, -g / (g1 - g), 0.0])
 
 
-def joint_friction(arm, friction_Nm: float = JAGODNIK_FRICTION_NM, dofs=PD_DOFS, iterations: int = 30):
+def joint_friction(arm, friction_Nm: float = JAGODNIK_FRICTION_NM, dofs=PD_DOFS, iterations: int = 30,
+                   refinements: int = 2):
     """A callable (t, q, qdot) -> (ndof,) N m for fes_control.run_offline's joint_moment: dry friction of at most
-    friction_Nm at each of `dofs` (Jagodnik & van den Bogert 2010's added-friction test, Table 4: 1.0 N m), the
+    friction_Nm N m at each of `dofs` (Jagodnik & van den Bogert 2010's added-friction test, Table 4: 1.0 N m), the
     time-stepping form of Coulomb friction (Stewart & Trinkle 1996; MuJoCo's joint frictionloss, a velocity-level
-    constraint with box bounds): each step the moments a (|a_j| <= friction_Nm) that bring the joints' velocity
-    after the step, qdot + h (qddot_free + M^-1 a), closest to zero in M's metric (the box-constrained QP
-    min 0.5 a^T W a + a^T b, W = (M^-1)_FF, b = (qdot + h qddot_free)_F / h, by projected Gauss-Seidel): a joint that
-    the other moments cannot move past friction_Nm sticks, one that they can slides against friction_Nm. qddot_free
-    and M are the arm's at the step's start (its outputs less the moments applied now), h its step. The arm it is
-    made for must be the one run_offline steps (its outputs and mass matrix are read)."""
+    constraint with box bounds). Each step it finds the moments a (|a_j| <= friction_Nm) for which the joints'
+    velocity after the step, v(a) = v0 + G a, solves the friction law: v_j = 0 where |a_j| < friction_Nm (the joint
+    sticks), a_j = -friction_Nm sign(v_j) otherwise (it slides against friction). v0 (the next velocity without
+    friction) and G (its response to each friction moment) are measured by stepping a copy of the arm from its
+    present state with the arm's own integrator, so a stiff implicit step (das3's girdle) is followed as the arm
+    will take it; the law is the box-constrained mixed LCP of v0 + G a (G ~ h (M^-1)_FF, whose diagonal
+    dominates enough for the sweeps to converge), solved by projected Gauss-Seidel (`iterations` sweeps), then re-centred `refinements` times on the velocity the
+    step with the solved moments gives (the step is linear in a held moment only to O(h^2)). `arm` must be the Arm run_offline steps, with the moments other than the
+    friction applied when this is called (run_offline does so); its excitation, stimulation and hand load are
+    those of the coming step. ValueError for friction_Nm not finite and >= 0, or an unknown DOF (KeyError)."""
+    friction_Nm = real_scalar(friction_Nm, "friction_Nm")
+    if not math.isfinite(friction_Nm) or friction_Nm < 0:
+        raise ValueError(f"friction_Nm must be finite and >= 0, got {friction_Nm}")
     cols = np.array([arm.dof_index(d) for d in dofs])
-    nd, h = arm.n_dofs, arm.dt  # the moment is held over one control step (run_offline steps one at a time)
+    scratch = copy.deepcopy(arm)
+    n_free = cols.size
+    probe_Nm = min(friction_Nm, 1.0)
+
+    def next_velocity(x, moment):
+        scratch.set_state_vector(x)
+        scratch.set_applied_moment(moment)
+        scratch.step()
+        return scratch.qdot[cols].copy()
 
     def moment(t, q, qdot):
-        Minv = np.linalg.inv(arm.mass_matrix(q))
-        qdd_free = arm.outputs()["qddot"] - Minv @ arm.applied_moment
-        W = Minv[np.ix_(cols, cols)]
-        b = (np.asarray(qdot)[cols] + h * qdd_free[cols]) / h
-        a = np.zeros(cols.size)
-        for _ in range(iterations):
-            for i in range(cols.size):
-                r = b[i] + W[i] @ a - W[i, i] * a[i]
-                a[i] = np.clip(-r / W[i, i], -friction_Nm, friction_Nm)
-        out = np.zeros(nd)
+        out = np.zeros(arm.n_dofs)
+        if friction_Nm == 0.0:
+            return out
+        x, base = arm.get_state_vector(), arm.applied_moment
+        v0 = next_velocity(x, base)
+        G = np.empty((n_free, n_free))
+        for k, c in enumerate(cols):  # probes of at most 1 N m: the step is linear in a held moment to O(h^2)
+            probe = base.copy()
+            probe[c] += probe_Nm
+            G[:, k] = (next_velocity(x, probe) - v0) / probe_Nm
+        a = np.zeros(n_free)
+        for refinement in range(refinements + 1):
+            if refinement:  # the step's response to a is linear only to O(h^2): re-centre v0 on the step taken
+                probe = base.copy()
+                probe[cols] += a
+                v0 = next_velocity(x, probe) - G @ a
+            for _ in range(iterations):
+                for i in range(n_free):
+                    r = v0[i] + G[i] @ a - G[i, i] * a[i]
+                    a[i] = np.clip(-r / G[i, i], -friction_Nm, friction_Nm)
         out[cols] = a
         return out
     return moment
@@ -310,7 +337,8 @@ def joint_friction(arm, friction_Nm: float = JAGODNIK_FRICTION_NM, dofs=PD_DOFS,
 def pd_trial(kp: float, kd: float, movement, setup, hand_force=None, strength_scale=None, friction_Nm=None) -> dict:
     """One reaching trial of (b): the PD holds the start for PD_HOLD_S (arm supported), then the target steps and
     PD_TRIAL_S s follow. friction_Nm: Coulomb friction at GHy and ELx (joint_friction), None for none. Returns
-    error_deg, ss_error_deg (None if failed), effort_N, failed, run."""
+    error_deg, ss_error_deg (None if failed), effort_N, failed, run, and stick_fraction ({GHy, ELx: fraction of
+    the trial's plant steps in which the friction held the joint below its bound}; None without friction)."""
     arm, coding, _ = setup
     start, target = movement
     plant = copy.deepcopy(arm)
@@ -321,11 +349,19 @@ def pd_trial(kp: float, kd: float, movement, setup, hand_force=None, strength_sc
     load = None
     if hand_force is not None:
         load = lambda t: (tuple(hand_force), (0.0, 0.0, 0.0))  # noqa: E731
-    friction = None if friction_Nm is None else joint_friction(plant, friction_Nm)
+    cols = [plant.dof_index(d) for d in PD_DOFS]
+    friction, sticking = None, []
+    if friction_Nm is not None:
+        law = joint_friction(plant, friction_Nm)
+
+        def friction(t, q, qdot):  # records, per plant step of the trial, which joints stick (|a| below the bound)
+            a = law(t, q, qdot)
+            if t > PD_HOLD_S + 1e-9:
+                sticking.append(np.abs(a[cols]) < friction_Nm * (1 - 1e-9))
+            return a
     run = fc.run_offline(plant, ctl, PD_HOLD_S + PD_TRIAL_S, reference=lambda t: target if t >= PD_HOLD_S else start,
                          hold_s=PD_HOLD_S, hand_load=load, joint_moment=friction)
     sel = run.time > PD_HOLD_S + 1e-9
-    cols = [plant.dof_index(d) for d in PD_DOFS]
     err = np.degrees(np.abs(run.q[sel][:, cols] - target[cols]))   # (K, 2)
     within = np.all(err < 5.0, axis=1)
     # the steady state: from the first sample after which both joints stay within 5 deg
@@ -334,7 +370,8 @@ def pd_trial(kp: float, kd: float, movement, setup, hand_force=None, strength_sc
     failed = k0 >= within.size
     n_muscles = len(plant.muscle_names)
     return {"error_deg": float(err.mean()), "ss_error_deg": None if failed else float(err[k0:].mean()),
-            "effort_N": float(run.force_total[sel].mean() / n_muscles), "failed": bool(failed), "run": run}
+            "effort_N": float(run.force_total[sel].mean() / n_muscles), "failed": bool(failed), "run": run,
+            "stick_fraction": dict(zip(PD_DOFS, np.mean(sticking, axis=0))) if sticking else None}
 
 
 def pd_cost(gains, movements, setup, weight=PD_EFFORT_WEIGHT) -> float:
@@ -429,6 +466,10 @@ def jagodnik(out: Path | None = None, n_test: int = 20, seed: int = 2, gains=Non
         print(f"| {cond} | {c['error_deg']:.2f} | {c['ss_error_deg']:.2f} | {c['effort_N']:.1f} | "
               f"{c['failed']} of {c['n']} | {pub_s} |  (failed trials ending below their target: "
               f"{c['failed_below_target']})")
+        if c["example"]["stick_fraction"]:
+            print("   the figure's trial: joints stick (friction below its bound) for "
+                  + ", ".join(f"{d} {100 * x:.0f} %" for d, x in c["example"]["stick_fraction"].items())
+                  + " of the plant steps")
     if out is not None:
         _plot_jagodnik(conds, Path(out) / "fes_jagodnik_pd.png", arm)
     return conds
