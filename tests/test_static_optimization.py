@@ -66,7 +66,11 @@ def test_das3_moments_balance_through_the_engine():
         arm.set_hand_load([0, -5.0, 0])
         o = engine_check(arm, res, q, qd)
         assert np.abs(o["muscle_torque"] - res.tau_required).max() < BALANCE
-        assert abs(o["gh_stab"] - res.gh_stab) < 1e-9
+        # The elastic tendons' equilibrium is solved to a moment residual of about 1e-8 N m (8.3e-9 here), so the
+        # engine's GH force at the solution differs from the optimiser's by ~3e-8 N and GHstab by up to 1.01e-9
+        # (measured, the first state), which a 1e-9 bound failed (CI of 1e33923): bounds 30x the measured.
+        assert np.abs(o["gh_force"] - res.gh_force).max() < 1e-6
+        assert abs(o["gh_stab"] - res.gh_stab) < 3e-8
 
 
 def test_bounds_follow_the_participant_profile():
