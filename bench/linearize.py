@@ -1,7 +1,7 @@
 """What Arm.linearize costs against the step it differentiates (issue 28 item 4; docs/control.md "Linearised dynamics", "Cost"): das2 and
 das3 at the default ROS2 1 ms step, at a moving, co-contracted state, the engine's linearize() (through the binding,
-which also allocates the numpy outputs) for the continuous df/dx, df/du alone and for A, B of one step, against one
-step. Interleaved repetitions in one run, best of each, the machine's load recorded.
+which also allocates the numpy outputs) for the continuous df/dx, df/du alone and for A, B of one step, and the whole
+Arm.linearize() call, against one step. Interleaved repetitions in one run, best of each, the machine's load recorded.
 
     python -m bench.linearize [--repeats 7] [--instructions]
     python -m bench.linearize --residuals     # the finite-difference residuals of tests/test_linearize.py's states
@@ -13,6 +13,7 @@ linearize() and step() under valgrind's callgrind (load-independent): each proce
 from __future__ import annotations
 
 import argparse
+import copy
 import json
 import os
 import shutil
@@ -158,7 +159,10 @@ def main() -> None:
         x = arm.get_state_vector(armrt.StatePart.FULL)
         fns = {"step": (lambda: (arm.set_state_vector(x), arm._sim.step(1)), 200),
                "continuous": (lambda: arm._sim.linearize(ws, False), 50),
-               "discrete": (lambda: arm._sim.linearize(ws, True), 10)}
+               "discrete": (lambda: arm._sim.linearize(ws, True), 10),
+               "arm_linearize": (lambda: arm.linearize(), 10),
+               # what Arm.linearize() took on top until 2026-12-04 for x0_next: a deep copy of the arm, stepped
+               "deepcopy": (lambda: copy.deepcopy(arm), 10)}
         best = {k: float("inf") for k in fns}
         for _ in range(args.repeats):
             for k, (fn, calls) in fns.items():
@@ -170,8 +174,11 @@ def main() -> None:
         us["step"] -= 1e6 * t_set
         rec = {"state_size": int(x.size) if False else 2 * arm.n_dofs + 2 * arm.n_elements,
                "us": us, "ratio_to_step": {k: us[k] / us["step"] for k in ("continuous", "discrete")}}
+        for k in ("arm_linearize", "deepcopy"):
+            rec["ratio_to_step"][k] = us[k] / us["step"]
         if args.instructions:
-            ins = {k: instructions(model, k, args.instruction_calls if k != "step" else 200) for k in fns}
+            ins = {k: instructions(model, k, args.instruction_calls if k != "step" else 200)
+                   for k in ("step", "continuous", "discrete")}
             rec["instructions"] = ins
             rec["instruction_ratio_to_step"] = {k: ins[k] / ins["step"] for k in ("continuous", "discrete")}
         out["models"][model] = rec
@@ -183,18 +190,23 @@ def main() -> None:
     md = (f"# Linearisation cost (`{out['command']}`)\n\n"
           f"ROS2 1 ms step; best of {args.repeats} interleaved repetitions; 1-min load average {load_before[0]:.2f} "
           f"before, {load_after[0]:.2f} after, {out['cpus']} CPUs. The step's time excludes setting its state.\n\n"
-          "| model | ns | step (us) | df/dx, df/du (us, x step) | A, B (us, x step) |"
+          "Engine: the engine's linearize() through the binding (which also allocates the numpy outputs); "
+          "`Arm.linearize()`: the whole Python call (A, B, df/dx, df/du and x0_next in a Linearization).\n\n"
+          "| model | ns | step (us) | df/dx, df/du (us, x step) | A, B (us, x step) | Arm.linearize() (us, x step) |"
           + (" instructions: step / continuous / discrete |" if args.instructions else "") + "\n"
-          "|---|---|---|---|---|" + ("---|" if args.instructions else "") + "\n")
+          "|---|---|---|---|---|---|" + ("---|" if args.instructions else "") + "\n")
     for model, r in out["models"].items():
         u, q = r["us"], r["ratio_to_step"]
         md += (f"| {model} | {r['state_size']} | {u['step']:.1f} | {u['continuous']:.0f} ({q['continuous']:.1f}x) | "
-               f"{u['discrete']:.0f} ({q['discrete']:.0f}x) |")
+               f"{u['discrete']:.0f} ({q['discrete']:.0f}x) | {u['arm_linearize']:.0f} ({q['arm_linearize']:.0f}x) |")
         if args.instructions:
             i, iq = r["instructions"], r["instruction_ratio_to_step"]
             md += (f" {i['step'] / 1e3:.0f} k / {i['continuous'] / 1e3:.0f} k ({iq['continuous']:.1f}x) / "
                    f"{i['discrete'] / 1e3:.0f} k ({iq['discrete']:.0f}x) |")
         md += "\n"
+    md += ("\nThe deep copy of the arm that Arm.linearize() stepped for x0_next until 2026-12-04 (now taken from the "
+           "linearisation's own stages), timed in the same run: "
+           + ", ".join(f"{m} {r['us']['deepcopy']:.0f} us" for m, r in out["models"].items()) + ".\n")
     (RESULTS / "linearize.md").write_text(md)
     print(md)
 

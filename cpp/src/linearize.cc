@@ -800,6 +800,8 @@ void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, 
   tangent_at(m, d, w.x2.data(), w.at_x2, w.f2.data(), true);
   for (int k = 0; k < ns; ++k) w.f2[k] -= 2.0 * w.k1[k];
   jacobian_solve(m, W, w.f2.data(), w.k2.data());
+  // ros2_update's arithmetic, so that a caller needs no second step for where this one lands.
+  for (int k = 0; k < ns; ++k) w.x_next[k] = x[k] + h * (1.5 * w.k1[k] + 0.5 * w.k2[k]);
   // How J moves: per element with its lce, a and u; with each joint angle and velocity, applied to k1 and k2.
   element_derivatives(m, d, w, h, 0, w.dJ_dlce);
   element_derivatives(m, d, w, h, 1, w.dJ_da);

@@ -58,6 +58,13 @@ TEST_CASE("linearize: A, B and df/dx of das2 against central differences of the 
   // The arm as it was.
   CHECK(std::equal(x.begin(), x.end(), sim->data.x.begin()));
   CHECK(sim->data.limited_fibre_steps == limited);
+  // Where the step lands: step_ros2's own x+ from a set state, to the bit (Arm.linearize returns it as x0_next).
+  {
+    const std::vector<double> x_plus = ros2_step(*sim, x, u, h);
+    int differ = 0;
+    for (int k = 0; k < ns; ++k) differ += w->x_next[k] != x_plus[k];
+    CHECK(differ == 0);
+  }
 
   // Columns: every joint angle and velocity, and every seventh CE length, activation and excitation.
   std::vector<int> cols;

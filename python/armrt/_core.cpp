@@ -658,8 +658,8 @@ PYBIND11_MODULE(_core, mod) {
         }
         return shapes;
       }, py::arg("rows"))
-      // linearize (engine.h) at the current state and inputs: (dfdx, dfdu) or, with step, (dfdx, dfdu, A, B) of one
-      // ROS2 step of dt / substeps.
+      // linearize (engine.h) at the current state and inputs: (dfdx, dfdu) or, with step, (dfdx, dfdu, A, B, x_next,
+      // in_domain) of one ROS2 step of dt / substeps.
       .def("linearize", [](Arm& s, LinearizeWorkspace& w, bool step) -> py::tuple {
         const int ns = state_size(s.model), n = s.model.num_elements;
         Array dfdx({ns, ns}), dfdu({ns, n});
@@ -670,13 +670,17 @@ PYBIND11_MODULE(_core, mod) {
           }
           return py::make_tuple(dfdx, dfdu);
         }
-        Array A({ns, ns}), B({ns, n});
+        Array A({ns, ns}), B({ns, n}), x_next({ns});
+        bool in_domain = false;
         {
           py::gil_scoped_release release;
           linearize(s.model, s.data, w, s.stepper.dt / s.stepper.substeps, dfdx.mutable_data(), dfdu.mutable_data(),
                     A.mutable_data(), B.mutable_data());
+          in_domain = check_domain(s.model, s.data, w.x_next.data()).status == Status::kOk;
         }
-        return py::make_tuple(dfdx, dfdu, A, B);
+        std::copy(w.x_next.begin(), w.x_next.begin() + ns, x_next.mutable_data());
+        // x_next: where the step lands; in_domain false where the step itself would stop (step() says why).
+        return py::make_tuple(dfdx, dfdu, A, B, x_next, in_domain);
       }, py::arg("workspace"), py::arg("step"))
       // forward()'s dx/dt (state_size) at the current state and inputs, without outputs (linearize's tests difference it).
       .def("state_derivative", [](Arm& s) {

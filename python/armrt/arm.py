@@ -713,7 +713,9 @@ class Arm:
 
         Raises ValueError for an arm with a stimulation map (the elements it drives follow the stimulation stage's
         memory, which is not part of x), for an integrator other than "ros2" or substeps != 1 (continuous=False
-        only), and SimulationError for an arm whose last step failed."""
+        only), and SimulationError for an arm whose last step failed or (continuous=False) where the step from x0 would
+        leave the physical domain, as step() would. x0_next is x0 + h (3/2 k1 + 1/2 k2) of the stages linearize()
+        forms: the step's own arithmetic, no second step."""
         if not isinstance(continuous, (bool, np.bool_)):
             raise TypeError(f"continuous must be True or False, got {continuous!r}")
         with self._exclusive():
@@ -730,11 +732,16 @@ class Arm:
             u0 = self.excitation.copy()
             out = self._sim.linearize(self._linearize_workspace, not continuous)
         x_next = None
-        if not continuous:  # the step itself, on a copy (the same step: paths evaluated at both stages)
-            probe = copy.deepcopy(self)
-            probe.set_state_vector(x0, StatePart.PHYSICS)
-            probe.step(1)
-            x_next = probe.get_state_vector(StatePart.PHYSICS)
+        if not continuous:
+            # Where the step lands, from the stages linearize() formed (the step's own arithmetic; a deepcopy of the
+            # arm stepped once cost 4x the linearisation, docs/control.md "Cost"). Where that step would stop, the
+            # step itself, on a copy, raises the SimulationError step() raises.
+            x_next, in_domain = out[4], out[5]
+            if not in_domain:
+                probe = copy.deepcopy(self)
+                probe.set_state_vector(x0, StatePart.PHYSICS)
+                probe.step(1)
+                x_next = probe.get_state_vector(StatePart.PHYSICS)
         slices = {k: slice(o, o + n) for k, (o, n) in self.model.state_layout.items()}
         return Linearization(A=None if continuous else out[2], B=None if continuous else out[3], dfdx=out[0],
                              dfdu=out[1], x0=x0, u0=u0, x0_next=x_next, dt=self.dt, slices=slices,

@@ -216,6 +216,7 @@ struct LinearizeWorkspace {
   ForwardTangent at_x, at_x2;  // the tangent at x and at the second stage x2 = x + h k1
   StepJacobian step_jacobian;  // the step's own J (fibre limiter applied) and its factorisation
   StateVec f{}, k1{}, x2{}, f2{}, k2{};  // the step's stages, as ros2.cc forms them
+  StateVec x_next{};  // x + h (3/2 k1 + 1/2 k2): where the step lands (written with A and B), as step_ros2 from x
   StateVec r{}, dk1{}, dk2{}, y{};       // one column's right-hand side and stage derivatives
   // How the step's J moves with x and u (W is not frozen: A and B differentiate the real step). Per element, the
   // derivatives of (dvel_dL, dvel_dlce, dvel_da, dforce_dL, dforce_dlce) with the element's own lce, activation and
@@ -244,7 +245,8 @@ struct LinearizeWorkspace {
 // ns = state_size) and df/du (ns x num_elements) of forward(); with A non-null also A = dx+/dx (ns x ns) and
 // B = dx+/du (ns x num_elements) of one ROS2 step of h (s) taken with exact paths at both stages (a step from a
 // state set from outside), W = I - h gamma J differentiated too (J's own derivatives by central differences, the
-// fibre limiter's stiffening included).
+// fibre limiter's stiffening included), and w.x_next: where that step lands, the same arithmetic as step_ros2's
+// from a state set from outside (its domain is not checked: check_domain(m, d, w.x_next) as integrate() does).
 // d's state, inputs and statistics are unchanged. Throws std::invalid_argument when d has a stimulation map (the
 // driven elements follow the stimulation stage's memory, not part of x) or for h <= 0.
 void linearize(const Model& m, Data& d, LinearizeWorkspace& w, double h, double* dfdx, double* dfdu, double* A,
