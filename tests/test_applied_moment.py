@@ -182,3 +182,19 @@ def test_arm_batch_outputs_follow_a_change_between_steps():
     batch.set_hand_load(force=(0.0, 0.0, -20.0))
     arm.set_hand_load(force=(0.0, 0.0, -20.0))
     np.testing.assert_array_equal(batch.gh_force[0], arm.outputs()["gh_force"])
+
+
+def test_opensim_coordinate_names_are_accepted_once_per_dof():
+    """set_applied_moment's dict takes the OpenSim coordinate names (EL_x) as Arm.dof_index does; one DOF named
+    twice (ELx and EL_x) is refused, an unknown name is a KeyError naming the DOFs."""
+    arm = armrt.Arm("das2")
+    arm.set_applied_moment({"EL_x": 1.5, "GHy": -0.5})
+    np.testing.assert_array_equal(arm.applied_moment, [-0.5, 0, 0, 1.5, 0])
+    with pytest.raises(ValueError, match="both name DOF ELx"):
+        arm.set_applied_moment({"EL_x": 1.0, "ELx": 2.0})
+    with pytest.raises(KeyError, match="unknown DOF.*EL_y.*OpenSim coordinate names"):
+        arm.set_applied_moment({"EL_y": 1.0})
+    np.testing.assert_array_equal(arm.applied_moment, [-0.5, 0, 0, 1.5, 0])  # a refused call changes nothing
+    batch = armrt.ArmBatch(2, "das2")
+    batch.set_applied_moment({"PS_y": 0.25})
+    np.testing.assert_array_equal(batch.applied_moment, [[0, 0, 0, 0, 0.25]] * 2)

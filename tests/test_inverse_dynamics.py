@@ -191,3 +191,21 @@ def test_das3_inverse_dynamics_vs_opensim_with_the_girdle_locked():
         assert np.abs(ours[arm_dofs] - tau_osim[arm_dofs]).max() / np.abs(tau_osim[arm_dofs]).max() < RTOL
     print(f"max relative error vs OpenSim's InverseDynamicsSolver (all 11 DOFs, girdle locked): {worst:.2e}")
     assert worst < RTOL
+
+
+def test_every_form_of_the_hand_load_is_the_same_and_a_misspelt_key_is_refused():
+    """(force, moment), [force, moment], a (6,) array and {"force", "moment"} give the same moments; a dict key
+    other than "force"/"moment" is a KeyError (a misspelt "moment" was a silent zero moment)."""
+    arm = armrt.Arm("das2")
+    q = np.radians([30, 60, 10, 60, 80])
+    f, m = np.array([1.0, -20.0, 3.0]), np.array([0.5, 0.0, -0.2])
+    ref = arm.inverse_dynamics(q, hand_load=(f, m))
+    assert np.abs(ref - arm.inverse_dynamics(q)).max() > 1.0
+    for form in ([f, m], np.concatenate([f, m]), {"force": f, "moment": m}):
+        np.testing.assert_array_equal(arm.inverse_dynamics(q, hand_load=form), ref)
+    np.testing.assert_array_equal(arm.inverse_dynamics(q, hand_load={"force": f}), arm.inverse_dynamics(q, hand_load=f))
+    for bad in ({"forse": f}, {"force": f, "momnet": m}):
+        with pytest.raises(KeyError, match="unknown key"):
+            arm.inverse_dynamics(q, hand_load=bad)
+    with pytest.raises(ValueError, match=r"qdot\[ELx\] = -500 rad/s is beyond max_joint_speed"):
+        arm.inverse_dynamics(q, qdot=[0, 0, 0, -500, 0])

@@ -156,6 +156,8 @@ def test_result_names_shapes_and_units():
         lin.block("A", "qd", "q")
     with pytest.raises(ValueError, match="not computed"):
         arm.linearize(continuous=True).block("A", "q", "q")
+    with pytest.raises(KeyError, match="unknown matrix 'C'"):
+        lin.block("C", "q", "q")
 
 
 def test_linearize_raises_where_the_step_would_stop():

@@ -264,6 +264,40 @@ def test_bad_input_names_the_problem():
         armrt.static_optimization(arm, q, tendon="stiff")
     with pytest.raises(ValueError, match="degrees"):
         armrt.static_optimization(arm, np.degrees(q) + 50)
+    # Fewer than 3 sides bound no area (polygon_sides=2 returned GHstab 0.27 under a 0.05 bound as feasible).
+    for sides in (2, 1, 0, -4, 65, 3.0, True):
+        with pytest.raises(ValueError, match=r"polygon_sides must be an integer in \[3, 64\]"):
+            armrt.StaticOptimizer(arm, gh_stab_max=0.05, polygon_sides=sides, backend="python")
+    with pytest.raises(ValueError, match=r"polygon sides must be an integer"):
+        gh_polygon(0.5, 0.3, 0.1, 2)
+    for bad, err in ((-1, ValueError), (0, ValueError), ("5", TypeError), (2.5, TypeError)):
+        with pytest.raises(err, match="max_iterations"):
+            armrt.StaticOptimizer(arm, max_iterations=bad)
+    with pytest.raises(TypeError, match="gh_stab_max must be a number"):
+        armrt.StaticOptimizer(arm, gh_stab_max=True)
+    with pytest.raises(ValueError, match=r"qdot\[GHy\] = 10000 rad/s is beyond max_joint_speed"):
+        armrt.static_optimization(arm, q, qdot=[1e4, 0, 0, 0, 0])
+    with pytest.raises(KeyError, match="unknown key"):
+        armrt.static_optimization(arm, q, hand_load={"force": [0, -5, 0], "momnet": [0, 0, 1]})
+
+
+@pytest.mark.parametrize("tendon", ["elastic", "rigid"])
+def test_a_common_factor_of_the_weights_does_not_move_the_optimum(tendon):
+    """The optimum of sum w a^2 is the same for c w; the Python backend's QPs see the weights scaled to a mean of 1
+    (at 1e-8 the answer had moved by 0.024, at 1e9 a feasible problem was reported infeasible)."""
+    arm = armrt.Arm("das2")
+    q = np.radians([30, 60, 10, 60, 80])
+    ref = armrt.static_optimization(arm, q, tendon=tendon, backend="python")
+    w = np.random.default_rng(0).uniform(0.5, 2.0, arm.n_elements)
+    ref_w = armrt.static_optimization(arm, q, weights=w, tendon=tendon, backend="python")
+    assert np.abs(ref_w.activation - ref.activation).max() > 1e-3  # the weights do matter
+    for c in (1e-8, 1e-12, 1e9):
+        r = armrt.static_optimization(arm, q, weights=np.full(arm.n_elements, c), tendon=tendon, backend="python")
+        assert r.feasible
+        np.testing.assert_allclose(r.activation, ref.activation, atol=1e-8)
+        np.testing.assert_allclose(r.objective, c * ref.objective, rtol=1e-6)
+        rw = armrt.static_optimization(arm, q, weights=c * w, tendon=tendon, backend="python")
+        np.testing.assert_allclose(rw.activation, ref_w.activation, atol=1e-8)
 
 
 # ---------------------------------------------------------------------------- along a motion (item 3)
@@ -293,6 +327,8 @@ def test_motion_from_arrays_and_from_a_mot_file(tmp_path):
     assert from_file.activation.shape == (res.time.size, arm.n_elements)
     with pytest.raises(ValueError, match="time"):
         armrt.static_optimization_motion(arm, q)
+    with pytest.raises(ValueError, match="own time column"):
+        armrt.static_optimization_motion(arm, mot, time=res.time)
     with pytest.raises(ValueError, match=r"shape \(T, 5\)"):
         armrt.static_optimization_motion(arm, q[:, :3], time=t)
     with pytest.raises(ValueError, match="strictly increasing"):

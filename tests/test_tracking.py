@@ -108,3 +108,27 @@ def test_track_motion_refuses_an_arm_driven_by_stimulation():
     q, t = _elbow_flexion(arm)
     with pytest.raises(ValueError, match="stimulation map"):
         armrt.track_motion(arm, q, t)
+
+
+def test_an_arm_that_falls_away_is_tracked_to_the_end_with_its_intervals_infeasible():
+    """3000 N at the hand: no activation holds the arm, it falls, and the predicted posture leaves the engine's
+    domain within 0.01 s. That is counted infeasible (the docs' promise for infeasible intervals), not a ValueError
+    about the user's q with a degrees hint (what it raised before)."""
+    arm = armrt.Arm("das2")
+    arm.set_hand_load([0, -3000, 0])
+    q_ref = np.tile(arm.model.rest_posture, (11, 1))
+    r = armrt.track_motion(arm, q_ref, np.linspace(0, 0.05, 11))
+    assert len(r.feasible) == 5 and not r.feasible.any()
+    assert np.all(np.isfinite(r.excitation)) and r.error_max_deg["ELx"] > 1.0
+
+
+@pytest.mark.parametrize("kw, match", [({"kp": np.nan}, "kp and kv must be finite"),
+                                       ({"kv": np.inf}, "kp and kv must be finite"),
+                                       ({"control_interval": np.nan}, "control_interval must be a finite")])
+def test_gains_and_interval_must_be_finite(kw, match):
+    arm = armrt.Arm("das2")
+    arm.step(3)
+    before = arm.get_state_vector(armrt.StatePart.FULL)
+    with pytest.raises(ValueError, match=match):
+        armrt.track_motion(arm, np.tile(arm.model.rest_posture, (11, 1)), np.linspace(0, 0.1, 11), **kw)
+    np.testing.assert_array_equal(arm.get_state_vector(armrt.StatePart.FULL), before)  # refused before the reset

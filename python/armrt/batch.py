@@ -331,7 +331,8 @@ class ArmBatch:
         """Generalised forces N m applied at the joints (as Arm.set_applied_moment): (n, ndof) per arm, (ndof,)
         or {dof name: value} for every arm, or 0. KeyError for an unknown DOF, ValueError for another shape or
         NaN/infinite values."""
-        self._applied_moment[...] = applied_moments(moment, self._arm.model.dof_names, rows=self.n)
+        self._applied_moment[...] = applied_moments(moment, self._arm.model.dof_names, rows=self.n,
+                                                     model_name=self._arm.model.name)
         self._outputs_stale = True
 
     @property

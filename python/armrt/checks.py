@@ -189,10 +189,13 @@ def dof_vector(v, what: str, dof_names) -> np.ndarray:
     return a
 
 
-def applied_moments(values, dof_names, what: str = "applied moment", rows: int | None = None) -> np.ndarray:
+def applied_moments(values, dof_names, what: str = "applied moment", rows: int | None = None,
+                    model_name: str | None = None) -> np.ndarray:
     """(ndof,) N m from an array of one value per DOF, {dof name: value} (DOFs not named get 0) or the number 0
-    (none); with rows (ArmBatch), (rows, ndof) arrays are accepted too. KeyError naming an unknown DOF and the
-    model's DOFs, ValueError for another shape or NaN/infinite values (naming the DOF, and the arm)."""
+    (none); with rows (ArmBatch), (rows, ndof) arrays are accepted too. With model_name, a dict's names may also be
+    the OpenSim coordinate names (EL_x), as Arm.dof_index takes them. KeyError naming an unknown DOF and the
+    model's DOFs, ValueError for another shape, NaN/infinite values (naming the DOF, and the arm) or two names of
+    one DOF."""
     if not isinstance(values, (Mapping, str, bytes)) and np.ndim(values) == 0:
         if real_scalar(values, what) != 0.0:
             raise ValueError(f"{what}: a single number must be 0 (no applied moment), got {values!r}; give one "
@@ -211,12 +214,30 @@ def applied_moments(values, dof_names, what: str = "applied moment", rows: int |
             raise ValueError(f"{what} must have shape ({rows}, {len(dof_names)}) or ({len(dof_names)},) "
                              f"({', '.join(dof_names)}), got {a.shape}")
     if isinstance(values, Mapping):
-        unknown = [k for k in values if k not in dof_names]
+        names = list(dof_names)
+
+        def index_of(k):
+            if k in names:
+                return names.index(k)
+            if model_name is not None and isinstance(k, str):
+                try:
+                    return _core.find_dof(model_name, k)
+                except (KeyError, ValueError, RuntimeError):
+                    return None
+            return None
+        index = {k: index_of(k) for k in values}
+        unknown = [k for k, j in index.items() if j is None]
         if unknown:
-            raise KeyError(f"{what}: unknown DOF(s) {unknown}; the model's DOFs are {', '.join(dof_names)}")
+            raise KeyError(f"{what}: unknown DOF(s) {unknown}; the model's DOFs are {', '.join(dof_names)}"
+                           + (" (or their OpenSim coordinate names)" if model_name is not None else ""))
         out = np.zeros(len(dof_names))
+        seen = {}
         for k, v in values.items():
-            out[list(dof_names).index(k)] = real_scalar(v, f"{what}[{k!r}]")
+            j = index[k]
+            if j in seen:
+                raise ValueError(f"{what}: {seen[j]!r} and {k!r} both name DOF {names[j]}; give it once")
+            seen[j] = k
+            out[j] = real_scalar(v, f"{what}[{k!r}]")
         values = out
     return dof_vector(values, what, dof_names)
 

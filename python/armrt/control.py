@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from .checks import hand_load as _checked_hand_load
-from .checks import dof_vector, joint_range, real_array, real_scalar
+from .checks import count, dof_vector, joint_range, real_array, real_scalar
 from .errors import StaticOptimizationInfeasible
 
 # Below |theta| tan|theta| = 1/2 (|theta| < 0.6533 rad), atan(u)^2 is convex in u = tan(theta), so the set of
@@ -32,6 +32,7 @@ CONVEX_HALF_ANGLE = 0.6532711870  # rad, the root of x tan x = 1/2
 # Beyond this (rad) the bound's ellipse approaches the glenoid plane (theta -> pi/2): refused.
 MAX_BOUND_HALF_ANGLE = 1.45
 POLYGON_SIDES = 24
+MAX_POLYGON_SIDES = 64  # cpp/include/armrt/static_optimization.h kMaxGhPolygonSides: both backends take the same
 MOMENT_TOLERANCE = 1e-7  # N m, the SQP's stop on the moment residual (|.|_inf), below the 1e-6 acceptance
 _INF = 1e20
 
@@ -72,10 +73,16 @@ def _dof_vector(model, v, what: str, allow_scalar_zero: bool = False) -> np.ndar
 
 
 def _hand_load(hand_load, default) -> tuple[np.ndarray, np.ndarray]:
-    """None -> default; a force (3,) N; (force (3,), moment (3,)); or a (6,) [force, moment] (thorax frame)."""
+    """None -> default; a force (3,) N; (force (3,), moment (3,)) or [force, moment] (2, 3); a (6,) [force, moment];
+    or {"force": (3,), "moment": (3,)} (either may be left out: zero), thorax frame. KeyError for another key (a
+    misspelt "moment" would otherwise be a zero moment)."""
     if hand_load is None:
         return default
     if isinstance(hand_load, dict):
+        unknown = [k for k in hand_load if k not in ("force", "moment")]
+        if unknown:
+            raise KeyError(f"hand_load: unknown key(s) {unknown}; a hand_load dict has 'force' (3,) N and 'moment' "
+                           f"(3,) N m")
         return _checked_hand_load(hand_load.get("force", np.zeros(3)), hand_load.get("moment", np.zeros(3)))
     if isinstance(hand_load, tuple) and len(hand_load) == 2:
         return _checked_hand_load(*hand_load)
@@ -84,13 +91,23 @@ def _hand_load(hand_load, default) -> tuple[np.ndarray, np.ndarray]:
         return _checked_hand_load(a, np.zeros(3))
     if a.shape == (6,):
         return _checked_hand_load(a[:3], a[3:])
-    raise ValueError(f"hand_load must be a force (3,) N, (force, moment) or a (6,) [force, moment] (thorax frame), "
-                     f"got shape {a.shape}")
+    if a.shape == (2, 3):
+        return _checked_hand_load(a[0], a[1])
+    raise ValueError(f"hand_load must be a force (3,) N, (force, moment), a (6,) [force, moment] or "
+                     f"{{'force': ..., 'moment': ...}} (thorax frame), got shape {a.shape}")
 
 
-def _state(model, q, qdot, qddot):
+def _state(model, q, qdot, qddot, sim=None):
+    """(q, qdot, qddot) checked; with sim (the engine arm), qdot within its max_joint_speed, the bound a step and
+    set_state_vector hold (a faster joint is a diverged simulation, not a state to solve for)."""
     q = joint_range(_dof_vector(model, q, "q"), model.dof_names, model.dof_ranges, warn=False)
-    return q, _dof_vector(model, qdot, "qdot", True), _dof_vector(model, qddot, "qddot", True)
+    qd = _dof_vector(model, qdot, "qdot", True)
+    vmax = getattr(sim, "max_joint_speed", None)
+    if vmax is not None and np.any(np.abs(qd) > vmax):
+        j = int(np.argmax(np.abs(qd)))
+        raise ValueError(f"qdot[{model.dof_names[j]}] = {qd[j]:g} rad/s is beyond max_joint_speed {vmax:g} rad/s "
+                         f"(the bound a step holds: faster means a diverged simulation)")
+    return q, qd, _dof_vector(model, qddot, "qddot", True)
 
 
 def check_on_infeasible(on_infeasible) -> None:
@@ -114,7 +131,7 @@ def inverse_dynamics(arm_or_model, q, qdot=0.0, qddot=0.0, hand_load=None, parts
     parts=True returns a dict: tau_muscle, mass_times_qddot, bias (b), passive, external, girdle (ndof,) and
     gh_force_without_muscles (3,) N, scapula frame. ValueError for NaN, wrong shapes or q far beyond range."""
     sim, model, default_load = _target(arm_or_model)
-    q, qd, qdd = _state(model, q, qdot, qddot)
+    q, qd, qdd = _state(model, q, qdot, qddot, sim)
     f, m = _hand_load(hand_load, default_load)
     if hasattr(arm_or_model, "_sim"):
         out = sim.inverse_dynamics(q, qd, qdd, f, m)
@@ -134,7 +151,11 @@ def gh_polygon(theta_a: float, phi_a: float, bound: float, sides: int = POLYGON_
     origin (the function grows along every ray), so a polygon is inside it exactly when its edges are: the
     edges are checked at 64 points each and the polygon shrunk (its vertices' angles scaled by 0.99) until
     they are, which keeps the constraint conservative at the price of a bound tighter than asked
-    (docs/control.md). ValueError for a bound <= 0 or one whose ellipse reaches MAX_BOUND_HALF_ANGLE."""
+    (docs/control.md). ValueError for a bound <= 0, one whose ellipse reaches MAX_BOUND_HALF_ANGLE, or sides outside
+    [3, MAX_POLYGON_SIDES]."""
+    if isinstance(sides, (bool, np.bool_)) or not isinstance(sides, (int, np.integer)) or \
+            not 3 <= sides <= MAX_POLYGON_SIDES:
+        raise ValueError(f"polygon sides must be an integer in [3, {MAX_POLYGON_SIDES}], got {sides!r}")
     bound = float(bound)
     if not (bound > 0 and math.isfinite(bound)):
         raise ValueError(f"gh_stab_max must be a finite number > 0, got {bound}")
@@ -223,7 +244,12 @@ class StaticOptimizer:
             raise ValueError(f"criterion must be 'squared' or 'cubed', got {criterion!r}")
         if tendon not in ("elastic", "rigid"):
             raise ValueError(f"tendon must be 'elastic' or 'rigid', got {tendon!r}")
-        self.criterion, self.tendon, self.max_iterations = criterion, tendon, int(max_iterations)
+        self.criterion, self.tendon = criterion, tendon
+        self.max_iterations = count(max_iterations, "max_iterations", minimum=1)
+        if isinstance(polygon_sides, (bool, np.bool_)) or not isinstance(polygon_sides, (int, np.integer)) or \
+                not 3 <= polygon_sides <= MAX_POLYGON_SIDES:
+            # Fewer than 3 sides bound no area: the "polygon" would not keep GHstab under the bound at all.
+            raise ValueError(f"polygon_sides must be an integer in [3, {MAX_POLYGON_SIDES}], got {polygon_sides!r}")
         if weights is None:
             self.weights = np.ones(n)
         else:
@@ -238,6 +264,8 @@ class StaticOptimizer:
         self.gh_stab_max = None
         self._gh_rows = np.zeros((0, 3))
         if gh_stab_max is not None:
+            if isinstance(gh_stab_max, (bool, np.bool_)):
+                raise TypeError(f"gh_stab_max must be a number > 0 or None, got {gh_stab_max!r}")
             s = real_scalar(gh_stab_max, "gh_stab_max")
             self._gh_rows = np.vstack([gh_polygon(g["rim_half_angle_major"], g["rim_half_angle_minor"], s, polygon_sides),
                                        [-1.0, 0.0, 0.0]])  # F.normal >= 0
@@ -299,7 +327,7 @@ class StaticOptimizer:
         result as .result) or "return" (the result with feasible False). ValueError for bad input."""
         check_on_infeasible(on_infeasible)
         model, sim = self.model, self._sim
-        q, qd, qdd = _state(model, q, qdot, qddot)
+        q, qd, qdd = _state(model, q, qdot, qddot, sim)
         f_hand, m_hand = _hand_load(hand_load, self._default_load if not hasattr(self._arm_or_model, "_sim") else
                                     (np.array(sim.hand_force), np.array(sim.hand_moment)))
         if self._cpp is not None:
@@ -377,7 +405,10 @@ class StaticOptimizer:
         C_rows = self._gh_rows
         n_in = C_rows.shape[0]
         qp = self._qp_object(slack, n_in)
-        w = self.weights
+        # The optimum does not change with a common factor of the weights, but ProxQP's tolerances are absolute:
+        # weights of 1e-8 (or m^3 muscle volumes) moved the answer by 0.02 and 1e9 failed a feasible problem. So the
+        # QPs see the weights scaled to a mean of 1; the reported objective uses the user's (_objective).
+        w = self.weights / self.weights.mean()
         a = a.copy()
         lin = self.tendon == "rigid" and self.criterion == "squared" and not slack
         converged = False

@@ -50,11 +50,14 @@ def static_optimization_motion(arm_or_model, motion, time=None, hand_load=None, 
     second-order finite differences (numpy.gradient; filter noisy data first). Each frame is solved warm started
     from the previous one (StaticOptimizer's options). on_infeasible="raise" raises StaticOptimizationInfeasible
     at the first infeasible frame, its time in the message; "return" keeps going and marks the frame
-    (feasible False, its report in reports). ValueError for a bad motion (shapes, NaN, time not increasing)."""
+    (feasible False, its report in reports). ValueError for a bad motion (shapes, NaN, time not increasing) or a
+    time given with a .mot file."""
     check_on_infeasible(on_infeasible)  # the frames are solved with "return": a misspelt "raise" must not pass
     model = arm_or_model.model if hasattr(arm_or_model, "_sim") else arm_or_model
     if isinstance(motion, (str, bytes)) or hasattr(motion, "__fspath__"):
         from .opensim_io import read_motion  # noqa: PLC0415 (opensim_io imports arm, which imports control)
+        if time is not None:
+            raise ValueError("time: a .mot file has its own time column; give time only with q as an array")
         m = read_motion(motion, model=model.name)
         time, q = m.time, m.q
     else:

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .checks import real_array, real_scalar
+from .checks import STATE_MARGIN, real_array, real_scalar
 from .control import StaticOptimizer
 from .control_motion import check_motion
 
@@ -79,7 +79,10 @@ def track_motion(arm, q_ref, time, kp: float = KP_THELEN_2003, kv: float = KV_TH
     reset to q_ref[0] with the reference velocity and the static-optimisation activations there, then simulated one
     control interval at a time (a whole number of the arm's steps; a last part of the motion shorter than an
     interval is not run). kp (s^-2), kv (s^-1) >= 0: the feedback gains (kp = kv = 0 plays the feedforward alone).
-    gh_stab_max, weights, criterion, tendon: as armrt.StaticOptimizer. ValueError for bad input (shapes, NaN,
+    gh_stab_max, weights, criterion, tendon: as armrt.StaticOptimizer. An interval whose static optimisation is
+    infeasible keeps its closest solution and is counted False in `feasible`; so is one whose predicted posture lies
+    beyond the engine's domain (joint ranges + 0.35 rad: the arm has fallen away), solved at the domain's edge.
+    ValueError for bad input (shapes, NaN,
     gains, an interval not a whole number of steps, a motion shorter than one interval, an arm with a stimulation
     map); TypeError for a Model."""
     from scipy.interpolate import CubicSpline  # noqa: PLC0415 (scipy is a dependency; only this needs it)
@@ -94,9 +97,11 @@ def track_motion(arm, q_ref, time, kp: float = KP_THELEN_2003, kv: float = KV_TH
     time = real_array(time, "time")
     check_motion(model, q_ref, time, "q_ref", 4)
     kp, kv = real_scalar(kp, "kp"), real_scalar(kv, "kv")
-    if kp < 0 or kv < 0:
-        raise ValueError(f"kp and kv must be >= 0, got kp={kp:g}, kv={kv:g}")
+    if not (np.isfinite(kp) and np.isfinite(kv) and kp >= 0 and kv >= 0):
+        raise ValueError(f"kp and kv must be finite and >= 0, got kp={kp:g}, kv={kv:g}")
     interval = real_scalar(control_interval, "control_interval")
+    if not (np.isfinite(interval) and interval > 0):
+        raise ValueError(f"control_interval must be a finite number of seconds > 0, got {interval:g}")
     steps = int(round(interval / arm.dt))
     if steps < 1 or abs(steps * arm.dt - interval) > 1e-9 * max(1.0, interval):
         raise ValueError(f"control_interval must be a whole number (>= 1) of the arm's step {arm.dt:g} s, "
@@ -116,6 +121,8 @@ def track_motion(arm, q_ref, time, kp: float = KP_THELEN_2003, kv: float = KV_TH
     if k_total < 1:
         raise ValueError(f"the motion lasts {time[-1] - t0:g} s, less than one control interval ({interval:g} s)")
     nq, n = model.n_dofs, model.n_elements
+    domain_lo = model.dof_ranges[:, 0] - 0.999 * STATE_MARGIN
+    domain_hi = model.dof_ranges[:, 1] + 0.999 * STATE_MARGIN
     out_t, out_q, out_r = np.empty(k_total), np.empty((k_total, nq)), np.empty((k_total, nq))
     out_u, out_a = np.empty((k_total, n)), np.empty((k_total, n))
     feasible, gh = np.empty(k_total, bool), np.empty(k_total)
@@ -125,13 +132,18 @@ def track_motion(arm, q_ref, time, kp: float = KP_THELEN_2003, kv: float = KV_TH
         q, qd = arm.q, arm.qdot
         q_pred = q + interval * qd
         qdd_des = ref_a(t_next) + kv * (ref_v(t_next) - qd) + kp * (spline(t_next) - q_pred)
-        res = so.solve(q_pred, qd, qdd_des, on_infeasible="return")
+        # An arm that has fallen away from the motion (infeasible intervals before) can be predicted beyond the
+        # engine's domain, where the static optimisation refuses a pose: solve at the domain's edge instead, and
+        # count the interval infeasible.
+        q_solve = np.clip(q_pred, domain_lo, domain_hi)
+        res = so.solve(q_solve, qd, qdd_des, on_infeasible="return")
         amax = arm.max_activation
         u = excitation_reaching(arm.activation, res.activation, c1, c2, interval, amax)
         arm.set_excitation(u)
         arm.step(steps)
         out_t[k], out_q[k], out_r[k] = arm.time, arm.q, spline(arm.time)
-        out_u[k], out_a[k], feasible[k], gh[k] = u, res.activation, res.feasible, arm.gh_stab
+        out_u[k], out_a[k], gh[k] = u, res.activation, arm.gh_stab
+        feasible[k] = res.feasible and bool(np.array_equal(q_solve, q_pred))
     err = np.degrees(out_q - out_r)
     names = model.dof_names
     return TrackingResult(time=out_t, q=out_q, q_ref=out_r, excitation=out_u, target_activation=out_a,

@@ -378,9 +378,9 @@ class Data:
         qfrc_applied: joint friction, an exoskeleton's or a perturbation's moments, added to the muscles',
         passive joints', gravity's and the hand load's in the equations of motion (not to the muscles' share
         that inverse_dynamics returns). moment: an array of one value per DOF (positive along the DOF),
-        {dof name: value} (other DOFs 0), or 0 to remove them. KeyError for an unknown DOF name, ValueError
-        for another shape or NaN/infinite values."""
-        a = applied_moments(moment, self.model.dof_names)
+        {dof name: value} (armrt or OpenSim coordinate names; other DOFs 0), or 0 to remove them. KeyError for an
+        unknown DOF name, ValueError for another shape, NaN/infinite values or one DOF named twice."""
+        a = applied_moments(moment, self.model.dof_names, model_name=self.model.name)
         with self._exclusive():
             self._sim.applied_moment[:] = a
 

@@ -37,7 +37,10 @@ class Linearization:
     input_names: list
 
     def block(self, matrix: str, rows: str, cols: str) -> np.ndarray:
-        """A sub-block by state block names, e.g. block("A", "q", "activation"); cols "u" for B and dfdu."""
+        """A sub-block by state block names, e.g. block("A", "q", "activation"); cols "u" for B and dfdu. KeyError for
+        an unknown matrix or block name, ValueError for A or B of a continuous linearisation."""
+        if matrix not in ("A", "B", "dfdx", "dfdu"):
+            raise KeyError(f"unknown matrix {matrix!r}: one of 'A', 'B', 'dfdx', 'dfdu'")
         M = getattr(self, matrix)
         if M is None:
             raise ValueError(f"{matrix} is not computed in a continuous linearisation")
