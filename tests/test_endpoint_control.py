@@ -179,3 +179,93 @@ def test_start_at_rest_holds_the_hand_where_velocity_mode_would_let_it_fall():
         moved[how] = float(np.linalg.norm(ctl.hand_position() - x0))
     assert moved["at_rest"] < 0.001, moved
     assert moved["plain_reset"] > 0.01, moved
+
+
+def test_a_stimulated_arm_is_refused():
+    """An arm with a stimulation map ignores set_excitation on the elements the map reaches: before, the
+    controller and start_at_rest accepted it and the hand fell 394 mm in 0.5 s with nothing reported."""
+    from armrt.endpoint_control import start_at_rest
+    arm = armrt.Arm("das2", stimulation="per_muscle")
+    with pytest.raises(ValueError, match="stimulation map.*fes_control"):
+        EndpointController(arm)
+    with pytest.raises(ValueError, match="stimulation map.*fes_control"):
+        start_at_rest(arm, Q0)
+    # A map installed after the controller was built: refused at the next solve, not ignored.
+    arm = armrt.Arm("das2")
+    arm.reset(q=Q0)
+    ctl = EndpointController(arm, EndpointGains(solve_every=2))
+    ctl.step()
+    arm.set_stimulation_map("per_muscle")
+    ctl.step()                               # step 1: no solve
+    with pytest.raises(ValueError, match="stimulation map"):
+        ctl.step()
+
+
+def test_start_at_rest_raises_for_an_infeasible_hold_and_leaves_the_arm_alone():
+    """3 kN at the hand cannot be held: before, start_at_rest reset the arm with a best effort and said nothing."""
+    from armrt.endpoint_control import start_at_rest
+    arm = armrt.Arm("das2")
+    arm.set_hand_load([0.0, -3000.0, 0.0])
+    arm.reset(q=np.radians([20, 50, 0, 40, 70]))
+    arm.step(3)
+    before, t_before = arm.get_state_vector(), arm.time
+    with pytest.raises(armrt.StaticOptimizationInfeasible, match=r"(?s)start_at_rest.*not reset.*residual moment") as err:
+        start_at_rest(arm, Q0)
+    assert err.value.result is not None and not err.value.result.feasible
+    assert "residual moment" in err.value.report and not err.value.report.startswith("start_at_rest")
+    np.testing.assert_array_equal(arm.get_state_vector(), before)
+    assert arm.time == t_before
+    # Opted into: reset with the closest activations, and said so.
+    with pytest.warns(RuntimeWarning, match=r"(?s)closest activations.*residual moment"):
+        a = start_at_rest(arm, Q0, on_infeasible="return")
+    np.testing.assert_allclose(arm.q, Q0)
+    np.testing.assert_allclose(arm.activation, a)
+    assert np.all(a <= arm.max_activation)
+    with pytest.raises(ValueError, match="on_infeasible"):
+        start_at_rest(arm, Q0, on_infeasible="best_effort")
+
+
+def test_start_at_rest_refuses_a_bad_q_before_solving():
+    from armrt.endpoint_control import start_at_rest
+    arm = armrt.Arm("das2")
+    with pytest.raises(ValueError, match="q"):
+        start_at_rest(arm, [0.1, 0.2])
+    with pytest.raises(ValueError, match="deg"):           # degrees given as radians: reset's range error
+        start_at_rest(arm, np.degrees(Q0))
+    a = start_at_rest(arm, dict(zip(arm.dof_names, Q0)))  # DOF names, as reset takes them
+    np.testing.assert_allclose(arm.q, Q0)
+    assert a.max() > 0.01
+
+
+def test_a_model_is_refused_with_a_type_error():
+    arm = armrt.Arm("das2")
+    from armrt.endpoint_control import start_at_rest
+    with pytest.raises(TypeError, match=r"needs an armrt\.Arm.*got Model"):
+        EndpointController(arm.model)
+    with pytest.raises(TypeError, match=r"needs an armrt\.Arm.*got Model"):
+        start_at_rest(arm.model, Q0)
+
+
+@pytest.mark.parametrize("bad, exc, match", [
+    (-1, ValueError, "gh_stab_max must be None or a finite number > 0"),
+    (0, ValueError, "gh_stab_max must be None or a finite number > 0"),
+    (np.nan, ValueError, "gh_stab_max must be None or a finite number > 0"),
+    (np.inf, ValueError, "gh_stab_max must be None or a finite number > 0"),
+    ("x", TypeError, "gh_stab_max"),
+    (True, TypeError, "gh_stab_max must be a number, got the bool True"),
+    (np.bool_(True), TypeError, "gh_stab_max must be a number, got the bool"),
+])
+def test_gains_refuse_a_bad_gh_stab_max_themselves(bad, exc, match):
+    """Before, EndpointGains kept any gh_stab_max and only the controller's StaticOptimizer refused it (True
+    not at all: it was taken as 1)."""
+    with pytest.raises(exc, match=match):
+        EndpointGains(gh_stab_max=bad)
+
+
+def test_gains_accept_a_good_gh_stab_max_and_refuse_bool_gains():
+    g = EndpointGains(gh_stab_max=np.float32(0.5))
+    assert g.gh_stab_max == 0.5 and type(g.gh_stab_max) is float
+    assert EndpointGains().gh_stab_max is None
+    assert EndpointController(armrt.Arm("das2"), g)._so.gh_stab_max == 0.5
+    with pytest.raises(TypeError, match="kd must be a number, got the bool"):
+        EndpointGains(kd=True)

@@ -19,12 +19,15 @@ loops in series oscillated (measured: hand - x_ref up to 0.34 m, growing oscilla
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
 from . import checks
-from .control import StaticOptimizer
+from .arm import Arm
+from .control import StaticOptimizer, check_on_infeasible
+from .errors import StaticOptimizationInfeasible
 
 
 @dataclass
@@ -32,7 +35,12 @@ class EndpointGains:
     """kp (1/s^2), kd (1/s): the hand PD (kd = 2 sqrt(kp) x 0.95 by default: near critical damping of the
     point-mass error dynamics a = -kp e - kd edot); k_null (1/s): null-space joint damping; solve_every: steps
     between static-optimisation solves (10 at 1 ms: ~1-4 ms per solve cannot run every 1 ms step);
-    gh_stab_max: None or the GH-stability bound handed to StaticOptimizer."""
+    gh_stab_max: None or the GH-stability bound (paper eq. 5, dimensionless) handed to StaticOptimizer, a finite
+    number > 0. TypeError for a gain that is not a real number (a string, None for kp, kd, k_null, or a bool:
+    True would be taken as 1) or a solve_every that is not an integer; ValueError for kp, kd, k_null negative or
+    not finite, gh_stab_max <= 0 or not finite, solve_every < 1. The model-dependent upper limit of gh_stab_max
+    (its ellipse must stay within MAX_BOUND_HALF_ANGLE of the glenoid normal, armrt.control.gh_polygon) is checked
+    when a controller builds its StaticOptimizer: the gains are not tied to a model."""
     kp: float = 40.0
     kd: float = 12.0
     k_null: float = 5.0
@@ -41,11 +49,40 @@ class EndpointGains:
 
     def __post_init__(self):
         for name in ("kp", "kd", "k_null"):
-            v = checks.real_scalar(getattr(self, name), name)
+            v = _gain(getattr(self, name), name)
             if not math.isfinite(v) or v < 0:
                 raise ValueError(f"{name} must be a finite number >= 0, got {v}")
             setattr(self, name, v)
         self.solve_every = checks.count(self.solve_every, "solve_every", minimum=1)
+        if self.gh_stab_max is not None:
+            # StaticOptimizer's own rule (finite, > 0) here, so a bad bound is refused where it is written and not
+            # only when a controller is built from these gains.
+            v = _gain(self.gh_stab_max, "gh_stab_max")
+            if not (math.isfinite(v) and v > 0):
+                raise ValueError(f"gh_stab_max must be None or a finite number > 0, got {v}")
+            self.gh_stab_max = v
+
+
+def _gain(value, name) -> float:
+    """A real scalar; TypeError for a bool, which checks.real_scalar would take as 0 or 1."""
+    if isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name} must be a number, got the bool {value!r}")
+    return checks.real_scalar(value, name)
+
+
+def _driven_arm(arm, who: str):
+    """arm itself if it is an armrt.Arm whose excitations drive its elements: TypeError for anything else (a
+    Model has no state to drive), ValueError for an arm with a stimulation map, whose elements ignore the
+    excitation (set_excitation would be accepted and the hand would fall)."""
+    if not isinstance(arm, Arm):
+        raise TypeError(f"{who} needs an armrt.Arm (it sets the excitations of the arm it steps), got "
+                        f"{type(arm).__name__}" + (": make one with armrt.Arm(model_name)" if
+                                                   type(arm).__name__ == "Model" else ""))
+    if arm.channel_names:
+        raise ValueError(f"{who}: this arm has a stimulation map; the elements it drives follow the stimulation "
+                         "channels, not the excitations computed here (clear the map: arm.set_stimulation_map(None), "
+                         "or drive the stimulated arm with a controller of armrt.fes_control)")
+    return arm
 
 
 def _vec3(v, what):
@@ -61,11 +98,13 @@ class EndpointController:
     tendon: the static optimisation's tendon, "elastic" (the default: the element as simulated, Python SQP around
     ProxQP) or "rigid" (one QP, solved by the engine's C++ static optimisation; its activations are those of a
     different muscle model than the one simulated, see docs/tasks.md for what that did on a Fitts block).
-    ValueError for bad commands, gains or tendon; an infeasible solve keeps its best activations (counted in
-    n_infeasible)."""
+    TypeError for an arm that is not an armrt.Arm (a Model) or gains that are not an EndpointGains; ValueError
+    for bad commands, gains or tendon, and for an arm with a stimulation map (at construction, and at the next
+    solve if a map is installed later: its elements would ignore the excitations); an infeasible solve keeps its
+    best activations (counted in n_infeasible)."""
 
     def __init__(self, arm, gains: EndpointGains | None = None, tendon: str = "elastic"):
-        self.arm = arm
+        self.arm = _driven_arm(arm, "EndpointController")
         self.gains = gains if gains is not None else EndpointGains()
         if not isinstance(self.gains, EndpointGains):
             raise TypeError(f"gains must be an EndpointGains, got {type(self.gains).__name__}")
@@ -98,6 +137,7 @@ class EndpointController:
 
     def _solve(self):
         arm, g = self.arm, self.gains
+        _driven_arm(arm, "EndpointController")  # a map installed since construction would take the elements over
         q, qd = arm.q, arm.qdot
         x = arm.model.hand_position(q)
         if self.velocity_mode:
@@ -122,13 +162,45 @@ class EndpointController:
         self.arm.step(1)
 
 
-def start_at_rest(arm, q) -> np.ndarray:
-    """Reset arm at q (ndof,) rad, at rest, with the activations that hold it there: the static optimisation
-    (elastic tendon) at (q, qdot = 0, qddot = 0), as armrt.track_motion starts its arm. Without it an arm reset with zero activation falls
-    until its muscles activate, which a velocity decoder then has to undo (measured: 57 mm in 1 s with v = 0,
-    docs/control.md#endpoint-control). Returns the activations (n,); an infeasible solve's best effort is used."""
-    arm.reset(q=q)
-    r = StaticOptimizer(arm).solve(arm.q, 0.0, 0.0, on_infeasible="return")
+def start_at_rest(arm, q, on_infeasible: str = "raise") -> np.ndarray:
+    """Reset arm at q (ndof,) rad (or a dict of DOF names, as Arm.reset), at rest, with the activations that hold
+    it there: the static optimisation (elastic tendon, the arm's hand load and settings) at (q, qdot = 0,
+    qddot = 0), as armrt.track_motion starts its arm. Without it an arm reset with zero activation falls until
+    its muscles activate, which a velocity decoder then has to undo (measured: 57 mm in 1 s with v = 0,
+    docs/control.md#endpoint-control). Returns the activations (n,), in [0, max_activation]; the arm's qdot is 0,
+    its time 0, its held excitation and hand load are kept (as reset does).
+
+    on_infeasible (as StaticOptimizer.solve): "raise" (the default) raises armrt.StaticOptimizationInfeasible (a
+    ValueError; the message and .report give the residual moment per DOF, .result the closest solution) when no
+    activations hold the arm at q, and leaves the arm as it was (not reset); "return" resets the arm with that
+    closest solution anyway and emits a RuntimeWarning with the report (the hand then moves from the first step).
+    TypeError for an arm that is not an armrt.Arm; ValueError for an arm with a stimulation map (its elements
+    ignore the activations' excitation: the controllers of armrt.fes_control drive such an arm), a bad
+    on_infeasible, or a q reset refuses (NaN, wrong shape, far beyond the joint ranges); TypeError for a q of
+    non-numbers."""
+    _driven_arm(arm, "start_at_rest")
+    check_on_infeasible(on_infeasible)
+    # reset's own checks of q first (a dict of DOF names, the range, das3's scapula on the thorax), so a bad q gets
+    # reset's error rather than an infeasible solve; their warnings are left to the reset below, which repeats them.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        q = arm._check_girdle_contact(arm._check_range(arm._dof_vector(q, "q")))
+    # Solved before the reset: the solve depends on q, the arm's settings and hand load only, so an infeasible hold
+    # is refused with the arm untouched.
+    try:
+        r = StaticOptimizer(arm).solve(q, 0.0, 0.0, on_infeasible="raise")
+    except StaticOptimizationInfeasible as exc:
+        if on_infeasible == "raise":
+            err = StaticOptimizationInfeasible(
+                "start_at_rest: no activations within [0, max_activation] hold the arm at rest at q (the arm was "
+                "not reset; on_infeasible='return' resets it with the closest activations): " + exc.report,
+                exc.result)
+            err.report = exc.report
+            raise err from exc
+        r = exc.result
+        warnings.warn("start_at_rest: no activations hold the arm at rest at q; it was reset with the closest "
+                      "activations (on_infeasible='return') and will move: " + exc.report, RuntimeWarning,
+                      stacklevel=2)
     a = np.minimum(r.activation, arm.max_activation)
     arm.reset(q=q, activation=a)
     return a
