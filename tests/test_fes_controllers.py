@@ -2,6 +2,7 @@
 blocks cross-checked against the engine, and short versions of the papers' protocols against the published bounds."""
 import copy
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -95,6 +96,163 @@ def test_controllers_check_their_inputs(setup):
         fc.StimulationCoding.from_arm(armrt.Arm("das2"))
     with pytest.raises(ValueError, match="channels"):
         fc.run_offline(armrt.Arm("das2", stimulation={"channels": [{"name": "f", "elements": ["bicl"]}]}), ctl, 0.1)
+
+
+def test_coding_refuses_non_finite_input_instead_of_coding_it_as_no_stimulation(setup):
+    """A NaN level, activation or recruitment used to code as 0 s pulse width (a failed controller hidden as
+    'no stimulation'); each now names the input and the channels or elements."""
+    arm, coding, _ = setup
+    C, n = len(coding.channel_names), arm.n_elements
+    bad = np.zeros(C)
+    bad[coding.channel_names.index("bicl")] = np.nan
+    with pytest.raises(ValueError, match=r"levels contains NaN.*'bicl'"):
+        coding.command(bad)
+    with pytest.raises(ValueError, match="levels contains NaN"):
+        coding.command(np.full(C, np.inf))
+    with pytest.raises(ValueError, match=r"activation contains NaN.*'deltscap1'"):
+        coding.levels(np.full(n, np.nan))
+    with pytest.raises(ValueError, match="recruitment contains NaN"):
+        coding.pulse_width(np.nan)
+    with pytest.raises(ValueError, match="pulse_width_s contains NaN"):
+        coding.recruitment(np.full(C, np.nan))
+    with pytest.raises(ValueError, match=r"pulse_width_s must be >= 0"):
+        coding.recruitment(-1e-4)
+    with pytest.raises(ValueError, match=rf"levels must have shape \({C},\)"):
+        coding.command(np.zeros((C, 1)))
+    with pytest.raises(ValueError, match=rf"activation must have shape \({n},\)"):
+        coding.levels(np.zeros(5))     # used to index past the end or read only the first elements
+    with pytest.raises(TypeError, match="levels must be numbers"):
+        coding.command("0.3")
+
+
+def test_coding_warns_once_when_it_clips_out_of_range_input(setup):
+    """Levels, activations and recruitments outside [0, 1] are clipped with one RuntimeWarning per call, as Arm
+    clips excitations; the clipped command equals the command of the clipped values."""
+    _, coding, _ = setup
+    C = len(coding.channel_names)
+    lv = np.full(C, 0.2)
+    lv[0], lv[1] = -1.0, 5.0
+    with pytest.warns(RuntimeWarning, match=r"levels outside \[0, 1\] clipped.*'deltscap', 'deltclav'") as rec:
+        cmd = coding.command(lv)
+    assert len(rec) == 1
+    np.testing.assert_array_equal(cmd, coding.command(np.clip(lv, 0.0, 1.0)))
+    with pytest.warns(RuntimeWarning, match=r"recruitment outside \[0, 1\]") as rec:
+        coding.pulse_width(np.full(C, 2.0))
+    assert len(rec) == 1
+    a = np.zeros(len(coding.element_names))
+    a[0] = 1.5
+    with pytest.warns(RuntimeWarning, match=r"activation outside \[0, 1\] clipped.*'deltscap1'") as rec:
+        got = coding.levels(a)
+    assert len(rec) == 1
+    np.testing.assert_allclose(got, coding.levels(np.minimum(a, 1.0)))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")       # in range: no warning
+        coding.command(np.full(C, 0.5))
+
+
+def test_feedforward_pid_needs_its_gains(setup):
+    """params has no default: the documented gains come from the plant's lag (chain_time_constant), which the
+    constructor's model (no map) and coding cannot measure; PIDParams() itself has no defaults to fall back on."""
+    arm, coding, _ = setup
+    t, q = v.movement_reference(arm, {"ELx": 10.0}, 1.0)
+    with pytest.raises(TypeError, match="required positional argument: 'params'"):
+        fc.FeedforwardPID(fc.model_arm(arm), coding, (t, q))
+    with pytest.raises(TypeError, match="params must be PIDParams"):
+        fc.FeedforwardPID(fc.model_arm(arm), coding, (t, q), None)
+    with pytest.raises(TypeError, match="params must be PDParams"):
+        fc.PDController(arm, coding, arm.rest_posture, fc.PIDParams(1.0, 0.0, 0.1))
+
+
+def test_run_offline_checks_duration_and_hold_up_front(setup):
+    arm, coding, _ = setup
+    plant = armrt.Arm("das2", stimulation="per_muscle")
+    pd = fc.PDController(plant, coding, plant.rest_posture, fc.PDParams(1.0, 0.3))
+    for duration in (-1.0, 0.0, np.nan, np.inf):
+        with pytest.raises(ValueError, match="duration must be finite and > 0 s"):
+            fc.run_offline(plant, pd, duration)
+    with pytest.raises(ValueError, match="shorter than one control interval"):
+        fc.run_offline(plant, pd, 0.005)     # floor(0.5) = 0 updates: a run that does nothing
+    with pytest.raises(TypeError, match="duration must be numbers"):
+        fc.run_offline(plant, pd, "1")
+    for hold in (np.nan, -1.0, np.inf):
+        with pytest.raises(ValueError, match="hold_s must be finite and >= 0 s"):
+            fc.run_offline(plant, pd, 0.02, hold_s=hold)
+    with pytest.raises(TypeError, match="hold_s must be numbers"):
+        fc.run_offline(plant, pd, 0.02, hold_s="1")
+    with pytest.raises(TypeError, match="hand_load must be None or a callable"):
+        fc.run_offline(plant, pd, 0.02, hand_load=(np.zeros(3), np.zeros(3)))
+    assert plant.time == 0.0      # every refusal came before the first step
+    # the hold is applied: with hold_s covering the run, the joints end where they started despite gravity
+    q0 = plant.q.copy()
+    run = fc.run_offline(plant, pd, 0.05, hold_s=0.05)
+    np.testing.assert_array_equal(run.q[-1], q0)
+    free = fc.run_offline(plant, pd, 0.05)
+    assert np.abs(free.q[-1] - q0).max() > 1e-6
+
+
+def test_controllers_refuse_a_non_finite_time_and_a_column_posture(setup):
+    arm, coding, tau = setup
+    q = arm.rest_posture.copy()
+    z = np.zeros(arm.n_dofs)
+    target = q.copy()
+    target[arm.dof_index("ELx")] += 0.3
+    pd = fc.PDController(arm, coding, q, fc.PDParams(1.0, 0.3), schedule=[(0.5, target)])
+    for t in (np.nan, np.inf):
+        with pytest.raises(ValueError, match="t must be a finite time"):
+            pd.update(t, q, z)     # NaN <= 0.5 is false: the scheduled target would never take over
+    assert len(pd.schedule) == 1
+    with pytest.raises(ValueError, match=r"q must have shape \(5,\) \(GHy.*got \(5, 1\)"):
+        pd.update(0.0, q[:, None], z)
+    with pytest.raises(ValueError, match=r"qdot must have shape \(5,\)"):
+        pd.update(0.0, q, z[:, None])
+    with pytest.raises(ValueError, match="look like degrees"):
+        pd.update(0.0, np.degrees(q), z)
+    with pytest.raises(ValueError, match=r"target must have shape \(5,\)"):
+        pd.set_target(q[:, None])
+    with pytest.raises(ValueError, match="schedule time must be a finite time"):
+        fc.PDController(arm, coding, q, fc.PDParams(1.0, 0.3), schedule=[(np.nan, target)])
+    t_ref, q_ref = v.movement_reference(arm, {"ELx": 10.0}, 1.0)
+    ff = fc.FeedforwardPID(fc.model_arm(arm), coding, (t_ref, q_ref), fc.PIDParams.pole_placement(tau))
+    with pytest.raises(ValueError, match="t must be a finite time"):
+        ff.update(np.nan, q, z)
+    with pytest.raises(ValueError, match=r"q must have shape \(5,\)"):
+        ff.update(0.0, q[:, None], z)
+    assert ff.state.last_t is None     # nothing of the refused updates was integrated
+
+
+def test_udp_control_loop_sends_zero_stimulation_when_the_controller_fails(setup):
+    """A state the controller refuses (NaN q) ends the loop with the error, after a zero command: the last
+    non-zero command is not left applied until the runner's timeout."""
+    from types import SimpleNamespace
+
+    from armrt.fes_control_udp import control_loop
+
+    arm, coding, _ = setup
+    pd = fc.PDController(arm, coding, arm.rest_posture, fc.PDParams(3.0, 0.3))
+    low = arm.rest_posture.copy()
+    low[arm.dof_index("ELx")] -= 0.2       # below the target: the flexors are stimulated
+    states = iter([low, np.full(arm.n_dofs, np.nan)])
+
+    class Client:
+        stimulation = SimpleNamespace(names=coding.channel_names)
+
+        def __init__(self):
+            self.sent = []
+
+        def latest_state(self, timeout):
+            return SimpleNamespace(time=0.0, q=next(states), qdot=np.zeros(arm.n_dofs), gh_stab=0.0,
+                                   received_at=0.0, stopped=False)
+
+        def send_stimulation(self, cmd):
+            self.sent.append(np.array(cmd))
+
+    client = Client()
+    with pytest.raises(ValueError, match="contains NaN"):
+        control_loop(pd, client, 1.0)
+    assert len(client.sent) == 2 and client.sent[0][:, 0].max() > 0
+    np.testing.assert_array_equal(client.sent[-1], 0.0)
+    with pytest.raises(ValueError, match="until_s"):
+        control_loop(pd, client, np.nan)
 
 
 # ------------------------------------------------------------------------------------------ (a) Blana 2009
@@ -371,3 +529,16 @@ def test_optimise_pd_reproduces_the_saved_gains():
     out = v.optimise_pd(save=None)
     kp, kd = v.saved_pd_gains()
     assert out["kp_per_rad"] == pytest.approx(kp, rel=1e-6) and out["kd_s_per_rad"] == pytest.approx(kd, rel=1e-6)
+
+
+def test_run_offline_joint_moment_takes_opensim_coordinate_names():
+    """A joint_moment callable may name DOFs as set_applied_moment does (EL_x for ELx): the same run as the array
+    form, and the plant's own moment restored after."""
+    runs = []
+    for form in ({"EL_x": 0.5}, np.array([0, 0, 0, 0.5, 0])):
+        plant = armrt.Arm("das2", stimulation="per_muscle")
+        coding = fc.StimulationCoding.from_arm(plant)
+        pd = fc.PDController(plant, coding, plant.model.rest_posture, fc.PDParams(1.0, 0.3))
+        runs.append(fc.run_offline(plant, pd, 0.03, joint_moment=lambda t, q, qdot, f=form: f).q)
+        np.testing.assert_array_equal(plant.applied_moment, np.zeros(plant.n_dofs))
+    np.testing.assert_array_equal(runs[0], runs[1])

@@ -22,11 +22,12 @@ from __future__ import annotations
 
 import math
 import time as _time
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from .checks import applied_moments, real_array, real_scalar
+from .checks import applied_moments, dof_vector, joint_range, real_array, real_scalar
 from .control import _INF, StaticOptimizer, _state
 
 #: Implanted-system coding (docs/fes.md): pulse width modulated at a held 20 mA (the intramuscular channels'
@@ -88,7 +89,12 @@ class StimulationCoding:
     channel_names (C,); element_index: per channel the element indices it reaches and weights (its map entries);
     threshold_A, saturation_A, reference_pulse_width_s, chronaxie_s, max_pulse_width_s, max_charge_C: (C,) from the
     map; fused (C,): the rested channel's steady force level at frequency_Hz with full recruitment, measured on the
-    arm (steady_force_level)."""
+    arm (steady_force_level); element_names (n,): the arm's elements (from_arm fills them; they fix the shape
+    `levels` accepts and name the elements in its errors).
+
+    Every per-channel input (recruitment, pulse_width, command) is (C,) or one number for every channel, and each
+    refuses a wrong shape or a NaN/infinite value with a ValueError naming the input and the channels (a NaN
+    would otherwise code as zero stimulation, hiding a failed controller), and a non-number with a TypeError."""
     channel_names: list
     element_index: list
     weights: list
@@ -101,6 +107,7 @@ class StimulationCoding:
     fused: np.ndarray
     amplitude_A: float = AMPLITUDE_A
     frequency_Hz: float = FREQUENCY_HZ
+    element_names: list = field(default_factory=list)
 
     @classmethod
     def from_arm(cls, arm, amplitude_A: float = AMPLITUDE_A, frequency_Hz: float = FREQUENCY_HZ) -> "StimulationCoding":
@@ -133,7 +140,8 @@ class StimulationCoding:
                 raise ValueError(f"channel {ch['name']!r}: amplitude {amplitude_A} A / frequency {frequency_Hz} Hz "
                                  f"outside (0, {lim['max_amplitude_A']}] A / (0, {lim['max_frequency_Hz']}] Hz")
         c = {k: np.array(v) for k, v in cols.items()}
-        coding = cls(names, idx, w, fused=np.ones(len(names)), amplitude_A=amplitude_A, frequency_Hz=frequency_Hz, **c)
+        coding = cls(names, idx, w, fused=np.ones(len(names)), amplitude_A=amplitude_A, frequency_Hz=frequency_Hz,
+                     element_names=list(arm.element_names), **c)
         if np.any(coding.pulse_width(np.ones(len(names)) * 1.0, clip=False) > c["max_pulse_width_s"] + 1e-15):
             bad = [n for n, p, mx in zip(names, coding.pulse_width(np.ones(len(names)), clip=False),
                                          c["max_pulse_width_s"]) if p > mx]
@@ -142,18 +150,49 @@ class StimulationCoding:
         coding.fused = steady_force_level(arm, amplitude_A, frequency_Hz, coding.pulse_width(np.ones(len(names))))
         return coding
 
+    def _per_channel(self, values, what: str) -> np.ndarray:
+        """values as a (C,) float array (one number: the same for every channel); TypeError for non-numbers,
+        ValueError for another shape or NaN/infinite values, naming `what` and the channels."""
+        a = real_array(values, what)
+        C = len(self.channel_names)
+        if a.ndim == 0:
+            a = np.full(C, float(a))
+        if a.shape != (C,):
+            raise ValueError(f"{what} must have shape ({C},) (one value per channel) or be one number, got {a.shape}")
+        bad = ~np.isfinite(a)
+        if bad.any():
+            raise ValueError(f"{what} contains NaN or infinite values (channels "
+                             f"{[self.channel_names[k] for k in np.flatnonzero(bad)[:5]]})")
+        return a
+
+    def _clipped_unit(self, a: np.ndarray, what: str, names, stacklevel: int = 3) -> np.ndarray:
+        """a clipped to [0, 1], with one RuntimeWarning naming the first names outside (as Arm's excitations:
+        checks.per_element); stacklevel 3 points at the caller of the public method."""
+        outside = (a < 0) | (a > 1)
+        if outside.any():
+            warnings.warn(f"{what} outside [0, 1] clipped for {[names[k] for k in np.flatnonzero(outside)[:5]]}",
+                          RuntimeWarning, stacklevel=stacklevel)
+        return np.clip(a, 0.0, 1.0)
+
     def recruitment(self, pulse_width_s) -> np.ndarray:
-        """(C,) the recruited fraction R of each channel at pulse_width_s (C,) and the held amplitude (docs/fes.md)."""
-        pw = np.asarray(pulse_width_s, float)
+        """(C,) the recruited fraction R of each channel at pulse_width_s (C,) s (or one number for all) and the held
+        amplitude (docs/fes.md). ValueError for a wrong shape or a NaN, infinite or negative pulse width, TypeError
+        for non-numbers."""
+        pw = self._per_channel(pulse_width_s, "pulse_width_s")
+        if (pw < 0).any():
+            raise ValueError(f"pulse_width_s must be >= 0 s; channels "
+                             f"{[self.channel_names[k] for k in np.flatnonzero(pw < 0)[:5]]} are negative")
         c, pref = self.chronaxie_s, self.reference_pulse_width_s
         with np.errstate(divide="ignore", invalid="ignore"):
             i_eff = np.where(pw > 0, self.amplitude_A * (1 + c / pref) / (1 + c / np.where(pw > 0, pw, 1.0)), 0.0)
         return np.clip((i_eff - self.threshold_A) / (self.saturation_A - self.threshold_A), 0.0, 1.0) * (pw > 0)
 
     def pulse_width(self, recruitment, clip: bool = True) -> np.ndarray:
-        """(C,) s: the pulse width that recruits `recruitment` (C,) in [0, 1] at the held amplitude (0 for none);
-        clip: within each channel's pulse-width and charge limits."""
-        r = np.clip(np.asarray(recruitment, float), 0.0, 1.0)
+        """(C,) s: the pulse width that recruits `recruitment` (C,) in [0, 1] (or one number for all) at the held
+        amplitude (0 for none); clip: within each channel's pulse-width and charge limits. Values outside [0, 1] are
+        clipped with one RuntimeWarning; ValueError for a wrong shape or NaN/infinite values, TypeError for
+        non-numbers."""
+        r = self._clipped_unit(self._per_channel(recruitment, "recruitment"), "recruitment", self.channel_names)
         i_eff = self.threshold_A + r * (self.saturation_A - self.threshold_A)
         c, pref = self.chronaxie_s, self.reference_pulse_width_s
         den = self.amplitude_A * (1 + c / pref) / i_eff - 1.0
@@ -166,13 +205,32 @@ class StimulationCoding:
 
     def levels(self, activation) -> np.ndarray:
         """(C,): per channel the level Σ w a / Σ w² over the elements it reaches (least squares: one channel drives
-        its elements together, each to w times its level), from element activations (n,)."""
-        a = np.asarray(activation, float)
+        its elements together, each to w times its level), from element activations (n,) in [0, 1] (or one number
+        for all; n the arm's element count, element_names). Values outside [0, 1] are clipped with one
+        RuntimeWarning (as Arm's excitations); ValueError for a wrong shape or NaN/infinite values (naming the
+        elements), TypeError for non-numbers."""
+        a = real_array(activation, "activation")
+        n = len(self.element_names) if self.element_names else \
+            1 + max((int(i.max()) for i in self.element_index if i.size), default=-1)
+        names = self.element_names or [f"element {i}" for i in range(n)]
+        if a.ndim == 0:
+            a = np.full(n, float(a))
+        if a.shape != (n,):
+            raise ValueError(f"activation must have shape ({n},) (one value per element) or be one number, "
+                             f"got {a.shape}")
+        bad = ~np.isfinite(a)
+        if bad.any():
+            raise ValueError(f"activation contains NaN or infinite values (elements "
+                             f"{[names[i] for i in np.flatnonzero(bad)[:5]]})")
+        a = self._clipped_unit(a, "activation", names)
         return np.array([float(w @ a[i]) / float(w @ w) for i, w in zip(self.element_index, self.weights)])
 
     def command(self, levels) -> np.ndarray:
-        """(C, 3) stimulation command for force levels (C,) in [0, 1]: recruitment level / fused, clipped to [0, 1]."""
-        lv = np.asarray(levels, float)
+        """(C, 3) stimulation command (pulse width s, amplitude A, frequency Hz per channel) for force levels (C,) in
+        [0, 1] (or one number for all): recruitment level / fused, clipped to [0, 1] (a level above the channel's
+        fused level saturates it). Levels outside [0, 1] are clipped with one RuntimeWarning; ValueError for a wrong
+        shape or NaN/infinite values (naming the channels), TypeError for non-numbers."""
+        lv = self._clipped_unit(self._per_channel(levels, "levels"), "levels", self.channel_names)
         pw = self.pulse_width(np.clip(lv / self.fused, 0.0, 1.0))
         out = np.empty((len(self.channel_names), 3))
         out[:, 0], out[:, 1], out[:, 2] = pw, self.amplitude_A, self.frequency_Hz
@@ -402,14 +460,21 @@ class FeedforwardPID:
     The levels found are coded into pulse widths. kp = ki = kd = 0 plays the feedforward alone.
 
     model: an Arm (the controller's model of the plant), coding: StimulationCoding of the plant's map, reference: a
-    Reference (or (time, q) samples), params: PIDParams."""
+    Reference (or (time, q) samples), params: PIDParams, required: docs/control.md's gains are
+    ``PIDParams.pole_placement(chain_time_constant(plant, coding))``, and the lag they are placed on is measured on
+    the plant's stimulation map (its Ding force dynamics), which neither `model` (no map) nor `coding` holds, so the
+    constructor cannot derive them. ValueError for a model with a map, TypeError for params that are not
+    PIDParams."""
 
-    def __init__(self, model, coding: StimulationCoding, reference, params: PIDParams | None = None):
+    def __init__(self, model, coding: StimulationCoding, reference, params: PIDParams):
         if not hasattr(model, "_sim") or model.channel_names:
             raise ValueError("FeedforwardPID's model must be an armrt.Arm without a stimulation map (model_arm(plant))")
+        if not isinstance(params, PIDParams):
+            raise TypeError(f"params must be PIDParams (e.g. PIDParams.pole_placement(chain_time_constant(plant, "
+                            f"coding))), got {type(params).__name__}")
         self.model, self.coding = model, coding
         self.reference = reference if isinstance(reference, Reference) else Reference(*reference, model.model)
-        self.params = params if params is not None else PIDParams()
+        self.params = params
         self.optimizer = ChannelStaticOptimizer(model, coding, gh_stab_max=self.params.gh_stab_max)
         self.state = PIDState(integral=np.zeros(model.n_dofs))
 
@@ -419,8 +484,9 @@ class FeedforwardPID:
 
     def update(self, t, q, qdot) -> np.ndarray:
         """(C, 3) stimulation for the arm at time t s, posture q (ndof,) rad and speeds qdot (ndof,) rad/s.
-        ValueError for a wrong shape or a non-finite value."""
-        t = real_scalar(t, "t")
+        ValueError for a non-finite t, a wrong shape, a non-finite value or q beyond the engine's domain
+        (checks.joint_range); TypeError for non-numbers."""
+        t = _finite_time(t)
         q, qdot = _state_vectors(self.model, q, qdot)
         p, s = self.params, self.state
         h = p.control_interval_s + p.preview_s
@@ -466,9 +532,13 @@ class PDController:
 
     model: an Arm of the plant's model (moment arms), coding: StimulationCoding, target (ndof,) rad, params:
     PDParams, dofs: the DOF names fed back (default all; the others get no feedback), schedule: [(t s, target)]
-    targets that take over at their times."""
+    targets that take over at their times. ValueError for a target of another shape than (ndof,), with NaN/infinite
+    values or beyond the joints' domain, or a non-finite schedule time; TypeError for params that are not
+    PDParams."""
 
     def __init__(self, model, coding: StimulationCoding, target, params: PDParams, dofs=None, schedule=()):
+        if not isinstance(params, PDParams):
+            raise TypeError(f"params must be PDParams, got {type(params).__name__}")
         self.model, self.coding, self.params = model, coding, params
         names = model.dof_names
         self.dofs = list(names) if dofs is None else [names[model.dof_index(d)] for d in dofs]
@@ -476,12 +546,14 @@ class PDController:
         self.state = PDState(target=np.zeros(model.n_dofs))
         self.set_target(target)
         # [(t s, target (ndof,) rad)]: from each time on, its target (a reaching trial's step)
-        self.schedule = sorted([(real_scalar(t, "schedule time"), _state_vectors(model, q, np.zeros(model.n_dofs))[0])
+        self.schedule = sorted([(_finite_time(t, "schedule time"),
+                                 _state_vectors(model, q, np.zeros(model.n_dofs), "schedule target")[0])
                                 for t, q in schedule], key=lambda x: x[0])
 
     def set_target(self, target) -> None:
-        """A new target posture (ndof,) rad: G is recomputed from the moment arms there."""
-        tgt = _state_vectors(self.model, target, np.zeros(self.model.n_dofs))[0]
+        """A new target posture (ndof,) rad: G is recomputed from the moment arms there. ValueError for another shape,
+        NaN/infinite values or a joint beyond the engine's domain (checks.joint_range), TypeError for non-numbers."""
+        tgt = _state_vectors(self.model, target, np.zeros(self.model.n_dofs), "target")[0]
         R = np.asarray(self.model.moment_arms(tgt))  # (n, ndof), m
         G = np.zeros((len(self.coding.channel_names), self.model.n_dofs))
         for c, (i, w) in enumerate(zip(self.coding.element_index, self.coding.weights)):
@@ -493,8 +565,10 @@ class PDController:
         self.state = PDState(target=tgt)
 
     def update(self, t, q, qdot) -> np.ndarray:
-        """(C, 3) stimulation for the state (t s, q (ndof,) rad, qdot (ndof,) rad/s)."""
-        t = real_scalar(t, "t")
+        """(C, 3) stimulation for the state (t s, q (ndof,) rad, qdot (ndof,) rad/s). ValueError for a non-finite t
+        (a scheduled target would never take over), a wrong shape, a non-finite value or q beyond the engine's domain
+        (checks.joint_range); TypeError for non-numbers."""
+        t = _finite_time(t)
         q, qdot = _state_vectors(self.model, q, qdot)
         while self.schedule and self.schedule[0][0] <= t + 1e-12:
             self.set_target(self.schedule.pop(0)[1])
@@ -508,14 +582,20 @@ class PDController:
         return out
 
 
-def _state_vectors(model, q, qdot) -> tuple[np.ndarray, np.ndarray]:
-    q, qd = real_array(q, "q").ravel(), real_array(qdot, "qdot").ravel()
-    n = model.n_dofs
-    if q.shape != (n,) or qd.shape != (n,):
-        raise ValueError(f"q and qdot must have shape ({n},) ({', '.join(model.dof_names)}), got {q.shape}, {qd.shape}")
-    if not (np.all(np.isfinite(q)) and np.all(np.isfinite(qd))):
-        raise ValueError("q or qdot contains NaN or infinite values")
-    return q, qd
+def _state_vectors(model, q, qdot, what: str = "q") -> tuple[np.ndarray, np.ndarray]:
+    """(q, qdot) as (ndof,) arrays (checks.dof_vector: no other shape, (ndof, 1) included, as the rest of armrt),
+    q within the engine's domain (checks.joint_range without the warning: a simulated state may end slightly
+    beyond a joint's range; degrees given as radians are refused with a hint)."""
+    q = joint_range(dof_vector(q, what, model.dof_names), model.dof_names, model.dof_ranges, warn=False)
+    return q, dof_vector(qdot, "qdot", model.dof_names)
+
+
+def _finite_time(t, what: str = "t") -> float:
+    """t as a finite float s: a NaN time compares false with every schedule time and reference sample."""
+    t = real_scalar(t, what)
+    if not math.isfinite(t):
+        raise ValueError(f"{what} must be a finite time in s, got {t}")
+    return t
 
 
 # ------------------------------------------------------------------------------------------ offline runs
@@ -557,14 +637,31 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
     plant had applied when called (Arm.set_applied_moment) before each of the plant's steps, so a state-dependent
     moment such as joint friction follows the arm at its step rate, not the controller's; while it is called the
     plant holds only its own moment, and that moment is the plant's again when the run ends (or raises).
-    ValueError for a plant without a map."""
+    The run makes floor(duration / control_interval_s) updates (K = that + 1 rows, the first the start).
+    ValueError for a plant without a map or with other channels than the coding's, a control interval that is not
+    a whole number of plant steps, a duration that is not finite or shorter than one control interval (no update
+    would be made), a hold_s that is not finite and >= 0; TypeError for a non-number duration or hold_s and for a
+    reference, hand_load or joint_moment that is not callable."""
     if not plant.channel_names or list(plant.channel_names) != list(controller.coding.channel_names):
         raise ValueError("the plant's stimulation channels must be the controller's coding's channels")
     h = controller.params.control_interval_s
     steps = int(round(h / plant.dt))
     if steps < 1 or abs(steps * plant.dt - h) > 1e-9:
         raise ValueError(f"control_interval_s {h} is not a whole number of the plant's steps ({plant.dt} s)")
-    n = int(math.floor(real_scalar(duration, "duration") / h + 1e-9))
+    duration = real_scalar(duration, "duration")
+    if not (math.isfinite(duration) and duration > 0):
+        raise ValueError(f"duration must be finite and > 0 s, got {duration}")
+    n = int(math.floor(duration / h + 1e-9))
+    if n < 1:
+        raise ValueError(f"duration {duration} s is shorter than one control interval ({h} s): the run would make "
+                         "no update")
+    # The hold compares the elapsed time with hold_s: a NaN would never hold and a string fail mid-run.
+    hold_s = real_scalar(hold_s, "hold_s")
+    if not (math.isfinite(hold_s) and hold_s >= 0):
+        raise ValueError(f"hold_s must be finite and >= 0 s, got {hold_s}")
+    for name, f in (("reference", reference), ("hand_load", hand_load), ("joint_moment", joint_moment)):
+        if f is not None and not callable(f):
+            raise TypeError(f"{name} must be None or a callable, got {type(f).__name__}")
     if reference is None:
         if hasattr(controller, "reference"):
             reference = lambda t: controller.reference(t)[0]  # noqa: E731
@@ -611,7 +708,8 @@ def _control_loop(plant, controller, n, steps, hand_load, joint_moment, base_mom
             for _ in range(steps):
                 plant.set_applied_moment(base_moment)
                 extra = joint_moment(plant.time, plant.q.copy(), plant.qdot.copy())
-                plant.set_applied_moment(base_moment + applied_moments(extra, plant.dof_names, "joint_moment"))
+                plant.set_applied_moment(base_moment + applied_moments(extra, plant.dof_names, "joint_moment",
+                                                                               model_name=plant.model_name))
                 plant.step()
         if plant.time - t_start <= hold_s + 1e-9:
             x = plant.get_state_vector()

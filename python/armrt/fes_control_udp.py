@@ -4,6 +4,7 @@ examples/fes_controllers_udp.py runs it as a separate process against a Realtime
 """
 from __future__ import annotations
 
+import math
 import time
 
 import numpy as np
@@ -33,6 +34,15 @@ def first_state(client, tries: int = 50):
     raise RuntimeError(f"no state packet from the runner after {tries} zero stimulation packets")
 
 
+def _send_zero(client) -> None:
+    """Best effort: zero pulse width, amplitude and frequency on every channel (a failure to send is left to the
+    runner's timeout, and must not hide the error being raised)."""
+    try:
+        client.send_stimulation(np.zeros((len(client.stimulation.names), 3)))
+    except Exception:  # noqa: BLE001 (the caller re-raises its own error)
+        pass
+
+
 def control_loop(controller, client, until_s: float, reference=None) -> dict:
     """Runs `controller` through `client` (an armrt.realtime.UdpClient that has joined the runner, with the
     runner's stimulation map) until the simulated time passes until_s s.
@@ -40,8 +50,13 @@ def control_loop(controller, client, until_s: float, reference=None) -> dict:
     (UdpClient.send_stimulation); it then sleeps to the next multiple of controller.params.control_interval_s of
     wall-clock time. Returns time (K,) s simulated, q, q_ref (K, ndof) rad, gh_stab (K,), compute_s (K,) (update and
     send, wall clock), age_s (K,) (how old the state was when its command left: reception to send), period_s (K-1,)
-    (wall-clock time between sends), and their percentiles in microseconds. RuntimeError if no state arrives."""
+    (wall-clock time between sends), and their percentiles in microseconds. RuntimeError if no state arrives;
+    an error of controller.update (e.g. its ValueError for a NaN state) or of send_stimulation is raised after a
+    zero stimulation packet has been sent (best effort; the runner's timeout zeros it otherwise). ValueError for a
+    NaN until_s, TypeError for a non-number."""
     until_s = real_scalar(until_s, "until_s")
+    if math.isnan(until_s):   # no time passes NaN: the loop would never end
+        raise ValueError("until_s must be a time in s (inf: until the runner stops), got nan")
     h = controller.params.control_interval_s
     if reference is None:
         reference = (lambda t: controller.reference(t)[0]) if hasattr(controller, "reference") else \
@@ -53,8 +68,14 @@ def control_loop(controller, client, until_s: float, reference=None) -> dict:
         if st is None:
             raise RuntimeError("no state packet from the runner within 1 s")
         t0 = time.monotonic()
-        cmd = controller.update(st.time, st.q, st.qdot)
-        client.send_stimulation(cmd)
+        try:
+            cmd = controller.update(st.time, st.q, st.qdot)
+            client.send_stimulation(cmd)
+        except BaseException:
+            # A controller that refuses its input (a NaN state) or fails, or a command the client refuses, must not
+            # leave the last command applied until the runner's timeout: zero stimulation goes out, then the error.
+            _send_zero(client)
+            raise
         t1 = time.monotonic()
         rec["time"].append(st.time)
         rec["q"].append(np.array(st.q))
