@@ -55,6 +55,10 @@ def test_minimum_jerk_derivatives_match_finite_differences():
     assert np.allclose(q[t <= 0], [0.1, 0.2]) and np.allclose(q[t >= 1.2], [0.5, -0.2])
     with pytest.raises(ValueError, match="duration"):
         fc.minimum_jerk([0.0], [1.0], 0.0, 0.0, t)
+    for bad in ({"t0": np.nan}, {"t0": np.inf}, {"duration": np.inf}, {"t": [0.0, np.nan]}, {"q1": [np.nan]}):
+        args = {"q0": [0.0], "q1": [1.0], "t0": 0.0, "duration": 1.0, "t": t} | bad
+        with pytest.raises(ValueError, match=next(iter(bad))):
+            fc.minimum_jerk(**args)
 
 
 def test_pole_placement_puts_the_four_poles_at_minus_one_over_four_lags():

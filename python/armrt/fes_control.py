@@ -41,14 +41,19 @@ SECANT = 0.02
 
 def minimum_jerk(q0, q1, t0: float, duration: float, t) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Flash & Hogan 1985 minimum-jerk movement from q0 to q1 (ndof,) rad starting at t0 s and lasting duration s,
-    at times t (T,) s (held at q0 before t0 and at q1 after): (q, qdot, qddot), each (T, ndof)."""
+    at times t (T,) s (held at q0 before t0 and at q1 after): (q, qdot, qddot), each (T, ndof). ValueError for a
+    NaN or infinite input (np.clip would carry a NaN time or start through as a NaN posture) or duration <= 0."""
     q0, q1 = real_array(q0, "q0").ravel(), real_array(q1, "q1").ravel()
     if q0.shape != q1.shape:
         raise ValueError(f"q0 and q1 must have the same shape, got {q0.shape} and {q1.shape}")
-    duration = real_scalar(duration, "duration")
-    if not duration > 0:
-        raise ValueError(f"duration must be > 0 s, got {duration}")
-    s = np.clip((np.atleast_1d(real_array(t, "t")) - float(t0)) / duration, 0.0, 1.0)[:, None]
+    duration, t0 = real_scalar(duration, "duration"), real_scalar(t0, "t0")
+    if not (np.isfinite(duration) and duration > 0):
+        raise ValueError(f"duration must be finite and > 0 s, got {duration}")
+    t = np.atleast_1d(real_array(t, "t"))
+    for name, v in (("q0", q0), ("q1", q1), ("t0", t0), ("t", t)):
+        if not np.all(np.isfinite(v)):
+            raise ValueError(f"{name} must be finite, got {v if np.ndim(v) == 0 else v[~np.isfinite(v)][:3]}")
+    s = np.clip((t - t0) / duration, 0.0, 1.0)[:, None]
     d = (q1 - q0)[None, :]
     pos = 10 * s ** 3 - 15 * s ** 4 + 6 * s ** 5
     vel = (30 * s ** 2 - 60 * s ** 3 + 30 * s ** 4) / duration
