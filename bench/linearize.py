@@ -106,7 +106,9 @@ def residuals() -> None:
             kink_one_sided = max(kink_one_sided, min(np.abs(lin.A[:, k] - (p - x1) / eps).max(),
                                                      np.abs(lin.A[:, k] - (x1 - m) / eps).max()) / scale)
         arm.set_state_vector(lin.x0, armrt.StatePart.PHYSICS)
-        worst["A_kinked_central"], worst["A_kinked_one_sided"] = kink_central, kink_one_sided
+        # No kinked column: nothing was measured there, so None (JSON null, "-" in the table), not a residual of 0.
+        worst["A_kinked_central"] = kink_central if kinks else None
+        worst["A_kinked_one_sided"] = kink_one_sided if kinks else None
         rows.append({"model": model, "seed": seed, "state_size": int(lin.x0.size), "kinked_columns": len(kinks),
                      "kinked": [lin.state_names[k] for k in kinks], "worst_block_relative": worst})
     RESULTS.mkdir(exist_ok=True)
@@ -119,11 +121,12 @@ def residuals() -> None:
           "relative to the column's largest entry.\n\n"
           "| model | seed | ns | kinked columns | A | B | dfdx | dfdu | A kinked: central | one-sided |\n"
           "|---|---|---|---|---|---|---|---|---|---|\n")
+    fmt = lambda v: "-" if v is None else f"{v:.1e}"
     for r in rows:
         w = r["worst_block_relative"]
         md += (f"| {r['model']} | {r['seed']} | {r['state_size']} | {r['kinked_columns']} | {w['A']:.1e} | "
-               f"{w['B']:.1e} | {w['dfdx']:.1e} | {w['dfdu']:.1e} | {w['A_kinked_central']:.1e} | "
-               f"{w['A_kinked_one_sided']:.1e} |\n")
+               f"{w['B']:.1e} | {w['dfdx']:.1e} | {w['dfdu']:.1e} | {fmt(w['A_kinked_central'])} | "
+               f"{fmt(w['A_kinked_one_sided'])} |\n")
     (RESULTS / "linearize_residuals.md").write_text(md)
     print(md)
 

@@ -35,14 +35,21 @@ namespace {
 }  // namespace
 
 void limit_fibre_overshoot(const Model& m, Data& d, StepJacobian& jac, const double* x, const double* xdot, double h) {
-  const MuscleArrays& mc = d.muscles;
-  const int n = m.num_elements, nq = m.num_dofs, iqd = qd_offset(m), ia = act_offset(m);
-  const double hg = kRos2Gamma * h;
-  const double b0 = m.fibre_damping;
-  // Muscle-tendon lengthening rates dL/dt = -R qd (m/s), then one branch-free pass per element.
+  const int nq = m.num_dofs, iqd = qd_offset(m);
+  // Muscle-tendon lengthening rates dL/dt = -R qd (m/s).
   double L_rate[kMaxElements], minus_qd[kMaxDofs];
   for (int j = 0; j < nq; ++j) minus_qd[j] = -x[iqd + j];
   detail::dispatch_dofs(nq, [&](auto N) { moment_arm_dot<N>(m, jac.moment_arm.data(), minus_qd, L_rate); });
+  limit_fibre_overshoot_at_rates(m, d, jac, x, xdot, h, L_rate);
+}
+
+void limit_fibre_overshoot_at_rates(const Model& m, Data& d, StepJacobian& jac, const double* x, const double* xdot,
+                                    double h, const double* L_rate) {
+  const MuscleArrays& mc = d.muscles;
+  const int n = m.num_elements, ia = act_offset(m);
+  const double hg = kRos2Gamma * h;
+  const double b0 = m.fibre_damping;
+  // One branch-free pass per element.
   const double* lce_x = x + lce_offset(m);
   const double* a_x = x + ia;
   const double* lce_rate = xdot + lce_offset(m);

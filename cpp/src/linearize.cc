@@ -1,7 +1,7 @@
 // linearize.cc: (model, data at x with its excitation u and loads, h) -> df/dx, df/du of forward() at x and
 // A = dx+/dx, B = dx+/du of one ROS2 step of h from x (exact paths at both stages, as a step from a state set
-// from outside takes), differentiated with its matrix W = I - h gamma J moving too (J's own derivatives by central
-// differences: per element all at once, per joint one by one).
+// from outside takes), differentiated with its matrix W = I - h gamma J moving too (J's own derivatives by
+// differences per element, all elements at once, and through them by the chain rule per joint).
 // df/dx is the structured Jacobian's exact per-element blocks plus the mechanical terms the step leaves out
 // (gravity, Coriolis, dM/dq, moment-arm derivatives, the hand load's J^T F), taken by central differences of the
 // skeleton and path stages with the tendon forces held; docs/control.md "Linearised dynamics" derives A, B and states the kinks.
@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+#include <type_traits>
 
 #include "armrt/engine.h"
 #include "armrt/step_jacobian.h"
@@ -41,20 +42,22 @@ void held_joint_torque(const Model& m, const Data& d, const double* q, const dou
 }
 
 // qdd (rad/s^2) at (q, qd) from held_joint_torque's tau_held at q plus the passive joints at (q, qd): the skeleton
-// stage with every generalised force as forward() has it, the tendon forces held.
+// stage with every generalised force as forward() has it, the tendon forces held. M(q) into mass_matrix if given.
 void held_force_acceleration(const Model& m, const Data& d, const double* q, const double* qd, const double* tau_held,
-                             double* qdd) {
+                             double* qdd, double* mass_matrix = nullptr) {
   const int nq = m.num_dofs;
   double tau_passive[kMaxDofs], tau[kMaxDofs], M[kMaxDofs * kMaxDofs];
   passive_joint_torque(*m.def, q, qd, tau_passive);
   for (int j = 0; j < nq; ++j) tau[j] = tau_held[j] + tau_passive[j];
-  skeleton_dynamics(m, d.settings.gravity.data(), q, qd, tau, M, qdd);
+  skeleton_dynamics(m, d.settings.gravity.data(), q, qd, tau, mass_matrix ? mass_matrix : M, qdd);
 }
 
 // The full tangent of forward() at x into t (xdot: forward()'s derivative there). The mechanical block by central
 // differences, or with one_sided by forward ones (half the path and skeleton evaluations; O(eps) = 1e-6 relative, for
-// the tangent at the second stage, which enters A and B only multiplied by h).
-void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, double* xdot, bool one_sided = false) {
+// the tangent at the second stage, which enters A and B only multiplied by h). With plus, the paths and M at each
+// q + kJointAngleStep e_k are kept there (plus->length_plus, moment_arm_plus, mass_matrix_plus) for how J moves with q.
+void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, double* xdot, bool one_sided = false,
+                LinearizeWorkspace* plus = nullptr) {
   const int nq = m.num_dofs, n = m.num_elements;
   const int iq = q_offset(m), iqd = qd_offset(m), il = lce_offset(m), ia = act_offset(m);
   StepJacobian& jac = t.jac;
@@ -80,9 +83,11 @@ void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, dou
   for (int k = 0; k < nq; ++k) {
     std::copy(q, q + nq, qp);
     qp[k] = q[k] + kJointAngleStep;
-    m.def->muscle_paths(qp, Lp, Rp);
-    held_joint_torque(m, d, qp, Rp, t.force.data(), tau_held);
-    held_force_acceleration(m, d, qp, qd, tau_held, ap);
+    double* L_plus = plus ? plus->length_plus[k].data() : Lp;
+    double* R_plus = plus ? plus->moment_arm_plus[k].data() : Rp;
+    m.def->muscle_paths(qp, L_plus, R_plus);
+    held_joint_torque(m, d, qp, R_plus, t.force.data(), tau_held);
+    held_force_acceleration(m, d, qp, qd, tau_held, ap, plus ? plus->mass_matrix_plus[k].data() : nullptr);
     if (one_sided) {
       std::copy(a0, a0 + nq, am);
     } else {
@@ -113,7 +118,7 @@ void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, dou
   }
   std::copy(Minv, Minv + nq * nq, t.inv_mass_matrix.begin());
   double* G = t.accel_per_force.data();
-  std::fill(t.accel_per_force.begin(), t.accel_per_force.end(), 0.0);
+  for (int j = 0; j < nq; ++j) std::fill(G + j * kMaxElements, G + j * kMaxElements + n, 0.0);
   for (int j = 0; j < nq; ++j)
     for (int k = 0; k < nq; ++k) {
       const double c = Minv[j * nq + k];
@@ -148,6 +153,16 @@ void tangent_at(const Model& m, Data& d, const double* x, ForwardTangent& t, dou
 inline void zero_fill(double* p, long count) {
   constexpr long kPiece = 128;
   for (long k = 0; k < count; k += kPiece) std::fill(p + k, p + std::min(count, k + kPiece), 0.0);
+}
+
+// dst = src for a StepJacobian (47 kB) in pieces of 1 kB, for the same reason (glibc's memcpy is a `rep movsb` there).
+void copy_jacobian(const StepJacobian& src, StepJacobian& dst) {
+  static_assert(std::is_trivially_copyable_v<StepJacobian>);
+  constexpr std::size_t kPiece = 1024;
+  const auto* from = reinterpret_cast<const unsigned char*>(&src);
+  auto* to = reinterpret_cast<unsigned char*>(&dst);
+  for (std::size_t k = 0; k < sizeof(StepJacobian); k += kPiece)
+    std::memcpy(to + k, from + k, std::min(kPiece, sizeof(StepJacobian) - k));
 }
 
 // df/dx (ns x ns) and df/du (ns x num_elements), row-major, from the tangent t: each row zeroed (zero_fill) and its
@@ -186,22 +201,17 @@ void write_dense(const Model& m, const ForwardTangent& t, double* dfdx, double* 
   }
 }
 
-// The step's own J at x: forward()'s Jacobian stiffened by the fibre limiter as ros2.cc does (d's count of limited
-// steps kept); xdot = f(x).
-void step_jacobian_at(const Model& m, Data& d, const double* x, double h, StepJacobian& jac, double* xdot) {
-  forward(m, d, x, xdot, false, &jac);
-  const auto limited = d.limited_fibre_steps;
-  limit_fibre_overshoot(m, d, jac, x, xdot, h);
-  d.limited_fibre_steps = limited;
-}
-
-// step_jacobian_at for an x whose joint angles are those the paths in `paths` were evaluated at (x differs there in
+// The step's own J (forward()'s Jacobian stiffened by the fibre limiter as ros2.cc does, d's count of limited steps
+// kept; xdot = f(x)) for an x whose joint angles are those the paths in `paths` were evaluated at (x differs there in
 // velocities, CE lengths or activations, or u does): the paths are copied, not evaluated again (the limiter reads them
 // from jac; whole blocks of eight, so moment_arm_dot's ghost lanes come along).
+// With length_shift, jac's muscle-tendon lengths are the paths' plus it (m, per element; the moment arms kept).
 void step_jacobian_with_paths(const Model& m, Data& d, const double* x, const StepJacobian& paths, double h,
-                              StepJacobian& jac, double* xdot) {
+                              StepJacobian& jac, double* xdot, const double* length_shift = nullptr) {
   const int n8 = (m.num_elements + 7) / 8 * 8;
   std::copy(paths.muscle_length.begin(), paths.muscle_length.begin() + n8, jac.muscle_length.begin());
+  if (length_shift)
+    for (int i = 0; i < m.num_elements; ++i) jac.muscle_length[i] += length_shift[i];
   for (int j = 0; j < m.num_dofs; ++j)
     std::copy(paths.moment_arm.begin() + j * kMaxElements, paths.moment_arm.begin() + j * kMaxElements + n8,
               jac.moment_arm.begin() + j * kMaxElements);
@@ -244,9 +254,10 @@ void element_entries(const StepJacobian& jac, int i, double* e) {
   e[4] = jac.dforce_dlce[i];
 }
 
-// d(entries)/dz_i for z = lce (block 0), activation (1) or excitation (2) of every element at once: element i's
-// entries depend on its own L, lce, a, u (and on q, qd), so one perturbation of all elements gives every diagonal.
-// Central differences for lce and a; one-sided into the range for u (capped at [0, max_activation]).
+// d(entries)/dz_i for z = lce (block 0), activation (1), excitation (2) or muscle-tendon length L (3, the moment arms
+// held) of every element at once: element i's entries depend on its own L, dL/dt, lce, a, u (and on nothing else), so
+// one perturbation of all elements gives every diagonal. Central differences for lce, a and L; one-sided into the
+// range for u (capped at [0, max_activation]).
 void element_derivatives(const Model& m, Data& d, LinearizeWorkspace& w, double h, int block,
                          std::array<std::array<double, kMaxElements>, kElementEntries>& out) {
   const int n = m.num_elements, ns = state_size(m);
@@ -254,10 +265,17 @@ void element_derivatives(const Model& m, Data& d, LinearizeWorkspace& w, double 
   const MuscleArrays& mc = d.muscles;
   double eps[kMaxElements];
   for (int i = 0; i < n; ++i)
-    eps[i] = block == 0 ? 1e-6 / mc.inv_lceopt[i]
-                        : (block == 1 ? 1e-6 : (d.excitation[i] < 0.5 * mc.max_activation[i] ? 1e-6 : -1e-6));
+    eps[i] = block == 0 || block == 3
+                 ? 1e-6 / mc.inv_lceopt[i]
+                 : (block == 1 ? 1e-6 : (d.excitation[i] < 0.5 * mc.max_activation[i] ? 1e-6 : -1e-6));
   const double* x = d.x.data();
-  if (block < 2) {
+  if (block == 3) {
+    double shift[kMaxElements];
+    for (int sgn = 0; sgn < 2; ++sgn) {
+      for (int i = 0; i < n; ++i) shift[i] = sgn == 0 ? eps[i] : -eps[i];
+      step_jacobian_with_paths(m, d, x, w.at_x.jac, h, sgn == 0 ? w.jac_plus : w.jac_minus, w.f_shift.data(), shift);
+    }
+  } else if (block < 2) {
     for (int sgn = 0; sgn < 2; ++sgn) {
       std::copy(x, x + ns, w.x_shift.begin());
       for (int i = 0; i < n; ++i) w.x_shift[off + i] += sgn == 0 ? eps[i] : -eps[i];
@@ -271,12 +289,92 @@ void element_derivatives(const Model& m, Data& d, LinearizeWorkspace& w, double 
     step_jacobian_with_paths(m, d, x, w.at_x.jac, h, w.jac_plus, w.f_shift.data());
     std::copy(u_held, u_held + n, d.excitation.begin());
   }
+  const bool central = block != 2;
   for (int i = 0; i < n; ++i) {
     double ep[kElementEntries], em[kElementEntries];
     element_entries(w.jac_plus, i, ep);
-    element_entries(block < 2 ? w.jac_minus : w.step_jacobian, i, em);
-    const double step = block < 2 ? 2 * eps[i] : eps[i];
+    element_entries(central ? w.jac_minus : w.step_jacobian, i, em);
+    const double step = central ? 2 * eps[i] : eps[i];
     for (int k = 0; k < kElementEntries; ++k) out[k][i] = (ep[k] - em[k]) / step;
+  }
+}
+
+// d(entries)/d(dL/dt) of every element at once: the lengthening rate enters J only through the fibre limiter
+// (the muscle stage does not see it), so the limiter alone runs again from x's unlimited J, with every element's
+// dL/dt = -R qd moved by +-1e-6 lceopt per second. Central differences.
+void element_rate_derivatives(const Model& m, Data& d, LinearizeWorkspace& w, double h,
+                              std::array<std::array<double, kMaxElements>, kElementEntries>& out) {
+  const int n = m.num_elements, nq = m.num_dofs, iqd = qd_offset(m);
+  const MuscleArrays& mc = d.muscles;
+  const StepJacobian& unlimited = w.at_x.jac;
+  double L_rate[kMaxElements], shifted[kMaxElements], minus_qd[kMaxDofs];
+  for (int j = 0; j < nq; ++j) minus_qd[j] = -d.x[iqd + j];
+  detail::dispatch_dofs(nq, [&](auto N) { moment_arm_dot<N>(m, unlimited.moment_arm.data(), minus_qd, L_rate); });
+  const auto limited = d.limited_fibre_steps;
+  for (int sgn = 0; sgn < 2; ++sgn) {
+    StepJacobian& jac = sgn == 0 ? w.jac_plus : w.jac_minus;
+    copy_jacobian(unlimited, jac);
+    for (int i = 0; i < n; ++i) shifted[i] = L_rate[i] + (sgn == 0 ? 1e-6 : -1e-6) / mc.inv_lceopt[i];
+    limit_fibre_overshoot_at_rates(m, d, jac, d.x.data(), w.f.data(), h, shifted);
+  }
+  d.limited_fibre_steps = limited;
+  for (int i = 0; i < n; ++i) {
+    double ep[kElementEntries], em[kElementEntries];
+    element_entries(w.jac_plus, i, ep);
+    element_entries(w.jac_minus, i, em);
+    const double step = 2e-6 / mc.inv_lceopt[i];
+    for (int k = 0; k < kElementEntries; ++k) out[k][i] = (ep[k] - em[k]) / step;
+  }
+}
+
+// J at x + eps e_c for joint angle c (< n_dofs) or velocity c - n_dofs into P, from W (J at x, limiter applied) by
+// the chain rule through what J depends on: each element's entries move with its L and dL/dt (w.dJ_dL, dJ_dLrate:
+// L by the paths at q + eps e_k, dL/dt = -R qd by the moment arms there or by -R_k eps), and R, M and the passive and
+// girdle stiffness are those at q + eps e_k (tangent_at's points). First order in eps, as the forward difference of
+// J it replaces (that evaluated the muscle stage and the limiter once per column). P's other fields are W's.
+template <int nq>
+void shifted_jacobian(const Model& m, LinearizeWorkspace& w, int c, double eps, StepJacobian& P) {
+  const int n = m.num_elements, n8 = (n + 7) / 8 * 8, iqd = qd_offset(m);
+  const StepJacobian& W = w.step_jacobian;
+  const double* qd = w.x_shift.data() + iqd;  // x itself: the caller's copy
+  double dL[kMaxElements], dL_rate[kMaxElements];
+  if (c < nq) {
+    const double* Lp = w.length_plus[c].data();
+    const double* Rp = w.moment_arm_plus[c].data();
+    double minus_qd[nq], rate_plus[kMaxElements], rate[kMaxElements];
+    for (int j = 0; j < nq; ++j) minus_qd[j] = -qd[j];
+    moment_arm_dot<nq>(m, Rp, minus_qd, rate_plus);
+    moment_arm_dot<nq>(m, W.moment_arm.data(), minus_qd, rate);
+    for (int i = 0; i < n; ++i) {
+      dL[i] = Lp[i] - W.muscle_length[i];
+      dL_rate[i] = rate_plus[i] - rate[i];
+    }
+    for (int j = 0; j < nq; ++j)
+      std::copy(Rp + j * kMaxElements, Rp + j * kMaxElements + n8, P.moment_arm.begin() + j * kMaxElements);
+    std::copy(w.mass_matrix_plus[c].begin(), w.mass_matrix_plus[c].begin() + nq * nq, P.mass_matrix.begin());
+    double q_plus[nq];
+    std::copy(w.x_shift.begin() + q_offset(m), w.x_shift.begin() + q_offset(m) + nq, q_plus);
+    q_plus[c] += eps;
+    passive_joint_stiffness(*m.def, q_plus, P.dtau_passive_dq.data(), P.dtau_passive_dqd.data());
+    if (m.def->girdle) {
+      double tau[kMaxDofs];
+      girdle_forces(m, q_plus, tau, P.dtau_girdle_dq.data(), nullptr);
+    }
+  } else {
+    const int k = c - nq;
+    for (int i = 0; i < n; ++i) {
+      dL[i] = 0.0;
+      dL_rate[i] = -W.moment_arm[k * kMaxElements + i] * eps;
+    }
+  }
+  const auto& gL = w.dJ_dL;
+  const auto& gr = w.dJ_dLrate;
+  for (int i = 0; i < n; ++i) {
+    P.dvel_dL[i] = W.dvel_dL[i] + gL[0][i] * dL[i] + gr[0][i] * dL_rate[i];
+    P.dvel_dlce[i] = W.dvel_dlce[i] + gL[1][i] * dL[i] + gr[1][i] * dL_rate[i];
+    P.dvel_da[i] = W.dvel_da[i] + gL[2][i] * dL[i] + gr[2][i] * dL_rate[i];
+    P.dforce_dL[i] = W.dforce_dL[i] + gL[3][i] * dL[i] + gr[3][i] * dL_rate[i];
+    P.dforce_dlce[i] = W.dforce_dlce[i] + gL[4][i] * dL[i] + gr[4][i] * dL_rate[i];
   }
 }
 
@@ -790,7 +888,7 @@ void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, 
   // The step itself: W from the tangent at x, stiffened as the step stiffens it (its count of limited steps kept),
   // k1, x2 = x + h k1, the tangent at x2, k2.
   StepJacobian& W = w.step_jacobian;
-  W = w.at_x.jac;
+  copy_jacobian(w.at_x.jac, W);
   const auto limited = d.limited_fibre_steps;
   limit_fibre_overshoot(m, d, W, x, w.f.data(), h);
   d.limited_fibre_steps = limited;
@@ -808,17 +906,20 @@ void linearize_step_n(const Model& m, Data& d, LinearizeWorkspace& w, double h, 
   element_derivatives(m, d, w, h, 2, w.dJ_du);
   moment_arm_dot<nq>(m, W.moment_arm.data(), w.k1.data() + q_offset(m), w.R_k1.data());
   moment_arm_dot<nq>(m, W.moment_arm.data(), w.k2.data() + q_offset(m), w.R_k2.data());
-  // Per joint angle and velocity by forward differences (J at x is W before its factorisation): a term that is
-  // itself O(h) in A, so their O(eps) error is far below the central differences' of the tests.
+  // Per joint angle and velocity by forward differences of J (J at x is W before its factorisation), J at x + eps e_c
+  // by the chain rule (shifted_jacobian): a term that is itself O(h) in A, so their O(eps) error is far below the
+  // central differences' of the tests. Velocity columns first: they leave P's paths, M and stiffness W's.
+  element_derivatives(m, d, w, h, 3, w.dJ_dL);
+  element_rate_derivatives(m, d, w, h, w.dJ_dLrate);
   double p1[kMaxState], p2[kMaxState], m1[kMaxState], m2[kMaxState];
   structured_apply<nq>(m, W, w.k1.data(), m1);
   structured_apply<nq>(m, W, w.k2.data(), m2);
-  for (int c = 0; c < 2 * nq; ++c) {
+  std::copy(x, x + ns, w.x_shift.begin());
+  copy_jacobian(W, w.jac_plus);
+  for (int step = 0; step < 2 * nq; ++step) {
+    const int c = step < nq ? nq + step : step - nq;
     const double eps = c < nq ? kJointAngleStep : kJointVelocityStep;
-    std::copy(x, x + ns, w.x_shift.begin());
-    w.x_shift[c] += eps;
-    if (c < nq) step_jacobian_at(m, d, w.x_shift.data(), h, w.jac_plus, w.f_shift.data());
-    else step_jacobian_with_paths(m, d, w.x_shift.data(), w.at_x.jac, h, w.jac_plus, w.f_shift.data());
+    shifted_jacobian<nq>(m, w, c, eps, w.jac_plus);
     structured_apply<nq>(m, w.jac_plus, w.k1.data(), p1);
     structured_apply<nq>(m, w.jac_plus, w.k2.data(), p2);
     for (int k = 0; k < ns; ++k) {
@@ -843,7 +944,7 @@ void linearize(const Model& m, Data& d, LinearizeWorkspace& w, double h, double*
     throw std::invalid_argument(
         "linearize: the arm has a stimulation map; the elements it drives follow the stimulation stage's memory, "
         "which is not part of the state x, so dx+/dx over x alone would leave it out");
-  tangent_at(m, d, d.x.data(), w.at_x, w.f.data());
+  tangent_at(m, d, d.x.data(), w.at_x, w.f.data(), false, A ? &w : nullptr);
   write_dense(m, w.at_x, dfdx, dfdu);
   if (!A) return;
   if (!(h > 0.0)) throw std::invalid_argument("linearize: the step h must be > 0 s");

@@ -196,6 +196,10 @@ int step_ros2_adaptive(const Model& m, Data& d, Ros2Workspace& w, double h, bool
 // forward(m, d, x, xdot, ..., &jac) at the same x: it reads what that evaluation left in jac. Adds the
 // element-steps it changed to d.limited_fibre_steps.
 void limit_fibre_overshoot(const Model& m, Data& d, StepJacobian& jac, const double* x, const double* xdot, double h);
+// The same with the muscle-tendon lengthening rates dL/dt (m/s, per element) given instead of -R qd from x's qd
+// and jac's moment arms: the limiter's only dependence on qd, which linearize() differentiates through it.
+void limit_fibre_overshoot_at_rates(const Model& m, Data& d, StepJacobian& jac, const double* x, const double* xdot,
+                                    double h, const double* L_rate);
 
 // ---- linearize.cc
 // The full tangent of forward() at one state: the structured Jacobian (jac, as forward() fills it: no fibre
@@ -211,7 +215,7 @@ struct ForwardTangent {
   std::array<double, kMaxElements> act_rate_dlag{};             // 1/s, d(c1 u + c2)/du
   std::array<double, kMaxDofs * kMaxElements> scratch_moment_arm{};  // m, paths at the difference points
 };
-// What linearize() works in: fixed size (about 1.2 MB: hold it on the heap), so no call allocates.
+// What linearize() works in: fixed size (about 1.6 MB: hold it on the heap), so no call allocates.
 struct LinearizeWorkspace {
   ForwardTangent at_x, at_x2;  // the tangent at x and at the second stage x2 = x + h k1
   StepJacobian step_jacobian;  // the step's own J (fibre limiter applied) and its factorisation
@@ -221,9 +225,16 @@ struct LinearizeWorkspace {
   // How the step's J moves with x and u (W is not frozen: A and B differentiate the real step). Per element, the
   // derivatives of (dvel_dL, dvel_dlce, dvel_da, dforce_dL, dforce_dlce) with the element's own lce, activation and
   // excitation (each depends on its element's alone, so all elements are perturbed at once); per joint angle and
-  // velocity, dJ/dx_c k1 and dJ/dx_c k2 (central differences of the whole J, limiter included).
-  std::array<std::array<double, kMaxElements>, 5> dJ_dlce{}, dJ_da{}, dJ_du{};
+  // velocity, dJ/dx_c k1 and dJ/dx_c k2 (forward differences of J, by the chain rule through the entries below).
+  // ... and with the element's muscle-tendon length L and lengthening rate dL/dt (through the fibre limiter), which
+  // is how they move with the joint angles and velocities.
+  std::array<std::array<double, kMaxElements>, 5> dJ_dlce{}, dJ_da{}, dJ_du{}, dJ_dL{}, dJ_dLrate{};
   std::array<StateVec, 2 * kMaxDofs> dJ_k1{}, dJ_k2{};
+  // The paths L (m), R (m, by DOF, stride kMaxElements) and M(q) (kg m^2) at q + 1e-6 rad e_k for each joint k: the
+  // tangent's difference points, where J moves with q_k too.
+  std::array<std::array<double, kMaxElements>, kMaxDofs> length_plus{};
+  std::array<std::array<double, kMaxDofs * kMaxElements>, kMaxDofs> moment_arm_plus{};
+  std::array<std::array<double, kMaxDofs * kMaxDofs>, kMaxDofs> mass_matrix_plus{};
   std::array<double, kMaxElements> R_k1{}, R_k2{};  // m/s, R k_q of the two stages per element
   StepJacobian jac_plus, jac_minus;                 // J at the difference points
   StateVec x_shift{}, f_shift{};
