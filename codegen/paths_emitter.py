@@ -217,8 +217,11 @@ def _grouped_paths(crossed_dofs, lengths, order, tree, NDOF):
         body.append("    " + " ".join(out_lines) + f" L[{i}] = {length}; }}")
     head = [f"  const double q{j} = q[{j}];" for j in sorted(qs)] or ["  (void)q;"]
     names = ", ".join(f"{b}: DOFs {GROUP_SIZE * b}..{GROUP_SIZE * b + sizes[b] - 1}" for b in range(n_groups))
-    zero = (f"  std::memset(moment_arm, 0, ({NDOF - 1} * kMaxElements + {n_el}) * sizeof(double));"
-            "  // the DOFs an element does not cross")
+    # The DOFs an element does not cross: each row's first n_el entries (model_def.h leaves the rest of a row
+    # unspecified, as the one-vector form does). One memset per row, not one across the rows' padding: 12 % fewer
+    # bytes on das3, and each piece is below glibc's rep-stosb threshold (2 kB).
+    zero = (f"  for (int j = 0; j < {NDOF}; ++j)  // the DOFs an element does not cross\n"
+            f"    std::memset(moment_arm + j * kMaxElements, 0, {n_el} * sizeof(double));")
     lines = _drop_unused_scalars(lines, body)
     return _define("muscle_paths", ("q", "L", "moment_arm"),
                    f"  // DOF groups (_grouped_paths) {names}.\n" + "\n".join([zero] + head + lines + body) + "\n")

@@ -23,7 +23,8 @@ void muscle_lengths(const double* q, double* L) {
 
 void muscle_paths(const double* q, double* L, double* moment_arm) {
   // DOF groups (_grouped_paths) 0: DOFs 0..2, 1: DOFs 3..5, 2: DOFs 6..8, 3: DOFs 9..10.
-  std::memset(moment_arm, 0, (10 * kMaxElements + 138) * sizeof(double));  // the DOFs an element does not cross
+  for (int j = 0; j < 11; ++j)  // the DOFs an element does not cross
+    std::memset(moment_arm + j * kMaxElements, 0, 138 * sizeof(double));
   const double q0 = q[0];
   const double q1 = q[1];
   const double q2 = q[2];
