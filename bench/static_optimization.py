@@ -2,7 +2,7 @@
 das2 along a smooth 1 kHz reaching motion (every DOF a raised-cosine move of 0.3 rad over 1 s, a 1 kg weight in
 the hand), one solve per millisecond, warm started from the previous frame (StaticOptimizer: what a controller
 does), for the elastic and the rigid tendon, with and without a GH bound; and cold starts (a new optimiser per
-frame) for comparison. Also the accuracy the rigid-tendon approximation costs: the moment residual its
+frame) for comparison; all by the Python path's ProxQP (backend="python"; the C++ path is bench.static_optimization_cpp). Also the accuracy the rigid-tendon approximation costs: the moment residual its
 activations leave with the elastic element. das3 along the same kind of motion about its settled pose, fewer
 frames. Median and p99 per solve, the machine's load recorded (times depend on it).
 
@@ -82,7 +82,9 @@ def main(argv=None) -> dict:
                            ("das2 elastic, cubed, warm", True, {"criterion": "cubed"}),
                            ("das2 elastic, cold", False, {})]:
         n = args.frames if warm else max(args.frames // 4, 10)
-        cases[name] = run_case(arm, q[:n], qd[:n], qdd[:n], hand, warm, **kw)
+        # The Python path's ProxQP (backend="python"): "auto" would hand the rigid tendon to C++, which
+        # bench.static_optimization_cpp measures beside it.
+        cases[name] = run_case(arm, q[:n], qd[:n], qdd[:n], hand, warm, backend="python", **kw)
         print(name, {k: round(v, 4) if isinstance(v, float) else v for k, v in cases[name].items()}, flush=True)
     arm3 = armrt.Arm("das3")
     arm3.settle()
@@ -90,7 +92,7 @@ def main(argv=None) -> dict:
     q3, qd3, qdd3 = motion(arm3, arm3.q, args.das3_frames, dt=0.5 / args.das3_frames, amplitude=0.1)
     held = np.array([j in arm3.model.girdle_dofs for j in range(arm3.n_dofs)])
     q3[:, held], qd3[:, held], qdd3[:, held] = arm3.q[held], 0.0, 0.0  # the girdle held at its settled pose
-    cases["das3 elastic, warm"] = run_case(arm3, q3, qd3, qdd3, hand, True)
+    cases["das3 elastic, warm"] = run_case(arm3, q3, qd3, qdd3, hand, True, backend="python")
     print("das3 elastic, warm", cases["das3 elastic, warm"], flush=True)
     load_after = os.getloadavg()
     import proxsuite

@@ -96,13 +96,17 @@ double muscle_lce_at_velocity(const ElementConstants& e, double b, double L, dou
   // The CE velocity falls monotonically as lce grows (muscle_equilibrium_lce's bracket). Newton's steps on
   // v(lce) - fibre_velocity with the kernel's dv/dlce from lce_guess, kept inside the bracket that each
   // evaluation narrows; a bisection step where Newton's would leave it or the slope vanishes (a slack unit's
-  // force-free range, the kinks of the slack points). Stops when the bracket or the step is below 1e-13 m.
+  // force-free range, the kinks of the slack points). Stops when the bracket or the step is below 1e-13 m. A Newton
+  // step that small is tested before the bracket: at a converged x the step rounds to x itself, which is the
+  // bracket's end just set, and bisecting from there cost 25-40 more evaluations (the elastic static optimisation's
+  // 400-frame bench motion averaged 12.4 evaluations per call before this test).
   double lo = e.min_lce, hi = (L > lo ? L : lo) + e.pee_slack + e.lceopt;
   double x = lce_guess > lo && lce_guess < hi ? lce_guess : 0.5 * (lo + hi);
   for (int it = 0; it < 200; ++it) {
     MuscleDerivatives der;
     const double g = muscle_element_derivatives(e, b, L, x, a, &der).fibre_velocity - fibre_velocity;
     if (g == 0.0) return x;
+    if (der.dvel_dlce < 0.0 && std::fabs(g / der.dvel_dlce) < 1e-13) return x;
     if (g > 0) lo = x; else hi = x;
     if (hi - lo < 1e-13) break;
     const double newton = der.dvel_dlce < 0.0 ? x - g / der.dvel_dlce : lo - 1.0;
