@@ -302,7 +302,9 @@ PYBIND11_MODULE(_core, mod) {
       }), py::arg("arm"), py::arg("gh_stab_max"), py::arg("weights"), py::arg("polygon_sides"), py::arg("dual_newton") = true)
       .def("reset", [](StaticOptimizationWorkspace& w) { static_optimization_reset(w); })
       .def("solve", [](StaticOptimizationWorkspace& w, const Arm& s, const Array& q, const Array& qd, const Array& qdd,
-                       const Array& hf, const Array& hm) {
+                       const Array& hf, const Array& hm, const std::string& tendon) {
+        if (tendon != "rigid" && tendon != "elastic")
+          throw py::value_error("tendon must be 'rigid' or 'elastic', got '" + tendon + "'");
         const int n = s.model.num_elements, nq = s.model.num_dofs;
         const double *qp = checked(q, nq, "q"), *qdp = checked(qd, nq, "qdot"), *qddp = checked(qdd, nq, "qddot");
         const double *hfp = checked(hf, 3, "hand force"), *hmp = checked(hm, 3, "hand moment");
@@ -310,7 +312,8 @@ PYBIND11_MODULE(_core, mod) {
         StaticOptimizationReport r;
         {
           py::gil_scoped_release release;
-          static_optimization_rigid(s.model, s.data, w, qp, qdp, qddp, hfp, hmp, a.mutable_data(), &r);
+          if (tendon == "rigid") static_optimization_rigid(s.model, s.data, w, qp, qdp, qddp, hfp, hmp, a.mutable_data(), &r);
+          else static_optimization_elastic(s.model, s.data, w, qp, qdp, qddp, hfp, hmp, a.mutable_data(), &r);
         }
         auto vec = [](const double* p, py::ssize_t k) {
           Array out({k});
@@ -336,7 +339,8 @@ PYBIND11_MODULE(_core, mod) {
         d["force"] = vec(r.force, n);
         d["fibre_velocity"] = vec(r.fibre_velocity, n);
         return py::make_tuple(a, d);
-      }, py::arg("arm"), py::arg("q"), py::arg("qdot"), py::arg("qddot"), py::arg("hand_force"), py::arg("hand_moment"));
+      }, py::arg("arm"), py::arg("q"), py::arg("qdot"), py::arg("qddot"), py::arg("hand_force"), py::arg("hand_moment"),
+         py::arg("tendon") = "rigid");
 
   py::class_<Arm>(mod, "Arm")
       .def(py::init([](const std::string& model, const std::string& integrator, double dt, int substeps) {

@@ -230,9 +230,11 @@ class StaticOptimizer:
     gh_stab_max: None or a bound > 0 on GHstab (paper eq. 5) as gh_polygon's linear constraints on the GH force.
     weights: None (1) or (n,) > 0. Bounds [0, max_activation] come from the arm's settings at each solve.
     backend: "auto" (the default: "cpp" for tendon="rigid" with criterion="squared", else "python"), "cpp" (the
-    engine's cpp/src/static_optimization.cc: the same QP solved in C++ by a dual projected Newton method with
-    ProxQP as its fallback, for a 1 kHz loop; rigid tendon and squared activations only, ValueError otherwise) or
-    "python" (ProxQP from Python, as below). The two agree to the solver's tolerance (tests/test_static_optimization.py)."""
+    engine's cpp/src/static_optimization.cc: the same QPs solved in C++ by a dual projected Newton method with
+    ProxQP as its fallback, for a 1 kHz loop; squared activations only, ValueError otherwise; with the elastic
+    tendon the same SQP and safeguards as here, and where it does not converge the Python path solves the frame
+    again for its closest solution and report) or "python" (ProxQP from Python, as below). The two agree to the
+    solvers' tolerance (tests/test_static_optimization_cpp.py)."""
 
     def __init__(self, arm_or_model, gh_stab_max=None, weights=None, criterion: str = "squared",
                  tendon: str = "elastic", polygon_sides: int = POLYGON_SIDES, max_iterations: int = 50,
@@ -272,10 +274,10 @@ class StaticOptimizer:
             self.gh_stab_max = float(s)
         if backend not in ("auto", "cpp", "python"):
             raise ValueError(f"backend must be 'auto', 'cpp' or 'python', got {backend!r}")
-        cpp_able = tendon == "rigid" and criterion == "squared"
-        if backend == "cpp" and not cpp_able:
-            raise ValueError(f"backend='cpp' solves the rigid tendon with squared activations only (got tendon="
-                             f"{tendon!r}, criterion={criterion!r}); use backend='python' or 'auto'")
+        if backend == "cpp" and criterion != "squared":
+            raise ValueError(f"backend='cpp' solves squared activations only (got criterion={criterion!r}); use "
+                             f"backend='python' or 'auto'")
+        cpp_able = tendon == "rigid" and criterion == "squared"  # what "auto" hands to C++
         from . import _core  # noqa: PLC0415 (the extension, not an armrt module: no cycle)
         engine_arm = isinstance(self._sim, _core.Arm)  # not a stand-in with the same methods (tests)
         if backend == "cpp" and not engine_arm:
@@ -331,7 +333,16 @@ class StaticOptimizer:
         f_hand, m_hand = _hand_load(hand_load, self._default_load if not hasattr(self._arm_or_model, "_sim") else
                                     (np.array(sim.hand_force), np.array(sim.hand_moment)))
         if self._cpp is not None:
-            return self._solve_cpp(q, qd, qdd, f_hand, m_hand, on_infeasible)
+            res = self._solve_cpp(q, qd, qdd, f_hand, m_hand, on_infeasible)
+            if res is not None:
+                return res
+            # The elastic SQP in C++ did not converge: the Python path's SQP, and its closest solution if that
+            # does not either (C++ has no closest-solution QP for the elastic tendon).
+        return self._solve_python(q, qd, qdd, f_hand, m_hand, on_infeasible)
+
+    def _solve_python(self, q, qd, qdd, f_hand, m_hand, on_infeasible):
+        """One solve by ProxQP from Python (backend "python")."""
+        model, sim = self.model, self._sim
         if hasattr(self._arm_or_model, "_sim"):
             idyn = sim.inverse_dynamics(q, qd, qdd, f_hand, m_hand)
         else:
@@ -368,22 +379,32 @@ class StaticOptimizer:
         return res
 
     def _solve_cpp(self, q, qd, qdd, f_hand, m_hand, on_infeasible):
-        """One solve by the engine's static_optimization_rigid (backend "cpp"): the result as _result builds it."""
+        """One solve by the engine's static_optimization_rigid or _elastic (backend "cpp"): the result as _result
+        builds it; None where the elastic SQP did not converge (the caller solves that frame in Python)."""
         sim, model = self._sim, self.model
-        a, r = self._cpp.solve(sim, q, qd, qdd, f_hand, m_hand)
+        a, r = self._cpp.solve(sim, q, qd, qdd, f_hand, m_hand, self.tendon)
+        feasible = bool(r["feasible"])
+        elastic = self.tendon == "elastic"
+        if elastic and not feasible:
+            return None
         amax = sim.get_max_activation()
         L, R = sim.muscle_paths(q)
-        _, Fe, _ = sim.steady_forces(L, r["fibre_velocity"], a, r["lce"])
         names = model.element_names
         upper = tuple(names[i] for i in np.flatnonzero((amax > 0) & (a >= amax - 1e-6)))
-        it = 1 if r["solver"] == "dual_newton" else r["qps"]  # QPs solved, as the Python path counts them
-        feasible = bool(r["feasible"])
+        if elastic:
+            it = r["qps"]  # the SQP's QPs, as the Python path counts them
+            elastic_residual = None
+            self._lce_guess, self._last_L = r["lce"], L
+        else:
+            it = 1 if r["solver"] == "dual_newton" else r["qps"]
+            _, Fe, _ = sim.steady_forces(L, r["fibre_velocity"], a, r["lce"])
+            elastic_residual = R.T @ Fe - r["tau_required"]
         res = StaticOptimizationResult(
             activation=a, lce=r["lce"], force=r["force"], tau_required=r["tau_required"], tau_muscle=r["tau_muscle"],
             residual=r["residual"], gh_force=r["gh_force"], gh_stab=float(r["gh_stab"]), feasible=feasible,
             iterations=int(it), objective=self._objective(a), criterion=self.criterion, tendon=self.tendon,
             gh_stab_max=self.gh_stab_max, at_upper_bound=upper, gh_bound_active=bool(r["gh_bound_active"]),
-            elastic_residual=R.T @ Fe - r["tau_required"],
+            elastic_residual=elastic_residual,
             report="" if feasible else self._report(r["residual"], int(it), R, amax, upper, bool(r["gh_bound_active"]),
                                                     float(r["gh_stab"])),
             fibre_velocity=r["fibre_velocity"])

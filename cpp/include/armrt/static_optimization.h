@@ -110,9 +110,11 @@ void static_optimization_rigid(const Model& m, const Data& d, StaticOptimization
 // The same with the elastic tendon (control.py's tendon="elastic"): the force of element i as a function of a_i is
 // muscle_steady_force's, the tendon force at the CE length where the fibre velocity equals the path's dL/dt;
 // sequential QP on its linearisation, each QP solved by the dual Newton method, until the moments balance to 1e-7 N m
-// and the activations move less than 1e-6 (at most 50 QPs), with control.py's safeguards at the damper floor's kink.
-// No ProxQP fallback: a solve that does not converge is reported kNotConverged (feasible false), never returned as a
-// solution. report.lce holds the CE lengths, report.qps the QPs solved.
+// and the activations move less than 1e-6 (at most 50 QPs; after the 50th the moments balanced to 1e-6 N m are
+// accepted, as control.py does), with control.py's safeguards at the damper floor's kink. A QP the Newton method does
+// not solve goes to ProxQP (options.proxqp_fallback; report.solver kProxQP then). A solve that does not converge is
+// reported kNotConverged (feasible false), never returned as a solution; there is no closest-solution QP here.
+// report.lce holds the CE lengths, report.qps the QPs solved.
 void static_optimization_elastic(const Model& m, const Data& d, StaticOptimizationWorkspace& w, const double* q,
                                  const double* qd, const double* qdd, const double* hand_force,
                                  const double* hand_moment, double* activation, StaticOptimizationReport* report);
