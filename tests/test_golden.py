@@ -5,13 +5,21 @@ The golden file was written by an AVX2 build (-march=native on Zen 3). An AVX-51
 CI's Xeon) sums the glenohumeral reaction over the muscles eight lanes at a time instead of four, so the
 GH outputs (gh_force and what is derived from it) round up to about 6.5 ulps of their largest value
 away from the file while every state stays bit for bit. The GH outputs are held to 16 ulps of that
-value; every other array to the bit. A build with -march=znver3 reproduces the whole file exactly."""
+value; every other array to the bit. A build with -march=znver3 reproduces the whole file exactly, and is held to
+it (armrt._core.BUILD says the target). A native build for another target rounds differently wherever the compiler
+vectorises differently: on an Intel Xeon whose gcc 12 -march=native is icelake-client (2026-12-06), 66 of the 110
+arrays moved, the states too, by at most 1.9e-13 of each array's largest value (muscle forces; qdot 2.0e-14). Such
+builds are held to RELATIVE_ROUNDING of each array's largest value: 50 times that, and far below any change of the
+physics (the check below: a 1e-9 change fails)."""
 import numpy as np
 import pytest
 
+from armrt import _core
 from tests.golden_runs import FILE, runs
 
 GH_ULPS = 16
+RELATIVE_ROUNDING = 1e-11
+REFERENCE_BUILD = bool(_core.BUILD["march_znver3"])
 
 
 def _is_gh_output(key: str) -> bool:
@@ -23,17 +31,18 @@ def fresh():
     return runs()
 
 
-def _differences(saved, fresh):
+def _differences(saved, fresh, reference_build=REFERENCE_BUILD):
     eps = np.finfo(float).eps
     off = {}
     for k in saved.files:
         a, b = saved[k], fresh[k]
         if np.array_equal(a, b, equal_nan=True):
             continue
-        if _is_gh_output(k) and a.shape == b.shape and np.array_equal(np.isnan(a), np.isnan(b)):
+        if a.shape == b.shape and np.array_equal(np.isnan(a), np.isnan(b)) and not reference_build:
             scale = float(np.nanmax(np.abs(a))) if a.size else 0.0
             worst = float(np.nanmax(np.abs(a - b)))
-            if worst <= GH_ULPS * eps * scale:
+            bound = RELATIVE_ROUNDING if not _is_gh_output(k) else max(RELATIVE_ROUNDING, GH_ULPS * eps)
+            if worst <= bound * scale:
                 continue
         off[k] = float(np.nanmax(np.abs(a - b))) if a.shape == b.shape else "shape"
     return off
@@ -46,12 +55,18 @@ def test_golden_runs_bit_for_bit(fresh):
     assert not off, f"{len(off)} arrays differ from {FILE.name}, e.g. {dict(list(off.items())[:5])}"
 
 
-def test_golden_comparison_catches_a_changed_state_and_a_gh_output_beyond_rounding(fresh):
+def test_golden_comparison_catches_a_changed_state_and_a_gh_output_beyond_rounding():
     saved = np.load(FILE)
+    same = {k: saved[k] for k in saved.files}
+    assert not _differences(saved, same, True) and not _differences(saved, same, False)
     state_key = next(k for k in saved.files if k.endswith("/final_x"))
     gh_key = next(k for k in saved.files if k.endswith("/gh_force"))
-    nudged = dict(fresh)
-    nudged[state_key] = np.nextafter(fresh[state_key], np.inf)  # one ulp on a state is a change
-    nudged[gh_key] = fresh[gh_key] * (1 + 1e-12)  # ~4500 ulps is no rounding
-    off = _differences(saved, nudged)
-    assert state_key in off and gh_key in off
+    ulp = dict(same)
+    ulp[state_key] = np.nextafter(same[state_key], np.inf)  # one ulp on a state is a change for the reference build
+    ulp[gh_key] = np.nextafter(same[gh_key], np.inf)
+    assert set(_differences(saved, ulp, True)) == {state_key, gh_key}
+    assert not _differences(saved, ulp, False)  # rounding, for another target
+    changed = dict(same)
+    changed[state_key] = same[state_key] * (1 + 1e-9)  # no rounding on any target
+    changed[gh_key] = same[gh_key] * (1 + 1e-9)
+    assert set(_differences(saved, changed, False)) == {state_key, gh_key}

@@ -185,6 +185,28 @@ void bind_model(py::module_& mod);  // _core_model.cpp
 
 PYBIND11_MODULE(_core, mod) {
   mod.doc() = "armrt engine bindings (use armrt.Arm)";
+  // The instruction set this extension and the engine were compiled for (one set of options for both, CMakeLists.txt):
+  // floating-point results are bit for bit only between builds for the same target (tests/test_golden.py).
+  {
+    py::dict build;
+#if defined(__znver3__)
+    build["march_znver3"] = true;
+#else
+    build["march_znver3"] = false;
+#endif
+#if defined(__AVX512F__)
+    build["avx512f"] = true;
+#else
+    build["avx512f"] = false;
+#endif
+#if defined(__AVX2__)
+    build["avx2"] = true;
+#else
+    build["avx2"] = false;
+#endif
+    build["compiler"] = std::string(__VERSION__);
+    mod.attr("BUILD") = build;
+  }
   mod.attr("MAX_DOFS") = kMaxDofs;
   mod.attr("MAX_ELEMENTS") = kMaxElements;
   mod.attr("MAX_CONTACT_PENETRATION") = kMaxContactPenetration;  // m, the domain check's limit (model.h)
