@@ -63,29 +63,22 @@ def main(argv=None) -> dict:
     arm = armrt.Arm("das2")
     q, qd, qdd = motion(arm, np.radians([20, 40, 0, 60, 60]), args.frames)
     python_api, cpp_only = {}, {}
-    for name, gh in CASES:
+    # (case, GH bound, tendon, the C++ tool's runs: (label, extra arguments))
+    rigid_runs = (("dual Newton (fallback ProxQP)", ()), ("ProxQP only", ("--proxqp",)))
+    elastic_runs = (("SQP, dual Newton (fallback ProxQP)", ("--elastic",)),)
+    for name, gh, tendon, runs in [(n, g, "rigid", rigid_runs) for n, g in CASES] + \
+                                  [(n, g, "elastic", elastic_runs) for n, g in ELASTIC_CASES]:
         for backend in ("cpp", "python"):
-            c = run_case(arm, q, qd, qdd, hand, True, tendon="rigid", gh_stab_max=gh, backend=backend)
+            c = run_case(arm, q, qd, qdd, hand, True, tendon=tendon, gh_stab_max=gh, backend=backend)
             python_api[f"{name}, backend={backend}"] = c
             print(name, backend, {k: c[k] for k in ("median_ms", "p99_ms", "frames_not_converged")}, flush=True)
         if args.tool.exists():
-            for solver, extra in (("dual Newton (fallback ProxQP)", ()), ("ProxQP only", ("--proxqp",))):
+            for solver, extra in runs:
                 r = cpp_tool(args.tool, args.frames, gh, extra)
                 if args.instructions and shutil.which("valgrind"):
                     r["instructions_per_solve"] = instructions_per_solve(args.tool, args.frames, gh, extra)
                 cpp_only[f"{name}, {solver}"] = r
                 print(name, solver, r, flush=True)
-    for name, gh in ELASTIC_CASES:
-        for backend in ("cpp", "python"):
-            c = run_case(arm, q, qd, qdd, hand, True, tendon="elastic", gh_stab_max=gh, backend=backend)
-            python_api[f"{name}, backend={backend}"] = c
-            print(name, backend, {k: c[k] for k in ("median_ms", "p99_ms", "frames_not_converged")}, flush=True)
-        if args.tool.exists():
-            r = cpp_tool(args.tool, args.frames, gh, ("--elastic",))
-            if args.instructions and shutil.which("valgrind"):
-                r["instructions_per_solve"] = instructions_per_solve(args.tool, args.frames, gh, ("--elastic",))
-            cpp_only[f"{name}, SQP, dual Newton (fallback ProxQP)"] = r
-            print(name, "C++", r, flush=True)
     load_after = os.getloadavg()
     import proxsuite
     cmd = "python -m bench.static_optimization_cpp " + " ".join(argv or [])

@@ -456,16 +456,9 @@ void finish_report(const ModelDef& def, const StaticOptimizationWorkspace& w, co
     if (amax[i] > 0 && activation[i] >= amax[i] - 1e-6) ++r.at_upper_bound;
 }
 
-// One QP of the elastic SQP by ProxQP (where the dual Newton method did not solve it): Hessian diag(s.d_sqp), linear
-// term s.lin_sqp (the proximal term; zero without), the rows fill_rows left in K, k. The solution goes to s.a_.
-// ProxQP keeps the Hessian it is given, so the rigid path's QP (2 w, no linear term) is initialised afresh next.
-bool proxqp_sqp_step(const StaticOptimizationWorkspace& w, StaticOptimizationSolver& s, int n, int nq, int n_in,
-                     StaticOptimizationReport& r) {
+// ProxQP's A, b (moment rows) and C, u (GH rows, C a <= u) from the dual Newton method's K, k (fill_rows).
+void proxqp_rows(StaticOptimizationSolver& s, int n, int nq, int n_in) {
   constexpr int E = kMaxElements;
-  for (int i = 0; i < n; ++i) {
-    s.H(i, i) = s.d_sqp[i];
-    s.g(i) = s.lin_sqp[i];
-  }
   for (int j = 0; j < nq; ++j) {
     for (int i = 0; i < n; ++i) s.A(j, i) = s.K[j * E + i];
     s.b(j) = s.k[j];
@@ -474,6 +467,18 @@ bool proxqp_sqp_step(const StaticOptimizationWorkspace& w, StaticOptimizationSol
     for (int i = 0; i < n; ++i) s.C(row, i) = -s.K[(nq + row) * E + i];
     s.u(row) = -s.k[nq + row];
   }
+}
+
+// One QP of the elastic SQP by ProxQP (where the dual Newton method did not solve it): Hessian diag(s.d_sqp), linear
+// term s.lin_sqp (the proximal term; zero without), the rows fill_rows left in K, k. The solution goes to s.a_.
+// ProxQP keeps the Hessian it is given, so the rigid path's QP (2 w, no linear term) is initialised afresh next.
+bool proxqp_sqp_step(const StaticOptimizationWorkspace& w, StaticOptimizationSolver& s, int n, int nq, int n_in,
+                     StaticOptimizationReport& r) {
+  for (int i = 0; i < n; ++i) {
+    s.H(i, i) = s.d_sqp[i];
+    s.g(i) = s.lin_sqp[i];
+  }
+  proxqp_rows(s, n, nq, n_in);
   if (n_in) s.qp.init(s.H, s.g, s.A, s.b, s.C, s.l, s.u, s.lbox, s.ubox);
   else s.qp.init(s.H, s.g, s.A, s.b, nullopt, nullopt, nullopt, s.lbox, s.ubox);
   s.qp.solve();
@@ -549,14 +554,7 @@ void static_optimization_rigid(const Model& m, const Data& d, StaticOptimization
     balance(s.a_);
   } else if (!solved) {
     r.solver = StaticOptimizationSolverUsed::kProxQP;
-    for (int j = 0; j < nq; ++j) {
-      for (int i = 0; i < n; ++i) s.A(j, i) = s.K[j * E + i];
-      s.b(j) = s.k[j];
-    }
-    for (int row = 0; row < n_in; ++row) {
-      for (int i = 0; i < n; ++i) s.C(row, i) = -s.K[(nq + row) * E + i];
-      s.u(row) = -s.k[nq + row];
-    }
+    proxqp_rows(s, n, nq, n_in);
     const pq::QPSolverOutput st = run(s.qp, s.qp_ready, s.H, s.g, s.A, s.b, s.C, s.l, s.u, s.lbox, s.ubox, n_in);
     r.qps = 1;
     r.qp_iterations = static_cast<int>(s.qp.results.info.iter);
