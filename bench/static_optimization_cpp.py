@@ -105,7 +105,7 @@ def main(argv=None) -> dict:
             ins = r.get("instructions_per_solve")
             lines.append(f"| {name} | {r['infeasible']} | {r['median_ns'] / 1e3:.1f} | {r['p99_ns'] / 1e3:.1f} | "
                          f"{r['max_ns'] / 1e3:.1f} | {'' if ins is None else f'{ins / 1e3:.0f} k'} | "
-                         f"{r['newton_iterations_max']} | {r['proxqp_solves']} | {r.get('qps_max', '')} | "
+                         f"{r['newton_iterations_max']} | {r['proxqp_solves']} | {r['qps_max']} | "
                          f"{r['residual_max']:.1e} |")
     (RESULTS / "static_optimization_cpp.md").write_text("\n".join(lines) + "\n")
     return out

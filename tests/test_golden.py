@@ -1,29 +1,22 @@
 """The redesign of issue 25 keeps the physics: every golden run of tests/golden_runs.py (das2 and das3,
 ROS2, RK4 and Euler, recorded states and outputs, a weakened arm, a batch) comes out bit for bit.
 
-The golden file was written by an AVX2 build (-march=native on Zen 3). An AVX-512 build (Zen 4, the
-CI's Xeon) sums the glenohumeral reaction over the muscles eight lanes at a time instead of four, so the
-GH outputs (gh_force and what is derived from it) round up to about 6.5 ulps of their largest value
-away from the file while every state stays bit for bit. The GH outputs are held to 16 ulps of that
-value; every other array to the bit. A build with -march=znver3 reproduces the whole file exactly, and is held to
-it (armrt._core.BUILD says the target). A native build for another target rounds differently wherever the compiler
-vectorises differently: on an Intel Xeon whose gcc 12 -march=native is icelake-client (2026-12-06), 66 of the 110
-arrays moved, the states too, by at most 1.9e-13 of each array's largest value (muscle forces; qdot 2.0e-14). Such
-builds are held to RELATIVE_ROUNDING of each array's largest value: 50 times that, and far below any change of the
-physics (the check below: a 1e-9 change fails)."""
+The golden file was written by an AVX2 build (-march=native on Zen 3); a build with -march=znver3 reproduces the
+whole file exactly, and is held to it (armrt._core.BUILD says the target). A native build for another target rounds
+differently wherever the compiler vectorises differently: an AVX-512 build on Zen 4 sums the glenohumeral reaction
+eight lanes at a time instead of four (GH outputs about 6.5 ulps of their largest value off, states exact); on an
+Intel Xeon whose gcc 12 -march=native is icelake-client (2026-12-06), 66 of the 110 arrays moved, the states too, by
+at most 1.9e-13 of each array's largest value (muscle forces; qdot 2.0e-14). Such builds are held to
+RELATIVE_ROUNDING of each array's largest value: 50 times that, and far below any change of the physics (the check
+below: a 1e-9 change fails)."""
 import numpy as np
 import pytest
 
 from armrt import _core
 from tests.golden_runs import FILE, runs
 
-GH_ULPS = 16
 RELATIVE_ROUNDING = 1e-11
 REFERENCE_BUILD = bool(_core.BUILD["march_znver3"])
-
-
-def _is_gh_output(key: str) -> bool:
-    return key.rsplit("/", 1)[-1].startswith(("gh_", "final_gh_"))
 
 
 @pytest.fixture(scope="module")
@@ -32,7 +25,6 @@ def fresh():
 
 
 def _differences(saved, fresh, reference_build=REFERENCE_BUILD):
-    eps = np.finfo(float).eps
     off = {}
     for k in saved.files:
         a, b = saved[k], fresh[k]
@@ -41,8 +33,7 @@ def _differences(saved, fresh, reference_build=REFERENCE_BUILD):
         if a.shape == b.shape and np.array_equal(np.isnan(a), np.isnan(b)) and not reference_build:
             scale = float(np.nanmax(np.abs(a))) if a.size else 0.0
             worst = float(np.nanmax(np.abs(a - b)))
-            bound = RELATIVE_ROUNDING if not _is_gh_output(k) else max(RELATIVE_ROUNDING, GH_ULPS * eps)
-            if worst <= bound * scale:
+            if worst <= RELATIVE_ROUNDING * scale:
                 continue
         off[k] = float(np.nanmax(np.abs(a - b))) if a.shape == b.shape else "shape"
     return off

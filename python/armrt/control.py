@@ -233,8 +233,10 @@ class StaticOptimizer:
     engine's cpp/src/static_optimization.cc: the same QPs solved in C++ by a dual projected Newton method with
     ProxQP as its fallback, for a 1 kHz loop; squared activations only, ValueError otherwise; with the elastic
     tendon the same SQP and safeguards as here, and where it does not converge the Python path solves the frame
-    again for its closest solution and report) or "python" (ProxQP from Python, as below). The two agree to the
-    solvers' tolerance (tests/test_static_optimization_cpp.py)."""
+    again for its closest solution and report) or "python" (ProxQP from Python, as below). For the rigid tendon the
+    two agree to the solvers' tolerance; the elastic problem is not convex, and near the damper floor's kink the two
+    SQPs can stop at different local optima (objectives within 0.3 % on the bench motion:
+    tests/test_static_optimization_cpp.py, docs/control.md)."""
 
     def __init__(self, arm_or_model, gh_stab_max=None, weights=None, criterion: str = "squared",
                  tendon: str = "elastic", polygon_sides: int = POLYGON_SIDES, max_iterations: int = 50,
