@@ -12,6 +12,8 @@ armrt = pytest.importorskip("armrt", reason="armrt is not built/installed (./run
 pytest.importorskip("proxsuite", reason="proxsuite (pip install proxsuite) is not installed")
 from armrt.control import CONVEX_HALF_ANGLE, gh_polygon  # noqa: E402
 
+from tests.static_optimization_motions import das3_motion  # noqa: E402
+
 pytestmark = pytest.mark.filterwarnings("ignore:q slightly beyond the joint limits:RuntimeWarning")
 BALANCE = 1e-6  # N m, the issue's acceptance
 
@@ -71,6 +73,32 @@ def test_das3_moments_balance_through_the_engine():
         # (measured, the first state), which a 1e-9 bound failed (CI of 1e33923): bounds 30x the measured.
         assert np.abs(o["gh_force"] - res.gh_force).max() < 1e-6
         assert abs(o["gh_stab"] - res.gh_stab) < 3e-8
+
+
+def test_das3_elastic_sqp_takes_an_elastic_step_where_its_linearisation_is_infeasible(monkeypatch):
+    """bench.static_optimization's das3 motion (arm DOFs 0.1 rad by a raised cosine over 0.5 s, 60 frames, the girdle
+    held, 1 kg in the hand), warm started: at frame 49 the QP linearised about frame 48's activations has no
+    solution in [0, 1] (HiGHS agrees: the slopes dF/da there understate the forces), though the muscles can balance
+    the moments. Before the elastic-mode step the SQP stopped there and frames 49-59 were reported infeasible."""
+    import armrt.control as control
+
+    arm = armrt.Arm("das3")
+    arm.settle()
+    q, qd, qdd = das3_motion(arm)
+    frames = len(q)
+    hand = [0.0, -9.81, 0.0]
+    calls = []
+    real = control._slack_qp
+    monkeypatch.setattr(control, "_slack_qp", lambda *a: calls.append(1) or real(*a))
+    so = armrt.StaticOptimizer(arm, backend="python")
+    arm.set_hand_load(hand)
+    for k in range(frames):
+        res = so.solve(q[k], qd[k], qdd[k], hand, on_infeasible="return")
+        assert res.feasible, (k, res.report)
+        if k == 49:
+            assert calls, "frame 49 no longer needs the elastic step: this test no longer covers it"
+            o = engine_check(arm, res, q[k], qd[k])
+            assert np.abs(o["muscle_torque"] - res.tau_required).max() < BALANCE
 
 
 def test_bounds_follow_the_participant_profile():

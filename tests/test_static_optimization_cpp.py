@@ -9,6 +9,8 @@ import armrt
 from armrt import _core
 from armrt.control import gh_polygon
 
+from tests.static_optimization_motions import das3_motion
+
 
 def random_states(arm, rng, k):
     lo, hi = arm.model.dof_ranges[:, 0], arm.model.dof_ranges[:, 1]
@@ -209,6 +211,40 @@ def test_cpp_elastic_infeasible_goes_to_the_python_paths_closest_solution():
     r = so.solve(q, hand_load=[0, -9.81, 0])
     tau, tau_req = _elastic_moments(arm, q, np.zeros(5), np.zeros(5), [0, -9.81, 0], r.activation)
     assert r.feasible and np.abs(tau - tau_req).max() < 1e-6
+
+
+def test_cpp_elastic_sqp_takes_an_elastic_step_where_its_linearisation_is_infeasible():
+    """das3 along bench.static_optimization's motion (tests/static_optimization_motions.py): where the QP linearised
+    about the previous frame's activations has no solution (frame 49), the C++ SQP steps to its closest moments
+    (elastic_mode_steps) and converges, as the Python path does, instead of handing the frame to Python; the
+    moments balance through the engine's element."""
+    arm = armrt.Arm("das3")
+    arm.settle()
+    q, qd, qdd = das3_motion(arm)
+    hand = [0.0, -9.81, 0.0]
+    so = armrt.StaticOptimizer(arm, backend="cpp")
+    reports = []
+
+    class Recording:
+        def __init__(self, ws):
+            self.ws = ws
+
+        def solve(self, *args):
+            a, r = self.ws.solve(*args)
+            reports.append(r)
+            return a, r
+
+    so._cpp = Recording(so._cpp)
+    so._solve_python = lambda *a, **k: pytest.fail("an elastic frame went to the Python path")
+    activations = []
+    for k in range(len(q)):
+        res = so.solve(q[k], qd[k], qdd[k], hand)
+        assert res.feasible and reports[-1]["feasible"], k
+        activations.append(res.activation)
+    steps = [r["elastic_mode_steps"] for r in reports]
+    assert steps[49] >= 1, steps
+    tau, tau_req = _elastic_moments(arm, q[49], qd[49], qdd[49], hand, activations[49])
+    assert np.abs(tau - tau_req).max() < 1e-6
 
 
 def test_cpp_solve_refuses_an_unknown_tendon():

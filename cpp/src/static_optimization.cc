@@ -493,6 +493,20 @@ bool proxqp_sqp_step(const StaticOptimizationWorkspace& w, StaticOptimizationSol
   return true;
 }
 
+// The elastic SQP's step where its QP (the rows proxqp_sqp_step left in A, b, C, u) has no solution: the closest
+// moments its linearisation reaches (the slack QP, control.py's elastic-mode step: SNOPT's elastic mode, Gill, Murray
+// & Saunders, SIAM J Optim 12:979, 2002, with a squared penalty). The activations go to s.a_.
+bool elastic_mode_step(StaticOptimizationSolver& s, int n, int n_in, StaticOptimizationReport& r) {
+  s.As.leftCols(n) = s.A;
+  if (n_in) s.Cs.leftCols(n) = s.C;
+  s.uboxs.head(n) = s.ubox;
+  const pq::QPSolverOutput st = run(s.slack, s.slack_ready, s.Hs, s.gs, s.As, s.b, s.Cs, s.l, s.u, s.lboxs, s.uboxs, n_in);
+  r.qp_iterations += static_cast<int>(s.slack.results.info.iter);
+  if (st != pq::QPSolverOutput::PROXQP_SOLVED) return false;
+  for (int i = 0; i < n; ++i) s.a_[i] = s.slack.results.x[i];
+  return true;
+}
+
 }  // namespace
 
 void static_optimization_rigid(const Model& m, const Data& d, StaticOptimizationWorkspace& w, const double* q,
@@ -616,6 +630,7 @@ void static_optimization_elastic(const Model& m, const Data& d, StaticOptimizati
   int stalls = 0;
   const double* wts = w.options.weights.data();
   r.qps = 0;
+  r.elastic_mode_steps = 0;
   r.qp_iterations = 0;
   r.newton_iterations = 0;
   r.solver = StaticOptimizationSolverUsed::kDualNewton;
@@ -670,6 +685,12 @@ void static_optimization_elastic(const Model& m, const Data& d, StaticOptimizati
       // linearisations: 16 of the 400 frames of armrt_bench_static_optimization --elastic before this fallback).
       r.solver = StaticOptimizationSolverUsed::kProxQP;
       ok = proxqp_sqp_step(w, s, n, nq, n_in, r);
+      // Linearised about a, the moments may be out of reach in [0, amax] though the muscles' forces reach them
+      // (dF/da at a understates F's range; control.py's _sqp, das3 in bench.static_optimization).
+      if (!ok && s.qp.results.info.status == pq::QPSolverOutput::PROXQP_PRIMAL_INFEASIBLE) {
+        ok = elastic_mode_step(s, n, n_in, r);
+        if (ok) ++r.elastic_mode_steps;
+      }
     }
     if (!ok) { qp_failed = true; break; }
     step = 0;

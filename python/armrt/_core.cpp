@@ -350,6 +350,7 @@ PYBIND11_MODULE(_core, mod) {
         d["solver"] = r.solver == StaticOptimizationSolverUsed::kDualNewton ? "dual_newton" : "proxqp";
         d["newton_iterations"] = r.newton_iterations;
         d["qp_iterations"] = r.qp_iterations;
+        d["elastic_mode_steps"] = r.elastic_mode_steps;
         d["qps"] = r.qps;
         d["tau_required"] = vec(r.tau_required, nq);
         d["tau_muscle"] = vec(r.tau_muscle, nq);

@@ -220,6 +220,21 @@ class StaticOptimizationResult:
                 f"iterations={self.iterations})")
 
 
+def _slack_qp(A, Cg, amax, w):
+    """The closest-solution QP of the SQP's linearisation (moment rows A a' = b relaxed by free slacks s,
+    (ndof,)): variables (a', s), objective |s|^2 + 1e-4 sum w a'^2, the GH rows Cg on a' only. Returns
+    (H, g, A_, C_, lbox, ubox) for ProxQP."""
+    nq, n = A.shape
+    H = np.zeros((n + nq, n + nq))
+    H[np.arange(n), np.arange(n)] = 2e-4 * w
+    H[np.arange(n, n + nq), np.arange(n, n + nq)] = 2.0
+    A_ = np.hstack([A, np.eye(nq)])
+    C_ = np.hstack([Cg, np.zeros((Cg.shape[0], nq))])
+    lbox = np.concatenate([np.zeros(n), -_INF * np.ones(nq)])
+    ubox = np.concatenate([amax, _INF * np.ones(nq)])
+    return H, np.zeros(n + nq), A_, C_, lbox, ubox
+
+
 class StaticOptimizer:
     """Static optimisation of one arm (or a Model's default settings), keeping the ProxQP problem and the last
     activations between solves so that a controller's consecutive solves are warm started.
@@ -416,6 +431,19 @@ class StaticOptimizer:
             raise StaticOptimizationInfeasible(res.report, res)
         return res
 
+    def _run_qp(self, qp, slack: bool, H, g, A, b, C, u, lbox, ubox) -> None:
+        """qp.init on the QP object's first use (its preconditioner), qp.update after; then qp.solve()."""
+        n_in = C.shape[0]
+        l_in = np.full(n_in, -_INF)
+        key = "_qp_slack" if slack else "_qp"
+        if not self._initialised[key]:
+            qp.init(H, g, A, b, C if n_in else None, l_in if n_in else None, u if n_in else None, lbox, ubox)
+            self._initialised[key] = True
+        else:
+            qp.update(H, g, A, b, C if n_in else None, l_in if n_in else None, u if n_in else None, lbox, ubox,
+                      update_preconditioner=False)
+        qp.solve()
+
     def _objective(self, a):
         return float(self.weights @ (a ** 2 if self.criterion == "squared" else a ** 3))
 
@@ -485,14 +513,7 @@ class StaticOptimizer:
             Cg = (C_rows @ P) * dF            # (n_in, n)
             ug = -(C_rows @ (f0 + P @ F - (P * dF) @ a))
             if slack:
-                H = np.zeros((n + nq, n + nq))
-                H[np.arange(n), np.arange(n)] = 2e-4 * w
-                H[np.arange(n, n + nq), np.arange(n, n + nq)] = 2.0
-                g = np.zeros(n + nq)
-                A_ = np.hstack([A, np.eye(nq)])
-                C_ = np.hstack([Cg, np.zeros((n_in, nq))])
-                lbox = np.concatenate([np.zeros(n), -_INF * np.ones(nq)])
-                ubox = np.concatenate([amax, _INF * np.ones(nq)])
+                H, g, A_, C_, lbox, ubox = _slack_qp(A, Cg, amax, w)
             else:
                 if self.criterion == "squared" or squared_first:
                     h = 2.0 * w
@@ -505,19 +526,26 @@ class StaticOptimizer:
                     g = g - 2.0 * mu * w * a
                 H = np.diag(h)
                 A_, C_, lbox, ubox = A, Cg, np.zeros(n), amax
-            l_in = np.full(n_in, -_INF)
-            key = "_qp_slack" if slack else "_qp"
-            if not self._initialised[key]:
-                qp.init(H, g, A_, b, C_ if n_in else None, l_in if n_in else None, ug if n_in else None, lbox, ubox)
-                self._initialised[key] = True
-            else:
-                qp.update(H, g, A_, b, C_ if n_in else None, l_in if n_in else None, ug if n_in else None, lbox, ubox,
-                          update_preconditioner=False)
-            qp.solve()
+            self._run_qp(qp, slack, H, g, A_, b, C_, ug, lbox, ubox)
             qps += 1
-            if qp.results.info.status != proxqp.PROXQP_SOLVED and not slack:
+            if qp.results.info.status == proxqp.PROXQP_PRIMAL_INFEASIBLE and not slack:
+                # The linearisation about a cannot balance the moments within the bounds, though the muscles may
+                # (F(a) is not linear: its slope at a can understate what a' in [0, amax] reaches; das3 from the
+                # previous frame's activations, bench.static_optimization). As SNOPT's elastic mode for an infeasible
+                # QP subproblem (Gill, Murray & Saunders, SIAM J Optim 12:979, 2002; its l1 penalty here the
+                # closest-solution QP's squared one): the step minimises the linearised moment residual, and the next
+                # QP is linearised there. The fixed point is unchanged: convergence needs the moments balanced by F.
+                qs = self._qp_object(True, n_in)
+                Hs, gs, As, Cs, lbs, ubs = _slack_qp(A, Cg, amax, w)
+                self._run_qp(qs, True, Hs, gs, As, b, Cs, ug, lbs, ubs)
+                if qs.results.info.status != proxqp.PROXQP_SOLVED:
+                    return a, qps, False
+                x_new = qs.results.x
+            elif qp.results.info.status != proxqp.PROXQP_SOLVED and not slack:
                 return a, qps, False
-            a_new = np.clip(qp.results.x[:n], 0.0, amax)
+            else:
+                x_new = qp.results.x
+            a_new = np.clip(x_new[:n], 0.0, amax)
             step = float(np.abs(a_new - a).max())
             a = a_new
             if squared_first:  # cubed from a cold start: the squared optimum first, then Newton on the cubes

@@ -66,6 +66,8 @@ struct StaticOptimizationReport {
   int qps = 0;                            // ProxQP QPs solved (0: the dual Newton method answered; 1, or 2
                                           // with the closest-solution QP)
   int newton_iterations = 0;              // of the dual Newton method
+  int elastic_mode_steps = 0;             // elastic SQP: QPs whose linearisation could not balance the moments,
+                                          // stepped to its closest moments instead (static_optimization.cc)
   StaticOptimizationSolverUsed solver = StaticOptimizationSolverUsed::kDualNewton;
   double tau_required[kMaxDofs] = {};     // N m, inverse dynamics
   double tau_muscle[kMaxDofs] = {};       // N m, R^T F(a)
