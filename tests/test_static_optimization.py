@@ -12,7 +12,7 @@ armrt = pytest.importorskip("armrt", reason="armrt is not built/installed (./run
 pytest.importorskip("proxsuite", reason="proxsuite (pip install proxsuite) is not installed")
 from armrt.control import CONVEX_HALF_ANGLE, gh_polygon  # noqa: E402
 
-from tests.static_optimization_motions import das3_motion  # noqa: E402
+from tests.static_optimization_motions import das2_fast_motion, das3_motion  # noqa: E402
 
 pytestmark = pytest.mark.filterwarnings("ignore:q slightly beyond the joint limits:RuntimeWarning")
 BALANCE = 1e-6  # N m, the issue's acceptance
@@ -99,6 +99,36 @@ def test_das3_elastic_sqp_takes_an_elastic_step_where_its_linearisation_is_infea
             assert calls, "frame 49 no longer needs the elastic step: this test no longer covers it"
             o = engine_check(arm, res, q[k], qd[k])
             assert np.abs(o["muscle_torque"] - res.tau_required).max() < BALANCE
+
+
+def test_elastic_sqp_stops_early_on_frames_out_of_the_muscles_reach(monkeypatch):
+    """das2 along a motion too fast for its elastic elements (tests/static_optimization_motions.py): the frames
+    from 28 on are infeasible, their closest solutions holding elements at the upper bound. The elastic-mode step
+    stops once it no longer halves the moment residual, so such a frame costs a few QPs of the main SQP (before that
+    rule, frames 51-67 ran 80 QPs at their feasibility edge, some taking seconds in ProxQP)."""
+    import armrt.control as control
+
+    arm = armrt.Arm("das2")
+    q, qd, qdd = das2_fast_motion(arm)
+    main_qps = []
+    real = control.StaticOptimizer._run_qp
+
+    def counting(self, qp, slack, *args):
+        if not slack:
+            main_qps[-1] += 1
+        return real(self, qp, slack, *args)
+
+    monkeypatch.setattr(control.StaticOptimizer, "_run_qp", counting)
+    so = armrt.StaticOptimizer(arm, backend="python")
+    infeasible = []
+    for k in range(70):
+        main_qps.append(0)
+        res = so.solve(q[k], qd[k], qdd[k], on_infeasible="return")
+        if not res.feasible:
+            infeasible.append(k)
+            assert res.at_upper_bound, (k, res.report)
+            assert main_qps[-1] <= 8, (k, main_qps[-1])
+    assert len(infeasible) >= 30 and infeasible[-1] == 69, infeasible
 
 
 def test_bounds_follow_the_participant_profile():

@@ -9,7 +9,7 @@ import armrt
 from armrt import _core
 from armrt.control import gh_polygon
 
-from tests.static_optimization_motions import das3_motion
+from tests.static_optimization_motions import das2_fast_motion, das3_motion
 
 
 def random_states(arm, rng, k):
@@ -245,6 +245,35 @@ def test_cpp_elastic_sqp_takes_an_elastic_step_where_its_linearisation_is_infeas
     assert steps[49] >= 1, steps
     tau, tau_req = _elastic_moments(arm, q[49], qd[49], qdd[49], hand, activations[49])
     assert np.abs(tau - tau_req).max() < 1e-6
+
+
+def test_cpp_elastic_sqp_stops_early_on_frames_out_of_the_muscles_reach():
+    """das2 along a motion too fast for its elastic elements (tests/static_optimization_motions.py): the C++ SQP
+    reports the frames from 28 on not converged after a few QPs and elastic-mode steps (each step must halve the
+    moment residual), and the Python path then reports them infeasible with elements at their upper bound."""
+    arm = armrt.Arm("das2")
+    q, qd, qdd = das2_fast_motion(arm)
+    so = armrt.StaticOptimizer(arm, backend="cpp")
+    reports = []
+
+    class Recording:
+        def __init__(self, ws):
+            self.ws = ws
+
+        def solve(self, *args):
+            a, r = self.ws.solve(*args)
+            reports.append(r)
+            return a, r
+
+    so._cpp = Recording(so._cpp)
+    infeasible = []
+    for k in range(70):
+        res = so.solve(q[k], qd[k], qdd[k], on_infeasible="return")
+        if not reports[-1]["feasible"]:
+            infeasible.append(k)
+            assert reports[-1]["qps"] <= 8 and reports[-1]["elastic_mode_steps"] <= 4, (k, reports[-1]["qps"])
+            assert not res.feasible and res.at_upper_bound, (k, res.report)
+    assert len(infeasible) >= 30 and infeasible[-1] == 69, infeasible
 
 
 def test_cpp_solve_refuses_an_unknown_tendon():

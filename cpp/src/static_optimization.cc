@@ -627,6 +627,7 @@ void static_optimization_elastic(const Model& m, const Data& d, StaticOptimizati
   // through F(a)).
   bool converged = false, qp_failed = false;
   double step = 1e300, last_resid = 1e300, mu = 0;
+  double elastic_resid = 1e300;  // the moment residual (N m) where the last elastic-mode step was taken
   int stalls = 0;
   const double* wts = w.options.weights.data();
   r.qps = 0;
@@ -687,7 +688,11 @@ void static_optimization_elastic(const Model& m, const Data& d, StaticOptimizati
       ok = proxqp_sqp_step(w, s, n, nq, n_in, r);
       // Linearised about a, the moments may be out of reach in [0, amax] though the muscles' forces reach them
       // (dF/da at a understates F's range; control.py's _sqp, das3 in bench.static_optimization).
-      if (!ok && s.qp.results.info.status == pq::QPSolverOutput::PROXQP_PRIMAL_INFEASIBLE) {
+      // Only while each elastic step at least halves the moment residual: otherwise the frame is out of reach from
+      // here (control.py's _sqp; a truly infeasible frame would run 50 QPs at their feasibility edge).
+      if (!ok && s.qp.results.info.status == pq::QPSolverOutput::PROXQP_PRIMAL_INFEASIBLE &&
+          worst <= 0.5 * elastic_resid) {
+        elastic_resid = worst;
         ok = elastic_mode_step(s, n, n_in, r);
         if (ok) ++r.elastic_mode_steps;
       }
