@@ -315,8 +315,10 @@ def test_lab_session_participant_screen_xdf_and_metrics(tmp_path, capsys):
     try:
         for name in (f"mk-{uid}", f"ts-{uid}"):
             assert pylsl.resolve_byprop("name", name, timeout=30), f"{name} never appeared"
+        # LabRecorder opens the three inlets and reads their headers before it starts recording; 10 s (the default)
+        # was once not enough in the fresh-clone CI on 2 cores, the task's 1 kHz loop and pytest sharing them.
         with XdfRecording(tmp_path / "session.xdf", [{"name": f"mk-{uid}"}, {"name": f"ts-{uid}"},
-                                                     {"name": f"dec-{uid}"}]):
+                                                     {"name": f"dec-{uid}"}], timeout=30):
             time.sleep(1.0)   # LabRecorder subscribed
             with chromium_page(f"http://127.0.0.1:{port}/", tmp_path) as page:
                 page.wait_for("window.armrtTicks !== undefined", "the participant page did not load")
