@@ -213,16 +213,8 @@ def test_cpp_elastic_infeasible_goes_to_the_python_paths_closest_solution():
     assert r.feasible and np.abs(tau - tau_req).max() < 1e-6
 
 
-def test_cpp_elastic_sqp_takes_an_elastic_step_where_its_linearisation_is_infeasible():
-    """das3 along bench.static_optimization's motion (tests/static_optimization_motions.py): where the QP linearised
-    about the previous frame's activations has no solution (frame 49), the C++ SQP steps to its closest moments
-    (elastic_mode_steps) and converges, as the Python path does, instead of handing the frame to Python; the
-    moments balance through the engine's element."""
-    arm = armrt.Arm("das3")
-    arm.settle()
-    q, qd, qdd = das3_motion(arm)
-    hand = [0.0, -9.81, 0.0]
-    so = armrt.StaticOptimizer(arm, backend="cpp")
+def _record_cpp_reports(so):
+    """The C++ workspace's report dict of every solve of so (backend "cpp"), appended to the list returned."""
     reports = []
 
     class Recording:
@@ -235,6 +227,20 @@ def test_cpp_elastic_sqp_takes_an_elastic_step_where_its_linearisation_is_infeas
             return a, r
 
     so._cpp = Recording(so._cpp)
+    return reports
+
+
+def test_cpp_elastic_sqp_takes_an_elastic_step_where_its_linearisation_is_infeasible():
+    """das3 along bench.static_optimization's motion (tests/static_optimization_motions.py): where the QP linearised
+    about the previous frame's activations has no solution (frame 49), the C++ SQP steps to its closest moments
+    (elastic_mode_steps) and converges, as the Python path does, instead of handing the frame to Python; the
+    moments balance through the engine's element."""
+    arm = armrt.Arm("das3")
+    arm.settle()
+    q, qd, qdd = das3_motion(arm)
+    hand = [0.0, -9.81, 0.0]
+    so = armrt.StaticOptimizer(arm, backend="cpp")
+    reports = _record_cpp_reports(so)
     so._solve_python = lambda *a, **k: pytest.fail("an elastic frame went to the Python path")
     activations = []
     for k in range(len(q)):
@@ -254,18 +260,7 @@ def test_cpp_elastic_sqp_stops_early_on_frames_out_of_the_muscles_reach():
     arm = armrt.Arm("das2")
     q, qd, qdd = das2_fast_motion(arm)
     so = armrt.StaticOptimizer(arm, backend="cpp")
-    reports = []
-
-    class Recording:
-        def __init__(self, ws):
-            self.ws = ws
-
-        def solve(self, *args):
-            a, r = self.ws.solve(*args)
-            reports.append(r)
-            return a, r
-
-    so._cpp = Recording(so._cpp)
+    reports = _record_cpp_reports(so)
     infeasible = []
     for k in range(70):
         res = so.solve(q[k], qd[k], qdd[k], on_infeasible="return")
