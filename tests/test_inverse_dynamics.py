@@ -134,6 +134,8 @@ def test_bad_input_names_the_problem():
         arm.inverse_dynamics(q, hand_load=[np.inf, 0, 0])
     with pytest.raises(TypeError):
         armrt.inverse_dynamics(object(), q)
+    with pytest.raises(TypeError, match="parts must be True or False"):
+        armrt.inverse_dynamics(arm, q, parts="yes")
 
 
 # ----------------------------------------------------------------------------------------------

@@ -131,6 +131,68 @@ def test_elastic_sqp_stops_early_on_frames_out_of_the_muscles_reach(monkeypatch)
     assert len(infeasible) >= 30 and infeasible[-1] == 69, infeasible
 
 
+@pytest.mark.parametrize("tendon", ["elastic", "rigid"])
+def test_an_infeasible_solve_leaves_the_next_solve_alone(tendon):
+    """After a solve the muscles cannot meet (3000 N in the hand), the same StaticOptimizer solves the feasible
+    problem at once, as a fresh one does: ProxQP keeps its result and penalty parameters from an infeasible QP and
+    warm starts from them, which once left the Python path with a GH bound infeasible for good (a fresh-user
+    trial, 2026-12-06)."""
+    arm = armrt.Arm("das2")
+    q = np.radians([30.0, 60.0, 10.0, 60.0, 80.0])
+    load = [0.0, -9.81, 0.0]
+    so = armrt.StaticOptimizer(arm, gh_stab_max=0.3, tendon=tendon, backend="python")
+    first = so.solve(q, hand_load=load)
+    for _ in range(2):
+        assert not so.solve(q, hand_load=[0.0, -3000.0, 0.0], on_infeasible="return").feasible
+    for dq in (0.0, 0.02):
+        res = so.solve(q + dq, hand_load=load)
+        assert res.feasible and np.abs(res.residual).max() < 1e-6
+    np.testing.assert_allclose(so.solve(q, hand_load=load).activation, first.activation, atol=1e-6)
+
+
+def test_weights_beyond_the_ratio_the_qp_resolves_are_refused_and_below_it_the_paths_agree():
+    """A weight 1e11 times the others once gave a balanced but far-from-optimal Python solution (ProxQP's absolute
+    tolerances); ratios above MAX_WEIGHT_RATIO are refused with the way to switch an element off, and at the
+    limit the Python path's optimum is the C++ dual Newton's."""
+    from armrt.control import MAX_WEIGHT_RATIO
+
+    arm = armrt.Arm("das2")
+    q = np.radians([30.0, 60.0, 10.0, 60.0, 80.0])
+    w = np.ones(arm.n_elements)
+    w[arm.element_names.index("termin2")] = 10 * MAX_WEIGHT_RATIO
+    with pytest.raises(ValueError, match="max_activation to 0"):
+        armrt.StaticOptimizer(arm, weights=w)
+    w[arm.element_names.index("termin2")] = MAX_WEIGHT_RATIO
+    rp = armrt.StaticOptimizer(arm, weights=w, tendon="rigid", backend="python").solve(q, hand_load=[0, -9.81, 0])
+    rc = armrt.StaticOptimizer(arm, weights=w, tendon="rigid", backend="cpp").solve(q, hand_load=[0, -9.81, 0])
+    assert abs(rp.objective - rc.objective) < 1e-6 * rc.objective
+    np.testing.assert_allclose(rp.activation, rc.activation, atol=1e-5)
+
+
+@pytest.mark.parametrize("backend", ["python", "cpp"])
+def test_loads_and_accelerations_beyond_any_arm_are_refused_and_below_the_bound_reported_promptly(backend):
+    """A 1e16 N hand load once spun ProxQP's closest-solution QPs for minutes (a fresh-user trial): beyond
+    MAX_HAND_FORCE, MAX_HAND_MOMENT and MAX_JOINT_ACCELERATION the solve is refused naming the input; at the
+    bound the frame is reported infeasible after a few QPs (their count, not a time, is what is held here)."""
+    from armrt.control import MAX_HAND_FORCE, MAX_HAND_MOMENT, MAX_JOINT_ACCELERATION
+
+    arm = armrt.Arm("das2")
+    q = np.radians([30.0, 60.0, 10.0, 60.0, 80.0])
+    so = armrt.StaticOptimizer(arm, backend=backend)
+    with pytest.raises(ValueError, match="hand force of 1e\\+16 N"):
+        so.solve(q, hand_load=[0.0, -1e16, 0.0])
+    with pytest.raises(ValueError, match="hand moment"):
+        so.solve(q, hand_load={"moment": [0.0, 2 * MAX_HAND_MOMENT, 0.0]})
+    with pytest.raises(ValueError, match="qddot\\[GHy\\]"):
+        so.solve(q, qddot=np.full(5, 1e300))
+    with pytest.raises(ValueError, match="qddot"):
+        so.solve(q, qddot=np.full(5, 2 * MAX_JOINT_ACCELERATION))
+    for tendon in ("rigid", "elastic"):
+        res = armrt.StaticOptimizer(arm, tendon=tendon, backend=backend).solve(
+            q, hand_load=[0.0, -MAX_HAND_FORCE, 0.0], on_infeasible="return")
+        assert not res.feasible and res.iterations <= 60 and "residual moment" in res.report
+
+
 def test_bounds_follow_the_participant_profile():
     arm = armrt.Arm("das2")
     arm.max_activation = {"triceps": 0.0, "deltscap": 0.3}

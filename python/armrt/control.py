@@ -110,6 +110,29 @@ def _state(model, q, qdot, qddot, sim=None):
     return q, qd, _dof_vector(model, qddot, "qddot", True)
 
 
+# Beyond these a static optimisation is refused (ValueError), not attempted: at a 1e16 N hand load ProxQP's
+# closest-solution QPs ran for minutes (absolute tolerances below what doubles resolve), while up to 1e14 N they
+# report the frame infeasible in about a second. The bounds are far above anything an arm bears or does (1e5 N is
+# ten tonnes in the hand; a baseball pitch's shoulder reaches about 1e3-1e4 rad/s^2).
+MAX_HAND_FORCE = 1e5         # N, |hand force|
+MAX_HAND_MOMENT = 1e4        # N m, |hand moment|
+MAX_JOINT_ACCELERATION = 1e5  # rad/s^2, |qddot| per DOF
+
+
+def _check_solvable_scale(model, qdd, f_hand, m_hand) -> None:
+    """ValueError for a hand load or joint acceleration beyond MAX_HAND_FORCE, MAX_HAND_MOMENT or
+    MAX_JOINT_ACCELERATION (the static optimisation's input, either backend)."""
+    for what, value, limit, unit in (("hand force", float(np.linalg.norm(f_hand)), MAX_HAND_FORCE, "N"),
+                                     ("hand moment", float(np.linalg.norm(m_hand)), MAX_HAND_MOMENT, "N m")):
+        if value > limit:
+            raise ValueError(f"{what} of {value:.3g} {unit} is beyond {limit:.0e} {unit}, more than any arm bears: "
+                             f"static optimisation refuses it (check the units)")
+    j = int(np.argmax(np.abs(qdd)))
+    if abs(qdd[j]) > MAX_JOINT_ACCELERATION:
+        raise ValueError(f"qddot[{model.dof_names[j]}] = {qdd[j]:.3g} rad/s^2 is beyond {MAX_JOINT_ACCELERATION:.0e} "
+                         f"rad/s^2, more than any arm does: static optimisation refuses it")
+
+
 def check_on_infeasible(on_infeasible) -> None:
     """ValueError unless on_infeasible is "raise" or "return"."""
     if on_infeasible not in ("raise", "return"):
@@ -131,6 +154,8 @@ def inverse_dynamics(arm_or_model, q, qdot=0.0, qddot=0.0, hand_load=None, parts
     parts=True returns a dict: tau_muscle, mass_times_qddot, bias (b), passive, external, girdle (ndof,) and
     gh_force_without_muscles (3,) N, scapula frame. ValueError for NaN, wrong shapes or q far beyond range."""
     sim, model, default_load = _target(arm_or_model)
+    if not isinstance(parts, (bool, np.bool_)):
+        raise TypeError(f"parts must be True or False, got {type(parts).__name__} {parts!r}")
     q, qd, qdd = _state(model, q, qdot, qddot, sim)
     f, m = _hand_load(hand_load, default_load)
     if hasattr(arm_or_model, "_sim"):
@@ -220,6 +245,12 @@ class StaticOptimizationResult:
                 f"iterations={self.iterations})")
 
 
+# The largest ratio of static-optimisation weights accepted (StaticOptimizer's weight check). Measured, das2 rigid
+# tendon, one weight raised: the Python path's activations are the C++ dual Newton's to 7.5e-7 at 1e6, 2.4e-5 at 1e7,
+# 2.1e-4 at 1e8; at 1e11 its optimum was 1.6x the true one (ProxQP's tolerances are absolute).
+MAX_WEIGHT_RATIO = 1e6
+
+
 def _slack_qp(A, Cg, amax, w):
     """The closest-solution QP of the SQP's linearisation (moment rows A a' = b relaxed by free slacks s,
     (ndof,)): variables (a', s), objective |s|^2 + 1e-4 sum w a'^2, the GH rows Cg on a' only. Returns
@@ -243,7 +274,7 @@ class StaticOptimizer:
     1981). tendon: "elastic" (the engine's element at the CE length where its fibre velocity equals the path's
     dL/dt, solved by sequential QP until the moments balance to MOMENT_TOLERANCE) or "rigid" (linear in a, one QP).
     gh_stab_max: None or a bound > 0 on GHstab (paper eq. 5) as gh_polygon's linear constraints on the GH force.
-    weights: None (1) or (n,) > 0. Bounds [0, max_activation] come from the arm's settings at each solve.
+    weights: None (1) or (n,) > 0, largest / smallest at most MAX_WEIGHT_RATIO (1e6; ValueError). Bounds [0, max_activation] come from the arm's settings at each solve.
     backend: "auto" (the default: "cpp" for tendon="rigid" with criterion="squared", else "python"), "cpp" (the
     engine's cpp/src/static_optimization.cc: the same QPs solved in C++ by a dual projected Newton method with
     ProxQP as its fallback, for a 1 kHz loop; squared activations only, ValueError otherwise; with the elastic
@@ -277,6 +308,13 @@ class StaticOptimizer:
                 raise ValueError(f"weights must have shape ({n},) (one per element), got {w.shape}")
             if not np.all(np.isfinite(w)) or np.any(w <= 0):
                 raise ValueError("weights must be finite and > 0")
+            ratio = float(w.max() / w.min())
+            if ratio > MAX_WEIGHT_RATIO:
+                # ProxQP's tolerances are absolute: with one weight 1e11 times the others the Python path returned a
+                # balanced but far from optimal solution (sum of the others' a^2 1.6x the optimum; 1e10 is 0.1 % off).
+                raise ValueError(f"weights span a ratio of {ratio:.3g} (largest / smallest); at most "
+                                 f"{MAX_WEIGHT_RATIO:.0e} is accepted. To switch an element off, set its "
+                                 f"max_activation to 0 (arm.max_activation = {{name: 0.0}}) instead of a huge weight")
             self.weights = np.ascontiguousarray(w, dtype=float)
         g = self.model.glenoid
         self._axes = np.array([g["glenoid_normal"], g["glenoid_major_axis"], g["glenoid_minor_axis"]])
@@ -330,7 +368,10 @@ class StaticOptimizer:
         if qp is None or qp.model.n_in != n_in:
             qp = proxqp.dense.QP(nv, nq, n_in, True)
             qp.settings.eps_abs = 1e-9
-            qp.settings.eps_rel = 0.0
+            # The closest-solution QP's residuals scale with the moments it cannot meet: an absolute 1e-9 alone is below
+            # double precision once they pass 1e7 N m (a 1e16 N hand load spun ProxQP for minutes); relative 1e-15 is 1e-9
+            # at 1e6 N m and leaves smaller problems alone.
+            qp.settings.eps_rel = 1e-15 if slack else 0.0
             qp.settings.max_iter = 300 if slack else 1000
             qp.settings.verbose = False
             qp.settings.primal_infeasibility_solving = False
@@ -349,6 +390,7 @@ class StaticOptimizer:
         q, qd, qdd = _state(model, q, qdot, qddot, sim)
         f_hand, m_hand = _hand_load(hand_load, self._default_load if not hasattr(self._arm_or_model, "_sim") else
                                     (np.array(sim.hand_force), np.array(sim.hand_moment)))
+        _check_solvable_scale(model, qdd, f_hand, m_hand)
         if self._cpp is not None:
             res = self._solve_cpp(q, qd, qdd, f_hand, m_hand, on_infeasible)
             if res is not None:
@@ -430,6 +472,13 @@ class StaticOptimizer:
         elif on_infeasible == "raise":
             raise StaticOptimizationInfeasible(res.report, res)
         return res
+
+    def _drop_qp(self, slack: bool) -> None:
+        """Forget a QP object whose last solve did not succeed. ProxQP keeps its result and its proximal and
+        penalty parameters (results.info.mu_eq, mu_in) from solve to solve, and warm starts from them: after an
+        infeasible QP they held a later, feasible one from converging (the same state solved fresh converged; a
+        StaticOptimizer with a GH bound stayed infeasible for good after a 3000 N load)."""
+        setattr(self, "_qp_slack" if slack else "_qp", None)
 
     def _run_qp(self, qp, slack: bool, H, g, A, b, C, u, lbox, ubox) -> None:
         """qp.init on the QP object's first use (its preconditioner), qp.update after; then qp.solve()."""
@@ -529,7 +578,12 @@ class StaticOptimizer:
                 A_, C_, lbox, ubox = A, Cg, np.zeros(n), amax
             self._run_qp(qp, slack, H, g, A_, b, C_, ug, lbox, ubox)
             qps += 1
-            if qp.results.info.status == proxqp.PROXQP_PRIMAL_INFEASIBLE and not slack:
+            status = qp.results.info.status
+            x_solved = qp.results.x.copy()
+            if status != proxqp.PROXQP_SOLVED:
+                self._drop_qp(slack)
+                qp = self._qp_object(slack, n_in)
+            if status == proxqp.PROXQP_PRIMAL_INFEASIBLE and not slack:
                 if resid > 0.5 * elastic_resid:
                     # The last elastic step did not halve the moment residual: the closest moments of the
                     # linearisations do not approach a balance, the frame is out of reach from here (the force-velocity
@@ -547,12 +601,13 @@ class StaticOptimizer:
                 Hs, gs, As, Cs, lbs, ubs = _slack_qp(A, Cg, amax, w)
                 self._run_qp(qs, True, Hs, gs, As, b, Cs, ug, lbs, ubs)
                 if qs.results.info.status != proxqp.PROXQP_SOLVED:
+                    self._drop_qp(True)
                     return a, qps, False
                 x_new = qs.results.x
-            elif qp.results.info.status != proxqp.PROXQP_SOLVED and not slack:
+            elif status != proxqp.PROXQP_SOLVED and not slack:
                 return a, qps, False
             else:
-                x_new = qp.results.x
+                x_new = x_solved
             a_new = np.clip(x_new[:n], 0.0, amax)
             step = float(np.abs(a_new - a).max())
             a = a_new
