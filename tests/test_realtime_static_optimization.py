@@ -98,18 +98,23 @@ def test_refused_targets_and_packets():
             c.send_target(np.full(5, np.nan))
         with pytest.raises(ValueError, match="shape"):
             c.send_target(q_hold[:4])
+        with pytest.raises(ValueError, match="qddot"):
+            c.send_target(q_hold, 0.0, np.full(5, 1e6))
         # Past the client's checks, the runner's own: beyond the range, an excitation packet, a wrong count.
         bad = q_hold.copy()
         bad[ELX] = 10.0
         c.send_raw(encode_packet(TARGET, c._next_seq(), np.concatenate([bad, np.zeros(10)]), session=c.session))
         c.send(np.zeros(102))
         c.send_raw(encode_packet(TARGET, c._next_seq(), np.zeros(5), session=c.session))
+        # A 1e16 rad/s^2 acceleration: refused as the Python API refuses it (its solve would take seconds).
+        c.send_raw(encode_packet(TARGET, c._next_seq(), np.concatenate([q_hold, np.zeros(5), np.full(5, 1e16)]),
+                                 session=c.session))
         c.send_target(q_hold)
         st = c.latest_state(timeout=0.3)
         time.sleep(0.05)
         stats = s.stop()
     p = stats["packets"]
-    assert p["bad_target"] == 1 and p["bad_type"] == 1 and p["bad_count"] == 1
+    assert p["bad_target"] == 2 and p["bad_type"] == 1 and p["bad_count"] == 1
     assert p["targets_applied"] >= 1
     assert st is not None
 
@@ -125,6 +130,23 @@ def test_infeasible_solves_give_zero_excitation():
         stats = s.stop()
     so = stats["static_optimization"]
     assert so["solves"] > 50 and so["infeasible"] == so["solves"]
+    assert np.all(states[-1].excitation == 0.0)
+
+
+def test_a_computed_acceleration_beyond_the_bound_is_not_solved_and_gives_zero_excitation():
+    """--so-kp 1e7 on a 0.1 rad error asks 1e6 rad/s^2: beyond what StaticOptimizer.solve accepts, so the runner
+    does not solve (a solve there could take seconds inside the 1 ms cycle), applies zero and counts it."""
+    q_hold = hold_posture()
+    target = q_hold.copy()
+    target[ELX] += 0.1
+    with rt.RealtimeSession(listen="127.0.0.1:0", q0=q_hold, static_optimization=True, so_kp=1e7,
+                            state_rate_hz=100, send_excitation=True, input_timeout=0.5) as s, \
+            rt.UdpClient(s.port) as c:
+        c.join()
+        states = _send_until(c, 0.2, lambda t: (target, 0.0, 0.0))
+        stats = s.stop()
+    so = stats["static_optimization"]
+    assert so["refused"] > 50 and so["solves"] == 0, so
     assert np.all(states[-1].excitation == 0.0)
 
 

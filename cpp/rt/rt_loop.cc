@@ -140,8 +140,19 @@ void RtLoop::static_optimization_cycle() {
   const double* qd = &d.x[qd_offset(m)];
   double qdd_cmd[kMaxDofs];
   const bool feedback = cfg_.so_kp > 0 || cfg_.so_kd > 0;
-  for (int j = 0; j < nq; ++j)
+  bool out_of_range = false;
+  for (int j = 0; j < nq; ++j) {
     qdd_cmd[j] = t[2 * nq + j] + cfg_.so_kp * (t[j] - q[j]) + cfg_.so_kd * (t[nq + j] - qd[j]);
+    out_of_range = out_of_range || !(std::abs(qdd_cmd[j]) <= kStaticOptimizationMaxJointAcceleration);
+  }
+  if (out_of_range) {
+    // Large gains on a large error: the solve the Python API refuses would take seconds here. Fail safe, counted
+    // (not a solve).
+    ++so_refused_;
+    std::fill(so_activation_.begin(), so_activation_.begin() + n, 0.0);
+    data_set_excitation(m, d, so_activation_.data());
+    return;
+  }
   const std::int64_t t0 = now_ns();
   // Feedforward: at the desired state; with gains, computed-torque style at the arm's own state.
   static_optimization_rigid(m, d, so_, feedback ? q : t, feedback ? qd : t + nq, qdd_cmd, d.hand_force.data(),
@@ -438,6 +449,7 @@ RtStats RtLoop::stats() const {
     st.so_solves = so_solves_;
     st.so_infeasible = so_infeasible_;
     st.so_not_converged = so_not_converged_;
+    st.so_refused = so_refused_;
     st.so_gh_stab_max = cfg_.so_gh_stab_max;
     st.so_kp = cfg_.so_kp;
     st.so_kd = cfg_.so_kd;

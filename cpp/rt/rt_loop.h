@@ -91,6 +91,7 @@ class RtLoop {
   std::array<double, 2 * kMaxDofs> support_state_{};
   LogHistogram so_hist_;
   std::int64_t so_solves_ = 0, so_infeasible_ = 0, so_not_converged_ = 0;
+  std::int64_t so_refused_ = 0;  // cycles whose computed qddot was beyond kStaticOptimizationMaxJointAcceleration
   double so_residual_max_ = 0;
 
   // Loop state and results.

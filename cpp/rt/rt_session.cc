@@ -14,6 +14,7 @@
 
 #include "armrt/clock.h"
 #include "armrt/model.h"
+#include "armrt/static_optimization.h"
 
 namespace armrt::rt {
 
@@ -329,6 +330,9 @@ void Session::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in
     // beyond its range by more is refused, the previous target kept.
     for (int j = 0; j < n_dofs_; ++j)
       if (values_[j] < dof_lo_[j] || values_[j] > dof_hi_[j]) { ++pk_.bad_target; return; }
+    // And its acceleration bound: the solve would run for seconds in the loop (static_optimization.h).
+    for (int j = 2 * n_dofs_; j < 3 * n_dofs_; ++j)
+      if (std::abs(values_[j]) > kStaticOptimizationMaxJointAcceleration) { ++pk_.bad_target; return; }
   }
   if (!accept_sequence(h, from)) return;
   if (h.type == kTarget) {

@@ -86,7 +86,7 @@ std::string stats_json(const RtStats& s) {
                   {"send_errors", k.send_errors}};
   if (s.static_optimization) {
     j["static_optimization"] = {{"solve_ns", json_pct(s.so_solve)}, {"solves", s.so_solves},
-                                {"infeasible", s.so_infeasible}, {"not_converged", s.so_not_converged},
+                                {"infeasible", s.so_infeasible}, {"not_converged", s.so_not_converged}, {"refused", s.so_refused},
                                 {"residual_max_Nm", s.so_residual_max},
                                 {"gh_stab_max", s.so_gh_stab_max > 0 ? nlohmann::ordered_json(s.so_gh_stab_max)
                                                                      : nlohmann::ordered_json(nullptr)},

@@ -93,6 +93,7 @@ struct RtStats {
   std::int64_t so_solves = 0;       // solves run (cycles with a target)
   std::int64_t so_infeasible = 0;   // of which infeasible or not converged (excitation set to zero)
   std::int64_t so_not_converged = 0;  // of which the dual Newton method did not finish (no ProxQP fallback in the loop)
+  std::int64_t so_refused = 0;  // cycles not solved: qddot_d + kp e + kd e' beyond 1e5 rad/s^2 (excitation zero)
   double so_gh_stab_max = 0, so_kp = 0, so_kd = 0;
   double so_residual_max = 0;       // N m, the largest moment residual of a feasible solve
 };

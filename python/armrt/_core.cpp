@@ -229,6 +229,9 @@ PYBIND11_MODULE(_core, mod) {
   mod.def("snapshot_rows", []() { return table_rows(snapshot_rows(), kNumSnapshotParts); },
           "The snapshot's parts in order, part k being signature bit 1 << k: (name, size rule, unit, stage, "
           "girdle_only, description)");
+  mod.attr("STATIC_OPTIMIZATION_MAX_HAND_FORCE") = kStaticOptimizationMaxHandForce;    // N (static_optimization.h)
+  mod.attr("STATIC_OPTIMIZATION_MAX_HAND_MOMENT") = kStaticOptimizationMaxHandMoment;  // N m
+  mod.attr("STATIC_OPTIMIZATION_MAX_JOINT_ACCELERATION") = kStaticOptimizationMaxJointAcceleration;  // rad/s^2
   mod.attr("START_RANGE_MARGIN") = kStartRangeMargin;  // rad, model.h: Arm.reset's and armrt-rt --q0's bound
   mod.attr("JOINT_RANGE_MARGIN") = kJointRangeMargin;  // rad, model.h: the physical domain's joint bound
   mod.attr("SNAPSHOT_TIME") = kSnapshotTime;

@@ -110,13 +110,18 @@ def _state(model, q, qdot, qddot, sim=None):
     return q, qd, _dof_vector(model, qddot, "qddot", True)
 
 
-# Beyond these a static optimisation is refused (ValueError), not attempted: at a 1e16 N hand load ProxQP's
-# closest-solution QPs ran for minutes (absolute tolerances below what doubles resolve), while up to 1e14 N they
-# report the frame infeasible in about a second. The bounds are far above anything an arm bears or does (1e5 N is
-# ten tonnes in the hand; a baseball pitch's shoulder reaches about 1e3-1e4 rad/s^2).
-MAX_HAND_FORCE = 1e5         # N, |hand force|
-MAX_HAND_MOMENT = 1e4        # N m, |hand moment|
-MAX_JOINT_ACCELERATION = 1e5  # rad/s^2, |qddot| per DOF
+# Beyond these a static optimisation is refused (ValueError), not attempted; the engine's constants
+# (static_optimization.h), which armrt-rt holds its targets to as well. At a 1e16 N hand load ProxQP's closest-solution
+# QPs ran for minutes (absolute tolerances below what doubles resolve), while up to 1e14 N they report the frame
+# infeasible in about a second. The bounds are far above anything an arm bears or does (1e5 N is ten tonnes in the
+# hand; a baseball pitch's shoulder reaches about 1e3-1e4 rad/s^2).
+def _engine_bounds():
+    from . import _core  # noqa: PLC0415 (the extension, not an armrt module: no cycle)
+    return (_core.STATIC_OPTIMIZATION_MAX_HAND_FORCE, _core.STATIC_OPTIMIZATION_MAX_HAND_MOMENT,
+            _core.STATIC_OPTIMIZATION_MAX_JOINT_ACCELERATION)
+
+
+MAX_HAND_FORCE, MAX_HAND_MOMENT, MAX_JOINT_ACCELERATION = _engine_bounds()  # N, N m, rad/s^2 (per DOF)
 
 
 def _check_solvable_scale(model, qdd, f_hand, m_hand) -> None:

@@ -332,7 +332,7 @@ class UdpClient:
         (each may be 0), in the model's DOF order; the runner solves the static optimisation for them every cycle
         and applies the activations. Returns the sequence number. ValueError (nothing sent) for what
         StaticOptimizer.solve refuses: NaN, wrong shapes, q beyond the joint ranges by more than the engine's
-        margin (with a hint when it looks like degrees); RuntimeError without a session (join(timeout) first)."""
+        margin (with a hint when it looks like degrees), |qddot| beyond 1e5 rad/s^2; RuntimeError without a session (join(timeout) first)."""
         from .checks import dof_vector, joint_range, real_scalar  # noqa: PLC0415 (light: numpy only)
         if self._model is None:
             from .model import Model  # noqa: PLC0415 (the model's DOF names and ranges, once)
@@ -347,7 +347,13 @@ class UdpClient:
             return np.asarray(dof_vector(v, what, m.dof_names), dtype=float)
 
         q = joint_range(vec(q, "q"), m.dof_names, m.dof_ranges, warn=False)
-        values = np.concatenate([q, vec(qdot, "qdot"), vec(qddot, "qddot")])
+        qdd = vec(qddot, "qddot")
+        from ._core import STATIC_OPTIMIZATION_MAX_JOINT_ACCELERATION as qdd_max  # noqa: PLC0415
+        if np.any(np.abs(qdd) > qdd_max):
+            j = int(np.argmax(np.abs(qdd)))
+            raise ValueError(f"qddot[{m.dof_names[j]}] = {qdd[j]:.3g} rad/s^2 is beyond {qdd_max:.0e} rad/s^2, more "
+                             f"than any arm does: the runner refuses it, as StaticOptimizer.solve does")
+        values = np.concatenate([q, vec(qdot, "qdot"), qdd])
         self._require_session()
         if seq is None:
             seq = self._next_seq()

@@ -24,6 +24,12 @@ inline constexpr int kMaxGhPolygonSides = 64;
 inline constexpr double kMaxBoundHalfAngle = 1.45;
 // Moments balanced to this (N m, |.|_inf) or the solve is infeasible (the Python API's acceptance).
 inline constexpr double kStaticOptimizationMomentTolerance = 1e-6;
+// Inputs beyond these are refused, not solved (control.py's check, armrt-rt's target packets and its computed
+// qddot): far above anything an arm bears or does (1e5 N is ten tonnes in the hand; a baseball pitch's shoulder
+// reaches about 1e3-1e4 rad/s^2), and at a 1e16 N load ProxQP's closest-solution QPs ran for seconds to minutes.
+inline constexpr double kStaticOptimizationMaxHandForce = 1e5;          // N, |hand force|
+inline constexpr double kStaticOptimizationMaxHandMoment = 1e4;         // N m, |hand moment|
+inline constexpr double kStaticOptimizationMaxJointAcceleration = 1e5;  // rad/s^2, |qddot| per DOF
 
 // Rows c (sides x 3, row-major) of the constraints c . (F.normal, F.major, F.minor) <= 0 on a GH force F that
 // imply GHstab(F) <= bound: control.py's gh_polygon, the same polygon to rounding (docs/control.md).
