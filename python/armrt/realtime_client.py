@@ -348,7 +348,8 @@ class UdpClient:
 
         q = joint_range(vec(q, "q"), m.dof_names, m.dof_ranges, warn=False)
         qdd = vec(qddot, "qddot")
-        from ._core import STATIC_OPTIMIZATION_MAX_JOINT_ACCELERATION as qdd_max  # noqa: PLC0415
+        from . import _core  # noqa: PLC0415 (the extension: the static optimisation's acceleration bound)
+        qdd_max = _core.STATIC_OPTIMIZATION_MAX_JOINT_ACCELERATION
         if np.any(np.abs(qdd) > qdd_max):
             j = int(np.argmax(np.abs(qdd)))
             raise ValueError(f"qddot[{m.dof_names[j]}] = {qdd[j]:.3g} rad/s^2 is beyond {qdd_max:.0e} rad/s^2, more "
