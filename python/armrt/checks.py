@@ -283,3 +283,12 @@ def joint_range_rows(q: np.ndarray, dof_names, dof_ranges: np.ndarray, label=Non
     each_row(lambda row: joint_range(row, dof_names, dof_ranges, warn=warn), q, rows,
              label or (lambda r: f"row {r}"), stacklevel=stacklevel + 1)
     return q
+
+
+def joint_acceleration_within(qdd, dof_names, limit: float, who: str) -> None:
+    """ValueError naming the DOF where |qdd| (ndof,) rad/s^2 exceeds limit (static_optimization.h's bound): who
+    refuses it (the static optimisation, armrt-rt's client)."""
+    j = int(np.argmax(np.abs(qdd)))
+    if abs(qdd[j]) > limit:
+        raise ValueError(f"qddot[{dof_names[j]}] = {qdd[j]:.3g} rad/s^2 is beyond {limit:.0e} rad/s^2, more than any "
+                         f"arm does: {who} refuses it")

@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from .checks import hand_load as _checked_hand_load
-from .checks import count, dof_vector, joint_range, real_array, real_scalar
+from .checks import count, dof_vector, joint_acceleration_within, joint_range, real_array, real_scalar
 from .errors import StaticOptimizationInfeasible
 
 # Below |theta| tan|theta| = 1/2 (|theta| < 0.6533 rad), atan(u)^2 is convex in u = tan(theta), so the set of
@@ -132,10 +132,7 @@ def _check_solvable_scale(model, qdd, f_hand, m_hand) -> None:
         if value > limit:
             raise ValueError(f"{what} of {value:.3g} {unit} is beyond {limit:.0e} {unit}, more than any arm bears: "
                              f"static optimisation refuses it (check the units)")
-    j = int(np.argmax(np.abs(qdd)))
-    if abs(qdd[j]) > MAX_JOINT_ACCELERATION:
-        raise ValueError(f"qddot[{model.dof_names[j]}] = {qdd[j]:.3g} rad/s^2 is beyond {MAX_JOINT_ACCELERATION:.0e} "
-                         f"rad/s^2, more than any arm does: static optimisation refuses it")
+    joint_acceleration_within(qdd, model.dof_names, MAX_JOINT_ACCELERATION, "static optimisation")
 
 
 def check_on_infeasible(on_infeasible) -> None:

@@ -333,7 +333,7 @@ class UdpClient:
         and applies the activations. Returns the sequence number. ValueError (nothing sent) for what
         StaticOptimizer.solve refuses: NaN, wrong shapes, q beyond the joint ranges by more than the engine's
         margin (with a hint when it looks like degrees), |qddot| beyond 1e5 rad/s^2; RuntimeError without a session (join(timeout) first)."""
-        from .checks import dof_vector, joint_range, real_scalar  # noqa: PLC0415 (light: numpy only)
+        from .checks import dof_vector, joint_acceleration_within, joint_range, real_scalar  # noqa: PLC0415 (light: numpy only)
         if self._model is None:
             from .model import Model  # noqa: PLC0415 (the model's DOF names and ranges, once)
             self._model = Model(self.model)
@@ -349,11 +349,8 @@ class UdpClient:
         q = joint_range(vec(q, "q"), m.dof_names, m.dof_ranges, warn=False)
         qdd = vec(qddot, "qddot")
         from . import _core  # noqa: PLC0415 (the extension: the static optimisation's acceleration bound)
-        qdd_max = _core.STATIC_OPTIMIZATION_MAX_JOINT_ACCELERATION
-        if np.any(np.abs(qdd) > qdd_max):
-            j = int(np.argmax(np.abs(qdd)))
-            raise ValueError(f"qddot[{m.dof_names[j]}] = {qdd[j]:.3g} rad/s^2 is beyond {qdd_max:.0e} rad/s^2, more "
-                             f"than any arm does: the runner refuses it, as StaticOptimizer.solve does")
+        joint_acceleration_within(qdd, m.dof_names, _core.STATIC_OPTIMIZATION_MAX_JOINT_ACCELERATION,
+                                  "the runner, as StaticOptimizer.solve,")
         values = np.concatenate([q, vec(qdot, "qdot"), qdd])
         self._require_session()
         if seq is None:
