@@ -34,6 +34,18 @@ void set_qp_settings(QP& qp, const StaticOptimizationOptions& o, int max_iter) {
   qp.settings.primal_infeasibility_solving = false;
   qp.settings.initial_guess = pq::InitialGuessStatus::WARM_START_WITH_PREVIOUS_RESULT;
 }
+
+// Forgets a QP's last solve where it did not succeed: ProxQP warm starts from its previous result and proximal and
+// penalty parameters (results.info.mu_eq, mu_in), init included, and after an infeasible QP those held the next one
+// from converging (das2 rigid, the frame of an EndpointController told to move the hand at 1 km/s: 4 ms and 22 ProxQP
+// iterations the first time, then 340-380 ms and 7600-7800 iterations each time the same frame came again;
+// control.py's _drop_qp is the same fix). cleanup() zeroes the result and workspace in place (no allocation) and
+// sets the parameters to their defaults, the status included.
+void forget_failed(QP& qp, bool& ready) {
+  qp.cleanup();
+  ready = false;
+}
+
 }  // namespace
 
 // The two QPs (the problem; its closest-solution variant with free moment residuals) and their matrices,
@@ -196,8 +208,8 @@ void static_optimization_setup(const Model& m, const StaticOptimizationOptions& 
 
 void static_optimization_reset(StaticOptimizationWorkspace& w) {
   if (!w.solver) return;
-  w.solver->qp_ready = false;
-  w.solver->slack_ready = false;
+  forget_failed(w.solver->qp, w.solver->qp_ready);
+  forget_failed(w.solver->slack, w.solver->slack_ready);
   w.solver->z_ready = false;
   w.solver->elastic_ready = false;
 }
@@ -473,7 +485,7 @@ void proxqp_rows(StaticOptimizationSolver& s, int n, int nq, int n_in) {
 // term s.lin_sqp (the proximal term; zero without), the rows fill_rows left in K, k. The solution goes to s.a_.
 // ProxQP keeps the Hessian it is given, so the rigid path's QP (2 w, no linear term) is initialised afresh next.
 bool proxqp_sqp_step(const StaticOptimizationWorkspace& w, StaticOptimizationSolver& s, int n, int nq, int n_in,
-                     StaticOptimizationReport& r) {
+                     StaticOptimizationReport& r, pq::QPSolverOutput& status) {
   for (int i = 0; i < n; ++i) {
     s.H(i, i) = s.d_sqp[i];
     s.g(i) = s.lin_sqp[i];
@@ -488,7 +500,11 @@ bool proxqp_sqp_step(const StaticOptimizationWorkspace& w, StaticOptimizationSol
     s.g(i) = 0.0;
   }
   s.qp_ready = false;
-  if (s.qp.results.info.status != pq::QPSolverOutput::PROXQP_SOLVED) return false;
+  status = s.qp.results.info.status;  // before forget_failed, which resets it
+  if (status != pq::QPSolverOutput::PROXQP_SOLVED) {
+    forget_failed(s.qp, s.qp_ready);
+    return false;
+  }
   for (int i = 0; i < n; ++i) s.a_[i] = s.qp.results.x[i];
   return true;
 }
@@ -502,7 +518,10 @@ bool elastic_mode_step(StaticOptimizationSolver& s, int n, int n_in, StaticOptim
   s.uboxs.head(n) = s.ubox;
   const pq::QPSolverOutput st = run(s.slack, s.slack_ready, s.Hs, s.gs, s.As, s.b, s.Cs, s.l, s.u, s.lboxs, s.uboxs, n_in);
   r.qp_iterations += static_cast<int>(s.slack.results.info.iter);
-  if (st != pq::QPSolverOutput::PROXQP_SOLVED) return false;
+  if (st != pq::QPSolverOutput::PROXQP_SOLVED) {
+    forget_failed(s.slack, s.slack_ready);
+    return false;
+  }
   for (int i = 0; i < n; ++i) s.a_[i] = s.slack.results.x[i];
   return true;
 }
@@ -581,12 +600,14 @@ void static_optimization_rigid(const Model& m, const Data& d, StaticOptimization
       s.As.leftCols(n) = s.A;
       if (n_in) s.Cs.leftCols(n) = s.C;
       s.uboxs.head(n) = s.ubox;
-      run(s.slack, s.slack_ready, s.Hs, s.gs, s.As, s.b, s.Cs, s.l, s.u, s.lboxs, s.uboxs, n_in);
+      const pq::QPSolverOutput st_slack =
+          run(s.slack, s.slack_ready, s.Hs, s.gs, s.As, s.b, s.Cs, s.l, s.u, s.lboxs, s.uboxs, n_in);
       r.qps = 2;
       r.qp_iterations += static_cast<int>(s.slack.results.info.iter);
       balance(s.slack.results.x.data());
       // The problem's own QP starts cold next time: its last iterate is not a solution to warm start from.
-      s.qp_ready = false;
+      forget_failed(s.qp, s.qp_ready);
+      if (st_slack != pq::QPSolverOutput::PROXQP_SOLVED) forget_failed(s.slack, s.slack_ready);
     }
   }
   finish_report(def, w, s, n, n_in, f0, amax, activation, r);
@@ -685,12 +706,13 @@ void static_optimization_elastic(const Model& m, const Data& d, StaticOptimizati
       // This QP by ProxQP, as control.py solves every one (the Newton method stalls on some of the SQP's
       // linearisations: 16 of the 400 frames of armrt_bench_static_optimization --elastic before this fallback).
       r.solver = StaticOptimizationSolverUsed::kProxQP;
-      ok = proxqp_sqp_step(w, s, n, nq, n_in, r);
+      pq::QPSolverOutput status;
+      ok = proxqp_sqp_step(w, s, n, nq, n_in, r, status);
       // Linearised about a, the moments may be out of reach in [0, amax] though the muscles' forces reach them
       // (dF/da at a understates F's range; control.py's _sqp, das3 in bench.static_optimization).
       // Only while each elastic step at least halves the moment residual: otherwise the frame is out of reach from
       // here (control.py's _sqp; a truly infeasible frame would run 50 QPs at their feasibility edge).
-      if (!ok && s.qp.results.info.status == pq::QPSolverOutput::PROXQP_PRIMAL_INFEASIBLE &&
+      if (!ok && status == pq::QPSolverOutput::PROXQP_PRIMAL_INFEASIBLE &&
           worst <= 0.5 * elastic_resid) {
         elastic_resid = worst;
         ok = elastic_mode_step(s, n, n_in, r);
