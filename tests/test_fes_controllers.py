@@ -215,7 +215,11 @@ def test_controllers_refuse_a_non_finite_time_and_a_column_posture(setup):
         pd.set_target(q[:, None])
     with pytest.raises(ValueError, match="schedule time must be a finite time"):
         fc.PDController(arm, coding, q, fc.PDParams(1.0, 0.3), schedule=[(np.nan, target)])
+    with pytest.raises(ValueError, match="schedule time must be >= 0 s"):
+        fc.PDController(arm, coding, q, fc.PDParams(1.0, 0.3), schedule=[(-0.5, target)])
     t_ref, q_ref = v.movement_reference(arm, {"ELx": 10.0}, 1.0)
+    with pytest.raises(ValueError, match=r"q_ref frame 0 \(t = 0 s\).*look like degrees"):
+        fc.FeedforwardPID(fc.model_arm(arm), coding, (t_ref, np.degrees(q_ref)), fc.PIDParams.pole_placement(tau))
     ff = fc.FeedforwardPID(fc.model_arm(arm), coding, (t_ref, q_ref), fc.PIDParams.pole_placement(tau))
     with pytest.raises(ValueError, match="t must be a finite time"):
         ff.update(np.nan, q, z)

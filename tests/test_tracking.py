@@ -132,3 +132,20 @@ def test_gains_and_interval_must_be_finite(kw, match):
     with pytest.raises(ValueError, match=match):
         armrt.track_motion(arm, np.tile(arm.model.rest_posture, (11, 1)), np.linspace(0, 0.1, 11), **kw)
     np.testing.assert_array_equal(arm.get_state_vector(armrt.StatePart.FULL), before)  # refused before the reset
+
+
+def test_a_motion_in_degrees_is_refused_before_anything_runs():
+    """check_motion holds every frame to the engine's joint domain: a reference in degrees gets the degrees hint
+    with its frame and time, from track_motion and static_optimization_motion alike, before the arm is reset or a
+    frame is solved (not at the first frame or controller update that meets it)."""
+    arm = armrt.Arm("das2")
+    q, t = _elbow_flexion(arm)
+    arm.step(3)
+    before = arm.get_state_vector(armrt.StatePart.FULL)
+    bad = q.copy()
+    bad[7:] = np.degrees(bad[7:])
+    with pytest.raises(ValueError, match=r"q_ref frame 7 \(t = .* s\).*look like degrees"):
+        armrt.track_motion(arm, bad, t)
+    np.testing.assert_array_equal(arm.get_state_vector(armrt.StatePart.FULL), before)
+    with pytest.raises(ValueError, match=r"motion frame 7 .*look like degrees"):
+        armrt.static_optimization_motion(arm, bad, t)

@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .checks import real_array
+from .checks import joint_range_rows, real_array
 from .control import StaticOptimizer, check_on_infeasible
 from .errors import StaticOptimizationInfeasible
 
@@ -30,7 +30,9 @@ class MotionActivations:
 
 def check_motion(model, q, time, what: str, min_frames: int) -> None:
     """q (T, ndof) rad and time (T,) s of a motion: ValueError for another shape, fewer than min_frames frames,
-    NaN/infinite values or time not strictly increasing (what names q in the messages)."""
+    NaN/infinite values, time not strictly increasing, or a frame beyond the engine's joint domain
+    (checks.joint_range without the warning; a motion in degrees is refused with a hint, here and not at the
+    frame or controller update that first meets it). what names q in the messages."""
     if q.ndim != 2 or q.shape[1] != model.n_dofs:
         raise ValueError(f"{what} must have shape (T, {model.n_dofs}) ({', '.join(model.dof_names)}), got {q.shape}")
     if time.shape != (q.shape[0],):
@@ -41,6 +43,8 @@ def check_motion(model, q, time, what: str, min_frames: int) -> None:
         raise ValueError(f"{what} or time contains NaN or infinite values")
     if np.any(np.diff(time) <= 0):
         raise ValueError("time must be strictly increasing")
+    joint_range_rows(q, model.dof_names, model.dof_ranges, warn=False,
+                     label=lambda r: f"{what} frame {r} (t = {time[r]:g} s)")
 
 
 def static_optimization_motion(arm_or_model, motion, time=None, hand_load=None, gh_stab_max=None, weights=None,

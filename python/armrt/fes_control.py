@@ -538,7 +538,7 @@ class PDController:
     model: an Arm of the plant's model (moment arms), coding: StimulationCoding, target (ndof,) rad, params:
     PDParams, dofs: the DOF names fed back (default all; the others get no feedback), schedule: [(t s, target)]
     targets that take over at their times. ValueError for a target of another shape than (ndof,), with NaN/infinite
-    values or beyond the joints' domain, or a non-finite schedule time; TypeError for params that are not
+    values or beyond the joints' domain, or a schedule time that is negative or not finite; TypeError for params that are not
     PDParams."""
 
     def __init__(self, model, coding: StimulationCoding, target, params: PDParams, dofs=None, schedule=()):
@@ -551,7 +551,7 @@ class PDController:
         self.state = PDState(target=np.zeros(model.n_dofs))
         self.set_target(target)
         # [(t s, target (ndof,) rad)]: from each time on, its target (a reaching trial's step)
-        self.schedule = sorted([(_finite_time(t, "schedule time"),
+        self.schedule = sorted([(_schedule_time(t),
                                  _state_vectors(model, q, np.zeros(model.n_dofs), "schedule target")[0])
                                 for t, q in schedule], key=lambda x: x[0])
 
@@ -593,6 +593,15 @@ def _state_vectors(model, q, qdot, what: str = "q") -> tuple[np.ndarray, np.ndar
     beyond a joint's range; degrees given as radians are refused with a hint)."""
     q = joint_range(dof_vector(q, what, model.dof_names), model.dof_names, model.dof_ranges, warn=False)
     return q, dof_vector(qdot, "qdot", model.dof_names)
+
+
+def _schedule_time(t) -> float:
+    """A schedule entry's time as a finite float >= 0 s: the times compare with the plant's, which start at 0, so a
+    negative one is a mistake (it would take over at the first update, as if given 0)."""
+    t = _finite_time(t, "schedule time")
+    if t < 0:
+        raise ValueError(f"schedule time must be >= 0 s (the plant's time starts at 0), got {t}")
+    return t
 
 
 def _finite_time(t, what: str = "t") -> float:
