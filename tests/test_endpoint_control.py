@@ -152,7 +152,8 @@ def test_decoder_driven_fitts_block_with_throughput():
 
 def test_tendon_choice_selects_the_static_optimisation():
     arm = armrt.Arm("das2")
-    assert EndpointController(arm)._so.tendon == "elastic"
+    elastic = EndpointController(arm)._so
+    assert elastic.tendon == "elastic" and elastic.backend == "cpp"  # StaticOptimizer's auto: C++ for squared
     rigid = EndpointController(arm, tendon="rigid")._so
     assert rigid.tendon == "rigid" and rigid.backend == "cpp"
     with pytest.raises(ValueError, match="tendon"):
@@ -269,3 +270,22 @@ def test_gains_accept_a_good_gh_stab_max_and_refuse_bool_gains():
     assert EndpointController(armrt.Arm("das2"), g)._so.gh_stab_max == 0.5
     with pytest.raises(TypeError, match="kd must be a number, got the bool"):
         EndpointGains(kd=True)
+
+
+@pytest.mark.parametrize("command", ["velocity", "position"])
+def test_a_command_beyond_any_arm_is_refused_naming_the_command_before_the_arm_steps(command):
+    """A hand velocity of 1e6 m/s (or a target 1e9 m away) asks for joint accelerations beyond the static
+    optimisation's bound: step() raises naming the command (a fresh-user trial saw only the static optimisation's
+    qddot message), and the arm is not stepped."""
+    arm = armrt.Arm("das2")
+    arm.reset(q=Q0)
+    ctl = EndpointController(arm)
+    if command == "velocity":
+        ctl.command_velocity([1e6, 0.0, 0.0])
+        match = r"EndpointController \(the command: .* v_ref 1e\+06 m/s"
+    else:
+        ctl.command_position(ctl.hand_position() + [1e9, 0.0, 0.0])
+        match = r"EndpointController \(the command: x_ref 1e\+09 m from the hand"
+    with pytest.raises(ValueError, match=match):
+        ctl.step()
+    assert arm.time == 0.0

@@ -550,3 +550,63 @@ def test_run_offline_joint_moment_takes_opensim_coordinate_names():
         runs.append(fc.run_offline(plant, pd, 0.03, joint_moment=lambda t, q, qdot, f=form: f).q)
         np.testing.assert_array_equal(plant.applied_moment, np.zeros(plant.n_dofs))
     np.testing.assert_array_equal(runs[0], runs[1])
+
+
+def test_controllers_refuse_a_wrong_coding_reference_or_argument_order_with_a_clear_error(setup, tmp_path):
+    """From a fresh-user trial: a None coding, a .mot path as the reference and run_offline's arguments swapped
+    ended in AttributeErrors or 'takes 4 positional arguments but 12 were given'; time running backwards in one
+    trial left the integral silently unadvanced."""
+    from types import SimpleNamespace
+
+    from armrt.opensim_io import write_mot
+
+    arm, coding, tau = setup
+    params = fc.PIDParams.pole_placement(tau)
+    t_ref, q_ref = v.movement_reference(arm, {"ELx": 10.0}, 1.0)
+    with pytest.raises(TypeError, match="coding must be a StimulationCoding"):
+        fc.FeedforwardPID(fc.model_arm(arm), None, (t_ref, q_ref), params)
+    with pytest.raises(TypeError, match="coding must be a StimulationCoding"):
+        fc.PDController(arm, None, arm.rest_posture, fc.PDParams(1.0, 0.3))
+    with pytest.raises(TypeError, match="reference must be a Reference"):
+        fc.FeedforwardPID(fc.model_arm(arm), coding, q_ref, params)
+    # A .mot is a reference: the same samples as the arrays it was written from (radians, OpenSim names).
+    mot = write_mot(SimpleNamespace(time=t_ref, q=q_ref, dof_names=list(arm.dof_names), model=arm.model_name),
+                    tmp_path / "ref.mot")
+    from_file = fc.FeedforwardPID(fc.model_arm(arm), coding, mot, params)
+    np.testing.assert_allclose(from_file.reference(0.4)[0], fc.Reference(t_ref, q_ref, arm.model)(0.4)[0], atol=1e-9)
+    ff = fc.FeedforwardPID(fc.model_arm(arm), coding, (t_ref, q_ref), params)
+    with pytest.raises(TypeError, match=r"run_offline\(plant, controller, duration\): plant must be an armrt.Arm"):
+        fc.run_offline(ff, arm, 0.1)
+    with pytest.raises(TypeError, match="controller must be a FeedforwardPID"):
+        fc.run_offline(arm, arm, 0.1)
+    q, z = arm.q.copy(), np.zeros(arm.n_dofs)
+    ff.update(0.5, q, z)
+    with pytest.raises(ValueError, match="before the last update's 0.5 s.*reset"):
+        ff.update(0.2, q, z)
+    ff.reset()
+    ff.update(0.2, q, z)
+
+
+def test_an_infeasible_inverse_model_is_marked_in_the_run_and_warned(setup):
+    """A 0.15 s shoulder movement on the weakened arm: the inverse model cannot give what it asks on some
+    updates (the closest levels are sent). ControlRun.feasible marks those rows and run_offline warns, instead
+    of a finished run whose only trace was the controller's state (a fresh-user trial)."""
+    arm, coding, tau = setup
+    plant = v.weakened_arm()
+    q0 = plant.q.copy()
+    q1 = q0.copy()
+    q1[plant.dof_index("GHy")], q1[plant.dof_index("GHz")] = np.radians(55), np.radians(80)
+    t = np.linspace(0, 3, 301)
+    q_ref = fc.minimum_jerk(q0, q1, 0.2, 0.15, t)[0]
+    ff = fc.FeedforwardPID(fc.model_arm(plant), coding, (t, q_ref), fc.PIDParams.pole_placement(tau))
+    with pytest.warns(RuntimeWarning, match=r"updates found no stimulation.*ControlRun.feasible"):
+        run = fc.run_offline(plant, ff, 0.5)
+    assert run.feasible.shape == run.time.shape and run.feasible[0]
+    assert run.infeasible_updates == ff.state.infeasible_updates > 0
+    # A feasible run has every row marked and no warning.
+    easy = v.weakened_arm()
+    pd = fc.PDController(easy, coding, easy.rest_posture, fc.PDParams(1.0, 0.3))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        quiet = fc.run_offline(easy, pd, 0.05)
+    assert quiet.feasible.all() and quiet.infeasible_updates == 0

@@ -58,13 +58,20 @@ def test_cpp_agrees_with_python_at_random_states(gh_stab_max):
     assert agreed >= 4
 
 
-def test_auto_backend_is_cpp_for_the_rigid_tendon_only():
+def test_auto_backend_is_cpp_for_squared_activations():
     arm = armrt.Arm("das2")
     assert armrt.StaticOptimizer(arm, tendon="rigid").backend == "cpp"
     assert armrt.StaticOptimizer(arm.model, tendon="rigid").backend == "cpp"
-    assert armrt.StaticOptimizer(arm).backend == "python"  # elastic
+    assert armrt.StaticOptimizer(arm).backend == "cpp"  # elastic
+    assert armrt.StaticOptimizer(arm.model).backend == "cpp"
     assert armrt.StaticOptimizer(arm, tendon="rigid", criterion="cubed").backend == "python"
-    assert armrt.StaticOptimizer(arm, backend="cpp").backend == "cpp"  # elastic in C++ only when asked
+    assert armrt.StaticOptimizer(arm, criterion="cubed").backend == "python"
+    assert armrt.StaticOptimizer(arm, backend="python").backend == "python"
+    # The C++ SQP's QP count is fixed: another limit is the Python path's, and refused with backend="cpp".
+    assert armrt.StaticOptimizer(arm, max_iterations=5).backend == "python"
+    assert armrt.StaticOptimizer(arm, tendon="rigid", max_iterations=5).backend == "cpp"
+    with pytest.raises(ValueError, match="at most 50 QPs"):
+        armrt.StaticOptimizer(arm, max_iterations=5, backend="cpp")
     with pytest.raises(ValueError, match="squared activations only"):
         armrt.StaticOptimizer(arm, criterion="cubed", backend="cpp")
     with pytest.raises(ValueError, match="backend"):

@@ -149,3 +149,13 @@ def test_a_motion_in_degrees_is_refused_before_anything_runs():
     np.testing.assert_array_equal(arm.get_state_vector(armrt.StatePart.FULL), before)
     with pytest.raises(ValueError, match=r"motion frame 7 .*look like degrees"):
         armrt.static_optimization_motion(arm, bad, t)
+
+
+def test_feedback_gains_asking_beyond_any_arm_raise_naming_the_interval_and_the_gains():
+    """kp = 1e9 s^-2: the first interval's feedback asks for joint accelerations beyond the static optimisation's
+    bound; the error names the interval and the gains, not only the static optimisation's qddot (a fresh-user trial)."""
+    arm = armrt.Arm("das2")
+    q, t = _elbow_flexion(arm)
+    q = q + np.radians(2.0) * np.sin(np.linspace(0, np.pi, len(t)))[:, None]
+    with pytest.raises(ValueError, match=r"track_motion \(interval \d+, t = .* kp = 1e\+09 s\^-2"):
+        armrt.track_motion(arm, q, t, kp=1e9)

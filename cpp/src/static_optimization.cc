@@ -656,7 +656,7 @@ void static_optimization_elastic(const Model& m, const Data& d, StaticOptimizati
   r.qp_iterations = 0;
   r.newton_iterations = 0;
   r.solver = StaticOptimizationSolverUsed::kDualNewton;
-  for (int it = 0; it <= 50; ++it) {
+  for (int it = 0; it <= kStaticOptimizationMaxSqpIterations; ++it) {
     double worst = 0;
     for (int i = 0; i < n; ++i) {
       const SteadyForce f = muscle_steady_force(data_element(m, d, i), m.fibre_damping, s.L[i], a[i], r.fibre_velocity[i],
@@ -675,7 +675,7 @@ void static_optimization_elastic(const Model& m, const Data& d, StaticOptimizati
     }
     r.residual_max = worst;
     if (worst < 1e-7 && step < 1e-6) { converged = true; break; }
-    if (it == 50) break;
+    if (it == kStaticOptimizationMaxSqpIterations) break;
     if (r.qps > 1 && worst > 1e-7 && worst > 0.5 * last_resid) {
       ++stalls;
       if (stalls > 1) mu = mu == 0 ? 1.0 : 4.0 * mu;

@@ -67,7 +67,8 @@ def _dof_vector(model, v, what: str, allow_scalar_zero: bool = False) -> np.ndar
     if allow_scalar_zero and np.isscalar(v) and not isinstance(v, (str, bytes)):
         x = real_scalar(v, what)
         if x != 0:
-            raise ValueError(f"{what}: a scalar must be 0 (for every DOF); give an array of shape ({nd},) otherwise")
+            raise ValueError(f"{what}: a scalar must be 0 (for every DOF), got {x:g}; give an array of shape ({nd},) "
+                             "otherwise")
         return np.zeros(nd)
     return np.ascontiguousarray(dof_vector(v, what, model.dof_names), dtype=float)
 
@@ -277,9 +278,13 @@ class StaticOptimizer:
     dL/dt, solved by sequential QP until the moments balance to MOMENT_TOLERANCE) or "rigid" (linear in a, one QP).
     gh_stab_max: None or a bound > 0 on GHstab (paper eq. 5) as gh_polygon's linear constraints on the GH force.
     weights: None (1) or (n,) > 0, largest / smallest at most MAX_WEIGHT_RATIO (1e6; ValueError). Bounds [0, max_activation] come from the arm's settings at each solve.
-    backend: "auto" (the default: "cpp" for tendon="rigid" with criterion="squared", else "python"), "cpp" (the
+    backend: "auto" (the default: "cpp" for criterion="squared", either tendon, on an armrt Arm or Model; "python"
+    for "cubed", which C++ does not solve, and for the elastic tendon with a max_iterations other than C++'s fixed
+    50; bench.static_optimization_cpp: on das2's motion the elastic tendon 0.33 ms median from Python by C++
+    against 2.7 ms by the Python SQP), "cpp" (the
     engine's cpp/src/static_optimization.cc: the same QPs solved in C++ by a dual projected Newton method with
-    ProxQP as its fallback, for a 1 kHz loop; squared activations only, ValueError otherwise; with the elastic
+    ProxQP as its fallback, for a 1 kHz loop; squared activations only and, for the elastic tendon, max_iterations
+    50, ValueError otherwise; with the elastic
     tendon the same SQP and safeguards as here, and where it does not converge the Python path solves the frame
     again for its closest solution and report) or "python" (ProxQP from Python, as below). For the rigid tendon the
     two agree to the solvers' tolerance; the elastic problem is not convex, and near the damper floor's kink the two
@@ -334,8 +339,14 @@ class StaticOptimizer:
         if backend == "cpp" and criterion != "squared":
             raise ValueError(f"backend='cpp' solves squared activations only (got criterion={criterion!r}); use "
                              f"backend='python' or 'auto'")
-        cpp_able = tendon == "rigid" and criterion == "squared"  # what "auto" hands to C++
         from . import _core  # noqa: PLC0415 (the extension, not an armrt module: no cycle)
+        # The C++ elastic SQP stops at its own fixed count of QPs: another max_iterations is the Python path's.
+        cpp_iterations = tendon == "rigid" or self.max_iterations == _core.STATIC_OPTIMIZATION_MAX_SQP_ITERATIONS
+        if backend == "cpp" and not cpp_iterations:
+            raise ValueError(f"backend='cpp' runs the elastic tendon's SQP for at most "
+                             f"{_core.STATIC_OPTIMIZATION_MAX_SQP_ITERATIONS} QPs (got max_iterations="
+                             f"{self.max_iterations}); use backend='python' or 'auto' for another limit")
+        cpp_able = criterion == "squared" and cpp_iterations  # what "auto" hands to C++
         engine_arm = isinstance(self._sim, _core.Arm)  # not a stand-in with the same methods (tests)
         if backend == "cpp" and not engine_arm:
             raise TypeError("backend='cpp' needs an armrt.Arm or armrt.Model (the engine's arm)")

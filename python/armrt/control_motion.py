@@ -27,6 +27,11 @@ class MotionActivations:
     iterations: np.ndarray
     reports: dict
 
+    def __repr__(self) -> str:
+        return (f"MotionActivations({len(self.time)} frames, t = {self.time[0]:.4g}-{self.time[-1]:.4g} s, "
+                f"{int(np.count_nonzero(~self.feasible))} infeasible, |residual| max "
+                f"{np.abs(self.residual).max():.2e} N m, gh_stab max {np.max(self.gh_stab):.3f})")
+
 
 def check_motion(model, q, time, what: str, min_frames: int) -> None:
     """q (T, ndof) rad and time (T,) s of a motion: ValueError for another shape, fewer than min_frames frames,

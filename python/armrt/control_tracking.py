@@ -18,8 +18,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .checks import STATE_MARGIN, real_array, real_scalar
-from .control import StaticOptimizer
+from .checks import STATE_MARGIN, joint_acceleration_within, real_array, real_scalar
+from .control import StaticOptimizer, _engine_bounds
 from .control_motion import check_motion
 
 KP_THELEN_2003 = 100.0  # s^-2, Thelen et al. 2003
@@ -42,6 +42,13 @@ class TrackingResult:
     gh_stab: np.ndarray
     error_rms_deg: dict
     error_max_deg: dict
+
+    def __repr__(self) -> str:
+        worst = max(self.error_max_deg, key=self.error_max_deg.get)
+        return (f"TrackingResult({len(self.time)} intervals to t = {self.time[-1]:.3f} s, "
+                f"{int(np.count_nonzero(~self.feasible))} infeasible, largest error {worst} "
+                f"{self.error_max_deg[worst]:.3g} deg (RMS {self.error_rms_deg[worst]:.3g}), "
+                f"gh_stab max {np.max(self.gh_stab):.3f})")
 
 
 def excitation_reaching(a0, a_target, c1, c2, interval: float, u_max):
@@ -82,9 +89,11 @@ def track_motion(arm, q_ref, time, kp: float = KP_THELEN_2003, kv: float = KV_TH
     gh_stab_max, weights, criterion, tendon: as armrt.StaticOptimizer. An interval whose static optimisation is
     infeasible keeps its closest solution and is counted False in `feasible`; so is one whose predicted posture lies
     beyond the engine's domain (joint ranges + 0.35 rad: the arm has fallen away), solved at the domain's edge.
-    ValueError for bad input (shapes, NaN,
+    ValueError for bad input (shapes, NaN, a frame beyond the joint domain,
     gains, an interval not a whole number of steps, a motion shorter than one interval, an arm with a stimulation
-    map); TypeError for a Model."""
+    map), and during the run for an interval whose feedforward plus feedback asks for a joint acceleration beyond
+    the static optimisation's bound (1e5 rad/s^2: gains far too high), naming the interval and the gains;
+    TypeError for a Model."""
     from scipy.interpolate import CubicSpline  # noqa: PLC0415 (scipy is a dependency; only this needs it)
 
     if not hasattr(arm, "_sim"):
@@ -136,6 +145,10 @@ def track_motion(arm, q_ref, time, kp: float = KP_THELEN_2003, kv: float = KV_TH
         # engine's domain, where the static optimisation refuses a pose: solve at the domain's edge instead, and
         # count the interval infeasible.
         q_solve = np.clip(q_pred, domain_lo, domain_hi)
+        # The solve refuses this too; here the message can name the interval and the gains that asked for it.
+        joint_acceleration_within(qdd_des, model.dof_names, _engine_bounds()[2],
+                                  f"track_motion (interval {k}, t = {t:.4g} s; the feedback kp = {kp:g} s^-2, kv = "
+                                  f"{kv:g} s^-1 on the error; the arm is left where the run stopped)")
         res = so.solve(q_solve, qd, qdd_des, on_infeasible="return")
         amax = arm.max_activation
         u = excitation_reaching(arm.activation, res.activation, c1, c2, interval, amax)

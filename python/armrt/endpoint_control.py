@@ -26,7 +26,7 @@ import numpy as np
 
 from . import checks
 from .arm import Arm
-from .control import StaticOptimizer, check_on_infeasible
+from .control import StaticOptimizer, _engine_bounds, check_on_infeasible
 from .errors import StaticOptimizationInfeasible
 
 
@@ -100,8 +100,10 @@ class EndpointController:
     different muscle model than the one simulated, see docs/tasks.md for what that did on a Fitts block).
     TypeError for an arm that is not an armrt.Arm (a Model) or gains that are not an EndpointGains; ValueError
     for bad commands, gains or tendon, and for an arm with a stimulation map (at construction, and at the next
-    solve if a map is installed later: its elements would ignore the excitations); an infeasible solve keeps its
-    best activations (counted in n_infeasible)."""
+    solve if a map is installed later: its elements would ignore the excitations); ValueError from step() where a
+    command asks for a joint acceleration beyond the static optimisation's bound (1e5 rad/s^2: with the default
+    gains, on das2 at 30 60 10 60 80 deg, a hand velocity command of 2-3 km/s or a position 650-1000 m away),
+    naming the command, before the arm steps; an infeasible solve keeps its best activations (counted in n_infeasible)."""
 
     def __init__(self, arm, gains: EndpointGains | None = None, tendon: str = "elastic"):
         self.arm = _driven_arm(arm, "EndpointController")
@@ -146,6 +148,12 @@ class EndpointController:
         a = g.kp * (self.x_ref - x) + g.kd * (self.v_ref - J @ qd)
         Jp = np.linalg.pinv(J)
         qdd = Jp @ a - (np.eye(len(q)) - Jp @ J) @ (g.k_null * qd)
+        # The solve refuses this too; here the message can name the command that asked for it.
+        checks.joint_acceleration_within(
+            qdd, arm.dof_names, _engine_bounds()[2],
+            f"EndpointController (the command: x_ref {np.linalg.norm(self.x_ref - x):.3g} m from the hand, v_ref "
+            f"{np.linalg.norm(self.v_ref):.3g} m/s, so a desired hand acceleration of {np.linalg.norm(a):.3g} m/s^2; "
+            "the arm was not stepped)")
         r = self._so.solve(q, qd, qdd, on_infeasible="return")
         self.n_solves += 1
         self.n_infeasible += int(not r.feasible)

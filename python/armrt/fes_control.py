@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .checks import applied_moments, dof_vector, joint_range, real_array, real_scalar
+from .arm import Arm
 from .control import _INF, StaticOptimizer, _state
 
 #: Implanted-system coding (docs/fes.md): pulse width modulated at a held 20 mA (the intramuscular channels'
@@ -311,7 +312,8 @@ class ChannelStaticOptimizer(StaticOptimizer):
     solve_levels(q, qdot, qddot) -> (levels (C,), StaticOptimizationResult of their element activations)."""
 
     def __init__(self, model, coding, gh_stab_max=None, iterations: int = 6):
-        super().__init__(model, gh_stab_max=gh_stab_max)
+        # Its own SQP in the channels' space (solve_levels), on the Python path's muscle model and result builder.
+        super().__init__(model, gh_stab_max=gh_stab_max, backend="python")
         n, C = model.n_elements, len(coding.channel_names)
         S = np.zeros((n, C))
         for c, (i, w) in enumerate(zip(coding.element_index, coding.weights)):
@@ -468,17 +470,20 @@ class FeedforwardPID:
     Reference (or (time, q) samples), params: PIDParams, required: docs/control.md's gains are
     ``PIDParams.pole_placement(chain_time_constant(plant, coding))``, and the lag they are placed on is measured on
     the plant's stimulation map (its Ding force dynamics), which neither `model` (no map) nor `coding` holds, so the
-    constructor cannot derive them. ValueError for a model with a map, TypeError for params that are not
-    PIDParams."""
+    constructor cannot derive them. reference: a Reference, (time (T,) s, q (T, ndof) rad), or a .mot/.sto path
+    (armrt.opensim_io.read_motion: OpenSim coordinate names, inDegrees honoured). ValueError for a model with a
+    map or a bad reference, TypeError for a coding that is not a StimulationCoding, params that are not PIDParams
+    or a reference of another kind."""
 
     def __init__(self, model, coding: StimulationCoding, reference, params: PIDParams):
         if not hasattr(model, "_sim") or model.channel_names:
             raise ValueError("FeedforwardPID's model must be an armrt.Arm without a stimulation map (model_arm(plant))")
+        _check_coding(coding, "FeedforwardPID")
         if not isinstance(params, PIDParams):
             raise TypeError(f"params must be PIDParams (e.g. PIDParams.pole_placement(chain_time_constant(plant, "
                             f"coding))), got {type(params).__name__}")
         self.model, self.coding = model, coding
-        self.reference = reference if isinstance(reference, Reference) else Reference(*reference, model.model)
+        self.reference = _reference(reference, model.model)
         self.params = params
         self.optimizer = ChannelStaticOptimizer(model, coding, gh_stab_max=self.params.gh_stab_max)
         self.state = PIDState(integral=np.zeros(model.n_dofs))
@@ -489,11 +494,15 @@ class FeedforwardPID:
 
     def update(self, t, q, qdot) -> np.ndarray:
         """(C, 3) stimulation for the arm at time t s, posture q (ndof,) rad and speeds qdot (ndof,) rad/s.
-        ValueError for a non-finite t, a wrong shape, a non-finite value or q beyond the engine's domain
+        ValueError for a non-finite t or one before the last update's (reset() starts a new trial), a wrong shape, a non-finite value or q beyond the engine's domain
         (checks.joint_range); TypeError for non-numbers."""
         t = _finite_time(t)
         q, qdot = _state_vectors(self.model, q, qdot)
         p, s = self.params, self.state
+        if s.last_t is not None and t < s.last_t:
+            # The integral would not advance and the trial's time would be another's: a new trial starts with reset().
+            raise ValueError(f"t = {t:g} s is before the last update's {s.last_t:g} s: time runs forward within a "
+                             "trial (call reset() to start a new one)")
         h = p.control_interval_s + p.preview_s
         qr, vr, ar = self.reference(t + h)    # what the muscles' force, lagging by preview_s, has to produce
         q_now, v_now, _ = self.reference(t)
@@ -538,10 +547,11 @@ class PDController:
     model: an Arm of the plant's model (moment arms), coding: StimulationCoding, target (ndof,) rad, params:
     PDParams, dofs: the DOF names fed back (default all; the others get no feedback), schedule: [(t s, target)]
     targets that take over at their times. ValueError for a target of another shape than (ndof,), with NaN/infinite
-    values or beyond the joints' domain, or a schedule time that is negative or not finite; TypeError for params that are not
-    PDParams."""
+    values or beyond the joints' domain, or a schedule time that is negative or not finite; TypeError for a coding
+    that is not a StimulationCoding or params that are not PDParams."""
 
     def __init__(self, model, coding: StimulationCoding, target, params: PDParams, dofs=None, schedule=()):
+        _check_coding(coding, "PDController")
         if not isinstance(params, PDParams):
             raise TypeError(f"params must be PDParams, got {type(params).__name__}")
         self.model, self.coding, self.params = model, coding, params
@@ -595,6 +605,28 @@ def _state_vectors(model, q, qdot, what: str = "q") -> tuple[np.ndarray, np.ndar
     return q, dof_vector(qdot, "qdot", model.dof_names)
 
 
+def _check_coding(coding, who: str) -> None:
+    """TypeError unless coding is a StimulationCoding (it would fail later as an AttributeError)."""
+    if not isinstance(coding, StimulationCoding):
+        raise TypeError(f"{who}'s coding must be a StimulationCoding (StimulationCoding.from_arm(plant)), got "
+                        f"{type(coding).__name__}")
+
+
+def _reference(reference, model) -> Reference:
+    """A Reference from a Reference, (time, q) samples or a .mot/.sto path (read_motion, for this model)."""
+    if isinstance(reference, Reference):
+        return reference
+    if isinstance(reference, (str, bytes)) or hasattr(reference, "__fspath__"):
+        from .opensim_io import read_motion  # noqa: PLC0415 (opensim_io imports arm: imported where it is used)
+        m = read_motion(reference, model=model.name)
+        return Reference(m.time, m.q, model)
+    if not (isinstance(reference, (tuple, list)) and len(reference) == 2):
+        raise TypeError("reference must be a Reference, (time (T,) s, q (T, ndof) rad) or a .mot/.sto path, got "
+                        f"{type(reference).__name__}" + (f" of length {len(reference)}"
+                                                         if isinstance(reference, (tuple, list)) else ""))
+    return Reference(*reference, model)
+
+
 def _schedule_time(t) -> float:
     """A schedule entry's time as a finite float >= 0 s: the times compare with the plant's, which start at 0, so a
     negative one is a mistake (it would take over at the first update, as if given 0)."""
@@ -617,7 +649,9 @@ def _finite_time(t, what: str = "t") -> float:
 class ControlRun:
     """An offline run: per control update (K rows) time (K,) s, q and q_ref (K, ndof) rad, stimulation (K, C, 3),
     gh_stab (K,), fatigue (K, C) 1 - A/A_rest, force_total (K,) N the sum of every element's tendon force, update_s
-    (K,) the controller's update time (wall clock, this machine: information, not a claim)."""
+    (K,) the controller's update time (wall clock, this machine: information, not a claim), feasible (K,) bool:
+    False where the controller's inverse model found no stimulation for what it asked (FeedforwardPID's
+    state.feasible: the closest levels were sent; True for the first row and for controllers without one)."""
     time: np.ndarray
     q: np.ndarray
     q_ref: np.ndarray
@@ -627,6 +661,12 @@ class ControlRun:
     update_s: np.ndarray
     force_total: np.ndarray | None = None
     channel_names: list = field(default_factory=list)
+    feasible: np.ndarray | None = None
+
+    @property
+    def infeasible_updates(self) -> int:
+        """How many updates sent the closest stimulation instead of a solution (0 if none was recorded)."""
+        return 0 if self.feasible is None else int(np.count_nonzero(~self.feasible))
 
     def error_deg(self, dofs, model, t_from: float = -np.inf, t_to: float = np.inf) -> dict:
         """{dof: (rms, max)} deg of q - q_ref over t_from <= t <= t_to."""
@@ -654,8 +694,18 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
     The run makes floor(duration / control_interval_s) updates (K = that + 1 rows, the first the start).
     ValueError for a plant without a map or with other channels than the coding's, a control interval that is not
     a whole number of plant steps, a duration that is not finite or shorter than one control interval (no update
-    would be made), a hold_s that is not finite and >= 0; TypeError for a non-number duration or hold_s and for a
-    reference, hand_load or joint_moment that is not callable."""
+    would be made), a hold_s that is not finite and >= 0; TypeError for a plant that is not an armrt.Arm, a
+    controller without update/coding/params (the two swapped), a non-number duration or hold_s and for a
+    reference, hand_load or joint_moment that is not callable. Returns the ControlRun; a RuntimeWarning if any
+    update's inverse model found no stimulation for what it asked (ControlRun.feasible marks them)."""
+    if not isinstance(plant, Arm):
+        raise TypeError(f"run_offline(plant, controller, duration): plant must be an armrt.Arm with a stimulation "
+                        f"map, got {type(plant).__name__}")
+    if not (callable(getattr(controller, "update", None)) and hasattr(controller, "coding")
+            and hasattr(controller, "params")):
+        raise TypeError(f"run_offline(plant, controller, duration): controller must be a FeedforwardPID, a "
+                        f"PDController or one with their update(t, q, qdot), coding and params, got "
+                        f"{type(controller).__name__}")
     if not plant.channel_names or list(plant.channel_names) != list(controller.coding.channel_names):
         raise ValueError("the plant's stimulation channels must be the controller's coding's channels")
     h = controller.params.control_interval_s
@@ -685,13 +735,15 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
     nq, C = plant.n_dofs, len(names)
     out = ControlRun(time=np.empty(n + 1), q=np.empty((n + 1, nq)), q_ref=np.empty((n + 1, nq)),
                      stimulation=np.zeros((n + 1, C, 3)), gh_stab=np.empty(n + 1), fatigue=np.empty((n + 1, C)),
-                     update_s=np.zeros(n + 1), force_total=np.zeros(n + 1), channel_names=list(names))
+                     update_s=np.zeros(n + 1), force_total=np.zeros(n + 1), channel_names=list(names),
+                     feasible=np.ones(n + 1, dtype=bool))
 
     def record(k, cmd, dt_upd):
         fat = plant.fatigue
         out.time[k], out.q[k], out.q_ref[k] = plant.time, plant.q, reference(plant.time)
         out.gh_stab[k], out.fatigue[k] = plant.gh_stab, [fat[c] for c in names]
         out.stimulation[k], out.update_s[k] = cmd, dt_upd
+        out.feasible[k] = k == 0 or bool(getattr(controller.state, "feasible", True))
         out.force_total[k] = float(np.sum(plant.outputs()["muscle_force"]))
 
     record(0, np.zeros((C, 3)), 0.0)
@@ -700,6 +752,12 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
         _control_loop(plant, controller, n, steps, hand_load, joint_moment, base_moment, hold_s, record)
     finally:
         plant.set_applied_moment(base_moment)
+    if out.infeasible_updates:
+        # Never a silent best effort: the run's errors may come from asking the muscles for what they cannot give.
+        bad = np.flatnonzero(~out.feasible)
+        warnings.warn(f"run_offline: {bad.size} of {n} updates found no stimulation for what the controller asked "
+                      f"(the closest levels were sent; first at t = {out.time[bad[0]]:.3f} s): ControlRun.feasible "
+                      "marks them", RuntimeWarning, stacklevel=2)
     return out
 
 

@@ -30,6 +30,9 @@ inline constexpr double kStaticOptimizationMomentTolerance = 1e-6;
 inline constexpr double kStaticOptimizationMaxHandForce = 1e5;          // N, |hand force|
 inline constexpr double kStaticOptimizationMaxHandMoment = 1e4;         // N m, |hand moment|
 inline constexpr double kStaticOptimizationMaxJointAcceleration = 1e5;  // rad/s^2, |qddot| per DOF
+// The elastic tendon's SQP stops after this many QPs (control.py's max_iterations default, which the C++ path
+// holds fixed: StaticOptimizer refuses another max_iterations with backend "cpp").
+inline constexpr int kStaticOptimizationMaxSqpIterations = 50;
 
 // Rows c (sides x 3, row-major) of the constraints c . (F.normal, F.major, F.minor) <= 0 on a GH force F that
 // imply GHstab(F) <= bound: control.py's gh_polygon, the same polygon to rounding (docs/control.md).
