@@ -159,3 +159,22 @@ def test_feedback_gains_asking_beyond_any_arm_raise_naming_the_interval_and_the_
     q = q + np.radians(2.0) * np.sin(np.linspace(0, np.pi, len(t)))[:, None]
     with pytest.raises(ValueError, match=r"track_motion \(interval \d+, t = .* kp = 1e\+09 s\^-2"):
         armrt.track_motion(arm, q, t, kp=1e9)
+
+
+def test_a_mot_file_is_tracked_as_its_arrays_are(tmp_path):
+    """track_motion takes a .mot path (as static_optimization_motion does): the same run as from its arrays."""
+    from types import SimpleNamespace
+
+    from armrt.opensim_io import write_mot
+
+    arm = armrt.Arm("das2")
+    q, t = _elbow_flexion(arm)
+    q, t = q[:21], t[:21]
+    mot = write_mot(SimpleNamespace(time=t, q=q, dof_names=list(arm.dof_names), model="das2"), tmp_path / "ref.mot")
+    from_file = armrt.track_motion(arm, mot)
+    from_arrays = armrt.track_motion(arm, q, t)
+    np.testing.assert_allclose(from_file.q, from_arrays.q, atol=1e-7)
+    with pytest.raises(ValueError, match="own time column"):
+        armrt.track_motion(arm, mot, t)
+    with pytest.raises(ValueError, match="time .* is needed"):
+        armrt.track_motion(arm, q)

@@ -77,12 +77,13 @@ def excitation_reaching(a0, a_target, c1, c2, interval: float, u_max):
     return np.clip(u, 0.0, u_max)
 
 
-def track_motion(arm, q_ref, time, kp: float = KP_THELEN_2003, kv: float = KV_THELEN_2003,
+def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = KV_THELEN_2003,
                  control_interval: float = CONTROL_INTERVAL_THELEN_2003, gh_stab_max=None,
                  weights=None, criterion: str = "squared", tendon: str = "elastic") -> TrackingResult:
     """Computed muscle control of `arm` (an armrt.Arm with its settings: strength, max_activation, hand load from
     arm.set_hand_load, integrator) along q_ref (T, ndof) rad at time (T,) s (strictly increasing, at least 4 frames;
-    interpolated by a cubic spline, whose derivatives are the reference velocities and accelerations). The arm is
+    interpolated by a cubic spline, whose derivatives are the reference velocities and accelerations), or along a
+    .mot/.sto path given as q_ref with time None (armrt.opensim_io.read_motion: OpenSim names, inDegrees honoured). The arm is
     reset to q_ref[0] with the reference velocity and the static-optimisation activations there, then simulated one
     control interval at a time (a whole number of the arm's steps; a last part of the motion shorter than an
     interval is not run). kp (s^-2), kv (s^-1) >= 0: the feedback gains (kp = kv = 0 plays the feedforward alone).
@@ -102,6 +103,14 @@ def track_motion(arm, q_ref, time, kp: float = KP_THELEN_2003, kv: float = KV_TH
         raise ValueError("track_motion: this arm has a stimulation map; the elements it drives follow the stimulation "
                          "channels, not the excitations computed here (clear the map: arm.set_stimulation_map(None))")
     model = arm.model
+    if isinstance(q_ref, (str, bytes)) or hasattr(q_ref, "__fspath__"):
+        from .opensim_io import read_motion  # noqa: PLC0415 (opensim_io imports arm, which imports control)
+        if time is not None:
+            raise ValueError("time: a .mot file has its own time column; give time only with q_ref as an array")
+        m = read_motion(q_ref, model=model.name)
+        q_ref, time = m.q, m.time
+    if time is None:
+        raise ValueError("time (T,) s is needed with q_ref given as an array")
     q_ref = real_array(q_ref, "q_ref")
     time = real_array(time, "time")
     check_motion(model, q_ref, time, "q_ref", 4)
