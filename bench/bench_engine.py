@@ -25,8 +25,15 @@ DT = {"euler": 1e-4, "rk4": 1e-3}  # the step sizes used everywhere in the bench
 
 
 def find_cpp_bench() -> Path | None:
-    """armrt_bench under build/ (newest first), or on PATH."""
-    found = sorted((p for p in (ROOT / "build").rglob("armrt_bench") if p.is_file() and os.access(p, os.X_OK)),
+    """armrt_bench of this tree: build/bench's (what ./run.sh bench builds), else the newest under build/, or on
+    PATH. Never build/baseline's: bench_integrators builds an old commit there for its forward() comparison, and
+    on a fresh clone that binary is the newest (its armrt_bench has no --model: the das3 part failed with it)."""
+    preferred = ROOT / "build" / "bench" / "cpp" / "tools" / "armrt_bench"
+    if preferred.is_file() and os.access(preferred, os.X_OK):
+        return preferred
+    baseline = ROOT / "build" / "baseline"
+    found = sorted((p for p in (ROOT / "build").rglob("armrt_bench")
+                    if p.is_file() and os.access(p, os.X_OK) and baseline not in p.parents),
                    key=lambda p: p.stat().st_mtime, reverse=True) if (ROOT / "build").is_dir() else []
     if found:
         return found[0]

@@ -35,9 +35,10 @@ SUNDIALS = ["-lsundials_cvode", "-lsundials_nvecserial", "-lsundials_sunlinsolde
 
 
 def newest(name: str) -> Path | None:
+    """The newest `name` under build/, not build/baseline's (an old commit bench_integrators builds)."""
     build = ROOT / "build"
-    found = sorted((p for p in build.rglob(name) if p.is_file()), key=lambda p: p.stat().st_mtime,
-                   reverse=True) if build.is_dir() else []
+    found = sorted((p for p in build.rglob(name) if p.is_file() and build / "baseline" not in p.parents),
+                   key=lambda p: p.stat().st_mtime, reverse=True) if build.is_dir() else []
     return found[0] if found else None
 
 
