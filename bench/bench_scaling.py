@@ -88,10 +88,13 @@ def measure_subsets(reps: int, sizes=SUBSETS) -> list[dict]:
     sys.path.insert(0, str(ROOT))
     from codegen.generate import generate
 
-    lib = newest("libarmrt_engine.a")
+    # The engine is one shared library, libarmrt.so (CMakeLists.txt: every tool links it); the reduced models'
+    # generated code is compiled into each tool beside it. (Before it was a static libarmrt_engine.a: looking for
+    # that found only build/baseline's, an old commit whose engine lacks today's symbols, and every link failed.)
+    lib = newest("libarmrt.so")
     cxx = shutil.which("g++") or shutil.which("c++")
     if lib is None or cxx is None:
-        print("bench_scaling: no libarmrt_engine.a under build/ or no g++: reduced models skipped", file=sys.stderr)
+        print("bench_scaling: no libarmrt.so under build/ or no g++: reduced models skipped", file=sys.stderr)
         return []
     model = json.loads((ROOT / "models" / "das2.json").read_text())
     rows = []
@@ -111,7 +114,7 @@ def measure_subsets(reps: int, sizes=SUBSETS) -> list[dict]:
             cmd = [cxx, *ENGINE_FLAGS, f"-I{ROOT / 'cpp' / 'include'}", f"-I{ROOT / 'cpp' / 'generated'}", f"-I{d}",
                    "-isystem", "/usr/include/eigen3", f"-DARMRT_SCALING_NS={name}",
                    str(ROOT / "cpp" / "tools" / "bench_scaling.cc"), *sorted(str(p) for p in d.glob(f"{name}_*.cc")),
-                   str(lib), *SUNDIALS, "-o", str(exe)]
+                   str(lib), f"-Wl,-rpath,{lib.parent}", *SUNDIALS, "-o", str(exe)]
             proc = subprocess.run(cmd, capture_output=True, text=True)
             if proc.returncode != 0:
                 print(f"bench_scaling: building {name} failed:\n{proc.stderr[-2000:]}", file=sys.stderr)

@@ -29,3 +29,16 @@ def test_the_baseline_build_is_never_picked_even_when_newest(tmp_path, monkeypat
     time.sleep(0.01)
     _tool(tmp_path / "build" / "other" / "cpp" / "tools" / "armrt_bench")
     assert bench_engine.find_cpp_bench() == ours
+
+
+def test_a_reduced_model_builds_against_the_shared_engine_and_runs():
+    """bench_scaling's reduced models link the engine's one shared library (libarmrt.so under build/, which
+    ./run.sh test and ./run.sh bench build); they looked for the static libarmrt_engine.a of before, found only
+    build/baseline's, and every link failed (fresh-clone ./run.sh bench, 2026-12-07)."""
+    import pytest
+
+    if bench_scaling.newest("libarmrt.so") is None:
+        pytest.skip("no libarmrt.so under build/ (cmake --build build/ctest)")
+    rows = bench_scaling.measure_subsets(reps=200, sizes=(6,))
+    assert len(rows) == 1 and rows[0]["n"] == 6
+    assert rows[0]["muscle_paths_ns"] > 0 and rows[0]["rk4_step_ns"] > rows[0]["muscle_paths_ns"]
