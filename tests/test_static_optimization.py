@@ -458,3 +458,31 @@ def test_motion_from_arrays_and_from_a_mot_file(tmp_path):
     # A misspelt option is refused, not taken as "return" (the frames are solved with "return" inside).
     with pytest.raises(ValueError, match="on_infeasible"):
         armrt.static_optimization_motion(arm, q, time=t, hand_load=[0, -3000, 0], on_infeasible="Raise")
+
+
+def test_a_qp_made_anew_after_a_failure_keeps_the_first_problems_preconditioner():
+    """das2 along bench.static_optimization's motion with GHstab <= 0.1 (binding): ProxQP fails at frame 101 and
+    the QP object is replaced (_drop_qp). Initialised at the frame after the failure, the new object's Ruiz
+    scaling (which every later update keeps) made each later solve take a median of 63-76 ProxQP iterations
+    instead of 2 (3.5 ms a frame instead of 0.9, 2026-12-07), for the second and later StaticOptimizers of a
+    process (the first was spared: some state of proxsuite's outlives its QP objects). Initialised with the first
+    problem, every optimiser keeps the first's scaling."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+    from bench.static_optimization import motion
+
+    arm = armrt.Arm("das2")
+    q, qd, qdd = motion(arm, np.radians([20, 40, 0, 60, 60]), 400)
+    for _ in range(3):
+        so = armrt.StaticOptimizer(arm, tendon="rigid", backend="python", gh_stab_max=0.1)
+        dropped = []
+        drop = so._drop_qp
+        so._drop_qp = lambda slack, drop=drop, dropped=dropped: (dropped.append(slack), drop(slack))
+        iterations = []
+        for k in range(200):
+            so.solve(q[k], qd[k], qdd[k], [0, -9.81, 0], on_infeasible="return")
+            iterations.append(so._qp.results.info.iter)
+        assert dropped, "no QP failed on this motion: the test no longer reaches a replacement"
+        assert np.median(iterations[150:]) <= 10, np.median(iterations[150:])
