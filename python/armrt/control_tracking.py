@@ -83,8 +83,8 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
     """Computed muscle control of `arm` (an armrt.Arm with its settings: strength, max_activation, hand load from
     arm.set_hand_load, integrator) along q_ref (T, ndof) rad at time (T,) s (strictly increasing, at least 4 frames;
     interpolated by a cubic spline, whose derivatives are the reference velocities and accelerations), or along a
-    .mot/.sto path given as q_ref with time None (armrt.opensim_io.read_motion: OpenSim names, inDegrees honoured). The arm is
-    reset to q_ref[0] with the reference velocity and the static-optimisation activations there, then simulated one
+    .mot/.sto path given as q_ref with time None (armrt.opensim_io.read_motion: OpenSim names, inDegrees
+    honoured). The arm is reset to q_ref[0] with the reference velocity and the static-optimisation activations there, then simulated one
     control interval at a time (a whole number of the arm's steps; a last part of the motion shorter than an
     interval is not run). kp (s^-2), kv (s^-1) >= 0: the feedback gains (kp = kv = 0 plays the feedforward alone).
     gh_stab_max, weights, criterion, tendon: as armrt.StaticOptimizer. An interval whose static optimisation is

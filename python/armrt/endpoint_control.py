@@ -103,7 +103,8 @@ class EndpointController:
     solve if a map is installed later: its elements would ignore the excitations); ValueError from step() where a
     command asks for a joint acceleration beyond the static optimisation's bound (1e5 rad/s^2: with the default
     gains, on das2 at 30 60 10 60 80 deg, a hand velocity command of 2-3 km/s or a position 650-1000 m away),
-    naming the command, before the arm steps; an infeasible solve keeps its best activations (counted in n_infeasible)."""
+    naming the command, before the arm steps; an infeasible solve keeps its best activations (counted in
+    n_infeasible)."""
 
     def __init__(self, arm, gains: EndpointGains | None = None, tendon: str = "elastic"):
         self.arm = _driven_arm(arm, "EndpointController")

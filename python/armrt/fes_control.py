@@ -27,8 +27,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .checks import applied_moments, dof_vector, joint_range, real_array, real_scalar
 from .arm import Arm
+from .checks import applied_moments, dof_vector, joint_range, real_array, real_scalar
 from .control import _INF, StaticOptimizer, _state
 
 #: Implanted-system coding (docs/fes.md): pulse width modulated at a held 20 mA (the intramuscular channels'
@@ -494,8 +494,8 @@ class FeedforwardPID:
 
     def update(self, t, q, qdot) -> np.ndarray:
         """(C, 3) stimulation for the arm at time t s, posture q (ndof,) rad and speeds qdot (ndof,) rad/s.
-        ValueError for a non-finite t or one before the last update's (reset() starts a new trial), a wrong shape, a non-finite value or q beyond the engine's domain
-        (checks.joint_range); TypeError for non-numbers."""
+        ValueError for a non-finite t or one before the last update's (reset() starts a new trial), a wrong shape, a
+        non-finite value or q beyond the engine's domain (checks.joint_range); TypeError for non-numbers."""
         t = _finite_time(t)
         q, qdot = _state_vectors(self.model, q, qdot)
         p, s = self.params, self.state
