@@ -460,13 +460,9 @@ def test_motion_from_arrays_and_from_a_mot_file(tmp_path):
         armrt.static_optimization_motion(arm, q, time=t, hand_load=[0, -3000, 0], on_infeasible="Raise")
 
 
-def test_a_qp_made_anew_after_a_failure_keeps_the_first_problems_preconditioner():
-    """das2 along bench.static_optimization's motion with GHstab <= 0.1 (binding): ProxQP fails at frame 101 and
-    the QP object is replaced (_drop_qp). Initialised at the frame after the failure, the new object's Ruiz
-    scaling (which every later update keeps) made each later solve take a median of 63-76 ProxQP iterations
-    instead of 2 (3.5 ms a frame instead of 0.9, 2026-12-07), for the second and later StaticOptimizers of a
-    process (the first was spared: some state of proxsuite's outlives its QP objects). Initialised with the first
-    problem, every optimiser keeps the first's scaling."""
+def _das2_bench_motion():
+    """das2 along bench.static_optimization's motion (400 frames); with GHstab <= 0.1 the bound binds from frame
+    ~98 and ProxQP fails at frame 101."""
     import sys
     from pathlib import Path
 
@@ -474,15 +470,50 @@ def test_a_qp_made_anew_after_a_failure_keeps_the_first_problems_preconditioner(
     from bench.static_optimization import motion
 
     arm = armrt.Arm("das2")
-    q, qd, qdd = motion(arm, np.radians([20, 40, 0, 60, 60]), 400)
-    for _ in range(3):
-        so = armrt.StaticOptimizer(arm, tendon="rigid", backend="python", gh_stab_max=0.1)
-        dropped = []
-        drop = so._drop_qp
-        so._drop_qp = lambda slack, drop=drop, dropped=dropped: (dropped.append(slack), drop(slack))
-        iterations = []
-        for k in range(200):
-            so.solve(q[k], qd[k], qdd[k], [0, -9.81, 0], on_infeasible="return")
-            iterations.append(so._qp.results.info.iter)
-        assert dropped, "no QP failed on this motion: the test no longer reaches a replacement"
-        assert np.median(iterations[150:]) <= 10, np.median(iterations[150:])
+    return (arm, *motion(arm, np.radians([20, 40, 0, 60, 60]), 400))
+
+
+def test_the_binding_gh_bound_motion_stays_at_a_few_proxqp_iterations_a_frame_under_rounding_level_changes():
+    """das2's bench motion with GHstab <= 0.1, q moved by 1e-12 rad (rounding level; another CPU's BLAS gives such
+    differences: the project's CI failed where this machine passed, 2026-12-07). Some of these runs end a frame on
+    ProxQP's cold restart (mu_in = 1/1.1); carried to the next problems by the warm start, every later frame took
+    76-81 ProxQP iterations instead of 2-5 (seed 1 run 0 and seed 2 run 5 here). A QP object made anew after the
+    failed solve is initialised with the first problem (its Ruiz scaling): 1 failed QP in each run here, 3 in each
+    with the problem after the failure's scaling."""
+    arm, q, qd, qdd = _das2_bench_motion()
+    for seed in (1, 2):
+        rng = np.random.default_rng(seed)
+        for run in range(6):
+            qq = q + 1e-12 * rng.standard_normal(q.shape)
+            so = armrt.StaticOptimizer(arm, tendon="rigid", backend="python", gh_stab_max=0.1)
+            dropped = []
+            drop = so._drop_qp
+            so._drop_qp = lambda slack, drop=drop, dropped=dropped: (dropped.append(slack), drop(slack))
+            iterations = []
+            for k in range(200):
+                so.solve(qq[k], qd[k], qdd[k], [0, -9.81, 0], on_infeasible="return")
+                iterations.append(so._qp.results.info.iter)
+            assert dropped, "no QP failed on this motion: the test no longer reaches a replacement"
+            assert len(dropped) < 3, (seed, run, dropped)
+            assert np.median(iterations[150:]) <= 10, (seed, run, np.median(iterations[150:]))
+
+
+def test_proximal_parameters_left_by_a_cold_restart_are_not_carried_to_the_next_problem():
+    """The state a cold restart leaves (mu_eq = mu_in = 1/1.1), put on the QP object at frame 150 of das2's bench
+    motion: the next solves start from ProxQP's defaults again, a median of 5 ProxQP iterations (79 when the
+    parameters were carried, 2026-12-07)."""
+    arm, q, qd, qdd = _das2_bench_motion()
+    so = armrt.StaticOptimizer(arm, tendon="rigid", backend="python", gh_stab_max=0.1)
+    for k in range(150):
+        so.solve(q[k], qd[k], qdd[k], [0, -9.81, 0], on_infeasible="return")
+    st = so._qp.settings
+    default_mu_eq, default_mu_in = st.default_mu_eq, st.default_mu_in
+    # update() with proximal parameters also makes them the defaults; the defaults are put back after.
+    so._qp.update(mu_eq=st.cold_reset_mu_eq, mu_in=st.cold_reset_mu_in)
+    st.default_mu_eq, st.default_mu_in = default_mu_eq, default_mu_in
+    assert so._qp.results.info.mu_in == st.cold_reset_mu_in
+    iterations = []
+    for k in range(150, 200):
+        so.solve(q[k], qd[k], qdd[k], [0, -9.81, 0], on_infeasible="return")
+        iterations.append(so._qp.results.info.iter)
+    assert np.median(iterations) <= 10, np.median(iterations)

@@ -374,10 +374,18 @@ pq::QPSolverOutput run(QP& qp, bool& ready, const RowMatrix& H, const Eigen::Vec
     if (n_in) qp.init(H, g, A, b, C, l, u, lbox, ubox);
     else qp.init(H, g, A, b, nullopt, nullopt, nullopt, lbox, ubox);
     ready = true;
-  } else if (n_in) {
-    qp.update(nullopt, nullopt, A, b, C, nullopt, u, nullopt, ubox, false);
   } else {
-    qp.update(nullopt, nullopt, A, b, nullopt, nullopt, nullopt, nullopt, ubox, false);
+    // The warm start carries the last solve's proximal parameters too; one that ended on ProxQP's cold restart
+    // (mu_eq, mu_in reset to 1/1.1 once the residuals stalled at mu_in <= 1e-5) would start every later problem
+    // there: in control.py's Python path, das2's bench motion with GHstab <= 0.1 took 76-81 ProxQP iterations a
+    // frame instead of 3 for the rest of the motion after one such frame. Parameters above ProxQP's defaults go
+    // back to the defaults; the primal-dual warm start is kept.
+    const bool reset = qp.results.info.mu_in > qp.settings.default_mu_in ||
+                       qp.results.info.mu_eq > qp.settings.default_mu_eq;
+    const proxsuite::optional<double> mu_eq = reset ? proxsuite::optional<double>(qp.settings.default_mu_eq) : nullopt;
+    const proxsuite::optional<double> mu_in = reset ? proxsuite::optional<double>(qp.settings.default_mu_in) : nullopt;
+    if (n_in) qp.update(nullopt, nullopt, A, b, C, nullopt, u, nullopt, ubox, false, nullopt, mu_eq, mu_in);
+    else qp.update(nullopt, nullopt, A, b, nullopt, nullopt, nullopt, nullopt, ubox, false, nullopt, mu_eq, mu_in);
   }
   qp.solve();
   return qp.results.info.status;

@@ -498,9 +498,9 @@ class StaticOptimizer:
         """qp.init on the QP object's first use (its preconditioner), qp.update after; then qp.solve(). A QP
         object made anew after a failed solve (_drop_qp) is initialised with the problem its predecessor was
         first initialised with, then updated to this one: the preconditioner (Ruiz scaling, kept by every
-        update) is then the first problem's again. Initialised with the problem after the failure instead, often
-        one with the GH bound binding, later solves took 63 ProxQP iterations (median) instead of 2.5, and das2's
-        bench motion with GHstab <= 0.1 3.4 ms a frame instead of 1.0 (2026-12-07)."""
+        update) is then the first problem's again. With the scaling of the problem after the failure instead,
+        das2's bench motion with GHstab <= 0.1 had 3 failed QPs instead of 1 (2026-12-07,
+        tests/test_static_optimization.py)."""
         n_in = C.shape[0]
         l_in = np.full(n_in, -_INF)
         key = "_qp_slack" if slack else "_qp"
@@ -516,8 +516,17 @@ class StaticOptimizer:
                           update_preconditioner=False)
             self._initialised[key] = True
         else:
+            # ProxQP warm starts each solve from the last one's proximal parameters too. When a solve ends on
+            # its cold restart (mu_in, mu_eq reset to 1/1.1 after the residuals stalled at mu_in <= 1e-5), every
+            # later problem starts there: das2's bench motion with GHstab <= 0.1 went from 3 ProxQP iterations a
+            # frame to 76-81 for the rest of the motion after one such frame, or not, by rounding-level changes
+            # of q (1e-12 rad; tests/test_static_optimization.py). Proximal parameters above ProxQP's defaults are
+            # put back to the defaults; the primal-dual warm start is kept.
+            info, st = qp.results.info, qp.settings
+            reset = info.mu_in > st.default_mu_in or info.mu_eq > st.default_mu_eq
             qp.update(H, g, A, b, C if n_in else None, l_in if n_in else None, u if n_in else None, lbox, ubox,
-                      update_preconditioner=False)
+                      update_preconditioner=False, mu_eq=st.default_mu_eq if reset else None,
+                      mu_in=st.default_mu_in if reset else None)
         qp.solve()
 
     def _objective(self, a):
