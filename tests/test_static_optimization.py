@@ -463,11 +463,7 @@ def test_motion_from_arrays_and_from_a_mot_file(tmp_path):
 def _das2_bench_motion():
     """das2 along bench.static_optimization's motion (400 frames); with GHstab <= 0.1 the bound binds from frame
     ~98 and ProxQP fails at frame 101."""
-    import sys
-    from pathlib import Path
-
-    sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
-    from bench.static_optimization import motion
+    from bench.static_optimization import motion  # the repository root is on sys.path (conftest.py)
 
     arm = armrt.Arm("das2")
     return (arm, *motion(arm, np.radians([20, 40, 0, 60, 60]), 400))
