@@ -13,6 +13,7 @@
 #include "armrt/arm.h"
 #include "armrt/engine.h"
 #include "armrt/static_optimization.h"
+#include "static_optimization_solver.h"
 #include "test_util.h"
 
 using namespace armrt;
@@ -267,4 +268,50 @@ TEST_CASE("static optimisation (elastic tendon): the engine's element at the ret
     }
     CHECK(solved >= 4);
   }
+}
+
+TEST_CASE("static optimisation (rigid tendon by ProxQP): proximal parameters a cold restart leaves are not carried on") {
+  // tests/test_static_optimization.py's motion (bench.static_optimization's: q0 + 0.3 (1 - cos(pi t / T)) / 2 rad,
+  // alternating signs, 400 frames of 1 ms from (20, 40, 0, 60, 60) deg) with GHstab <= 0.1 and ProxQP alone. At frame
+  // 150 the QP is put into the state ProxQP's cold restart ends a solve in (mu_eq = mu_in = 1/1.1, what its warm
+  // start carries): the next solves must start from the defaults again, as static_optimization.cc's run() makes them.
+  Arm arm(armrt_test::das2(), Integrator::kRos2, 1e-3);
+  StaticOptimizationOptions o;
+  o.gh_stab_max = 0.1;
+  o.dual_newton = false;
+  StaticOptimizationWorkspace w;
+  static_optimization_setup(arm.model, o, w);
+  const int nq = arm.model.num_dofs, frames = 400;
+  const double q0_deg[5] = {20, 40, 0, 60, 60};
+  const double T = frames * 1e-3, omega = M_PI / T, amplitude = 0.3;
+  const double hand[3] = {0, -9.81, 0}, zero[3] = {};
+  double q[kMaxDofs], qd[kMaxDofs], qdd[kMaxDofs], a[kMaxElements];
+  StaticOptimizationReport rep;
+  auto solve_frame = [&](int k) {
+    const double t = k * 1e-3;
+    for (int j = 0; j < nq; ++j) {
+      const double sign = j % 2 == 0 ? 1.0 : -1.0;
+      q[j] = q0_deg[j] * M_PI / 180.0 + sign * 0.5 * amplitude * (1 - std::cos(omega * t));
+      qd[j] = sign * 0.5 * amplitude * omega * std::sin(omega * t);
+      qdd[j] = sign * 0.5 * amplitude * omega * omega * std::cos(omega * t);
+    }
+    static_optimization_rigid(arm.model, arm.data, w, q, qd, qdd, hand, zero, a, &rep);
+    return rep.qp_iterations;
+  };
+  for (int k = 0; k < 150; ++k) solve_frame(k);
+  auto& qp = w.solver->qp;
+  const double default_mu_eq = qp.settings.default_mu_eq, default_mu_in = qp.settings.default_mu_in;
+  // update() with proximal parameters also makes them the defaults: the defaults are put back after.
+  qp.update(proxsuite::nullopt, proxsuite::nullopt, proxsuite::nullopt, proxsuite::nullopt, proxsuite::nullopt,
+            proxsuite::nullopt, proxsuite::nullopt, proxsuite::nullopt, proxsuite::nullopt, false, proxsuite::nullopt,
+            qp.settings.cold_reset_mu_eq, qp.settings.cold_reset_mu_in);
+  qp.settings.default_mu_eq = default_mu_eq;
+  qp.settings.default_mu_in = default_mu_in;
+  REQUIRE(qp.results.info.mu_in == qp.settings.cold_reset_mu_in);
+  std::vector<int> iterations;
+  for (int k = 150; k < 200; ++k) iterations.push_back(solve_frame(k));
+  std::nth_element(iterations.begin(), iterations.begin() + iterations.size() / 2, iterations.end());
+  const int median = iterations[iterations.size() / 2];
+  MESSAGE("median ProxQP iterations a frame after the cold-restart state: " << median);
+  CHECK(median <= 10);
 }
