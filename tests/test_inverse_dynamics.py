@@ -138,6 +138,20 @@ def test_bad_input_names_the_problem():
         armrt.inverse_dynamics(arm, q, parts="yes")
 
 
+@pytest.mark.parametrize("target", ["arm", "model"])
+def test_inputs_near_the_largest_double_are_refused_where_the_answer_overflows(target):
+    """A 1.7e308 N hand force is finite, so the input checks pass it; J^T F overflows to NaN, which was returned as
+    the answer (2026-12-07). Now a ValueError naming the overflow; a large but representable answer is returned."""
+    obj = armrt.Arm("das2") if target == "arm" else armrt.Model("das2")
+    q = armrt.Arm("das2").rest_posture
+    with pytest.raises(ValueError, match="overflowed.*tau_muscle"):
+        obj.inverse_dynamics(q, hand_load=[1.7e308] * 3)
+    with pytest.raises(ValueError, match="overflowed"):
+        obj.inverse_dynamics(q, 0.0, np.full(5, 1.7e308) * np.array([1, -1, 1, -1, 1]))
+    tau = obj.inverse_dynamics(q, 0.0, np.full(5, 1e300))
+    assert np.all(np.isfinite(tau)) and np.max(np.abs(tau)) > 1e298
+
+
 # ----------------------------------------------------------------------------------------------
 # OpenSim 4.6 on das3.osim: its InverseDynamicsSolver with the girdle locked at the pose
 

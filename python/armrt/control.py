@@ -155,7 +155,8 @@ def inverse_dynamics(arm_or_model, q, qdot=0.0, qddot=0.0, hand_load=None, parts
     q, qdot, qddot: (ndof,) rad, rad/s, rad/s^2 (qdot, qddot may be 0). hand_load: None (an Arm's present
     hand load, zero for a Model), a force (3,) N, (force, moment) or a (6,) [force, moment] in the thorax frame.
     parts=True returns a dict: tau_muscle, mass_times_qddot, bias (b), passive, external, girdle (ndof,) and
-    gh_force_without_muscles (3,) N, scapula frame. ValueError for NaN, wrong shapes or q far beyond range."""
+    gh_force_without_muscles (3,) N, scapula frame. ValueError for NaN, wrong shapes, q far beyond range or a result that
+    overflows (inputs near the largest double)."""
     sim, model, default_load = _target(arm_or_model)
     if not isinstance(parts, (bool, np.bool_)):
         raise TypeError(f"parts must be True or False, got {type(parts).__name__} {parts!r}")
@@ -165,6 +166,14 @@ def inverse_dynamics(arm_or_model, q, qdot=0.0, qddot=0.0, hand_load=None, parts
         out = sim.inverse_dynamics(q, qd, qdd, f, m)
     else:
         out = model._def.inverse_dynamics(q, qd, qdd, np.ascontiguousarray(model.gravity_base), f, m)
+    # Finite inputs near the largest double (a 1.7e308 N hand force) overflow in M qddot or J^T F: a NaN or inf
+    # answer is refused, not returned.
+    bad = [name for name, v in out.items() if not np.all(np.isfinite(v))]
+    if bad:
+        raise ValueError(f"inverse dynamics overflowed ({', '.join(bad)} not finite): qddot (max |qddot| "
+                         f"{float(np.max(np.abs(qdd))):.3g} rad/s^2) or the hand load (largest force component "
+                         f"{float(np.max(np.abs(f))):.3g} N, moment component {float(np.max(np.abs(m))):.3g} N m) is beyond "
+                         f"what doubles carry")
     return out if parts else out["tau_muscle"]
 
 
