@@ -23,12 +23,16 @@ from .static_optimization import RESULTS
 ELX = 3
 
 
-def run(kp: float, kd: float, t_move: float = 1.0, T: float = 1.0, t_end: float = 2.5) -> dict:
+def run(kp: float, kd: float, t_move: float = 1.0, T: float = 1.0, t_end: float = 2.5, infeasible: bool = False) -> dict:
+    """One case; infeasible=True: a target no activations reach (50 rad/s and 1000 rad/s^2 in every DOF, GHstab <=
+    0.05; a new-user trial's, 2026-12-07), held throughout: every solve infeasible, zero excitation, the arm falls."""
     q_hold = np.array(armrt.Model("das2").rest_posture, dtype=float)
     q_hold[ELX] = np.radians(60.0)
     amp, w = np.radians(20.0), np.pi / T
 
     def target(t):
+        if infeasible:
+            return q_hold.copy(), np.full(5, 50.0), np.full(5, 1000.0)
         q, qd, qdd = q_hold.copy(), np.zeros(5), np.zeros(5)
         s = min(max(t - t_move, 0.0), T)
         q[ELX] += 0.5 * amp * (1 - np.cos(w * s))
@@ -38,7 +42,7 @@ def run(kp: float, kd: float, t_move: float = 1.0, T: float = 1.0, t_end: float 
 
     states = []
     with rt.RealtimeSession(listen="127.0.0.1:0", q0=q_hold, static_optimization=True, so_kp=kp, so_kd=kd,
-                            state_rate_hz=100, input_timeout=0.5) as s, rt.UdpClient(s.port) as c:
+                            so_gh_stab_max=0.05 if infeasible else None, state_rate_hz=100, input_timeout=0.5) as s, rt.UdpClient(s.port) as c:
         c.join(timeout=1.0)
         t0 = time.monotonic()
         while True:
@@ -64,7 +68,8 @@ def run(kp: float, kd: float, t_move: float = 1.0, T: float = 1.0, t_end: float 
 
 def main(argv=None) -> dict:
     load_before = os.getloadavg()
-    cases = {"computed torque (kp 100, kd 20)": run(100.0, 20.0), "pure feedforward (kp 0, kd 0)": run(0.0, 0.0)}
+    cases = {"computed torque (kp 100, kd 20)": run(100.0, 20.0), "pure feedforward (kp 0, kd 0)": run(0.0, 0.0),
+             "infeasible target held (kp 0, kd 0; errors: the arm falls)": run(0.0, 0.0, infeasible=True)}
     load_after = os.getloadavg()
     out = {"command": "python -m bench.rt_static_optimization", "cases": cases, "cpus": os.cpu_count(),
            "loadavg_1min_before_after": [load_before[0], load_after[0]]}

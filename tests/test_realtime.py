@@ -247,6 +247,32 @@ def test_runner_signals_clean_shutdown_and_json(tmp_path):
         assert final is not None and final.stopped and not final.diverged, sig
 
 
+def test_the_last_state_packet_after_a_signal_carries_zero_excitation_and_stimulation(tmp_path):
+    """Stopped, the loop no longer lowers anything: the last command goes to zero before the last state packet, so
+    that a stimulator driven from the state packets does not hold it (until 2026-12-07 the last packet carried the
+    owner's last excitation, 0.5, and stimulation, 200 us / 15 mA / 30 Hz)."""
+    m = tmp_path / "flexors.toml"
+    m.write_text('[[channels]]\nname = "flexors"\nelements = ["bicl", "brachialis"]\n')
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        p, port = start_runner("--state-rate", "100", "--excitations", "--stimulation", str(m))
+        try:
+            with rt.UdpClient(port, mapping="groups", stimulation=m) as c:
+                c.join(timeout=5.0)
+                c.send({"deltoid": 0.5})
+                c.send_stimulation({"flexors": (200e-6, 0.015, 30.0)})
+                time.sleep(0.1)
+                live = c.latest_state(timeout=0.5)
+                assert live.excitation.max() == 0.5 and live.stimulation[0][1] == 0.015 and not live.stopped
+                rc, out, err = stop_runner(p, sig)
+                final = c.latest_state(timeout=0.5)
+        finally:
+            if p.poll() is None:
+                p.kill()
+        assert rc == 0, err
+        assert final is not None and final.stopped, sig
+        assert np.all(final.excitation == 0.0) and np.all(final.stimulation == 0.0), (sig, final.excitation.max())
+
+
 def test_runner_json_write_failure_exits_non_zero(tmp_path):
     # The statistics asked for and lost: exit status 4 with the reason, not 0 (a script would read a stale file).
     for path, reason in ((tmp_path / "absent_dir" / "stats.json", "No such file"), ("/dev/full", "No space")):
@@ -1234,18 +1260,17 @@ def test_stimulation_through_udp_flexes_the_elbow_fatigues_and_times_out_to_zero
         np.testing.assert_array_equal(st.stimulation[k], flexors[names[k]])
         assert st.fatigue[k] > 0 and st.fatigue[names.index("anconeus")] == 0  # stimulated / never pulsed
         assert np.degrees(st.q[3] - el0) > 20, (np.degrees(el0), np.degrees(st.q[3]))
-        # A raw packet beyond the limits (a client that does not check): clamped and counted by the runner.
+        # A raw packet beyond the limits (a client that does not check; 15 is mA written for A): refused by the
+        # runner as Arm.set_stimulation refuses it, the previous command held, not clamped to the channel's maximum.
         raw = np.zeros((len(names), 3))
-        raw[k] = (900e-6, 0.5, 500.0)
+        raw[k] = (200e-6, 15.0, 30.0)
         c.send_raw(rt.encode_packet(rt.STIMULATION, c._next_seq(), raw.ravel(), session=c.session))
         time.sleep(0.05)
         st = c.latest_state(timeout=0.2)
-        lim = armrt.Arm("das2", stimulation="per_muscle").stimulation_map()["channels"][k]["limits"]
-        assert st.stimulation[k][0] == lim["max_pulse_width_s"] and st.stimulation[k][2] == lim["max_frequency_Hz"]
-        assert st.stimulation[k][0] * st.stimulation[k][1] <= lim["max_charge_C"] * (1 + 1e-12)
+        np.testing.assert_array_equal(st.stimulation[k], flexors[names[k]])
         time.sleep(0.4)  # silence: the session ends and every channel falls to zero
         stats = s.stop()
-    assert stats["packets"]["stimulation_clamped"] == 1
+    assert stats["packets"]["stimulation_refused"] == 1
     assert stats["packets"]["stimulation_applied"] > 20
     assert stats["packets"]["timeouts"] == 1
 
@@ -1273,7 +1298,7 @@ def test_runner_stimulation_option_and_its_errors(tmp_path):
     finally:
         code, out, err = stop_runner(p)
     assert code == 0, err
-    assert "stimulation: 1 channels, packets applied 1, clamped to the channels' limits 0" in out, out
+    assert "stimulation: 1 channels, packets applied 1, refused beyond the channels' limits 0" in out, out
 
 
 def test_lsl_stimulator_stream_by_label_drives_the_runner():
@@ -1331,7 +1356,7 @@ def test_lsl_stimulator_stream_by_label_drives_the_runner():
             th.join(timeout=5)
             bridge.close()
         st = s.stop()
-    assert st["packets"]["stimulation_applied"] > 10 and st["packets"]["stimulation_clamped"] == 0
+    assert st["packets"]["stimulation_applied"] > 10 and st["packets"]["stimulation_refused"] == 0
 
 
 def test_state_channels_with_stimulation_have_units_per_value():
@@ -1352,6 +1377,11 @@ def test_client_refuses_nan_and_out_of_range_excitation_before_sending():
                            ({"deltoid": float("inf")}, "deltoid=inf")):
             with pytest.raises(ValueError, match=shown):
                 c.send(bad)
+        # A string is refused as Arm.set_excitation refuses it (float("0.3") took it until 2026-12-07).
+        with pytest.raises(TypeError, match="string"):
+            c.send({"elbow_flexors": "0.3"})
+        with pytest.raises(TypeError, match="string"):
+            c.send(["0.3"] * len(c.mapping.names))
         assert c.session == 0  # refused before joining: no hello, no packet
         time.sleep(0.02)
         stats = s.stop()

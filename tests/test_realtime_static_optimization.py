@@ -100,6 +100,8 @@ def test_refused_targets_and_packets():
             c.send_target(q_hold[:4])
         with pytest.raises(ValueError, match="qddot"):
             c.send_target(q_hold, 0.0, np.full(5, 1e6))
+        with pytest.raises(ValueError, match=r"qdot\[GHy\] = 150 rad/s is beyond max_joint_speed 100"):
+            c.send_target(q_hold, np.full(5, 150.0))
         # Past the client's checks, the runner's own: beyond the range, an excitation packet, a wrong count.
         bad = q_hold.copy()
         bad[ELX] = 10.0
@@ -109,12 +111,15 @@ def test_refused_targets_and_packets():
         # A 1e16 rad/s^2 acceleration: refused as the Python API refuses it (its solve would take seconds).
         c.send_raw(encode_packet(TARGET, c._next_seq(), np.concatenate([q_hold, np.zeros(5), np.full(5, 1e16)]),
                                  session=c.session))
+        # 150 rad/s (deg/s given as rad/s, or a diverged source): beyond max_joint_speed, as StaticOptimizer.solve.
+        c.send_raw(encode_packet(TARGET, c._next_seq(), np.concatenate([q_hold, np.full(5, 150.0), np.zeros(5)]),
+                                 session=c.session))
         c.send_target(q_hold)
         st = c.latest_state(timeout=0.3)
         time.sleep(0.05)
         stats = s.stop()
     p = stats["packets"]
-    assert p["bad_target"] == 2 and p["bad_type"] == 1 and p["bad_count"] == 1
+    assert p["bad_target"] == 3 and p["bad_type"] == 1 and p["bad_count"] == 1
     assert p["targets_applied"] >= 1
     assert st is not None
 
@@ -157,6 +162,12 @@ def test_options_are_checked():
         rt.RealtimeSession(listen="127.0.0.1:0", so_kp=10.0)
     with pytest.raises(ValueError, match="so-gh-stab-max"):
         rt.RealtimeSession(listen="127.0.0.1:0", static_optimization=True, so_gh_stab_max=50.0)
+    # 0 is refused, not taken as no bound (static_optimization refuses it too); None is no bound.
+    with pytest.raises(ValueError, match=r"so-gh-stab-max must be a finite number > 0 \(leave it out"):
+        rt.RealtimeSession(listen="127.0.0.1:0", static_optimization=True, so_gh_stab_max=0.0)
+    with rt.RealtimeSession(listen="127.0.0.1:0", static_optimization=True, so_gh_stab_max=None,
+                            duration=0.01) as s:
+        assert s.stop()["static_optimization"]["gh_stab_max"] is None
     with pytest.raises(ValueError, match="so-kp"):
         rt.RealtimeSession(listen="127.0.0.1:0", static_optimization=True, so_kp=-1.0)
     # Without --static-optimization a target packet is refused (wrong count: the runner expects none).

@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
   app.add_flag("--static-optimization", cfg.static_optimization,
                "feedforward: the owner sends targets (packet type 8: desired q, qdot, qddot) and every cycle the runner "
                "solves the rigid-tendon static optimisation for them and applies the activations (docs/realtime.md)");
-  app.add_option("--so-gh-stab-max", cfg.so_gh_stab_max, "with --static-optimization: GHstab <= S in the solve (0: none)");
+  app.add_option("--so-gh-stab-max", cfg.so_gh_stab_max, "with --static-optimization: GHstab <= S (> 0) in the solve (without it: no GH bound)");
   app.add_option("--so-kp", cfg.so_kp, "with --static-optimization: qddot += KP (q_d - q), 1/s^2, the solve then at "
                                        "the arm's state (computed torque; 0 with --so-kd 0: pure feedforward)");
   app.add_option("--so-kd", cfg.so_kd, "with --static-optimization: qddot += KD (qdot_d - qdot), 1/s");
@@ -230,6 +230,13 @@ int main(int argc, char** argv) {
   print_pct("TET", st.tet);
   print_pct("cycle", st.cycle);
   print_pct("latency", st.latency);
+  if (st.static_optimization) {
+    // On the console too: a run whose every solve was infeasible delivered zero excitation throughout.
+    print_pct("solve", st.so_solve);
+    std::printf("  static optimisation: solves %lld, infeasible %lld (not converged %lld; zero excitation), refused "
+                "%lld\n", static_cast<long long>(st.so_solves), static_cast<long long>(st.so_infeasible),
+                static_cast<long long>(st.so_not_converged), static_cast<long long>(st.so_refused));
+  }
   std::printf("  overruns %lld (missed periods %lld) over %lld cycles; %s, priority %d, memory %s\n",
               static_cast<long long>(st.overruns), static_cast<long long>(st.missed_deadlines),
               static_cast<long long>(st.cycles), st.scheduler.c_str(), st.priority,
@@ -243,9 +250,9 @@ int main(int argc, char** argv) {
   std::printf("  kernel drops %llu (receive buffers %d and %d bytes)\n", (unsigned long long)k.kernel_drops,
               st.rcvbuf_bytes, st.owner_rcvbuf_bytes);
   if (!cfg.stimulation.empty())
-    std::printf("  stimulation: %d channels, packets applied %llu, clamped to the channels' limits %llu\n",
+    std::printf("  stimulation: %d channels, packets applied %llu, refused beyond the channels' limits %llu\n",
                 loop->arm().data.stimulation_map.num_channels, (unsigned long long)k.stimulation_applied,
-                (unsigned long long)k.stimulation_clamped);
+                (unsigned long long)k.stimulation_refused);
   std::fflush(stdout);
   // A run whose statistics were asked for and lost is not a success: a script reading the JSON would
   // otherwise find an old file or none after exit status 0. The error is checked after close (a full disk

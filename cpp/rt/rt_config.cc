@@ -95,12 +95,14 @@ Schedule check_config(RtConfig& cfg) {
     check_range("--duration", cfg.duration, s.period_s, 1e7, "s (0: until stopped; else at least one period)");
   check_range("--max-lag", cfg.max_lag, 0.0, 1e6, "s");
   // --static-optimization's numbers (the GH bound's own limits are checked with the model, static_optimization.cc).
-  if (!std::isfinite(cfg.so_gh_stab_max) || cfg.so_gh_stab_max < 0)
-    throw std::invalid_argument("--so-gh-stab-max must be a finite number > 0 (0: none), got " + fmt(cfg.so_gh_stab_max));
+  // 0 is refused, not taken as no bound (the strictest value one would type; static_optimization refuses it too).
+  if (cfg.so_gh_stab_max && !(std::isfinite(*cfg.so_gh_stab_max) && *cfg.so_gh_stab_max > 0))
+    throw std::invalid_argument("--so-gh-stab-max must be a finite number > 0 (leave it out for no GH bound), got " +
+                                fmt(*cfg.so_gh_stab_max));
   if (!std::isfinite(cfg.so_kp) || cfg.so_kp < 0 || !std::isfinite(cfg.so_kd) || cfg.so_kd < 0)
     throw std::invalid_argument("--so-kp and --so-kd must be finite numbers >= 0, got " + fmt(cfg.so_kp) + ", " +
                                 fmt(cfg.so_kd));
-  if (!cfg.static_optimization && (cfg.so_gh_stab_max > 0 || cfg.so_kp > 0 || cfg.so_kd > 0))
+  if (!cfg.static_optimization && (cfg.so_gh_stab_max || cfg.so_kp > 0 || cfg.so_kd > 0))
     throw std::invalid_argument("--so-gh-stab-max, --so-kp and --so-kd need --static-optimization");
   // Arm.settle's own check and wording (arm.py): any finite duration >= 0.
   if (!std::isfinite(cfg.settle_s) || cfg.settle_s < 0)

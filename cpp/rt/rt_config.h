@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -68,7 +69,7 @@ struct RtConfig {
   // arm's state (so_kp = so_kd = 0: at the desired state, pure feedforward) and applies the activations as
   // excitations; zero excitation without a target, when infeasible, or once the session ends.
   bool static_optimization = false;
-  double so_gh_stab_max = 0;   // > 0: GHstab <= this in the solve (the GH polygon); 0: none
+  std::optional<double> so_gh_stab_max;  // GHstab <= this (> 0) in the solve (the GH polygon); none: no bound
   double so_kp = 0;            // 1/s^2, the computed-torque loop's stiffness on the joint angles
   double so_kd = 0;            // 1/s, its damping on the joint velocities
   double rx_budget_us = 0;     // receive work per cycle: drain the socket until empty or this long; 0: min(150 us, period / 4)

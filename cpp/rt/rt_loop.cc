@@ -121,9 +121,16 @@ bool RtLoop::supported(std::int64_t cycle) {
 void RtLoop::apply_command(const double* u, const double* stimulation) {
   // Held (and streamed with --excitations) as the dynamics use it: capped at max_activation.
   data_set_excitation(sim_->model, sim_->data, u);
-  // Already within every channel's limits (the session clamps): the engine's held command, as Arm.set_stimulation.
+  // Already within every channel's limits (the session refuses the rest): the engine's held command, as
+  // Arm.set_stimulation.
   const int nc = sim_->data.stimulation_map.num_channels;
   std::copy(stimulation, stimulation + kStimInputs * nc, sim_->data.stimulation.begin());
+}
+
+void RtLoop::zero_command() {
+  const std::vector<double> zero(std::max(sim_->model.num_elements, kStimInputs * sim_->data.stimulation_map.num_channels),
+                                 0.0);
+  apply_command(zero.data(), zero.data());
 }
 
 void RtLoop::static_optimization_cycle() {
@@ -219,7 +226,7 @@ RtLoop::RtLoop(const RtConfig& config) : cfg_(config) {
     if (nc > 0) throw std::invalid_argument("--static-optimization with --stimulation: the solve computes element excitations, "
                                             "which a stimulation map's channels would override");
     StaticOptimizationOptions o;
-    o.gh_stab_max = cfg_.so_gh_stab_max;
+    o.gh_stab_max = cfg_.so_gh_stab_max.value_or(0.0);  // 0: the engine's no bound
     // No ProxQP fallback in the loop: a solve the Newton method does not finish is reported not converged and
     // gives zero excitation, in bounded time and without the fallback's allocations (docs/realtime.md).
     o.proxqp_fallback = false;
@@ -381,7 +388,11 @@ void* RtLoop::thread_main(void* arg) {
   self->run_cycles(0);
   self->running_.store(false, std::memory_order_release);
   self->finished_.store(true, std::memory_order_release);
-  self->send_state();  // last state, flagged stopped (and error if diverged)
+  // The loop no longer runs, so nothing would lower the held command: it goes to zero (no excitation, no
+  // stimulation) before the last state packet, so that what follows the runner's output (a stimulator driven from
+  // the state packets) does not hold the last command after SIGINT / SIGTERM, --duration or a divergence.
+  self->zero_command();
+  self->send_state();  // last state, flagged stopped (and error if diverged), its command zero
   return nullptr;
 }
 
@@ -450,7 +461,7 @@ RtStats RtLoop::stats() const {
     st.so_infeasible = so_infeasible_;
     st.so_not_converged = so_not_converged_;
     st.so_refused = so_refused_;
-    st.so_gh_stab_max = cfg_.so_gh_stab_max;
+    st.so_gh_stab_max = cfg_.so_gh_stab_max.value_or(0.0);
     st.so_kp = cfg_.so_kp;
     st.so_kd = cfg_.so_kd;
     st.so_residual_max = so_residual_max_;

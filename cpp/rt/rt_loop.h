@@ -69,6 +69,7 @@ class RtLoop {
   // The loop's only contact with the engine core's Model / Data (the core's redesign adapts these).
   void make_simulator(const ModelDef& def, const Schedule& sched);
   void apply_command(const double* u, const double* stimulation);
+  void zero_command();  // apply_command of zeros: the loop's end
   // --static-optimization: the cycle's solve at the session's target, its activations applied (zero without one).
   void static_optimization_cycle();
   StateValues state_values(double& lag, double& overruns);

@@ -333,6 +333,20 @@ void Session::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in
     // And its acceleration bound: the solve would run for seconds in the loop (static_optimization.h).
     for (int j = 2 * n_dofs_; j < 3 * n_dofs_; ++j)
       if (std::abs(values_[j]) > kStaticOptimizationMaxJointAcceleration) { ++pk_.bad_target; return; }
+    // And its joint-speed bound (the arm's max_joint_speed, the runner's default): faster is a diverged simulation
+    // or degrees per second, not a motion to solve for.
+    for (int j = n_dofs_; j < 2 * n_dofs_; ++j)
+      if (std::abs(values_[j]) > kDefaultMaxJointSpeed) { ++pk_.bad_target; return; }
+  }
+  if (h.type == kStimulation) {
+    // A value Arm.set_stimulation refuses (negative, beyond a channel's pulse width, amplitude, frequency or charge
+    // per phase) drops the whole packet, the previous command held (and zero after --timeout if nothing valid
+    // follows). Clamping applied a unit slip as the channel's maximum: 15 (mA written for A) became 20 mA.
+    for (int c = 0; c < map_.num_channels; ++c)
+      if (!stimulation_command_allowed(map_.channels[c], values_[3 * c], values_[3 * c + 1], values_[3 * c + 2])) {
+        ++pk_.stimulation_refused;
+        return;
+      }
   }
   if (!accept_sequence(h, from)) return;
   if (h.type == kTarget) {
@@ -343,14 +357,6 @@ void Session::handle_datagram(const std::uint8_t* buf, long n, const sockaddr_in
     return;
   }
   if (h.type == kStimulation) {
-    // Beyond a channel's limits (pulse width, amplitude, frequency, charge per phase; negative values) the
-    // runner clamps and counts, where the Python API refuses: a person may be wired to the output, and
-    // dropping the packet would hold the previous command instead.
-    bool clamped = false;
-    for (int c = 0; c < map_.num_channels; ++c)
-      clamped = clamp_stimulation_command(map_.channels[c], &values_[3 * c], &values_[3 * c + 1], &values_[3 * c + 2]) ||
-                clamped;
-    if (clamped) ++pk_.stimulation_clamped;
     std::copy(values_.begin(), values_.begin() + h.count, stim_command_.begin());
     ++pk_.stimulation_applied;
     applied(h, now_s);

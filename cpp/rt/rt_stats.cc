@@ -78,7 +78,7 @@ std::string stats_json(const RtStats& s) {
                   {"non_finite", k.non_finite}, {"targets_applied", k.targets_applied}, {"bad_target", k.bad_target},
                   {"stale", k.stale}, {"out_of_order", k.out_of_order},
                   {"clipped", k.clipped}, {"stimulation_applied", k.stimulation_applied},
-                  {"stimulation_clamped", k.stimulation_clamped}, {"hellos", k.hellos}, {"offers", k.offers},
+                  {"stimulation_refused", k.stimulation_refused}, {"hellos", k.hellos}, {"offers", k.offers},
                   {"replies_limited", k.replies_limited}, {"held_off", k.held_off}, {"session_ended", k.session_ended},
                   {"kernel_drops", k.kernel_drops}, {"sessions", k.sessions},
                   {"owner_changes", k.owner_changes}, {"releases", k.releases}, {"timeouts", k.timeouts},

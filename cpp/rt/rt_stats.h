@@ -33,8 +33,8 @@ struct PacketCounters {
   std::uint64_t stale = 0;         // duplicate sequence number in the session
   std::uint64_t out_of_order = 0;  // sequence number older than the session's last applied one
   std::uint64_t clipped = 0;       // excitation packets with values outside [0, 1] (applied, clipped)
-  std::uint64_t stimulation_clamped = 0;  // stimulation packets with a value beyond its channel's limits
-                                          // (pulse width, amplitude, frequency, charge; applied, clamped)
+  std::uint64_t stimulation_refused = 0;  // stimulation packets with a value Arm.set_stimulation refuses (negative,
+                                          // beyond a channel's pulse width, amplitude, frequency or charge; dropped)
   std::uint64_t hellos = 0;        // session requests read
   std::uint64_t offers = 0;        // session offers sent (at most one per source per 10 ms, 4 per cycle)
   std::uint64_t replies_limited = 0;  // hellos / stale-session packets not answered: the source's share was spent
@@ -51,7 +51,7 @@ struct PacketCounters {
   std::uint64_t send_errors = 0;
   std::uint64_t dropped() const {
     return foreign + not_allowed + bad_magic + bad_version + bad_size + bad_type + bad_count + bad_auth +
-           bad_session + non_finite + bad_target + stale + out_of_order;
+           bad_session + non_finite + bad_target + stimulation_refused + stale + out_of_order;
   }
 };
 

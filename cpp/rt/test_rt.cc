@@ -1409,7 +1409,7 @@ TEST_CASE("state packet table: offsets, labels and sizes agree") {
   CHECK(rows[rows.size() - 2].rule == "channel_inputs");
 }
 
-TEST_CASE("stimulation packets: clamped and counted, state carries them, the timeout zeroes every channel") {
+TEST_CASE("stimulation packets: refused beyond the limits, state carries them, the timeout zeroes every channel") {
   RtConfig c = test_config();
   c.state_rate_hz = 1000;
   c.send_forces = false;
@@ -1424,27 +1424,53 @@ TEST_CASE("stimulation packets: clamped and counted, state carries them, the tim
   REQUIRE(ctl.session != 0);
   auto settle = [&] { usleep(3000); loop.run_cycles(2); };
 
-  // Channel 0 within its (intramuscular: NNP) limits; channel 1 beyond every limit and negative elsewhere.
+  // Channels 0 and 1 within their (intramuscular: NNP) limits: applied.
   std::vector<double> v(3 * nc, 0.0);
   v[0] = 200e-6, v[1] = 0.015, v[2] = 30.0;
-  v[3] = 900e-6, v[4] = 0.5, v[5] = 400.0;
-  v[6] = -1e-6, v[7] = 0.01, v[8] = 20.0;
+  v[3] = 100e-6, v[4] = 0.01, v[5] = 20.0;
   ctl.send(kStimulation, v);
   settle();
-  const ChannelLimits& lim = d.stimulation_map.channels[1].limits;
   CHECK(d.stimulation[0] == 200e-6);
   CHECK(d.stimulation[1] == 0.015);
   CHECK(d.stimulation[2] == 30.0);
-  CHECK(d.stimulation[3] == lim.max_pulse_width_s);
-  CHECK(d.stimulation[5] == lim.max_frequency_Hz);
-  CHECK(d.stimulation[3] * d.stimulation[4] <= lim.max_charge_C * (1 + 1e-12));
-  CHECK(d.stimulation[6] == 0.0);
-  for (int k = 0; k < nc; ++k)
-    CHECK(stimulation_command_error(d.stimulation_map.channels[k], d.stimulation[3 * k], d.stimulation[3 * k + 1],
-                                    d.stimulation[3 * k + 2]) == "");
+  CHECK(d.stimulation[3] == 100e-6);
   RtStats st = loop.stats();
   CHECK(st.packets.stimulation_applied == 1);
-  CHECK(st.packets.stimulation_clamped == 1);
+  CHECK(st.packets.stimulation_refused == 0);
+
+  // Each value Arm.set_stimulation refuses, in channel 1 alone, drops the whole packet: channel 0's new command
+  // is not applied either, the previous command is held (not clamped to the limit: 15 A, mA written for A, was
+  // applied as the channel's maximum amplitude).
+  const ChannelLimits& lim = d.stimulation_map.channels[1].limits;
+  const double bad[][3] = {{lim.max_pulse_width_s * 1.01, 0.001, 20.0},  // pulse width beyond its limit
+                           {100e-6, 15.0, 20.0},                           // amplitude: 15 A
+                           {100e-6, 0.01, lim.max_frequency_Hz + 1.0},     // frequency
+                           {-1e-6, 0.01, 20.0}, {100e-6, -0.01, 20.0}, {100e-6, 0.01, -1.0}};  // negative
+  int sent = 0;
+  for (const auto& b : bad) {
+    std::vector<double> w = v;
+    w[0] = 150e-6;
+    std::copy(b, b + 3, w.begin() + 3);
+    CHECK(!stimulation_command_allowed(d.stimulation_map.channels[1], b[0], b[1], b[2]));
+    ctl.send(kStimulation, w);
+    ++sent;
+  }
+  settle();
+  CHECK(d.stimulation[0] == 200e-6);
+  CHECK(d.stimulation[3] == 100e-6);
+  CHECK(d.stimulation[4] == 0.01);
+  st = loop.stats();
+  CHECK(st.packets.stimulation_refused == sent);
+  CHECK(st.packets.stimulation_applied == 1);
+  // At the limits exactly: applied.
+  std::vector<double> at = v;
+  at[3] = lim.max_charge_C / lim.max_amplitude_A, at[4] = lim.max_amplitude_A, at[5] = lim.max_frequency_Hz;
+  ctl.send(kStimulation, at);
+  settle();
+  CHECK(d.stimulation[4] == lim.max_amplitude_A);
+  CHECK(loop.stats().packets.stimulation_applied == 2);
+  ctl.send(kStimulation, v);
+  settle();
 
   // NaN anywhere: the whole packet is dropped, the command held; the wrong count is refused.
   std::vector<double> nan = v;
@@ -1477,7 +1503,7 @@ TEST_CASE("stimulation packets: clamped and counted, state carries them, the tim
   const StateOffsets o = state_offsets(loop.arm().model.num_dofs, loop.arm().model.num_elements, h.flags, nc);
   CHECK(h.count == o.count);
   CHECK(get_f64(last.data() + kHeaderSize + 8 * o.stimulation) == 200e-6);
-  CHECK(get_f64(last.data() + kHeaderSize + 8 * (o.stimulation + 5)) == lim.max_frequency_Hz);
+  CHECK(get_f64(last.data() + kHeaderSize + 8 * (o.stimulation + 5)) == 20.0);
   const double fatigue0 = get_f64(last.data() + kHeaderSize + 8 * o.fatigue);
   CHECK(fatigue0 > 0.0);
   CHECK(fatigue0 == doctest::Approx(channel_fatigue(d, 0)).epsilon(0.05));

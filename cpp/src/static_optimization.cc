@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -45,6 +46,13 @@ void forget_failed(QP& qp, bool& ready) {
   ready = false;
 }
 
+// A number in an error message: std::to_string's %f wrote 1e300 with 300 digits and 1e-9 as 0.000000.
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
 }  // namespace
 
 StaticOptimizationWorkspace::StaticOptimizationWorkspace() = default;
@@ -54,7 +62,7 @@ StaticOptimizationWorkspace& StaticOptimizationWorkspace::operator=(StaticOptimi
 
 void gh_polygon(double theta_a, double phi_a, double bound, int sides, double* rows) {
   if (!(bound > 0 && std::isfinite(bound)))
-    throw std::invalid_argument("gh_stab_max must be a finite number > 0, got " + std::to_string(bound));
+    throw std::invalid_argument("gh_stab_max must be a finite number > 0, got " + number(bound));
   if (sides < 3 || sides > kMaxGhPolygonSides)
     throw std::invalid_argument("polygon_sides must be in [3, " + std::to_string(kMaxGhPolygonSides) + "], got " +
                                 std::to_string(sides));
@@ -62,10 +70,10 @@ void gh_polygon(double theta_a, double phi_a, double bound, int sides, double* r
   const double widest = std::max(theta_a, phi_a);
   if (widest * r >= kMaxBoundHalfAngle) {
     const double lim = std::pow(kMaxBoundHalfAngle / widest, 2);
-    throw std::invalid_argument("gh_stab_max = " + std::to_string(bound) + " puts the bound's ellipse beyond " +
-                                std::to_string(kMaxBoundHalfAngle) +
+    throw std::invalid_argument("gh_stab_max = " + number(bound) + " puts the bound's ellipse beyond " +
+                                number(kMaxBoundHalfAngle) +
                                 " rad from the glenoid normal (towards the glenoid plane); give gh_stab_max < " +
-                                std::to_string(lim));
+                                number(lim));
   }
   // control.py gh_polygon: vertices on the ellipse, pulled in (angles x0.99) until every edge, checked at 64
   // points, is inside {GHstab <= bound} (conservative beyond the convexity limit).
@@ -216,11 +224,22 @@ bool cholesky_solve(double* H, int n, double* b) {
 // exact. Warm started from the previous solve's z. Returns true with a = a(z) when the moments balance to tol_eq,
 // the GH rows hold to tol_in and nu is complementary; false (after max_iter, or a step that makes no progress)
 // hands the problem to ProxQP, which also decides infeasibility.
+// Weak duality certifies infeasibility early: phi(z) <= f(a) for every feasible a (nu >= 0), and f's largest value
+// over the box is phi_max = sum_i max(0, d_i amax_i^2 / 2 + lin_i amax_i) (f is separable and convex: its maximum
+// on [0, amax_i] is at an end). An ascent past phi_max proves that no feasible a exists (*infeasible then): an
+// infeasible request's dual is unbounded, and the ascent used to run all max_iter iterations before giving up
+// (armrt-rt's loop, which has no ProxQP fallback: 200-340 us a cycle, a new-user trial 2026-12-07).
 // d: the Hessian's diagonal (s.d: 2 w); lin: a linear term of the objective (+ lin' a), or nullptr.
 bool dual_newton(StaticOptimizationSolver& s, int n, int m, int p, const double* amax, const double* d,
-                 const double* lin, double tol_eq, double tol_in, int max_iter, int* iterations) {
+                 const double* lin, double tol_eq, double tol_in, int max_iter, int* iterations,
+                 bool* infeasible = nullptr) {
   const int nr = m + p;
   constexpr int E = kMaxElements;
+  if (infeasible) *infeasible = false;
+  double phi_max = 0;
+  for (int i = 0; i < n; ++i) phi_max += std::max(0.0, 0.5 * d[i] * amax[i] * amax[i] + (lin ? lin[i] * amax[i] : 0.0));
+  // Margin for rounding: a feasible problem whose only solutions are at the box's far corner has phi* = phi_max.
+  const double phi_certificate = phi_max * (1 + 1e-6) + 1e-12;
   auto primal = [&](const double* z, double* a, double* phi) {
     double val = 0;
     for (int r = 0; r < nr; ++r) val += z[r] * s.k[r];
@@ -322,6 +341,10 @@ bool dual_newton(StaticOptimizationSolver& s, int n, int m, int p, const double*
       }
     }
     if (!moved) return false;
+    if (phi > phi_certificate) {
+      if (infeasible) *infeasible = true;
+      return false;
+    }
   }
   return false;
 }
@@ -541,9 +564,9 @@ void static_optimization_rigid(const Model& m, const Data& d, StaticOptimization
   r.qp_iterations = 0;
   r.newton_iterations = 0;
   r.solver = StaticOptimizationSolverUsed::kDualNewton;
-  bool solved = false;
+  bool solved = false, certified = false;  // certified: the Newton method proved the request infeasible
   if (w.options.dual_newton) {
-    solved = dual_newton(s, n, nq, n_in, amax, s.d, nullptr, 1e-9, 1e-9, 50, &r.newton_iterations);
+    solved = dual_newton(s, n, nq, n_in, amax, s.d, nullptr, 1e-9, 1e-9, 50, &r.newton_iterations, &certified);
     if (solved) {
       balance(s.a_);
       solved = r.residual_max < kStaticOptimizationMomentTolerance;
@@ -553,7 +576,8 @@ void static_optimization_rigid(const Model& m, const Data& d, StaticOptimization
   r.feasible = solved;
   r.status = StaticOptimizationStatus::kSolved;
   if (!solved && w.options.dual_newton && !w.options.proxqp_fallback) {
-    r.status = StaticOptimizationStatus::kNotConverged;  // reported as such, the Newton iterate's residuals
+    // Reported as such, the Newton iterate's residuals (its weak-duality certificate tells infeasible apart).
+    r.status = certified ? StaticOptimizationStatus::kInfeasible : StaticOptimizationStatus::kNotConverged;
     balance(s.a_);
   } else if (!solved) {
     r.solver = StaticOptimizationSolverUsed::kProxQP;

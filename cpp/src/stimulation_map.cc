@@ -322,7 +322,20 @@ double recruitment_fraction(const RecruitmentParams& p, double pulse_width_s, do
   return r < 0 ? 0.0 : (r > 1 ? 1.0 : r);
 }
 
+// The charge limit's relative tolerance: a command at exactly the limit, written as pulse width and amplitude, may
+// round above it.
+constexpr double kChargeTolerance = 1e-12;
+
+bool stimulation_command_allowed(const StimChannel& ch, double pw, double amp, double freq) {
+  const ChannelLimits& l = ch.limits;
+  // Written so that NaN fails every comparison.
+  return std::isfinite(pw) && std::isfinite(amp) && std::isfinite(freq) && pw >= 0 && amp >= 0 && freq >= 0 &&
+         pw <= l.max_pulse_width_s && amp <= l.max_amplitude_A && freq <= l.max_frequency_Hz &&
+         pw * amp <= l.max_charge_C * (1 + kChargeTolerance);
+}
+
 std::string stimulation_command_error(const StimChannel& ch, double pw, double amp, double freq) {
+  if (stimulation_command_allowed(ch, pw, amp, freq)) return "";
   const std::string where = std::string("channel '") + ch.name + "': ";
   const std::pair<const char*, double> values[] = {{"pulse width", pw}, {"amplitude", amp}, {"frequency", freq}};
   for (const auto& [what, v] : values) {
@@ -336,27 +349,10 @@ std::string stimulation_command_error(const StimChannel& ch, double pw, double a
     return where + "amplitude " + fmt(amp * 1e3) + " mA exceeds its limit " + fmt(l.max_amplitude_A * 1e3) + " mA";
   if (freq > l.max_frequency_Hz)
     return where + "frequency " + fmt(freq) + " Hz exceeds its limit " + fmt(l.max_frequency_Hz) + " Hz";
-  if (pw * amp > l.max_charge_C * (1 + 1e-12))
+  if (pw * amp > l.max_charge_C * (1 + kChargeTolerance))
     return where + "charge per phase " + fmt(pw * amp * 1e6) + " uC (pulse width x amplitude) exceeds its limit " +
            fmt(l.max_charge_C * 1e6) + " uC";
-  return "";
-}
-
-bool clamp_stimulation_command(const StimChannel& ch, double* pw, double* amp, double* freq) {
-  bool changed = false;
-  auto clamp = [&](double* v, double hi) {
-    double c = std::isfinite(*v) ? std::clamp(*v, 0.0, hi) : 0.0;
-    if (c != *v) changed = true;
-    *v = c;
-  };
-  clamp(pw, ch.limits.max_pulse_width_s);
-  clamp(amp, ch.limits.max_amplitude_A);
-  clamp(freq, ch.limits.max_frequency_Hz);
-  if (*pw * *amp > ch.limits.max_charge_C) {  // the charge cap lowers the amplitude (what a stimulator limits)
-    *amp = ch.limits.max_charge_C / *pw;
-    changed = true;
-  }
-  return changed;
+  return where + "refused";  // not reached: stimulation_command_allowed's rules are the ones above
 }
 
 }  // namespace armrt

@@ -232,6 +232,7 @@ PYBIND11_MODULE(_core, mod) {
   mod.attr("STATIC_OPTIMIZATION_MAX_HAND_FORCE") = kStaticOptimizationMaxHandForce;    // N (static_optimization.h)
   mod.attr("STATIC_OPTIMIZATION_MAX_HAND_MOMENT") = kStaticOptimizationMaxHandMoment;  // N m
   mod.attr("STATIC_OPTIMIZATION_MAX_JOINT_ACCELERATION") = kStaticOptimizationMaxJointAcceleration;  // rad/s^2
+  mod.attr("DEFAULT_MAX_JOINT_SPEED") = kDefaultMaxJointSpeed;  // rad/s: an arm's max_joint_speed, armrt-rt's
   mod.attr("STATIC_OPTIMIZATION_MAX_SQP_ITERATIONS") = kStaticOptimizationMaxSqpIterations;  // the elastic SQP's QPs
   mod.attr("START_RANGE_MARGIN") = kStartRangeMargin;  // rad, model.h: Arm.reset's and armrt-rt --q0's bound
   mod.attr("JOINT_RANGE_MARGIN") = kJointRangeMargin;  // rad, model.h: the physical domain's joint bound

@@ -132,7 +132,7 @@ PYBIND11_MODULE(_rt, m) {
                        std::vector<std::string> channels, double rx_budget_us,
                        std::vector<std::string> max_activation, const std::string& stimulation,
                        std::vector<std::string> strength, const std::string& profile, double settle,
-                       double resume_grace, bool static_optimization, double so_gh_stab_max, double so_kp, double so_kd,
+                       double resume_grace, bool static_optimization, std::optional<double> so_gh_stab_max, double so_kp, double so_kd,
                        double support) {
              RtConfig c;
              c.model = model;
@@ -183,7 +183,7 @@ PYBIND11_MODULE(_rt, m) {
            py::arg("stimulation") = "", py::arg("strength") = std::vector<std::string>{},
            py::arg("profile") = "", py::arg("settle") = 0.0,
            py::arg("resume_grace") = RtConfig{}.resume_grace, py::arg("static_optimization") = false,
-           py::arg("so_gh_stab_max") = 0.0, py::arg("so_kp") = 0.0, py::arg("so_kd") = 0.0, py::arg("support") = 0.0)
+           py::arg("so_gh_stab_max") = py::none(), py::arg("so_kp") = 0.0, py::arg("so_kd") = 0.0, py::arg("support") = 0.0)
       .def("start", [](RtLoop& l) {
         py::gil_scoped_release release;
         l.start();

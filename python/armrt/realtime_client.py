@@ -81,11 +81,14 @@ class GroupMapping:
 
     def values(self, excitation) -> np.ndarray:
         """An array (one value per name) from an array or a {name: value} dict."""
+        from .checks import real_array, real_scalar  # noqa: PLC0415 (as send_target imports them)
         n = len(self.names)
         if isinstance(excitation, Mapping):
             out = np.zeros(n)
             pos = {name: k for k, name in enumerate(self.names)}
             for name, v in excitation.items():
+                # real_scalar: a string "0.3" is refused, as Arm.set_excitation refuses it (float() accepted it).
+                v = real_scalar(v, f"excitation[{name!r}]")
                 if name in pos:
                     out[pos[name]] = v
                 elif self.kind != "elements":
@@ -95,7 +98,7 @@ class GroupMapping:
                 return np.asarray(_core.excitations_from_names(self.model, [(str(k), float(v))
                                                                             for k, v in excitation.items()]))
             return out
-        arr = np.asarray(excitation, dtype=float).ravel()
+        arr = real_array(excitation, "excitation").ravel()
         if arr.size != n:
             raise ValueError(f"mapping {self.kind!r} needs {n} values, got {arr.size}")
         return arr
@@ -332,7 +335,8 @@ class UdpClient:
         (each may be 0), in the model's DOF order; the runner solves the static optimisation for them every cycle
         and applies the activations. Returns the sequence number. ValueError (nothing sent) for what
         StaticOptimizer.solve refuses: NaN, wrong shapes, q beyond the joint ranges by more than the engine's
-        margin (with a hint when it looks like degrees), |qddot| beyond 1e5 rad/s^2; RuntimeError without a session (join(timeout) first)."""
+        margin (with a hint when it looks like degrees), |qdot| beyond max_joint_speed (100 rad/s), |qddot| beyond
+        1e5 rad/s^2; RuntimeError without a session (join(timeout) first)."""
         from .checks import dof_vector, joint_acceleration_within, joint_range, real_scalar  # noqa: PLC0415 (light: numpy only)
         if self._model is None:
             from .model import Model  # noqa: PLC0415 (the model's DOF names and ranges, once)
@@ -347,11 +351,17 @@ class UdpClient:
             return np.asarray(dof_vector(v, what, m.dof_names), dtype=float)
 
         q = joint_range(vec(q, "q"), m.dof_names, m.dof_ranges, warn=False)
+        qd = vec(qdot, "qdot")
         qdd = vec(qddot, "qddot")
-        from . import _core  # noqa: PLC0415 (the extension: the static optimisation's acceleration bound)
+        from . import _core  # noqa: PLC0415 (the extension: the static optimisation's bounds)
+        vmax = _core.DEFAULT_MAX_JOINT_SPEED  # the runner's arm's max_joint_speed
+        if np.any(np.abs(qd) > vmax):
+            j = int(np.argmax(np.abs(qd)))
+            raise ValueError(f"qdot[{m.dof_names[j]}] = {qd[j]:g} rad/s is beyond max_joint_speed {vmax:g} rad/s: the "
+                             f"runner, as StaticOptimizer.solve, refuses it (deg/s given as rad/s?)")
         joint_acceleration_within(qdd, m.dof_names, _core.STATIC_OPTIMIZATION_MAX_JOINT_ACCELERATION,
                                   "the runner, as StaticOptimizer.solve,")
-        values = np.concatenate([q, vec(qdot, "qdot"), qdd])
+        values = np.concatenate([q, qd, qdd])
         self._require_session()
         if seq is None:
             seq = self._next_seq()

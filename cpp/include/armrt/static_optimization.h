@@ -52,8 +52,9 @@ struct StaticOptimizationOptions {
   // diagonal Hessian and few rows), ProxQP where it does not converge; false: ProxQP only.
   bool dual_newton = true;
   // Where the Newton method does not converge: ProxQP decides (and gives the closest solution when infeasible),
-  // or, false, the solve is reported kNotConverged at once with the Newton iterate's residuals: a bounded time
-  // and no allocation, what the 1 kHz loop takes (it applies zero excitation then anyway).
+  // or, false, the solve is reported at once with the Newton iterate's residuals, kInfeasible where the method's
+  // weak-duality certificate proves it (static_optimization.cc dual_newton), kNotConverged otherwise: a bounded
+  // time and no allocation, what the 1 kHz loop takes (it applies zero excitation then anyway).
   bool proxqp_fallback = true;
   int dense_backend = 0;
 };

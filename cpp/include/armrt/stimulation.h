@@ -150,12 +150,11 @@ DingParams default_ding_params();
 // Recruited fraction for one pulse (0 for a zero pulse width or amplitude).
 double recruitment_fraction(const RecruitmentParams& p, double pulse_width_s, double amplitude_A);
 
-// Why a channel command is refused ("" if it is not): non-finite, negative, or beyond the channel's limits.
+// Whether a channel command is accepted: finite, >= 0 and within the channel's limits (pulse width, amplitude,
+// frequency, charge per phase). No allocation: the real-time runner checks each stimulation packet with it.
+bool stimulation_command_allowed(const StimChannel& ch, double pulse_width_s, double amplitude_A, double frequency_Hz);
+// Why a channel command is refused ("" if stimulation_command_allowed): the value and the limit it breaks.
 std::string stimulation_command_error(const StimChannel& ch, double pulse_width_s, double amplitude_A,
                                       double frequency_Hz);
-// Clamps a command to the channel's limits (the real-time runner's rule); returns whether anything changed.
-// A non-finite value becomes 0.
-bool clamp_stimulation_command(const StimChannel& ch, double* pulse_width_s, double* amplitude_A,
-                               double* frequency_Hz);
 
 }  // namespace armrt

@@ -317,7 +317,7 @@ class FESElbowStimTask(FESElbowTask):
         pw_max: max_pulse_width_s, lowered likewise to max_charge_C / amplitude;
       "all": three values per channel, [pulse width, amplitude, frequency] for channel 0, then channel 1,
         ...: each a fraction of the channel's limit, the amplitude then lowered to max_charge_C / pulse
-        width where the charge would exceed it (the engine's clamp_stimulation_command rule).
+        width where the charge would exceed it (the pulse width kept).
     pulse_width (s), amplitude (A), frequency (Hz): a number or one value per channel; ValueError naming
     the channel for one beyond its limits. No action maps beyond a channel's limits, so the engine never
     refuses one. `commands(action)` gives the (n, channels, 3) commands an action holds; the attributes
