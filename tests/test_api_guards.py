@@ -145,6 +145,26 @@ def test_masked_arrays_are_refused(call):
         call(arm)
 
 
+def test_real_array_refuses_bools_where_asked_and_keeps_them_by_default():
+    """booleans=False (the control layer's gains, times, postures, weights): a bool, np.bool_, a bool array and a
+    Python bool inside an object array are TypeErrors naming the input; by default bools stay numbers (0 and 1), as
+    before, for the entry points that did not ask."""
+    from armrt import checks
+    for bad, match in ((True, "x must be a number, got the bool True"),
+                       (np.bool_(False), "x must be a number, got the bool False"),
+                       (np.ones(3, bool), r"x must be numbers, got an array of bools \(shape \(3,\)\)"),
+                       ([True, False], "x must be numbers, got an array of bools"),
+                       (np.array([1.0, True], dtype=object), "x must be numbers, got the bool True among them")):
+        with pytest.raises(TypeError, match=match):
+            checks.real_array(bad, "x", booleans=False)
+    with pytest.raises(TypeError, match="kp must be a number, got the bool True"):
+        checks.real_scalar(True, "kp", booleans=False)
+    with pytest.raises(TypeError, match="q must be numbers"):
+        checks.dof_vector(np.ones(5, bool), "q", list("abcde"), booleans=False)
+    assert checks.real_scalar(True, "x") == 1.0 and checks.real_array([True, False], "x").tolist() == [1.0, 0.0]
+    assert checks.real_scalar(np.float32(0.5), "x", booleans=False) == 0.5
+
+
 def test_an_array_with_nothing_masked_is_accepted():
     arm = armrt.Arm()
     arm.reset(q=np.ma.masked_array(arm.rest_posture, mask=False))

@@ -71,3 +71,19 @@ def test_control_examples_print_their_tables(name, rows, capsys):
              and not ln.startswith("| GHstab limit")]
     assert len(lines) == rows  # the table docs/control.md quotes, one row per case
     assert all("nan" not in ln for ln in lines)
+
+
+def test_the_code_blocks_of_docs_control_md_run():
+    """docs/control.md's python blocks, top to bottom in one namespace as a reader runs them: they used names they
+    never defined (trajectory, q_ref, time; t, q_start, kp, kd, q_target) and the linearisation block overwrote its
+    discrete result before reading lin.A."""
+    import re
+
+    text = (EXAMPLES.parent / "docs" / "control.md").read_text()
+    blocks = re.findall(r"```python\n(.*?)```", text, re.S)
+    assert len(blocks) == 3
+    ns: dict = {}
+    for i, block in enumerate(blocks):
+        exec(compile(block, f"docs/control.md python block {i + 1}", "exec"), ns)  # noqa: S102 (the docs' own code)
+    assert ns["track"].feasible.all() and ns["lin"].A is not None and ns["lin_c"].A is None
+    assert ns["run"].q.shape == (351, 5) and ns["run"].error_deg(["ELx"], ns["plant"])["ELx"][1] < 2.0

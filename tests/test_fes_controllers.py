@@ -68,6 +68,9 @@ def test_pole_placement_puts_the_four_poles_at_minus_one_over_four_lags():
     assert np.abs(roots.imag).max() < 0.05 and p.preview_s == 0.1
     with pytest.raises(ValueError, match="lag_s"):
         fc.PIDParams.pole_placement(0.0)
+    # An infinite lag gave gains inf * 0 = NaN, reported as "kp must be finite and >= 0, got nan".
+    with pytest.raises(ValueError, match="lag_s must be a finite time > 0 s, got inf"):
+        fc.PIDParams.pole_placement(np.inf)
     with pytest.raises(ValueError, match="kp"):
         fc.PIDParams(kp=-1.0, ki=0.0, kd=0.0)
 
@@ -192,6 +195,90 @@ def test_run_offline_checks_duration_and_hold_up_front(setup):
     np.testing.assert_array_equal(run.q[-1], q0)
     free = fc.run_offline(plant, pd, 0.05)
     assert np.abs(free.q[-1] - q0).max() > 1e-6
+
+
+def test_parameters_times_and_durations_refuse_a_bool_as_endpoint_gains_do(setup):
+    """True was taken as 1 (a gain of 1, a GH bound of 1, a 1 s run or hold, t = 1 s) where EndpointGains and
+    StaticOptimizer raise a TypeError: the same check (checks.real_scalar(booleans=False)), naming the argument."""
+    arm, coding, _ = setup
+    for kw, name in (({"kp": True}, "kp"), ({"ki": np.bool_(False)}, "ki"), ({"kd": True}, "kd"),
+                     ({"preview_s": True}, "preview_s"), ({"control_interval_s": True}, "control_interval_s"),
+                     ({"gh_stab_max": True}, "gh_stab_max")):
+        with pytest.raises(TypeError, match=f"{name} must be a number, got the bool"):
+            fc.PIDParams(**({"kp": 1.0, "ki": 0.0, "kd": 0.1} | kw))
+    with pytest.raises(TypeError, match="kp must be a number, got the bool True"):
+        fc.PDParams(True, False)
+    with pytest.raises(TypeError, match="kd must be a number, got the bool False"):
+        fc.PDParams(1.0, False)
+    with pytest.raises(TypeError, match="lag_s must be a number, got the bool True"):
+        fc.PIDParams.pole_placement(True)
+    plant = armrt.Arm("das2", stimulation="per_muscle")
+    q = plant.rest_posture.copy()
+    pd = fc.PDController(plant, coding, q, fc.PDParams(1.0, 0.3))
+    with pytest.raises(TypeError, match="duration must be a number, got the bool True"):
+        fc.run_offline(plant, pd, True)
+    with pytest.raises(TypeError, match="hold_s must be a number, got the bool True"):
+        fc.run_offline(plant, pd, 0.02, hold_s=True)
+    assert plant.time == 0.0
+    with pytest.raises(TypeError, match="t must be a number, got the bool True"):
+        pd.update(True, q, np.zeros(5))
+    t_ref, q_ref = v.movement_reference(arm, {"ELx": 10.0}, 1.0)
+    ff = fc.FeedforwardPID(fc.model_arm(arm), coding, (t_ref, q_ref), fc.PIDParams(1.0, 0.0, 0.1))
+    with pytest.raises(TypeError, match="t must be a number, got the bool True"):
+        ff.update(True, q, np.zeros(5))
+    assert ff.state.last_t is None
+
+
+@pytest.mark.parametrize("bad, exc, match", [
+    (np.inf, ValueError, "gh_stab_max must be None or a finite number > 0, got inf"),
+    (np.nan, ValueError, "gh_stab_max must be None or a finite number > 0, got nan"),
+    (0.0, ValueError, "gh_stab_max must be None or a finite number > 0"),
+    ("0.1", TypeError, "gh_stab_max must be numbers, got the string"),
+])
+def test_pid_params_refuse_a_bad_gh_stab_max_themselves(bad, exc, match):
+    """The static optimiser's rule (control.check_gh_stab_max) where the bound is written: inf used to pass
+    PIDParams and be refused only by FeedforwardPID's optimiser."""
+    with pytest.raises(exc, match=match):
+        fc.PIDParams(1.0, 0.0, 0.1, gh_stab_max=bad)
+
+
+def test_pid_params_gh_stab_max_beyond_the_models_limit_is_refused_by_the_controller(setup):
+    """The upper limit depends on the model's glenoid (das2: 3.51), which PIDParams does not know: FeedforwardPID
+    refuses it when it builds its inverse model, with gh_polygon's message."""
+    arm, coding, _ = setup
+    p = fc.PIDParams(1.0, 0.0, 0.1, gh_stab_max=np.float32(5.0))
+    assert p.gh_stab_max == 5.0 and type(p.gh_stab_max) is float
+    t_ref, q_ref = v.movement_reference(arm, {"ELx": 10.0}, 1.0)
+    with pytest.raises(ValueError, match=r"gh_stab_max = 5 puts the bound's ellipse beyond .*give gh_stab_max < 3.5"):
+        fc.FeedforwardPID(fc.model_arm(arm), coding, (t_ref, q_ref), p)
+
+
+def test_run_offline_hand_load_callable_returns_any_form_of_a_hand_load(setup):
+    """hand_load(t) may return a force (3,), (force, moment), a (6,) [force, moment] or {"force", "moment"}, as
+    every other hand_load (control._hand_load); a force alone failed with "too many values to unpack (expected 2)".
+    A bad return is refused naming hand_load and t."""
+    _, coding, _ = setup
+    f, m = np.array([0.0, -9.81, 0.0]), np.array([0.0, 0.0, 0.2])
+
+    def run(hand_load):
+        plant = armrt.Arm("das2", stimulation="per_muscle")
+        pd = fc.PDController(plant, coding, plant.rest_posture, fc.PDParams(1.0, 0.3))
+        return fc.run_offline(plant, pd, 0.03, hand_load=hand_load).q
+
+    unloaded = run(None)
+    force_only = run(lambda t: list(f))
+    np.testing.assert_array_equal(force_only, run(lambda t: (f, np.zeros(3))))
+    assert np.abs(force_only[-1] - unloaded[-1]).max() > 1e-6     # the load was applied
+    with_moment = run(lambda t: (f, m))
+    for form in (lambda t: np.concatenate([f, m]), lambda t: {"force": f, "moment": m}, lambda t: [f, m]):
+        np.testing.assert_array_equal(run(form), with_moment)
+    for bad, exc, match in ((lambda t: [0.0, -9.81], ValueError, r"hand_load\(0\) returned .*got shape \(2,\)"),
+                            (lambda t: (np.array([np.nan, 0, 0]), np.zeros(3)), ValueError,
+                             r"hand_load\(0\) returned .*hand force contains NaN"),
+                            (lambda t: None, TypeError, r"hand_load\(0\) returned None"),
+                            (lambda t: "10 N", TypeError, r"hand_load\(0\) returned .*string")):
+        with pytest.raises(exc, match=match):
+            run(bad)
 
 
 def test_controllers_refuse_a_non_finite_time_and_a_column_posture(setup):

@@ -139,6 +139,22 @@ def test_bad_input_names_the_problem():
 
 
 @pytest.mark.parametrize("target", ["arm", "model"])
+def test_a_bool_posture_speed_or_acceleration_is_refused_not_taken_as_1_and_0(target):
+    """q=[True, False, ...] was taken as 1 and 0 rad and answered; now a TypeError naming the input, as
+    StaticOptimizer(gh_stab_max=True) and EndpointGains(kp=True) refuse a bool."""
+    arm = armrt.Arm("das2")
+    who = arm if target == "arm" else arm.model
+    with pytest.raises(TypeError, match=r"q must be numbers, got an array of bools \(shape \(5,\)\)"):
+        armrt.inverse_dynamics(who, np.array([True, False, True, False, True]))
+    q = arm.rest_posture
+    with pytest.raises(TypeError, match="qdot must be a number, got the bool False"):
+        armrt.inverse_dynamics(who, q, qdot=False)
+    with pytest.raises(TypeError, match="qddot must be numbers"):
+        armrt.inverse_dynamics(who, q, qddot=np.zeros(5, bool))
+    assert np.all(np.isfinite(armrt.inverse_dynamics(who, q, qdot=0, qddot=0.0)))   # the number 0 still means zero
+
+
+@pytest.mark.parametrize("target", ["arm", "model"])
 def test_inputs_near_the_largest_double_are_refused_where_the_answer_overflows(target):
     """A 1.7e308 N hand force is finite, so the input checks pass it; J^T F overflows to NaN, which was returned as
     the answer (2026-12-07). Now a ValueError naming the overflow; a large but representable answer is returned."""

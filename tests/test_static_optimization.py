@@ -368,9 +368,9 @@ def test_bad_input_names_the_problem():
         armrt.static_optimization(arm, np.array([np.nan, 0, 0, 0, 0]))
     with pytest.raises(ValueError, match=r"qdot must have shape \(5,\)"):
         armrt.static_optimization(arm, q, qdot=np.zeros(4))
-    with pytest.raises(ValueError, match="gh_stab_max must be a finite number > 0"):
+    with pytest.raises(ValueError, match="gh_stab_max must be None or a finite number > 0"):
         armrt.static_optimization(arm, q, gh_stab_max=0.0)
-    with pytest.raises(ValueError, match="gh_stab_max must be a finite number > 0"):
+    with pytest.raises(ValueError, match="gh_stab_max must be None or a finite number > 0"):
         armrt.static_optimization(arm, q, gh_stab_max=-1.0)
     with pytest.raises(ValueError, match="glenoid plane"):
         armrt.static_optimization(arm, q, gh_stab_max=100.0)
@@ -395,6 +395,12 @@ def test_bad_input_names_the_problem():
             armrt.StaticOptimizer(arm, max_iterations=bad)
     with pytest.raises(TypeError, match="gh_stab_max must be a number"):
         armrt.StaticOptimizer(arm, gh_stab_max=True)
+    # A bool mask is not weights: np.ones(n, bool) was taken as weights of 1 and solved.
+    for w in (np.ones(arm.n_elements, bool), [True] * arm.n_elements):
+        with pytest.raises(TypeError, match=r"weights must be numbers, got an array of bools"):
+            armrt.static_optimization(arm, q, weights=w)
+    with pytest.raises(TypeError, match="q must be numbers, got an array of bools"):
+        armrt.static_optimization(arm, np.ones(5, bool))
     with pytest.raises(ValueError, match=r"qdot\[GHy\] = 10000 rad/s is beyond max_joint_speed"):
         armrt.static_optimization(arm, q, qdot=[1e4, 0, 0, 0, 0])
     with pytest.raises(KeyError, match="unknown key"):

@@ -122,6 +122,19 @@ def test_an_arm_that_falls_away_is_tracked_to_the_end_with_its_intervals_infeasi
     assert np.all(np.isfinite(r.excitation)) and r.error_max_deg["ELx"] > 1.0
 
 
+@pytest.mark.parametrize("kw", [{"kp": True}, {"kv": np.bool_(False)}, {"control_interval": True}])
+def test_a_bool_gain_or_interval_is_refused_not_taken_as_1_and_0(kw):
+    """control_interval=True ran with a 1 s interval and kp=True with a gain of 1; now a TypeError naming the
+    argument, before the arm is reset."""
+    arm = armrt.Arm("das2")
+    arm.step(3)
+    before = arm.get_state_vector(armrt.StatePart.FULL)
+    name = next(iter(kw))
+    with pytest.raises(TypeError, match=f"{name} must be a number, got the bool"):
+        armrt.track_motion(arm, np.tile(arm.model.rest_posture, (11, 1)), np.linspace(0, 0.1, 11), **kw)
+    np.testing.assert_array_equal(arm.get_state_vector(armrt.StatePart.FULL), before)
+
+
 @pytest.mark.parametrize("kw, match", [({"kp": np.nan}, "kp and kv must be finite"),
                                        ({"kv": np.inf}, "kp and kv must be finite"),
                                        ({"control_interval": np.nan}, "control_interval must be a finite")])

@@ -31,10 +31,13 @@ def _masked_count(values) -> int:
     return 0
 
 
-def real_array(values, what: str) -> np.ndarray:
+def real_array(values, what: str, booleans: bool = True) -> np.ndarray:
     """`values` as a float array; TypeError for what is not real numbers (complex, strings, None,
     other objects) instead of numpy's silent casts (complex -> real part, None -> NaN); ValueError for
-    a numpy masked array with masked values (np.asarray would use the values hidden under the mask)."""
+    a numpy masked array with masked values (np.asarray would use the values hidden under the mask).
+    booleans=False: TypeError for a bool or an array of bools too (True would be taken as 1), for the inputs
+    that are a quantity (a gain, a time, a posture, a weight) and never a flag; a bool inside a list of
+    other numbers is cast by numpy before it can be seen, and is not caught."""
     if isinstance(values, (str, bytes)):
         raise TypeError(f"{what} must be numbers, got the string {values!r}")
     masked = _masked_count(values)
@@ -52,7 +55,14 @@ def real_array(values, what: str) -> np.ndarray:
                 raise TypeError(f"{what} contains None; give a number for every value")
             if not isinstance(v, numbers.Real) or isinstance(v, (str, bytes)):
                 raise TypeError(f"{what} must be real numbers, got {type(v).__name__} {v!r}")
+            if not booleans and isinstance(v, bool):
+                raise TypeError(f"{what} must be numbers, got the bool {v!r} among them")
         arr = arr.astype(float)
+    if not booleans and arr.dtype.kind == "b":
+        if arr.ndim == 0:
+            raise TypeError(f"{what} must be a number, got the bool {bool(arr)!r}")
+        raise TypeError(f"{what} must be numbers, got an array of bools (shape {arr.shape}): True and False "
+                        f"would be taken as 1 and 0")
     if arr.dtype.kind not in "biuf":
         kind = {"c": "complex", "U": "string", "S": "bytes", "M": "datetime", "m": "timedelta", "V": "structured"}
         raise TypeError(f"{what} must be real numbers, got {kind.get(arr.dtype.kind, str(arr.dtype))} values "
@@ -60,9 +70,9 @@ def real_array(values, what: str) -> np.ndarray:
     return arr.astype(float, copy=False)
 
 
-def real_scalar(value, what: str) -> float:
-    """One real number (see real_array); TypeError for anything else, ValueError for arrays."""
-    arr = real_array(value, what)
+def real_scalar(value, what: str, booleans: bool = True) -> float:
+    """One real number (see real_array, booleans included); TypeError for anything else, ValueError for arrays."""
+    arr = real_array(value, what, booleans)
     if arr.ndim != 0:
         raise ValueError(f"{what} must be a single number, got shape {arr.shape}")
     return float(arr)
@@ -176,10 +186,10 @@ def per_element(model_name: str, element_names, values, what: str, lo: float, hi
     return out
 
 
-def dof_vector(v, what: str, dof_names) -> np.ndarray:
+def dof_vector(v, what: str, dof_names, booleans: bool = True) -> np.ndarray:
     """v as a (ndof,) real array, one value per DOF of dof_names: ValueError for another shape (naming the DOFs)
-    or NaN/infinite values (naming where)."""
-    a = real_array(v, what)
+    or NaN/infinite values (naming where); booleans as real_array's."""
+    a = real_array(v, what, booleans)
     nd = len(dof_names)
     if a.shape != (nd,):
         raise ValueError(f"{what} must have shape ({nd},) ({', '.join(dof_names)}), got {a.shape}")

@@ -64,13 +64,14 @@ def _default_arm(model):
 
 def _dof_vector(model, v, what: str, allow_scalar_zero: bool = False) -> np.ndarray:
     nd = model.n_dofs
+    # booleans=False: a posture, speed or acceleration is never a flag (q=[True, False, ...] was taken as 1 and 0 rad).
     if allow_scalar_zero and np.isscalar(v) and not isinstance(v, (str, bytes)):
-        x = real_scalar(v, what)
+        x = real_scalar(v, what, booleans=False)
         if x != 0:
             raise ValueError(f"{what}: a scalar must be 0 (for every DOF), got {x:g}; give an array of shape ({nd},) "
                              "otherwise")
         return np.zeros(nd)
-    return np.ascontiguousarray(dof_vector(v, what, model.dof_names), dtype=float)
+    return np.ascontiguousarray(dof_vector(v, what, model.dof_names, booleans=False), dtype=float)
 
 
 def _hand_load(hand_load, default) -> tuple[np.ndarray, np.ndarray]:
@@ -156,7 +157,8 @@ def inverse_dynamics(arm_or_model, q, qdot=0.0, qddot=0.0, hand_load=None, parts
     hand load, zero for a Model), a force (3,) N, (force, moment) or a (6,) [force, moment] in the thorax frame.
     parts=True returns a dict: tau_muscle, mass_times_qddot, bias (b), passive, external, girdle (ndof,) and
     gh_force_without_muscles (3,) N, scapula frame. ValueError for NaN, wrong shapes, q far beyond range or a result that
-    overflows (inputs near the largest double)."""
+    overflows (inputs near the largest double); TypeError for q, qdot, qddot that are not numbers, bools included
+    (q=[True, False, ...] would be 1 and 0 rad)."""
     sim, model, default_load = _target(arm_or_model)
     if not isinstance(parts, (bool, np.bool_)):
         raise TypeError(f"parts must be True or False, got {type(parts).__name__} {parts!r}")
@@ -178,6 +180,19 @@ def inverse_dynamics(arm_or_model, q, qdot=0.0, qddot=0.0, hand_load=None, parts
 
 
 # ---------------------------------------------------------------------------------------------- GH polygon
+def check_gh_stab_max(value) -> float | None:
+    """gh_stab_max as a float, or None (no bound): the rule every holder of a GH bound applies where the bound is
+    given (StaticOptimizer, gh_polygon, EndpointGains, fes_control.PIDParams). TypeError for a non-number or a bool
+    (True would be a bound of 1), ValueError unless finite and > 0. The upper limit depends on the model's glenoid
+    (the bound's ellipse within MAX_BOUND_HALF_ANGLE of its normal): gh_polygon checks it, where the model is known."""
+    if value is None:
+        return None
+    v = real_scalar(value, "gh_stab_max", booleans=False)
+    if not (v > 0 and math.isfinite(v)):
+        raise ValueError(f"gh_stab_max must be None or a finite number > 0, got {v}")
+    return v
+
+
 def gh_polygon(theta_a: float, phi_a: float, bound: float, sides: int = POLYGON_SIDES) -> np.ndarray:
     """Rows c (sides, 3) of linear constraints c . (F.normal, F.major, F.minor) <= 0 on a GH force F that
     imply GHstab(F) <= bound (paper eq. 5; F.normal >= 0 is a separate row): the edges of a polygon inscribed in
@@ -193,9 +208,9 @@ def gh_polygon(theta_a: float, phi_a: float, bound: float, sides: int = POLYGON_
     if isinstance(sides, (bool, np.bool_)) or not isinstance(sides, (int, np.integer)) or \
             not 3 <= sides <= MAX_POLYGON_SIDES:
         raise ValueError(f"polygon sides must be an integer in [3, {MAX_POLYGON_SIDES}], got {sides!r}")
-    bound = float(bound)
-    if not (bound > 0 and math.isfinite(bound)):
-        raise ValueError(f"gh_stab_max must be a finite number > 0, got {bound}")
+    if bound is None:
+        raise TypeError("gh_polygon needs a bound: a finite number > 0, got None")
+    bound = check_gh_stab_max(bound)
     r = math.sqrt(bound)
     if max(theta_a, phi_a) * r >= MAX_BOUND_HALF_ANGLE:
         lim = (MAX_BOUND_HALF_ANGLE / max(theta_a, phi_a)) ** 2
@@ -285,8 +300,10 @@ class StaticOptimizer:
     criterion: "squared" (sum w_i a_i^2, Anderson & Pandy 2001) or "cubed" (sum w_i a_i^3, Crowninshield & Brand
     1981). tendon: "elastic" (the engine's element at the CE length where its fibre velocity equals the path's
     dL/dt, solved by sequential QP until the moments balance to MOMENT_TOLERANCE) or "rigid" (linear in a, one QP).
-    gh_stab_max: None or a bound > 0 on GHstab (paper eq. 5) as gh_polygon's linear constraints on the GH force.
-    weights: None (1) or (n,) > 0, largest / smallest at most MAX_WEIGHT_RATIO (1e6; ValueError). Bounds [0, max_activation] come from the arm's settings at each solve.
+    gh_stab_max: None or a bound > 0 on GHstab (paper eq. 5) as gh_polygon's linear constraints on the GH force
+    (check_gh_stab_max, then gh_polygon's model-dependent upper limit).
+    weights: None (1) or (n,) > 0, largest / smallest at most MAX_WEIGHT_RATIO (1e6; ValueError; TypeError for bools,
+    a mask is not weights). Bounds [0, max_activation] come from the arm's settings at each solve.
     backend: "auto" (the default: "cpp" for criterion="squared", either tendon, on an armrt Arm or Model; "python"
     for "cubed", which C++ does not solve, and for the elastic tendon with a max_iterations other than C++'s fixed
     50; bench.static_optimization_cpp: on das2's motion the elastic tendon 0.33 ms median from Python by C++
@@ -319,7 +336,7 @@ class StaticOptimizer:
         if weights is None:
             self.weights = np.ones(n)
         else:
-            w = real_array(weights, "weights")
+            w = real_array(weights, "weights", booleans=False)  # a bool mask is not weights (True = 1)
             if w.shape != (n,):
                 raise ValueError(f"weights must have shape ({n},) (one per element), got {w.shape}")
             if not np.all(np.isfinite(w)) or np.any(w <= 0):
@@ -336,10 +353,8 @@ class StaticOptimizer:
         self._axes = np.array([g["glenoid_normal"], g["glenoid_major_axis"], g["glenoid_minor_axis"]])
         self.gh_stab_max = None
         self._gh_rows = np.zeros((0, 3))
-        if gh_stab_max is not None:
-            if isinstance(gh_stab_max, (bool, np.bool_)):
-                raise TypeError(f"gh_stab_max must be a number > 0 or None, got {gh_stab_max!r}")
-            s = real_scalar(gh_stab_max, "gh_stab_max")
+        s = check_gh_stab_max(gh_stab_max)
+        if s is not None:
             self._gh_rows = np.vstack([gh_polygon(g["rim_half_angle_major"], g["rim_half_angle_minor"], s, polygon_sides),
                                        [-1.0, 0.0, 0.0]])  # F.normal >= 0
             self.gh_stab_max = float(s)

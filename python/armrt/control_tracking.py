@@ -94,7 +94,7 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
     gains, an interval not a whole number of steps, a motion shorter than one interval, an arm with a stimulation
     map), and during the run for an interval whose feedforward plus feedback asks for a joint acceleration beyond
     the static optimisation's bound (1e5 rad/s^2: gains far too high), naming the interval and the gains;
-    TypeError for a Model."""
+    TypeError for a Model, and for kp, kv or control_interval not a number (a bool included)."""
     from scipy.interpolate import CubicSpline  # noqa: PLC0415 (scipy is a dependency; only this needs it)
 
     if not hasattr(arm, "_sim"):
@@ -114,10 +114,11 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
     q_ref = real_array(q_ref, "q_ref")
     time = real_array(time, "time")
     check_motion(model, q_ref, time, "q_ref", 4)
-    kp, kv = real_scalar(kp, "kp"), real_scalar(kv, "kv")
+    # booleans=False: kp=True was a gain of 1 and control_interval=True an interval of 1 s.
+    kp, kv = real_scalar(kp, "kp", booleans=False), real_scalar(kv, "kv", booleans=False)
     if not (np.isfinite(kp) and np.isfinite(kv) and kp >= 0 and kv >= 0):
         raise ValueError(f"kp and kv must be finite and >= 0, got kp={kp:g}, kv={kv:g}")
-    interval = real_scalar(control_interval, "control_interval")
+    interval = real_scalar(control_interval, "control_interval", booleans=False)
     if not (np.isfinite(interval) and interval > 0):
         raise ValueError(f"control_interval must be a finite number of seconds > 0, got {interval:g}")
     steps = int(round(interval / arm.dt))

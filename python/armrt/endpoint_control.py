@@ -26,7 +26,7 @@ import numpy as np
 
 from . import checks
 from .arm import Arm
-from .control import StaticOptimizer, _engine_bounds, check_on_infeasible
+from .control import StaticOptimizer, _engine_bounds, check_gh_stab_max, check_on_infeasible
 from .errors import StaticOptimizationInfeasible
 
 
@@ -49,25 +49,15 @@ class EndpointGains:
 
     def __post_init__(self):
         for name in ("kp", "kd", "k_null"):
-            v = _gain(getattr(self, name), name)
+            # booleans=False: True would be taken as a gain of 1.
+            v = checks.real_scalar(getattr(self, name), name, booleans=False)
             if not math.isfinite(v) or v < 0:
                 raise ValueError(f"{name} must be a finite number >= 0, got {v}")
             setattr(self, name, v)
         self.solve_every = checks.count(self.solve_every, "solve_every", minimum=1)
-        if self.gh_stab_max is not None:
-            # StaticOptimizer's own rule (finite, > 0) here, so a bad bound is refused where it is written and not
-            # only when a controller is built from these gains.
-            v = _gain(self.gh_stab_max, "gh_stab_max")
-            if not (math.isfinite(v) and v > 0):
-                raise ValueError(f"gh_stab_max must be None or a finite number > 0, got {v}")
-            self.gh_stab_max = v
-
-
-def _gain(value, name) -> float:
-    """A real scalar; TypeError for a bool, which checks.real_scalar would take as 0 or 1."""
-    if isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name} must be a number, got the bool {value!r}")
-    return checks.real_scalar(value, name)
+        # StaticOptimizer's own rule (finite, > 0) here, so a bad bound is refused where it is written and not
+        # only when a controller is built from these gains.
+        self.gh_stab_max = check_gh_stab_max(self.gh_stab_max)
 
 
 def _driven_arm(arm, who: str):
@@ -95,9 +85,11 @@ def _vec3(v, what):
 class EndpointController:
     """Drives arm's hand: command_position(x) (3,) m or command_velocity(v) (3,) m/s, then step() once per arm
     step (it steps the arm). State: x_ref, v_ref (3,), the last solve's activations (n,) and its feasibility.
-    tendon: the static optimisation's tendon, "elastic" (the default: the element as simulated, Python SQP around
-    ProxQP) or "rigid" (one QP, solved by the engine's C++ static optimisation; its activations are those of a
-    different muscle model than the one simulated, see docs/tasks.md for what that did on a Fitts block).
+    tendon: the static optimisation's tendon, "elastic" (the default: the element as simulated) or "rigid" (one QP;
+    its activations are those of a different muscle model than the one simulated, see docs/tasks.md for what that
+    did on a Fitts block); either is solved by the engine's C++ static optimisation (StaticOptimizer's
+    backend="auto": the elastic tendon's SQP and the rigid tendon's QP in C++, self._so.backend == "cpp";
+    docs/control.md "The elastic tendon in C++").
     TypeError for an arm that is not an armrt.Arm (a Model) or gains that are not an EndpointGains; ValueError
     for bad commands, gains or tendon, and for an arm with a stimulation map (at construction, and at the next
     solve if a map is installed later: its elements would ignore the excitations); ValueError from step() where a

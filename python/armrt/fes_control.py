@@ -29,7 +29,7 @@ import numpy as np
 
 from .arm import Arm
 from .checks import applied_moments, dof_vector, joint_range, real_array, real_scalar
-from .control import _INF, StaticOptimizer, _state
+from .control import _INF, StaticOptimizer, _hand_load, _state, check_gh_stab_max
 
 #: Implanted-system coding (docs/fes.md): pulse width modulated at a held 20 mA (the intramuscular channels'
 #: saturation and the NNP device maximum) and 20 Hz, the lowest rate at which Ding 2003's force fuses (ripple 1.6 %).
@@ -391,10 +391,10 @@ class ChannelStaticOptimizer(StaticOptimizer):
 
 # ------------------------------------------------------------------------------------------ controllers
 def _check_gains(params, names) -> None:
-    """The named fields of a controller's parameters as finite floats >= 0 (ValueError naming the field), the
-    control interval > 0."""
+    """The named fields of a controller's parameters as finite floats >= 0 (ValueError naming the field; TypeError
+    for a non-number or a bool, which would be taken as 0 or 1, as EndpointGains), the control interval > 0."""
     for k in names:
-        v = real_scalar(getattr(params, k), k)
+        v = real_scalar(getattr(params, k), k, booleans=False)
         if not (v >= 0 and math.isfinite(v)):
             raise ValueError(f"{k} must be finite and >= 0, got {v}")
         setattr(params, k, v)
@@ -411,7 +411,11 @@ class PIDParams:
     pole-placed ki, about the elbow's whole gravitational moment, 3.2 N m on its 0.083 kg m^2 at the two-joint
     movement's end, so the integral can make up for a loss of force up to all of it; a bound of 1 rad s held the
     fatigued elbow 22 deg low for good, docs/control.md), control_interval_s (the update period the
-    controller assumes for its one-step prediction), gh_stab_max (None, or the GHstab bound of the inverse model)."""
+    controller assumes for its one-step prediction), gh_stab_max (None, or the GHstab bound of the inverse model).
+    TypeError for a field that is not a number (a bool included: True would be a gain or a bound of 1), ValueError
+    for a negative or non-finite gain, a control interval <= 0, a gh_stab_max not finite and > 0
+    (control.check_gh_stab_max, StaticOptimizer's rule); the model-dependent upper limit of gh_stab_max is checked
+    when FeedforwardPID builds its inverse model (the parameters are not tied to a model)."""
     kp: float
     ki: float
     kd: float
@@ -427,20 +431,19 @@ class PIDParams:
         chain_time_constant), tau s^4 + s^3 + kd s^2 + kp s + ki = tau (s + w)^4 with w = 1/(4 tau), i.e.
         kd = 6 w^2 tau, kp = 4 w^3 tau, ki = w^4 tau. preview_s defaults to lag_s: the inverse model is evaluated
         lag_s ahead so that the feedforward leads the lag (e^{s tau} ~ 1 + s tau, the lag's first-order inverse)."""
-        tau = real_scalar(lag_s, "lag_s")
-        if not tau > 0:
-            raise ValueError(f"lag_s must be > 0 s, got {tau}")
+        tau = real_scalar(lag_s, "lag_s", booleans=False)
+        # An infinite lag gives w = 0 and gains inf * 0 = NaN, which PIDParams would report as a bad kp.
+        if not (tau > 0 and math.isfinite(tau)):
+            raise ValueError(f"lag_s must be a finite time > 0 s, got {tau}")
         w = 1.0 / (4.0 * tau)
         kw.setdefault("preview_s", tau)
         return cls(kp=4 * w ** 3 * tau, ki=w ** 4 * tau, kd=6 * w ** 2 * tau, **kw)
 
     def __post_init__(self):
         _check_gains(self, ("kp", "ki", "kd", "preview_s", "integral_limit", "control_interval_s"))
-        if self.gh_stab_max is not None:
-            v = real_scalar(self.gh_stab_max, "gh_stab_max")
-            if not v > 0:
-                raise ValueError(f"gh_stab_max must be > 0, got {v}")
-            self.gh_stab_max = v
+        # The static optimiser's rule, applied where the bound is written (an infinite one used to pass here and be
+        # refused only by FeedforwardPID's optimiser); its model-dependent upper limit is checked there.
+        self.gh_stab_max = check_gh_stab_max(self.gh_stab_max)
 
 
 @dataclass
@@ -519,7 +522,8 @@ class FeedforwardPID:
 
 @dataclass
 class PDParams:
-    """Jagodnik & van den Bogert 2010's two-gain PD: kp (stimulation per rad), kd (per rad/s), control_interval_s."""
+    """Jagodnik & van den Bogert 2010's two-gain PD: kp (stimulation per rad), kd (per rad/s), control_interval_s;
+    checked as PIDParams' (TypeError for a non-number or a bool, ValueError for a negative or non-finite value)."""
     kp: float
     kd: float
     control_interval_s: float = CONTROL_INTERVAL_S
@@ -638,7 +642,7 @@ def _schedule_time(t) -> float:
 
 def _finite_time(t, what: str = "t") -> float:
     """t as a finite float s: a NaN time compares false with every schedule time and reference sample."""
-    t = real_scalar(t, what)
+    t = real_scalar(t, what, booleans=False)  # update(True, ...) was taken as t = 1 s
     if not math.isfinite(t):
         raise ValueError(f"{what} must be a finite time in s, got {t}")
     return t
@@ -686,7 +690,8 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
     their start (q and qdot restored after each interval, every other state kept): the arm supported while the
     stimulation builds up from rest, as a trial starts from a supported arm. reference: a callable t -> q_ref (ndof,)
     recorded beside q (default: the controller's own reference, or its target). hand_load: None or a callable
-    t -> (force (3,), moment (3,)) N, N m applied before each interval (a disturbance). joint_moment: None or a
+    t -> a hand load in any of inverse_dynamics' forms (a force (3,) N, (force (3,), moment (3,) N m), a (6,)
+    [force, moment]), thorax frame, applied before each interval (a disturbance). joint_moment: None or a
     callable (t, q (ndof,) rad, qdot (ndof,) rad/s, copies) -> (ndof,) N m added at the joints to the moment the
     plant had applied when called (Arm.set_applied_moment) before each of the plant's steps, so a state-dependent
     moment such as joint friction follows the arm at its step rate, not the controller's; while it is called the
@@ -695,9 +700,11 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
     ValueError for a plant without a map or with other channels than the coding's, a control interval that is not
     a whole number of plant steps, a duration that is not finite or shorter than one control interval (no update
     would be made), a hold_s that is not finite and >= 0; TypeError for a plant that is not an armrt.Arm, a
-    controller without update/coding/params (the two swapped), a non-number duration or hold_s and for a
-    reference, hand_load or joint_moment that is not callable. Returns the ControlRun; a RuntimeWarning if any
-    update's inverse model found no stimulation for what it asked (ControlRun.feasible marks them)."""
+    controller without update/coding/params (the two swapped), a duration or hold_s that is not a number (a bool
+    included: True would be 1 s) and for a reference, hand_load or joint_moment that is not callable; during the
+    run, the hand load's own TypeError or ValueError (a bad shape, NaN) for what hand_load(t) returns, naming
+    hand_load and t. Returns the ControlRun; a RuntimeWarning if any update's inverse model found no stimulation
+    for what it asked (ControlRun.feasible marks them)."""
     if not isinstance(plant, Arm):
         raise TypeError(f"run_offline(plant, controller, duration): plant must be an armrt.Arm with a stimulation "
                         f"map, got {type(plant).__name__}")
@@ -712,7 +719,7 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
     steps = int(round(h / plant.dt))
     if steps < 1 or abs(steps * plant.dt - h) > 1e-9:
         raise ValueError(f"control_interval_s {h} is not a whole number of the plant's steps ({plant.dt} s)")
-    duration = real_scalar(duration, "duration")
+    duration = real_scalar(duration, "duration", booleans=False)  # True was a run of 1 s
     if not (math.isfinite(duration) and duration > 0):
         raise ValueError(f"duration must be finite and > 0 s, got {duration}")
     n = int(math.floor(duration / h + 1e-9))
@@ -720,7 +727,7 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
         raise ValueError(f"duration {duration} s is shorter than one control interval ({h} s): the run would make "
                          "no update")
     # The hold compares the elapsed time with hold_s: a NaN would never hold and a string fail mid-run.
-    hold_s = real_scalar(hold_s, "hold_s")
+    hold_s = real_scalar(hold_s, "hold_s", booleans=False)
     if not (math.isfinite(hold_s) and hold_s >= 0):
         raise ValueError(f"hold_s must be finite and >= 0 s, got {hold_s}")
     for name, f in (("reference", reference), ("hand_load", hand_load), ("joint_moment", joint_moment)):
@@ -761,6 +768,20 @@ def run_offline(plant, controller, duration: float, reference=None, hand_load=No
     return out
 
 
+def _returned_hand_load(hand_load, t: float) -> tuple[np.ndarray, np.ndarray]:
+    """(force (3,) N, moment (3,) N m) from run_offline's hand_load(t): any form a hand load takes elsewhere (a force
+    (3,), (force, moment), a (6,) [force, moment], {"force", "moment"}: control._hand_load, inverse_dynamics'
+    parser), its errors naming hand_load and t. A force alone failed with Python's bare "too many values to unpack"."""
+    value = hand_load(t)
+    if value is None:
+        raise TypeError(f"hand_load({t:g}) returned None; it must return a force (3,) N, (force (3,) N, moment (3,) "
+                        f"N m) or a (6,) [force, moment] (thorax frame)")
+    try:
+        return _hand_load(value, None)
+    except (TypeError, ValueError, KeyError) as exc:
+        raise type(exc)(f"hand_load({t:g}) returned an invalid hand load: {exc}") from None
+
+
 def _control_loop(plant, controller, n, steps, hand_load, joint_moment, base_moment, hold_s, record) -> None:
     """run_offline's loop: n controller updates of `steps` plant steps each."""
     sl = plant.state_vector_slices()
@@ -771,8 +792,7 @@ def _control_loop(plant, controller, n, steps, hand_load, joint_moment, base_mom
         cmd = controller.update(plant.time, plant.q, plant.qdot)
         dt_upd = _time.perf_counter() - t0
         if hand_load is not None:
-            f, m = hand_load(plant.time)
-            plant.set_hand_load(f, m)
+            plant.set_hand_load(*_returned_hand_load(hand_load, plant.time))
         plant.set_stimulation(cmd)
         if joint_moment is None:
             plant.step(steps)
