@@ -11,10 +11,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
+#include "fmt.h"
 #include "static_optimization_solver.h"
 
 namespace armrt {
@@ -46,13 +46,6 @@ void forget_failed(QP& qp, bool& ready) {
   ready = false;
 }
 
-// A number in an error message: std::to_string's %f wrote 1e300 with 300 digits and 1e-9 as 0.000000.
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 }  // namespace
 
 StaticOptimizationWorkspace::StaticOptimizationWorkspace() = default;
@@ -62,7 +55,7 @@ StaticOptimizationWorkspace& StaticOptimizationWorkspace::operator=(StaticOptimi
 
 void gh_polygon(double theta_a, double phi_a, double bound, int sides, double* rows) {
   if (!(bound > 0 && std::isfinite(bound)))
-    throw std::invalid_argument("gh_stab_max must be a finite number > 0, got " + number(bound));
+    throw std::invalid_argument("gh_stab_max must be a finite number > 0, got " + detail::fmt(bound));
   if (sides < 3 || sides > kMaxGhPolygonSides)
     throw std::invalid_argument("polygon_sides must be in [3, " + std::to_string(kMaxGhPolygonSides) + "], got " +
                                 std::to_string(sides));
@@ -70,10 +63,10 @@ void gh_polygon(double theta_a, double phi_a, double bound, int sides, double* r
   const double widest = std::max(theta_a, phi_a);
   if (widest * r >= kMaxBoundHalfAngle) {
     const double lim = std::pow(kMaxBoundHalfAngle / widest, 2);
-    throw std::invalid_argument("gh_stab_max = " + number(bound) + " puts the bound's ellipse beyond " +
-                                number(kMaxBoundHalfAngle) +
+    throw std::invalid_argument("gh_stab_max = " + detail::fmt(bound) + " puts the bound's ellipse beyond " +
+                                detail::fmt(kMaxBoundHalfAngle) +
                                 " rad from the glenoid normal (towards the glenoid plane); give gh_stab_max < " +
-                                number(lim));
+                                detail::fmt(lim));
   }
   // control.py gh_polygon: vertices on the ellipse, pulled in (angles x0.99) until every edge, checked at 64
   // points, is inside {GHstab <= bound} (conservative beyond the convexity limit).

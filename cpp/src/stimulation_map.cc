@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -13,8 +12,11 @@
 
 #include "armrt/names.h"
 #include "armrt/stimulation.h"
+#include "fmt.h"
 
 namespace armrt {
+
+using detail::fmt;
 
 namespace {
 
@@ -43,12 +45,6 @@ const KindDefaults kKinds[] = {
     {"nerve_cuff", {0.2e-3, 2e-3, 100e-6, kChronaxie}, {255e-6, 20e-3, 50.0, 20e-3 * 255e-6}},
 };
 static_assert(sizeof kKinds / sizeof kKinds[0] == static_cast<int>(ElectrodeKind::kCount), "one row per kind");
-
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 [[noreturn]] void fail(const std::string& where, const std::string& what) {
   throw std::invalid_argument("stimulation map: " + where + ": " + what);
@@ -326,33 +322,58 @@ double recruitment_fraction(const RecruitmentParams& p, double pulse_width_s, do
 // round above it.
 constexpr double kChargeTolerance = 1e-12;
 
-bool stimulation_command_allowed(const StimChannel& ch, double pw, double amp, double freq) {
+namespace {
+
+// The rules a channel command keeps, in the order a refusal names them.
+enum class StimRule { kNone, kFinite, kNonNegative, kPulseWidth, kAmplitude, kFrequency, kCharge };
+
+// The first rule (pw, amp, freq) breaks (kNone: none), and for kFinite / kNonNegative which value (0 pulse width,
+// 1 amplitude, 2 frequency). No allocation: the real-time runner checks each stimulation packet with it.
+StimRule broken_rule(const StimChannel& ch, double pw, double amp, double freq, int* which) {
+  const double v[3] = {pw, amp, freq};
+  for (int k = 0; k < 3; ++k) {
+    *which = k;
+    if (!std::isfinite(v[k])) return StimRule::kFinite;
+    if (v[k] < 0) return StimRule::kNonNegative;
+  }
   const ChannelLimits& l = ch.limits;
-  // Written so that NaN fails every comparison.
-  return std::isfinite(pw) && std::isfinite(amp) && std::isfinite(freq) && pw >= 0 && amp >= 0 && freq >= 0 &&
-         pw <= l.max_pulse_width_s && amp <= l.max_amplitude_A && freq <= l.max_frequency_Hz &&
-         pw * amp <= l.max_charge_C * (1 + kChargeTolerance);
+  if (pw > l.max_pulse_width_s) return StimRule::kPulseWidth;
+  if (amp > l.max_amplitude_A) return StimRule::kAmplitude;
+  if (freq > l.max_frequency_Hz) return StimRule::kFrequency;
+  if (pw * amp > l.max_charge_C * (1 + kChargeTolerance)) return StimRule::kCharge;
+  return StimRule::kNone;
+}
+
+}  // namespace
+
+bool stimulation_command_allowed(const StimChannel& ch, double pw, double amp, double freq) {
+  int which = 0;
+  return broken_rule(ch, pw, amp, freq, &which) == StimRule::kNone;
 }
 
 std::string stimulation_command_error(const StimChannel& ch, double pw, double amp, double freq) {
-  if (stimulation_command_allowed(ch, pw, amp, freq)) return "";
+  int which = 0;
+  const StimRule rule = broken_rule(ch, pw, amp, freq, &which);
+  if (rule == StimRule::kNone) return "";
   const std::string where = std::string("channel '") + ch.name + "': ";
-  const std::pair<const char*, double> values[] = {{"pulse width", pw}, {"amplitude", amp}, {"frequency", freq}};
-  for (const auto& [what, v] : values) {
-    if (!std::isfinite(v)) return where + what + " is not finite";
-    if (v < 0) return where + what + " " + fmt(v) + " is negative";
-  }
+  const char* names[3] = {"pulse width", "amplitude", "frequency"};
+  const double values[3] = {pw, amp, freq};
   const ChannelLimits& l = ch.limits;
-  if (pw > l.max_pulse_width_s)
-    return where + "pulse width " + fmt(pw * 1e6) + " us exceeds its limit " + fmt(l.max_pulse_width_s * 1e6) + " us";
-  if (amp > l.max_amplitude_A)
-    return where + "amplitude " + fmt(amp * 1e3) + " mA exceeds its limit " + fmt(l.max_amplitude_A * 1e3) + " mA";
-  if (freq > l.max_frequency_Hz)
-    return where + "frequency " + fmt(freq) + " Hz exceeds its limit " + fmt(l.max_frequency_Hz) + " Hz";
-  if (pw * amp > l.max_charge_C * (1 + kChargeTolerance))
-    return where + "charge per phase " + fmt(pw * amp * 1e6) + " uC (pulse width x amplitude) exceeds its limit " +
-           fmt(l.max_charge_C * 1e6) + " uC";
-  return where + "refused";  // not reached: stimulation_command_allowed's rules are the ones above
+  switch (rule) {
+    case StimRule::kFinite: return where + names[which] + " is not finite";
+    case StimRule::kNonNegative: return where + names[which] + " " + fmt(values[which]) + " is negative";
+    case StimRule::kPulseWidth:
+      return where + "pulse width " + fmt(pw * 1e6) + " us exceeds its limit " + fmt(l.max_pulse_width_s * 1e6) + " us";
+    case StimRule::kAmplitude:
+      return where + "amplitude " + fmt(amp * 1e3) + " mA exceeds its limit " + fmt(l.max_amplitude_A * 1e3) + " mA";
+    case StimRule::kFrequency:
+      return where + "frequency " + fmt(freq) + " Hz exceeds its limit " + fmt(l.max_frequency_Hz) + " Hz";
+    case StimRule::kCharge:
+      return where + "charge per phase " + fmt(pw * amp * 1e6) + " uC (pulse width x amplitude) exceeds its limit " +
+             fmt(l.max_charge_C * 1e6) + " uC";
+    case StimRule::kNone: break;
+  }
+  return "";
 }
 
 }  // namespace armrt
