@@ -295,6 +295,15 @@ def joint_range_rows(q: np.ndarray, dof_names, dof_ranges: np.ndarray, label=Non
     return q
 
 
+def joint_speed_within(qd, dof_names, max_joint_speed: float, who: str) -> None:
+    """ValueError naming the DOF where |qd| (ndof,) rad/s exceeds max_joint_speed (rad/s, the bound a step holds):
+    who refuses it (the static optimisation, inverse dynamics, armrt-rt's client)."""
+    j = int(np.argmax(np.abs(qd)))
+    if abs(qd[j]) > max_joint_speed:
+        raise ValueError(f"qdot[{dof_names[j]}] = {qd[j]:g} rad/s is beyond max_joint_speed {max_joint_speed:g} rad/s: "
+                         f"{who} refuses it (faster means a diverged simulation, or deg/s given as rad/s)")
+
+
 def joint_acceleration_within(qdd, dof_names, limit: float, who: str) -> None:
     """ValueError naming the DOF where |qdd| (ndof,) rad/s^2 exceeds limit (static_optimization.h's bound): who
     refuses it (the static optimisation, armrt-rt's client)."""

@@ -337,7 +337,8 @@ class UdpClient:
         StaticOptimizer.solve refuses: NaN, wrong shapes, q beyond the joint ranges by more than the engine's
         margin (with a hint when it looks like degrees), |qdot| beyond max_joint_speed (100 rad/s), |qddot| beyond
         1e5 rad/s^2; RuntimeError without a session (join(timeout) first)."""
-        from .checks import dof_vector, joint_acceleration_within, joint_range, real_scalar  # noqa: PLC0415 (light: numpy only)
+        from .checks import (dof_vector, joint_acceleration_within, joint_range,  # noqa: PLC0415 (light: numpy only)
+                             joint_speed_within, real_scalar)
         if self._model is None:
             from .model import Model  # noqa: PLC0415 (the model's DOF names and ranges, once)
             self._model = Model(self.model)
@@ -354,11 +355,8 @@ class UdpClient:
         qd = vec(qdot, "qdot")
         qdd = vec(qddot, "qddot")
         from . import _core  # noqa: PLC0415 (the extension: the static optimisation's bounds)
-        vmax = _core.DEFAULT_MAX_JOINT_SPEED  # the runner's arm's max_joint_speed
-        if np.any(np.abs(qd) > vmax):
-            j = int(np.argmax(np.abs(qd)))
-            raise ValueError(f"qdot[{m.dof_names[j]}] = {qd[j]:g} rad/s is beyond max_joint_speed {vmax:g} rad/s: the "
-                             f"runner, as StaticOptimizer.solve, refuses it (deg/s given as rad/s?)")
+        # The runner's arm's max_joint_speed (its default).
+        joint_speed_within(qd, m.dof_names, _core.DEFAULT_MAX_JOINT_SPEED, "the runner, as StaticOptimizer.solve,")
         joint_acceleration_within(qdd, m.dof_names, _core.STATIC_OPTIMIZATION_MAX_JOINT_ACCELERATION,
                                   "the runner, as StaticOptimizer.solve,")
         values = np.concatenate([q, qd, qdd])
