@@ -329,6 +329,9 @@ void RtLoop::run_cycles(std::int64_t n) {
     }
     const bool ok = sim_->step();  // measures its TET (step(), stepper.cc: the one place)
     if (!ok) {
+      // The diverging cycle ran, so its times are statistics too (a divergence in the first cycle reported
+      // no TET at all).
+      rec_.record(static_cast<std::int64_t>(sim_->data.tet.last_ns), now_ns() - woke, latency);
       diverged_ = true;
       reason = "diverged";
       ++cycle;

@@ -200,7 +200,7 @@ bool Session::may_claim(const sockaddr_in& from) const {
   return true;
 }
 
-bool Session::reply_allowed(const sockaddr_in& to) {
+bool Session::reply_allowed(const sockaddr_in& to, bool within_share) {
   // A flood from one source used to take the one offer per cycle every cycle (0 of 10 joins from elsewhere
   // succeeded): each source now has its own share, and the cycle's replies are bounded (no amplification).
   ReplySlot* slot = nullptr;
@@ -209,7 +209,8 @@ bool Session::reply_allowed(const sockaddr_in& to) {
     if (r.last_cycle >= 0 && r.addr == to.sin_addr.s_addr && r.port == to.sin_port) { slot = &r; break; }
     if (r.last_cycle < oldest->last_cycle) oldest = &r;
   }
-  if ((slot && cycle_ - slot->last_cycle < reply_interval_cycles_) || replies_this_cycle_ >= kRepliesPerCycle) {
+  if (within_share &&
+      ((slot && cycle_ - slot->last_cycle < reply_interval_cycles_) || replies_this_cycle_ >= kRepliesPerCycle)) {
     ++pk_.replies_limited;
     return false;
   }
@@ -262,7 +263,7 @@ void Session::end_session(bool released) {
     // The hold, then the old owner's grace (rt_session.h); it is told now, so it does not send into a void.
     hold_end_ = cycle_ + hold_cycles_;
     grace_end_ = hold_end_ + grace_cycles_;
-    if (sock_ >= 0 && reply_allowed(previous_owner_)) send_session_ended(previous_owner_);
+    if (sock_ >= 0 && reply_allowed(previous_owner_, false)) send_session_ended(previous_owner_);
   }
   session_id_ = next_session_id(session_rng_);  // no packet of the ended session is accepted again
 }

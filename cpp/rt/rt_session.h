@@ -21,7 +21,8 @@
 // Replies (offers, session-ended notices) are shared between sources: at most one per source per
 // kReplyInterval s and kRepliesPerCycle per cycle, the sources remembered in a fixed table of
 // kReplySources (least recently answered evicted), so a hello flood from one source cannot take the
-// offers every other source asks for.
+// offers every other source asks for. The notice sent at a timeout is the exception: it always goes (it is
+// counted in the source's share), so the owner hears at once why its arm stopped.
 //
 // Everything that allocates happens in the constructor; receive() and send_state() do not.
 #pragma once
@@ -103,7 +104,9 @@ class Session {
   // May `from` claim the session now (not in the hold; in the grace window only the timed-out owner)?
   bool may_claim(const sockaddr_in& from) const;
   // Is a reply to `to` within its share (per source and per cycle)? Records it if so.
-  bool reply_allowed(const sockaddr_in& to);
+  // within_share = false: the timeout's own notice, sent whatever the source's share (at most one per session
+  // end, so no amplification; an owner that said hello just before its timeout lost it), still counted there.
+  bool reply_allowed(const sockaddr_in& to, bool within_share = true);
   void send_to(const std::uint8_t* b, int len, const sockaddr_in& to);
 
   bool listening_ = false;

@@ -658,6 +658,40 @@ TEST_CASE("owner timeout: zero held for ln(100) deactivation time constants, the
   CHECK(loop.stats().packets.owner_changes == 2);
 }
 
+TEST_CASE("the timeout notice reaches an owner that said hello just before (its reply share does not hold it back)") {
+  RtConfig c = test_config();
+  c.state_rate_hz = 0;
+  RtLoop loop(c);
+  const int port = loop.bound_port();
+  const int n_el = loop.arm().model.num_elements;
+  Controller a(port);
+  a.join(loop);
+  REQUIRE(a.session != 0);
+  a.send(kExcitationElements, std::vector<double>(n_el, 0.5));
+  usleep(2000);
+  loop.run_cycles(1);
+  REQUIRE(loop.stats().packets.applied == 1);
+  // From now on a only says hello, every 0.2 ms (a hello refreshes no timeout): it is answered as often as its
+  // share allows, so at the timeout its last answer is less than the share's 10 ms old. Before, the notice was
+  // then dropped as limited. (One run_cycles call: the timeout runs on the loop's own clock.)
+  std::atomic<bool> stop{false};
+  std::thread hellos([&] {
+    std::uint32_t seq = a.seq;
+    while (!stop.load()) {
+      send_exc(a.s, port, kHello, ++seq, {});
+      usleep(200);
+    }
+  });
+  loop.run_cycles(150);
+  stop = true;
+  hellos.join();
+  REQUIRE(loop.stats().packets.timeouts == 1);
+  CHECK(loop.stats().packets.offers >= 3);  // the hellos were answered within the share up to the timeout
+  usleep(1000);
+  CHECK(has_kind(drain_kinds(a.s), kSessionEnded));
+  CHECK(loop.stats().packets.session_ended == 1);
+}
+
 TEST_CASE("offers are shared between sources: a hello flood from one source does not starve another's join") {
   RtConfig c = test_config();
   c.state_rate_hz = 0;
@@ -1126,6 +1160,9 @@ TEST_CASE("divergence stops the loop cleanly with the message") {
   CHECK(st.stop_reason == "diverged");
   CHECK(st.error.find("diverged") != std::string::npos);
   CHECK(st.cycles < 1000);
+  // Every cycle run, the diverging one included, is in the statistics (a first-cycle divergence showed none).
+  CHECK(st.tet.count == st.cycles);
+  CHECK(st.tet.max > 0);
 }
 
 TEST_CASE("start / stop on a thread, with statistics") {
