@@ -97,6 +97,35 @@ def test_mot_with_armrt_names_and_errors(tmp_path):
         opensim_io.read_motion(p)
 
 
+@pytest.mark.parametrize("in_degrees", [False, True])
+def test_mot_whose_values_contradict_its_inDegrees_header_is_refused(tmp_path, in_degrees):
+    # das2's rest posture written in the unit the header does not say: read as the header says, GH_z is outside
+    # its range (0.5 rad read as degrees is below 14 deg); read in the other unit every angle fits. Before, the
+    # radian file marked inDegrees=yes was read as angles 1/57 of the intended, without a word.
+    rest = np.array([d["rest"] for d in armrt._core.model_info("das2")["dofs"]])
+    values = rest if in_degrees else np.degrees(rest)
+    p = tmp_path / "m.mot"
+    p.write_text(f"m\ninDegrees={'yes' if in_degrees else 'no'}\nendheader\ntime GH_y GH_z GH_yy EL_x PS_y\n"
+                 + "".join(f"{t} " + " ".join(f"{v:.8f}" for v in values) + "\n" for t in (0, 0.5)))
+    said, meant = ("yes", "radians") if in_degrees else ("no", "degrees")
+    with pytest.raises(ValueError, match=f"inDegrees={said}, but the angles look like {meant}"):
+        opensim_io.read_motion(p)
+    # The header corrected, the same values read as the posture.
+    p.write_text(p.read_text().replace(f"inDegrees={said}", f"inDegrees={'no' if in_degrees else 'yes'}"))
+    np.testing.assert_allclose(opensim_io.read_motion(p).q[0], rest, atol=1e-8)
+
+
+@pytest.mark.parametrize("second", ["ELx", "EL_x"])
+def test_mot_with_two_columns_for_one_coordinate_is_refused(tmp_path, second):
+    # OpenSim's and armrt's name of one coordinate (EL_x and ELx), or one name twice: which to take is the
+    # user's call. Before, EL_x was used and the other column dropped silently.
+    p = tmp_path / "m.mot"
+    p.write_text(f"m\ninDegrees=no\nendheader\ntime GH_y GH_z GH_yy EL_x PS_y {second}\n"
+                 "0 0.43 0.5 0.27 0.66 1.42 2.0\n")
+    with pytest.raises(ValueError, match=r"coordinate EL_x has 2 columns \(EL_x, " + ("ELx" if second == "ELx" else "EL_x")):
+        opensim_io.read_motion(p)
+
+
 @needs_model_file
 def test_motion_replays_as_a_kinematic_result(arm, tmp_path):
     res = arm.simulate({"elbow_flexors": 0.3}, 0.1, record_every=10)

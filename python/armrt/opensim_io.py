@@ -258,12 +258,34 @@ class Motion:
                       integrator="", dt=float(np.median(np.diff(self.time))) if T > 1 else 0.0, model=self.model)
 
 
+def _check_angle_unit(path, q: np.ndarray, raw: np.ndarray, in_degrees: bool, dofs) -> None:
+    """ValueError when the inDegrees header contradicts the values: the angles q (frames, ndof) rad leave the model's
+    joint ranges while the file's raw values taken in the other unit fit them everywhere (a radian file marked
+    inDegrees=yes gave angles 1/57 of the intended, read without a word)."""
+    lo = np.array([d["range"][0] for d in dofs])
+    hi = np.array([d["range"][1] for d in dofs])
+    outside = (q < lo) | (q > hi)
+    if not outside.any():
+        return
+    other = raw if in_degrees else np.radians(raw)
+    if np.any((other < lo) | (other > hi)):
+        return
+    r, j = np.argwhere(outside)[0]
+    said, meant = ("yes", "radians") if in_degrees else ("no", "degrees")
+    raise ValueError(f"{path}: the header says inDegrees={said}, but the angles look like {meant}: read so, "
+                     f"{dofs[j]['osim_name']} = {np.degrees(q[r, j]):.3g} deg (row {r}) is outside its range "
+                     f"[{np.degrees(lo[j]):.1f}, {np.degrees(hi[j]):.1f}] deg, while every value read as {meant} is "
+                     f"within the model's ranges. Correct the header's inDegrees line.")
+
+
 def read_motion(path, model: str = "das2") -> Motion:
     """A .mot/.sto of joint angles as a Motion (radians). Columns: the model's DOFs by OpenSim
     coordinate name (GH_y, ..., PS_y; das3 also SC_y ... AC_x) or armrt name (GHy, ...); other columns
     (das2's fixed girdle, SC_*, AC_*) are ignored, with a RuntimeWarning if the girdle differs from the
     model's. `inDegrees=yes`
-    is honoured. Raises ValueError naming missing columns, non-numeric rows or a bad time column."""
+    is honoured. Raises ValueError naming missing columns, a coordinate with two columns (GH_y and GHy),
+    non-numeric rows, a bad time column, or an inDegrees header the values contradict (angles outside the
+    model's ranges that all fit them in the other unit)."""
     from . import _core
     from .arm import known_model
     known_model(model)
@@ -278,6 +300,13 @@ def read_motion(path, model: str = "das2") -> Motion:
         raise ValueError(f"{path}: no 'time' column")
     idx, missing = [], []
     for d in info["dofs"]:
+        # One column per coordinate: a name twice, or OpenSim's and armrt's name both (GH_y and GHy), is
+        # ambiguous; before, one of them was taken silently.
+        both = [name for name in dict.fromkeys((d["osim_name"], d["name"]))
+                for label in labels if label.strip() == name]
+        if len(both) > 1:
+            raise ValueError(f"{path}: coordinate {d['osim_name']} has {len(both)} columns ({', '.join(both)}); "
+                             f"keep one")
         k = col.get(d["osim_name"], col.get(d["name"]))
         (missing if k is None else idx).append(d["osim_name"] if k is None else k)
     if missing:
@@ -292,6 +321,7 @@ def read_motion(path, model: str = "das2") -> Motion:
         raise ValueError(f"{path}: NaN or infinite values")
     if time.size > 1 and np.any(np.diff(time) <= 0):
         raise ValueError(f"{path}: time must be strictly increasing")
+    _check_angle_unit(path, q, data[:, idx], deg, info["dofs"])
     path_desc = find_model_file(model)
     if path_desc is not None:
         girdle = [(g["osim_name"], g["angle"]) for g in model_description(model).get("girdle", {}).get("dofs", [])]
