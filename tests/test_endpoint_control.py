@@ -263,6 +263,31 @@ def test_gains_refuse_a_bad_gh_stab_max_themselves(bad, exc, match):
         EndpointGains(gh_stab_max=bad)
 
 
+def test_start_at_rest_with_the_controllers_gh_bound_starts_the_arm_within_it():
+    """At Q0 the unbounded rest activations give GHstab 0.12: a controller bounded at 0.08 started from them ran
+    above its bound for its first ~150 ms (0.122 at step 0, a new user's trial). With the bound given to
+    start_at_rest the simulated GHstab stays within it from the first step (1e-3 relative: the simulated arm is
+    not the optimiser's static one) and the hand still reaches its target."""
+    from armrt.endpoint_control import start_at_rest
+    arm = armrt.Arm("das2")
+    start_at_rest(arm, Q0)
+    unbounded = arm.gh_stab
+    assert unbounded > 0.1
+    start_at_rest(arm, Q0, gh_stab_max=0.08)
+    assert arm.gh_stab <= 0.08 * (1 + 1e-9)
+    ctl = EndpointController(arm, EndpointGains(gh_stab_max=0.08))
+    target = ctl.hand_position() + np.array([0.0, 0.05, 0.0])
+    ctl.command_position(target)
+    gh = []
+    for _ in range(1000):
+        ctl.step()
+        gh.append(arm.gh_stab)
+    assert max(gh) <= 0.08 * (1 + 1e-3), max(gh)
+    assert np.linalg.norm(ctl.hand_position() - target) < 0.005
+    with pytest.raises(ValueError, match="gh_stab_max must be None or a finite number > 0"):
+        start_at_rest(arm, Q0, gh_stab_max=0)
+
+
 def test_gains_accept_a_good_gh_stab_max_and_refuse_bool_gains():
     g = EndpointGains(gh_stab_max=np.float32(0.5))
     assert g.gh_stab_max == 0.5 and type(g.gh_stab_max) is float

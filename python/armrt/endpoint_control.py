@@ -163,13 +163,17 @@ class EndpointController:
         self.arm.step(1)
 
 
-def start_at_rest(arm, q, on_infeasible: str = "raise") -> np.ndarray:
+def start_at_rest(arm, q, on_infeasible: str = "raise", gh_stab_max=None) -> np.ndarray:
     """Reset arm at q (ndof,) rad (or a dict of DOF names, as Arm.reset), at rest, with the activations that hold
     it there: the static optimisation (elastic tendon, the arm's hand load and settings) at (q, qdot = 0,
     qddot = 0), as armrt.track_motion starts its arm. Without it an arm reset with zero activation falls until
     its muscles activate, which a velocity decoder then has to undo (measured: 57 mm in 1 s with v = 0,
     docs/control.md#endpoint-control). Returns the activations (n,), in [0, max_activation]; the arm's qdot is 0,
     its time 0, its held excitation and hand load are kept (as reset does).
+
+    gh_stab_max: None (no bound) or the bound (> 0) on GHstab the activations keep, as StaticOptimizer takes it;
+    give the controller's own (EndpointGains.gh_stab_max) so the arm starts within it. Without it the rest
+    activations of the trial pose gave GHstab 0.123 against a controller's 0.08, exceeded for the first ~150 ms.
 
     on_infeasible (as StaticOptimizer.solve): "raise" (the default) raises armrt.StaticOptimizationInfeasible (a
     ValueError; the message and .report give the residual moment per DOF, .result the closest solution) when no
@@ -181,6 +185,7 @@ def start_at_rest(arm, q, on_infeasible: str = "raise") -> np.ndarray:
     non-numbers."""
     _driven_arm(arm, "start_at_rest")
     check_on_infeasible(on_infeasible)
+    gh_stab_max = check_gh_stab_max(gh_stab_max)
     # reset's own checks of q first (a dict of DOF names, the range, das3's scapula on the thorax), so a bad q gets
     # reset's error rather than an infeasible solve; their warnings are left to the reset below, which repeats them.
     with warnings.catch_warnings():
@@ -189,7 +194,7 @@ def start_at_rest(arm, q, on_infeasible: str = "raise") -> np.ndarray:
     # Solved before the reset: the solve depends on q, the arm's settings and hand load only, so an infeasible hold
     # is refused with the arm untouched.
     try:
-        r = StaticOptimizer(arm).solve(q, 0.0, 0.0, on_infeasible="raise")
+        r = StaticOptimizer(arm, gh_stab_max=gh_stab_max).solve(q, 0.0, 0.0, on_infeasible="raise")
     except StaticOptimizationInfeasible as exc:
         if on_infeasible == "raise":
             err = StaticOptimizationInfeasible(
