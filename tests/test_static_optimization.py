@@ -242,6 +242,26 @@ def test_gh_polygon_is_conservative(bound):
         assert stab[inside].max() > 0.95 * bound
 
 
+@pytest.mark.parametrize("backend", ["python", "cpp"])
+@pytest.mark.parametrize("tendon", ["rigid", "elastic"])
+def test_small_gh_bounds_stay_feasible_and_cost_a_little_more_each(backend, tendon):
+    """A new user's trial: at this pose GHstab <= 1e-5 solved and 3e-6 (3.5e-6 from Python) was reported infeasible
+    with a closest solution ignoring the GH rows (GHstab 0.44). The polygon rows shrank with sqrt(bound) (|c| 3e-4
+    at 3e-6) below what the solvers' absolute tolerances assume; they are now divided by sqrt(bound). A tighter
+    bound is a smaller cone in the same feasible family: each solves, holds its bound (1e-6 relative), balances
+    the moments, and costs at least as much as the looser one."""
+    arm = armrt.Arm("das2")
+    q = np.radians([30, 60, 10, 60, 80])
+    last = 0.0
+    for bound in [1e-2, 1e-3, 1e-5, 3.5e-6, 3e-6, 1e-6, 1e-7]:
+        r = armrt.static_optimization(arm, q, gh_stab_max=bound, tendon=tendon, backend=backend)
+        assert r.feasible and r.gh_bound_active, bound
+        assert r.gh_stab <= bound * (1 + 1e-6), (bound, r.gh_stab)
+        assert np.abs(r.residual).max() < 1e-6
+        assert r.objective >= last * (1 - 1e-9), (bound, r.objective, last)
+        last = r.objective
+
+
 def test_infeasible_requests_report_the_dofs():
     arm = armrt.Arm("das2")
     q = arm.rest_posture + 0.2

@@ -91,10 +91,11 @@ void gh_polygon(double theta_a, double phi_a, double bound, int sides, double* r
     if (worst <= bound * (1 + 1e-12)) break;  // the vertices' rounding must not shrink it (control.py)
     scale *= 0.99;
   }
-  // Counter-clockwise vertices: the outward normal of edge k is (dv, -du); n . (u, v) <= n . p_k.
+  // Counter-clockwise vertices: the outward normal of edge k is (dv, -du); n . (u, v) <= n . p_k. Divided by
+  // sqrt(bound), so the rows' length does not shrink with the bound (control.py gh_polygon).
   for (int k = 0; k < sides; ++k) {
     const int kn = (k + 1) % sides;
-    const double nu = v[kn] - v[k], nv = -(u[kn] - u[k]);
+    const double nu = (v[kn] - v[k]) / r, nv = -(u[kn] - u[k]) / r;
     rows[3 * k + 0] = -(nu * u[k] + nv * v[k]);
     rows[3 * k + 1] = nu;
     rows[3 * k + 2] = nv;

@@ -194,8 +194,8 @@ def check_gh_stab_max(value) -> float | None:
 
 def gh_polygon(theta_a: float, phi_a: float, bound: float, sides: int = POLYGON_SIDES) -> np.ndarray:
     """Rows c (sides, 3) of linear constraints c . (F.normal, F.major, F.minor) <= 0 on a GH force F that
-    imply GHstab(F) <= bound (paper eq. 5; F.normal >= 0 is a separate row): the edges of a polygon inscribed in
-    {(u, v) = (F.major, F.minor) / F.normal : (atan(u)/theta_a)^2 + (atan(v)/phi_a)^2 <= bound}.
+    imply GHstab(F) <= bound (paper eq. 5; F.normal >= 0 is a separate row), divided by sqrt(bound): the edges
+    of a polygon inscribed in {(u, v) = (F.major, F.minor) / F.normal : (atan(u)/theta_a)^2 + (atan(v)/phi_a)^2 <= bound}.
 
     That set is convex while theta_a sqrt(bound) and phi_a sqrt(bound) stay below CONVEX_HALF_ANGLE, and the
     polygon of its boundary points is then inside it. Beyond that the set is still star-shaped about the
@@ -233,7 +233,11 @@ def gh_polygon(theta_a: float, phi_a: float, bound: float, sides: int = POLYGON_
     # Counter-clockwise vertices: the outward normal of edge k is (dv, -du); n . (u, v) <= n . p_k.
     nu, nv = vn - v, -(un - u)
     d = nu * u + nv * v
-    return np.column_stack([-d, nu, nv])
+    # Divided by sqrt(bound): the edges, so the rows, shrink as sqrt(bound), and the solvers' tolerances are
+    # absolute. Unscaled, |c| fell from 0.06 at a bound of 0.1 to 3e-4 at 3e-6, where ProxQP called a solution at
+    # GHstab 3.5000001e-6 of a 3.5e-6 bound primal infeasible (4e-6 solved). Scaled, |c| is 0.17-0.24 for every
+    # bound from 3e-6 to 0.5 (24 sides), near what the solvers were tuned on at 0.1.
+    return np.column_stack([-d, nu, nv]) / r
 
 
 # ---------------------------------------------------------------------------------------------- static optimisation
