@@ -8,6 +8,28 @@ import pytest
 armrt = pytest.importorskip("armrt", reason="armrt is not built/installed (./run.sh setup)")
 
 
+@pytest.mark.parametrize("model", ["das2", "das3"])
+def test_the_outputs_docstring_names_every_key_with_its_shape(model):
+    """A new user found muscle_torque in outputs() but not in its docstring ("torques"). One text serves Arm.outputs
+    and Data.outputs; it names every key the engine returns (the layout table's rows and the derived ones), and
+    says each array's shape where it gives one."""
+    import re
+    from armrt.data import OUTPUTS_DOC
+    arm = armrt.Arm(model)
+    data = armrt.Data(arm.model)
+    assert armrt.Arm.outputs.__doc__ == armrt.Data.outputs.__doc__ == OUTPUTS_DOC
+    n, ndof = arm.model.n_elements, arm.model.n_dofs
+    words = set(re.findall(r"[a-z_]+", OUTPUTS_DOC))
+    for outputs in (arm.outputs(), data.outputs()):
+        missing = sorted(set(outputs) - words)
+        assert not missing, missing
+        for key, value in outputs.items():
+            said = re.search(re.escape(key) + r" \(([^)]*)\)", OUTPUTS_DOC)
+            if said and re.fullmatch(r"[\w, ]+,?", said.group(1)):
+                shape = tuple(int(eval(dim, {"n": n, "ndof": ndof})) for dim in said.group(1).rstrip(",").split(","))
+                assert np.shape(value) == shape, (key, np.shape(value), shape)
+
+
 def test_names(arm):
     assert arm.dof_names == ["GHy", "GHz", "GHyy", "ELx", "PSy"]
     assert len(arm.element_names) == 102 and len(arm.muscle_names) == 22

@@ -15,7 +15,7 @@ import numpy as np
 
 from . import _core
 from .checks import MAX_COUNT, RANGE_MARGIN, count, deg, dof_vector, joint_range, known_model, named_items, per_element, rad, real_array, real_scalar
-from .data import Data, State, _snapshot_from_state
+from .data import OUTPUTS_DOC, Data, State, _snapshot_from_state
 from .snapshot import StatePart
 from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
 from .errors import simulation_error as _simulation_error
@@ -642,14 +642,11 @@ class Arm:
 
     # ------------------------------------------------------------------ outputs
     def outputs(self) -> dict:
-        """Outputs at the current state: qddot, muscle_force (N), muscle_length (m), moment_arm
-        (n x ndof, m), fibre_velocity, torques, hand_position (thorax frame), gh_force (scapula frame),
-        gh_theta, gh_phi, gh_stab, gh_rim_margin, gh_rim_direction (rad; see gh_rim); and the girdle stage's girdle_torque (ndof,) N m, contact_distance
-        and contact_force (contact points: TS, AI) m and N, conoid_length m, conoid_tension N (only for a
-        model whose scapula moves, such as das3)."""
         with self._exclusive():
             self._sim.evaluate_outputs()  # once per state: computed only if they no longer describe it
             return self._sim.outputs()
+
+    outputs.__doc__ = OUTPUTS_DOC
 
     def _output(self, name: str):
         """One output at the current state (computed once per state, then read)."""

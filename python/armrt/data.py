@@ -26,6 +26,25 @@ from .model import Model
 from .snapshot import StatePart, part_slices, signature
 
 
+
+# The outputs() dict, key by key (Data.outputs and Arm.outputs; tests/test_api.py checks it names every key the
+# engine's layout table gives, cpp/include/armrt/layouts.h ARMRT_OUTPUTS, plus the derived ones).
+OUTPUTS_DOC = """The outputs at the current state, a dict of numpy arrays (computed once per state, then read; n elements,
+        ndof DOFs):
+        output_q (ndof,) rad, the joint angles they describe; muscle_length (n,) m, muscle-tendon lengths;
+        muscle_force (n,) N, tendon forces; fibre_velocity (n,) m/s, lengthening positive; moment_arm (n, ndof) m;
+        muscle_torque (ndof,) N m, the muscles' generalised forces R^T F; passive_torque (ndof,) N m, the passive
+        joint moments; external_torque (ndof,) N m, the generalised forces of the hand force and moment;
+        hand_position (3,) m, thorax frame; qddot (ndof,) rad/s^2; gh_force (3,) N, the humeral head's force on the
+        glenoid, scapula frame; gh_angles (2,) rad = (gh_theta, gh_phi), that force's angles from the glenoid
+        normal along the major (+ superior) and minor axis; gh_stab, (theta/theta_a)^2 + (phi/phi_a)^2 (paper eq.
+        5, > 1 beyond the rim); gh_rim_margin rad, how far the force can still turn to the rim (< 0 beyond);
+        gh_rim_direction rad, atan2(phi, theta) (0 superior, pi/2 anterior); thorax_humerus (3,) rad, plane of
+        elevation, elevation, axial rotation. Only for a model whose scapula moves (das3): girdle_torque (ndof,)
+        N m, the scapulothoracic contact's and conoid's generalised forces; contact_distance (2,) m and
+        contact_force (2,) N of the contact points TS, AI (distance negative inside the thorax); conoid_length m;
+        conoid_tension N."""
+
 @dataclass(frozen=True, eq=False)
 class State:
     """A snapshot of a simulated arm: everything its continuation depends on. Arrays are read-only copies.
@@ -432,12 +451,11 @@ class Data:
 
     # ------------------------------------------------------------------ outputs
     def outputs(self) -> dict:
-        """Outputs at the current state: qddot, muscle_force (N), muscle_length (m), moment_arm (n x ndof,
-        m), fibre_velocity, muscle/passive/external torque, hand_position (thorax frame), gh_force
-        (scapula frame), gh_theta, gh_phi, gh_stab."""
         with self._exclusive():
             self._sim.evaluate_outputs()
             return self._sim.outputs()
+
+    outputs.__doc__ = OUTPUTS_DOC
 
     # ------------------------------------------------------------------ snapshots
     def get_state(self) -> State:
