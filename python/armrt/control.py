@@ -702,8 +702,9 @@ class StaticOptimizer:
         if self.gh_stab_max is not None:
             lines.append(f"  GH bound {'binding' if gh_active else 'not binding'} (GHstab of this solution {stab:.4g}, "
                          f"bound {self.gh_stab_max:g}"
-                         + ("; not even the bound can be met: the GH force of the loads and passive forces "
-                            "alone leaves it" if stab > self.gh_stab_max + 1e-9 else "") + ")")
+                         + ("; this solution leaves the bound too: the closest-solution QP did not hold the GH rows "
+                            "(no activations within their bounds bring the GH force inside it at this linearisation, "
+                            "or the solver stopped short)" if stab > self.gh_stab_max + 1e-9 else "") + ")")
         return "\n".join(lines)
 
     def _result(self, a, lce, F, L, v, R, P, f0, tau_req, amax, it, feasible):
