@@ -76,6 +76,11 @@ def test_bad_input_refused():
         EndpointGains(solve_every=0)
     with pytest.raises(TypeError, match="EndpointGains"):
         EndpointController(arm, gains={"kp": 1})
+    # Positions and velocities are quantities: [True, False, True] was x_ref = (1, 0, 1) m (a new user's trial).
+    with pytest.raises(TypeError, match="hand position command must be numbers, got an array of bools"):
+        ctl.command_position([True, False, True])
+    with pytest.raises(TypeError, match="hand velocity command must be numbers, got an array of bools"):
+        ctl.command_velocity(np.array([False, True, False]))
 
 
 def test_velocity_commands_alone_make_the_reference_follow_the_hand():

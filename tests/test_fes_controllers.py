@@ -281,6 +281,24 @@ def test_run_offline_hand_load_callable_returns_any_form_of_a_hand_load(setup):
             run(bad)
 
 
+def test_controllers_refuse_a_joint_speed_beyond_the_arms_max_joint_speed(setup):
+    """A new user's trial: a sensor glitch of qdot = 1e6 rad/s went through both controllers, and the PD's answer
+    was its largest pulse widths. They refuse it now as static_optimization does (max_joint_speed, 100 rad/s)."""
+    arm, coding, tau = setup
+    q = arm.rest_posture.copy()
+    fast = np.zeros(arm.n_dofs)
+    fast[arm.dof_index("ELx")] = 1e6
+    pd = fc.PDController(arm, coding, q, fc.PDParams(1.0, 0.3))
+    t_ref, q_ref = v.movement_reference(arm, {"ELx": 10.0}, 1.0)
+    ff = fc.FeedforwardPID(fc.model_arm(arm), coding, (t_ref, q_ref), fc.PIDParams.pole_placement(tau))
+    for ctl in (pd, ff):
+        with pytest.raises(ValueError, match=r"qdot\[ELx\] = 1e\+06 rad/s is beyond max_joint_speed 100 rad/s"):
+            ctl.update(0.0, q, fast)
+        fast_ok = np.zeros(arm.n_dofs)
+        fast_ok[arm.dof_index("ELx")] = 99.0   # within the bound: answered
+        assert np.all(np.isfinite(ctl.update(0.0, q, fast_ok)))
+
+
 def test_controllers_refuse_a_non_finite_time_and_a_column_posture(setup):
     arm, coding, tau = setup
     q = arm.rest_posture.copy()

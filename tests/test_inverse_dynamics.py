@@ -152,6 +152,16 @@ def test_a_bool_posture_speed_or_acceleration_is_refused_not_taken_as_1_and_0(ta
     with pytest.raises(TypeError, match="qddot must be numbers"):
         armrt.inverse_dynamics(who, q, qddot=np.zeros(5, bool))
     assert np.all(np.isfinite(armrt.inverse_dynamics(who, q, qdot=0, qddot=0.0)))   # the number 0 still means zero
+    # The hand load in every form too (hand_load=[True, False, False] was a 1 N force; a new user's trial), and
+    # the arm's own set_hand_load.
+    for load in ([True, False, False], np.zeros(6, bool), ([0.0, 0.0, 0.0], [True, False, False]),
+                 {"force": np.ones(3, bool)}):
+        with pytest.raises(TypeError, match="must be numbers, got an array of bools"):
+            armrt.inverse_dynamics(who, q, hand_load=load)
+        with pytest.raises(TypeError, match="must be numbers, got an array of bools"):
+            armrt.static_optimization(who, q, hand_load=load)
+    with pytest.raises(TypeError, match="hand force must be numbers, got an array of bools"):
+        arm.set_hand_load([True, False, False])
 
 
 @pytest.mark.parametrize("target", ["arm", "model"])

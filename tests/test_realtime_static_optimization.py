@@ -165,6 +165,8 @@ def test_options_are_checked():
     # 0 is refused, not taken as no bound (static_optimization refuses it too); None is no bound.
     with pytest.raises(ValueError, match=r"so-gh-stab-max must be a finite number > 0 \(leave it out"):
         rt.RealtimeSession(listen="127.0.0.1:0", static_optimization=True, so_gh_stab_max=0.0)
+    with pytest.raises(ValueError, match=r"so-gh-stab-max 1e-07 is below the smallest bound solved, 1e-06"):
+        rt.RealtimeSession(listen="127.0.0.1:0", static_optimization=True, so_gh_stab_max=1e-7)
     with rt.RealtimeSession(listen="127.0.0.1:0", static_optimization=True, so_gh_stab_max=None,
                             duration=0.01) as s:
         assert s.stop()["static_optimization"]["gh_stab_max"] is None

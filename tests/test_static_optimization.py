@@ -249,17 +249,28 @@ def test_small_gh_bounds_stay_feasible_and_cost_a_little_more_each(backend, tend
     with a closest solution ignoring the GH rows (GHstab 0.44). The polygon rows shrank with sqrt(bound) (|c| 3e-4
     at 3e-6) below what the solvers' absolute tolerances assume; they are now divided by sqrt(bound). A tighter
     bound is a smaller cone in the same feasible family: each solves, holds its bound (1e-6 relative), balances
-    the moments, and costs at least as much as the looser one."""
+    the moments, and costs at least as much as the looser one, down to MIN_GH_STAB_MAX (1e-6). Below it the bound
+    is refused: a second trial found answers marked feasible 5.8e7 times above a 1e-30 bound, and the backends
+    disagreeing there; 1e-7 still solves here (the floor's factor 10)."""
+    from armrt.control import MIN_GH_STAB_MAX
+    assert MIN_GH_STAB_MAX == 1e-6
     arm = armrt.Arm("das2")
     q = np.radians([30, 60, 10, 60, 80])
     last = 0.0
-    for bound in [1e-2, 1e-3, 1e-5, 3.5e-6, 3e-6, 1e-6, 1e-7]:
+    for bound in [1e-2, 1e-3, 1e-5, 3.5e-6, 3e-6, 1e-6]:
         r = armrt.static_optimization(arm, q, gh_stab_max=bound, tendon=tendon, backend=backend)
         assert r.feasible and r.gh_bound_active, bound
         assert r.gh_stab <= bound * (1 + 1e-6), (bound, r.gh_stab)
         assert np.abs(r.residual).max() < 1e-6
         assert r.objective >= last * (1 - 1e-9), (bound, r.objective, last)
         last = r.objective
+    for bound in [9.9e-7, 1e-8, 1e-30, 5e-324]:
+        with pytest.raises(ValueError, match=r"is below the smallest bound solved, 1e-06"):
+            armrt.static_optimization(arm, q, gh_stab_max=bound, tendon=tendon, backend=backend)
+    if backend == "cpp":   # the engine's own rule, as armrt-rt applies it
+        g = arm.model.glenoid
+        with pytest.raises(ValueError, match=r"below the smallest bound solved"):
+            armrt._core.gh_polygon(g["rim_half_angle_major"], g["rim_half_angle_minor"], 1e-7, 24)
 
 
 def test_infeasible_requests_report_the_dofs():

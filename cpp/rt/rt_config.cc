@@ -15,6 +15,7 @@
 
 #include "armrt/arm.h"
 #include "armrt/registry.h"
+#include "armrt/static_optimization.h"
 
 namespace armrt::rt {
 
@@ -99,6 +100,9 @@ Schedule check_config(RtConfig& cfg) {
   if (cfg.so_gh_stab_max && !(std::isfinite(*cfg.so_gh_stab_max) && *cfg.so_gh_stab_max > 0))
     throw std::invalid_argument("--so-gh-stab-max must be a finite number > 0 (leave it out for no GH bound), got " +
                                 fmt(*cfg.so_gh_stab_max));
+  if (cfg.so_gh_stab_max && *cfg.so_gh_stab_max < kMinGhStabMax)
+    throw std::invalid_argument("--so-gh-stab-max " + fmt(*cfg.so_gh_stab_max) +
+                                " is below the smallest bound solved, " + fmt(kMinGhStabMax));
   if (!std::isfinite(cfg.so_kp) || cfg.so_kp < 0 || !std::isfinite(cfg.so_kd) || cfg.so_kd < 0)
     throw std::invalid_argument("--so-kp and --so-kd must be finite numbers >= 0, got " + fmt(cfg.so_kp) + ", " +
                                 fmt(cfg.so_kd));

@@ -56,6 +56,9 @@ StaticOptimizationWorkspace& StaticOptimizationWorkspace::operator=(StaticOptimi
 void gh_polygon(double theta_a, double phi_a, double bound, int sides, double* rows) {
   if (!(bound > 0 && std::isfinite(bound)))
     throw std::invalid_argument("gh_stab_max must be a finite number > 0, got " + detail::fmt(bound));
+  if (bound < kMinGhStabMax)
+    throw std::invalid_argument("gh_stab_max = " + detail::fmt(bound) + " is below the smallest bound solved, " +
+                                detail::fmt(kMinGhStabMax) + " (a cone under 1 mrad about the glenoid normal)");
   if (sides < 3 || sides > kMaxGhPolygonSides)
     throw std::invalid_argument("polygon_sides must be in [3, " + std::to_string(kMaxGhPolygonSides) + "], got " +
                                 std::to_string(sides));

@@ -184,6 +184,9 @@ TEST_CASE("gh_polygon: every force satisfying its rows has GHstab <= the bound, 
   }
   double rows[75];
   CHECK_THROWS_AS(gh_polygon(def.rim_half_angle_major, def.rim_half_angle_minor, 0.0, 24, rows), std::invalid_argument);
+  // Below kMinGhStabMax (1e-6): refused; at it, rows.
+  CHECK_THROWS_AS(gh_polygon(def.rim_half_angle_major, def.rim_half_angle_minor, 9.9e-7, 24, rows), std::invalid_argument);
+  CHECK_NOTHROW(gh_polygon(def.rim_half_angle_major, def.rim_half_angle_minor, kMinGhStabMax, 24, rows));
   CHECK_THROWS_AS(gh_polygon(def.rim_half_angle_major, def.rim_half_angle_minor, 10.0, 24, rows), std::invalid_argument);
 }
 

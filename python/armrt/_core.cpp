@@ -230,6 +230,7 @@ PYBIND11_MODULE(_core, mod) {
           "The snapshot's parts in order, part k being signature bit 1 << k: (name, size rule, unit, stage, "
           "girdle_only, description)");
   mod.attr("STATIC_OPTIMIZATION_MAX_HAND_FORCE") = kStaticOptimizationMaxHandForce;    // N (static_optimization.h)
+  mod.attr("STATIC_OPTIMIZATION_MIN_GH_STAB_MAX") = kMinGhStabMax;                     // 1 (static_optimization.h)
   mod.attr("STATIC_OPTIMIZATION_MAX_HAND_MOMENT") = kStaticOptimizationMaxHandMoment;  // N m
   mod.attr("STATIC_OPTIMIZATION_MAX_JOINT_ACCELERATION") = kStaticOptimizationMaxJointAcceleration;  // rad/s^2
   mod.attr("DEFAULT_MAX_JOINT_SPEED") = kDefaultMaxJointSpeed;  // rad/s: an arm's max_joint_speed, armrt-rt's

@@ -253,10 +253,11 @@ def applied_moments(values, dof_names, what: str = "applied moment", rows: int |
 
 
 def hand_load(force, moment) -> tuple[np.ndarray, np.ndarray]:
-    """(force (3,) N, moment (3,) N m) checked: ValueError for another shape or NaN/infinite values."""
+    """(force (3,) N, moment (3,) N m) checked: ValueError for another shape or NaN/infinite values; TypeError for
+    bools (a load is a quantity: [True, False, False] was a 1 N force)."""
     values = []
     for name, v in (("force", force), ("moment", moment)):
-        a = real_array(v, f"hand {name}")
+        a = real_array(v, f"hand {name}", booleans=False)
         if a.shape != (3,):
             raise ValueError(f"hand {name} must have shape (3,), got {a.shape}")
         if not np.all(np.isfinite(a)):

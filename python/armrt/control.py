@@ -89,7 +89,7 @@ def _hand_load(hand_load, default) -> tuple[np.ndarray, np.ndarray]:
         return _checked_hand_load(hand_load.get("force", np.zeros(3)), hand_load.get("moment", np.zeros(3)))
     if isinstance(hand_load, tuple) and len(hand_load) == 2:
         return _checked_hand_load(*hand_load)
-    a = real_array(hand_load, "hand_load")
+    a = real_array(hand_load, "hand_load", booleans=False)
     if a.shape == (3,):
         return _checked_hand_load(a, np.zeros(3))
     if a.shape == (6,):
@@ -123,6 +123,16 @@ def _engine_bounds():
 
 
 MAX_HAND_FORCE, MAX_HAND_MOMENT, MAX_JOINT_ACCELERATION = _engine_bounds()  # N, N m, rad/s^2 (per DOF)
+
+
+def _engine_min_gh_stab_max() -> float:
+    from . import _core  # noqa: PLC0415 (the extension, not an armrt module: no cycle)
+    return _core.STATIC_OPTIMIZATION_MIN_GH_STAB_MAX
+
+
+# Smaller GH bounds are refused: a cone under 1 mrad about the glenoid normal, below what the solvers resolve
+# (static_optimization.h kMinGhStabMax says why; armrt-rt refuses the same).
+MIN_GH_STAB_MAX = _engine_min_gh_stab_max()
 
 
 def _check_solvable_scale(model, qdd, f_hand, m_hand) -> None:
@@ -182,13 +192,17 @@ def inverse_dynamics(arm_or_model, q, qdot=0.0, qddot=0.0, hand_load=None, parts
 def check_gh_stab_max(value) -> float | None:
     """gh_stab_max as a float, or None (no bound): the rule every holder of a GH bound applies where the bound is
     given (StaticOptimizer, gh_polygon, EndpointGains, fes_control.PIDParams). TypeError for a non-number or a bool
-    (True would be a bound of 1), ValueError unless finite and > 0. The upper limit depends on the model's glenoid
-    (the bound's ellipse within MAX_BOUND_HALF_ANGLE of its normal): gh_polygon checks it, where the model is known."""
+    (True would be a bound of 1), ValueError unless finite and > 0, and for a bound below MIN_GH_STAB_MAX (1e-6). The
+    upper limit depends on the model's glenoid (the bound's ellipse within MAX_BOUND_HALF_ANGLE of its normal):
+    gh_polygon checks it, where the model is known."""
     if value is None:
         return None
     v = real_scalar(value, "gh_stab_max", booleans=False)
     if not (v > 0 and math.isfinite(v)):
         raise ValueError(f"gh_stab_max must be None or a finite number > 0, got {v}")
+    if v < MIN_GH_STAB_MAX:
+        raise ValueError(f"gh_stab_max = {v:g} is below the smallest bound solved, {MIN_GH_STAB_MAX:g} (a cone under "
+                         f"1 mrad about the glenoid normal, where the solvers' tolerances no longer resolve the bound)")
     return v
 
 

@@ -76,7 +76,7 @@ def _driven_arm(arm, who: str):
 
 
 def _vec3(v, what):
-    a = checks.real_array(v, what)
+    a = checks.real_array(v, what, booleans=False)  # a position or velocity, never a flag: True was 1 m
     if a.shape != (3,) or not np.all(np.isfinite(a)):
         raise ValueError(f"{what} must be 3 finite numbers (m or m/s, thorax frame), got {np.asarray(v)!r}")
     return a

@@ -28,7 +28,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .arm import Arm
-from .checks import applied_moments, dof_vector, joint_range, real_array, real_scalar
+from .checks import applied_moments, dof_vector, joint_range, joint_speed_within, real_array, real_scalar
 from .control import _INF, StaticOptimizer, _hand_load, _state, check_gh_stab_max
 
 #: Implanted-system coding (docs/fes.md): pulse width modulated at a held 20 mA (the intramuscular channels'
@@ -604,9 +604,12 @@ class PDController:
 def _state_vectors(model, q, qdot, what: str = "q") -> tuple[np.ndarray, np.ndarray]:
     """(q, qdot) as (ndof,) arrays (checks.dof_vector: no other shape, (ndof, 1) included, as the rest of armrt),
     q within the engine's domain (checks.joint_range without the warning: a simulated state may end slightly
-    beyond a joint's range; degrees given as radians are refused with a hint)."""
+    beyond a joint's range; degrees given as radians are refused with a hint), qdot within the arm's
+    max_joint_speed (as static_optimization: a 1e6 rad/s sensor glitch gave the largest pulse widths)."""
     q = joint_range(dof_vector(q, what, model.dof_names), model.dof_names, model.dof_ranges, warn=False)
-    return q, dof_vector(qdot, "qdot", model.dof_names)
+    qdot = dof_vector(qdot, "qdot", model.dof_names)
+    joint_speed_within(qdot, model.dof_names, model._sim.max_joint_speed, "the controller (the bound its arm's step holds)")
+    return q, qdot
 
 
 def _check_coding(coding, who: str) -> None:

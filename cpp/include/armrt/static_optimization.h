@@ -22,6 +22,11 @@ inline constexpr int kMaxGhPolygonSides = 64;
 // Below |theta| tan|theta| = 1/2 the set {GHstab <= s} is convex (control.py CONVEX_HALF_ANGLE); beyond
 // kMaxBoundHalfAngle (rad) from the normal a bound is refused (MAX_BOUND_HALF_ANGLE).
 inline constexpr double kMaxBoundHalfAngle = 1.45;
+// Smaller bounds are refused (control.py MIN_GH_STAB_MAX, armrt-rt's --so-gh-stab-max): the bound's cone is then
+// theta_a sqrt(s), under 1 mrad about the glenoid normal, and below about 1e-7 the solvers' tolerances no longer
+// resolve it (a new user's trial: answers marked feasible 5.8e7 times above a 1e-30 bound, the two backends
+// disagreeing there). 1e-6 keeps a factor 10 from the smallest bound both backends were tested to hold (1e-7).
+inline constexpr double kMinGhStabMax = 1e-6;
 // Moments balanced to this (N m, |.|_inf) or the solve is infeasible (the Python API's acceptance).
 inline constexpr double kStaticOptimizationMomentTolerance = 1e-6;
 // Inputs beyond these are refused, not solved (control.py's check, armrt-rt's target packets and its computed
@@ -36,7 +41,7 @@ inline constexpr int kStaticOptimizationMaxSqpIterations = 50;
 
 // Rows c (sides x 3, row-major) of the constraints c . (F.normal, F.major, F.minor) <= 0 on a GH force F that
 // imply GHstab(F) <= bound: control.py's gh_polygon, the same polygon to rounding (docs/control.md).
-// Throws std::invalid_argument for a bound <= 0, non-finite, or whose ellipse reaches kMaxBoundHalfAngle.
+// Throws std::invalid_argument for a bound below kMinGhStabMax, non-finite, or whose ellipse reaches kMaxBoundHalfAngle.
 void gh_polygon(double theta_a, double phi_a, double bound, int sides, double* rows);
 
 struct StaticOptimizationOptions {
