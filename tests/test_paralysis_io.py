@@ -113,6 +113,36 @@ def test_mot_whose_values_contradict_its_inDegrees_header_is_refused(tmp_path, i
     # The header corrected, the same values read as the posture.
     p.write_text(p.read_text().replace(f"inDegrees={said}", f"inDegrees={'no' if in_degrees else 'yes'}"))
     np.testing.assert_allclose(opensim_io.read_motion(p).q[0], rest, atol=1e-8)
+    # One sample of the mislabelled file outside its range in the right unit too (GH_z 0.05 rad below its 0.25):
+    # the rule counts, so it still fires (a second trial's: 'every value fits' let the whole file through).
+    low = rest.copy()
+    low[1] = 0.2
+    rows = [rest, low, rest]
+    values = [r if in_degrees else np.degrees(r) for r in rows]
+    p.write_text(f"m\ninDegrees={said}\nendheader\ntime GH_y GH_z GH_yy EL_x PS_y\n"
+                 + "".join(f"{t} " + " ".join(f"{v:.8f}" for v in r) + "\n" for t, r in zip((0, 0.5, 1), values)))
+    with pytest.raises(ValueError, match=f"inDegrees={said}, but the angles look like {meant}"):
+        opensim_io.read_motion(p)
+
+
+def test_mot_slightly_beyond_a_range_is_read_and_a_bad_header_or_second_time_column_refused(tmp_path):
+    """A correct radian file with one sample 0.05 rad below GH_z's range is read (its values are what the file
+    means; the consumers warn or refuse by their own rules); inDegrees must be yes or no ('true' was read as
+    no); two time columns are ambiguous (the last was taken)."""
+    rest = np.array([d["rest"] for d in armrt._core.model_info("das2")["dofs"]])
+    low = rest.copy()
+    low[1] = 0.2
+    p = tmp_path / "m.mot"
+    body = "".join(f"{t} " + " ".join(f"{v:.8f}" for v in r) + "\n" for t, r in zip((0, 0.5, 1), [rest, low, rest]))
+    p.write_text("m\ninDegrees=no\nendheader\ntime GH_y GH_z GH_yy EL_x PS_y\n" + body)
+    np.testing.assert_allclose(opensim_io.read_motion(p).q[1], low, atol=1e-8)
+    p.write_text("m\ninDegrees=true\nendheader\ntime GH_y GH_z GH_yy EL_x PS_y\n" + body)
+    with pytest.raises(ValueError, match="inDegrees must be yes or no, got 'true'"):
+        opensim_io.read_motion(p)
+    p.write_text("m\ninDegrees=no\nendheader\ntime GH_y GH_z GH_yy EL_x PS_y time\n"
+                 + "".join(f"{t} " + " ".join(f"{v:.8f}" for v in rest) + f" {t}\n" for t in (0, 0.5)))
+    with pytest.raises(ValueError, match="2 'time' columns; keep one"):
+        opensim_io.read_motion(p)
 
 
 @pytest.mark.parametrize("second", ["ELx", "EL_x"])

@@ -260,22 +260,26 @@ class Motion:
 
 def _check_angle_unit(path, q: np.ndarray, raw: np.ndarray, in_degrees: bool, dofs) -> None:
     """ValueError when the inDegrees header contradicts the values: the angles q (frames, ndof) rad leave the model's
-    joint ranges while the file's raw values taken in the other unit fit them everywhere (a radian file marked
-    inDegrees=yes gave angles 1/57 of the intended, read without a word)."""
+    joint ranges at more samples than the file's raw values taken in the other unit do (a radian file marked
+    inDegrees=yes gave angles 1/57 of the intended, read without a word). A motion within the ranges is never
+    questioned; one slightly beyond them at a few samples is not either, as the other unit puts most of it far out."""
     lo = np.array([d["range"][0] for d in dofs])
     hi = np.array([d["range"][1] for d in dofs])
     outside = (q < lo) | (q > hi)
     if not outside.any():
         return
     other = raw if in_degrees else np.radians(raw)
-    if np.any((other < lo) | (other > hi)):
+    # Counted, not 'all within': one sample of a radian file 0.05 rad below a range must not let the other 5000
+    # be read at 1/57 (a second trial's).
+    if np.count_nonzero((other < lo) | (other > hi)) >= np.count_nonzero(outside):
         return
     r, j = np.argwhere(outside)[0]
     said, meant = ("yes", "radians") if in_degrees else ("no", "degrees")
     raise ValueError(f"{path}: the header says inDegrees={said}, but the angles look like {meant}: read so, "
                      f"{dofs[j]['osim_name']} = {np.degrees(q[r, j]):.3g} deg (row {r}) is outside its range "
-                     f"[{np.degrees(lo[j]):.1f}, {np.degrees(hi[j]):.1f}] deg, while every value read as {meant} is "
-                     f"within the model's ranges. Correct the header's inDegrees line.")
+                     f"[{np.degrees(lo[j]):.1f}, {np.degrees(hi[j]):.1f}] deg ({np.count_nonzero(outside)} of {q.size} "
+                     f"values outside the model's ranges; read as {meant}, {np.count_nonzero((other < lo) | (other > hi))}). "
+                     f"Correct the header's inDegrees line.")
 
 
 def read_motion(path, model: str = "das2") -> Motion:
@@ -283,9 +287,9 @@ def read_motion(path, model: str = "das2") -> Motion:
     coordinate name (GH_y, ..., PS_y; das3 also SC_y ... AC_x) or armrt name (GHy, ...); other columns
     (das2's fixed girdle, SC_*, AC_*) are ignored, with a RuntimeWarning if the girdle differs from the
     model's. `inDegrees=yes`
-    is honoured. Raises ValueError naming missing columns, a coordinate with two columns (GH_y and GHy),
-    non-numeric rows, a bad time column, or an inDegrees header the values contradict (angles outside the
-    model's ranges that all fit them in the other unit)."""
+    is honoured. Raises ValueError naming missing columns, a coordinate with two columns (GH_y and GHy), two time
+    columns, non-numeric rows, a bad time column, an inDegrees other than yes or no, or an inDegrees header the
+    values contradict (angles outside the model's ranges at more samples than in the other unit)."""
     from . import _core
     from .arm import known_model
     known_model(model)
@@ -294,10 +298,15 @@ def read_motion(path, model: str = "das2") -> Motion:
         header, labels, data = read_storage(path)
     except ValueError as exc:
         raise ValueError(f"{path}: not a readable OpenSim storage file ({exc})") from None
-    deg = header.get("inDegrees", "no").strip().lower() == "yes"
+    flag = header.get("inDegrees", "no").strip().lower()
+    if flag not in ("yes", "no"):  # OpenSim writes yes or no; 'true' was read as no
+        raise ValueError(f"{path}: the header's inDegrees must be yes or no, got {header['inDegrees'].strip()!r}")
+    deg = flag == "yes"
     col = {name.strip(): k for k, name in enumerate(labels)}
     if "time" not in col:
         raise ValueError(f"{path}: no 'time' column")
+    if sum(label.strip() == "time" for label in labels) > 1:
+        raise ValueError(f"{path}: {sum(label.strip() == 'time' for label in labels)} 'time' columns; keep one")
     idx, missing = [], []
     for d in info["dofs"]:
         # One column per coordinate: a name twice, or OpenSim's and armrt's name both (GH_y and GHy), is
