@@ -63,7 +63,7 @@ def test_bad_excitation(arm):
         arm.set_excitation({"bicbb": 0.1})
     with pytest.raises(KeyError, match="unknown element, muscle or group name 'zzz'"):
         arm.set_excitation({"zzz": 0.1})
-    with pytest.raises(TypeError, match="must be numbers, got the string 'lots'"):
+    with pytest.raises(TypeError, match="must be a number, got the string 'lots'"):
         arm.set_excitation({"bicb": "lots"})
     with pytest.warns(RuntimeWarning, match="clipped"):
         arm.set_excitation({"bicb": 1.5, "bicl": -0.2})

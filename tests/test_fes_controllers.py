@@ -179,12 +179,12 @@ def test_run_offline_checks_duration_and_hold_up_front(setup):
             fc.run_offline(plant, pd, duration)
     with pytest.raises(ValueError, match="shorter than one control interval"):
         fc.run_offline(plant, pd, 0.005)     # floor(0.5) = 0 updates: a run that does nothing
-    with pytest.raises(TypeError, match="duration must be numbers"):
+    with pytest.raises(TypeError, match="duration must be a number, got the string"):
         fc.run_offline(plant, pd, "1")
     for hold in (np.nan, -1.0, np.inf):
         with pytest.raises(ValueError, match="hold_s must be finite and >= 0 s"):
             fc.run_offline(plant, pd, 0.02, hold_s=hold)
-    with pytest.raises(TypeError, match="hold_s must be numbers"):
+    with pytest.raises(TypeError, match="hold_s must be a number, got the string"):
         fc.run_offline(plant, pd, 0.02, hold_s="1")
     with pytest.raises(TypeError, match="hand_load must be None or a callable"):
         fc.run_offline(plant, pd, 0.02, hand_load=(np.zeros(3), np.zeros(3)))
@@ -233,7 +233,7 @@ def test_parameters_times_and_durations_refuse_a_bool_as_endpoint_gains_do(setup
     (np.inf, ValueError, "gh_stab_max must be None or a finite number > 0, got inf"),
     (np.nan, ValueError, "gh_stab_max must be None or a finite number > 0, got nan"),
     (0.0, ValueError, "gh_stab_max must be None or a finite number > 0"),
-    ("0.1", TypeError, "gh_stab_max must be numbers, got the string"),
+    ("0.1", TypeError, "gh_stab_max must be a number, got the string"),
 ])
 def test_pid_params_refuse_a_bad_gh_stab_max_themselves(bad, exc, match):
     """The static optimiser's rule (control.check_gh_stab_max) where the bound is written: inf used to pass
@@ -322,6 +322,9 @@ def test_controllers_refuse_a_non_finite_time_and_a_column_posture(setup):
         fc.PDController(arm, coding, q, fc.PDParams(1.0, 0.3), schedule=[(np.nan, target)])
     with pytest.raises(ValueError, match="schedule time must be >= 0 s"):
         fc.PDController(arm, coding, q, fc.PDParams(1.0, 0.3), schedule=[(-0.5, target)])
+    # A bare posture, its time left out, was Python's 'too many values to unpack (expected 2)'.
+    with pytest.raises(ValueError, match=r"a schedule entry must be a pair \(t s, target \(ndof,\) rad\)"):
+        fc.PDController(arm, coding, q, fc.PDParams(1.0, 0.3), schedule=[target])
     t_ref, q_ref = v.movement_reference(arm, {"ELx": 10.0}, 1.0)
     with pytest.raises(ValueError, match=r"q_ref frame 0 \(t = 0 s\).*look like degrees"):
         fc.FeedforwardPID(fc.model_arm(arm), coding, (t_ref, np.degrees(q_ref)), fc.PIDParams.pole_placement(tau))

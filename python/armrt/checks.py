@@ -72,6 +72,8 @@ def real_array(values, what: str, booleans: bool = True) -> np.ndarray:
 
 def real_scalar(value, what: str, booleans: bool = True) -> float:
     """One real number (see real_array, booleans included); TypeError for anything else, ValueError for arrays."""
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{what} must be a number, got the string {value!r}")
     arr = real_array(value, what, booleans)
     if arr.ndim != 0:
         raise ValueError(f"{what} must be a single number, got shape {arr.shape}")

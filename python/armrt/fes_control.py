@@ -567,7 +567,7 @@ class PDController:
         # [(t s, target (ndof,) rad)]: from each time on, its target (a reaching trial's step)
         self.schedule = sorted([(_schedule_time(t),
                                  _state_vectors(model, q, np.zeros(model.n_dofs), "schedule target")[0])
-                                for t, q in schedule], key=lambda x: x[0])
+                                for t, q in map(_schedule_entry, schedule)], key=lambda x: x[0])
 
     def set_target(self, target) -> None:
         """A new target posture (ndof,) rad: G is recomputed from the moment arms there. ValueError for another shape,
@@ -632,6 +632,14 @@ def _reference(reference, model) -> Reference:
                         f"{type(reference).__name__}" + (f" of length {len(reference)}"
                                                          if isinstance(reference, (tuple, list)) else ""))
     return Reference(*reference, model)
+
+
+def _schedule_entry(entry):
+    """One schedule entry as (t, target): ValueError naming the form for anything else (a bare posture, the time
+    left out, gave Python's 'too many values to unpack')."""
+    if isinstance(entry, (str, bytes)) or not hasattr(entry, "__len__") or len(entry) != 2:
+        raise ValueError(f"a schedule entry must be a pair (t s, target (ndof,) rad), got {entry!r}")
+    return entry
 
 
 def _schedule_time(t) -> float:
