@@ -498,6 +498,34 @@ def test_ownership_counters_release_and_no_state_after_timeout():
     assert k["sessions"] == 3 and k["owner_changes"] == 3 and k["releases"] >= 1
 
 
+def test_a_released_client_does_not_get_the_arm_back_without_join():
+    """A new user's trial: after release(), a state packet sent before the runner read the release restored the old
+    session id in the client, send() went out, the runner answered that stale packet with an offer of its new
+    session, the client took it, and its next send() claimed the arm: a controller that had handed the arm over
+    drove it again. Now only join() takes a session id, so send() raises until join()."""
+    from armrt.realtime_packets import EXC_GROUPS, encode_packet
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=1000, input_timeout=2.0) as s, \
+            rt.UdpClient(s.port, mapping="groups") as c:
+        _drive(c, {"elbow_flexors": 0.5}, 5)
+        old = c.session
+        c.release()
+        # The state packets in flight, and an offer: a packet of the released session (what the client would have
+        # sent) makes the runner offer its new id.
+        stale = np.zeros(len(c.mapping.names))
+        c.send_raw(encode_packet(EXC_GROUPS, c.seq + 1, stale, session=old))
+        for _ in range(20):
+            c.latest_state(timeout=0.01)
+            assert c.session == 0
+            with pytest.raises(RuntimeError, match=r"call join\(timeout\) first"):
+                c.send({"elbow_flexors": 0.5})
+        k = s.stats()["packets"]
+        assert k["releases"] == 1 and k["sessions"] == 1 and k["offers"] >= 2   # the offer came, and was not taken
+        c.join()                                                                  # the explicit step still works
+        assert c.session not in (0, old)
+        _drive(c, {"elbow_flexors": 0.2}, 3)
+        assert s.stats()["packets"]["sessions"] == 2
+
+
 def test_one_packet_does_not_bring_the_state_stream_back_for_good():
     """The measured fault: after the safety timeout, one 96-byte packet brought back 100 state packets/s
     indefinitely. Now a packet that claims the session gets state only while its session lasts."""

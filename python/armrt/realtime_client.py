@@ -201,6 +201,7 @@ class UdpClient:
         self.sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 1 << 20)
         self.seq = 0
         self.session = 0
+        self._joining = False      # only join() takes a session id: an offer or a state packet elsewhere is not one
         self.bad_packets = 0       # malformed, unsigned or wrongly signed datagrams
         self.foreign_packets = 0   # datagrams from anyone but the runner
         self.last_state: StatePacket | None = None
@@ -229,7 +230,10 @@ class UdpClient:
         try:
             p = decode_packet(data, self.key)
             if p.type == OFFER:
-                self.session = p.session
+                # Only while join() asks. The runner offers its id to any packet of a wrong session; taken at any
+                # time, that made a client released (or never joined) own the arm again at its next send().
+                if self._joining:
+                    self.session = p.session
             elif p.type == SESSION_ENDED:
                 if self.session != 0 and p.session == self.session:  # a late notice of an older session: ignored
                     v = p.values
@@ -240,8 +244,9 @@ class UdpClient:
             elif p.type == STATE:
                 st = StatePacket.from_packet(p, self.state_table)
                 st.received_at = time.monotonic()
-                if not st.timed_out:
-                    self.session = st.session
+                # The session id is not taken from state packets: one sent before the runner read this client's
+                # release restored the old id, and the runner's offer to the send() that followed claimed the
+                # arm again without join() (a new user's trial). Subscribers get state packets too.
                 self._states.append(st)
             else:
                 self.bad_packets += 1
@@ -251,8 +256,8 @@ class UdpClient:
         return True
 
     def poll(self, timeout: float | None = 0.0) -> bool:
-        """Reads one datagram if one comes within timeout s (offers update .session, state packets are
-        queued for recv_state / take_states); True if one was read."""
+        """Reads one datagram if one comes within timeout s (an offer sets .session only inside join(); state
+        packets are queued for recv_state / take_states); True if one was read."""
         return self._pump(timeout)
 
     def take_states(self) -> list[StatePacket]:
@@ -271,6 +276,13 @@ class UdpClient:
         self.session = 0
         self.session_end = None
         t_end = time.monotonic() + timeout
+        self._joining = True
+        try:
+            return self._join_until(t_end, timeout)
+        finally:
+            self._joining = False
+
+    def _join_until(self, t_end: float, timeout: float) -> int:
         next_hello = 0.0
         while self.session == 0:
             now = time.monotonic()
