@@ -30,6 +30,20 @@ def test_the_outputs_docstring_names_every_key_with_its_shape(model):
                 assert np.shape(value) == shape, (key, np.shape(value), shape)
 
 
+def test_a_radian_pose_just_beyond_its_range_is_not_called_degrees():
+    """GHy = 1.4 rad (0.4 rad beyond its range) got 'These look like degrees' (a new user's trial through
+    UdpClient.send_target): with the 0.35 rad margin, np.radians of almost any radian pose is in range. The hint
+    now also needs a value beyond a full turn, which degrees give and radians of a joint do not."""
+    arm = armrt.Arm("das2")
+    q = arm.rest_posture.copy()
+    q[0] = 1.4
+    with pytest.raises(ValueError, match="q beyond the joint limits") as err:
+        arm.reset(q=q)
+    assert "look like degrees" not in str(err.value)
+    with pytest.raises(ValueError, match="These look like degrees"):
+        arm.reset(q=np.degrees(arm.rest_posture))
+
+
 def test_names(arm):
     assert arm.dof_names == ["GHy", "GHz", "GHyy", "ELx", "PSy"]
     assert len(arm.element_names) == 102 and len(arm.muscle_names) == 22

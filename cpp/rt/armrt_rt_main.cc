@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
   app.add_option("--stimulation", cfg.stimulation, "stimulation map (docs/fes.md): FILE.toml / FILE.json, per_muscle, or default (the model's shipped "
                                                  "map, resolved by the armrt-rt entry point); "
                                                  "packet type 7 then carries pulse width s, amplitude A, frequency Hz "
-                                                 "per channel (beyond a channel's limits: clamped and counted)");
+                                                 "per channel (beyond a channel's limits: the packet refused, counted, the previous command held)");
   app.add_option("--rx-budget", cfg.rx_budget_us, "receive work per cycle, us (default: min(150, period / 4))");
   app.add_option("--json", json_path, "write the statistics as JSON");
   app.add_flag("--quiet", quiet, "print only the summary (and the bound udp port with --listen)");

@@ -13,6 +13,19 @@ namespace armrt {
 
 namespace {
 
+// Every joint within its range (margin rad) once q is read as degrees, and some value beyond a full turn, which no
+// joint angle in rad is: without that, with the margin, almost any radian pose read as degrees lands in range, and
+// GHy = 1.4 rad got the hint (checks.joint_range, the same rule).
+bool looks_like_degrees(const ModelDef& def, const double* q, double margin) {
+  bool in_range = true, beyond_a_turn = false;
+  for (int j = 0; j < def.num_dofs; ++j) {
+    const double r = q[j] * (M_PI / 180.0);
+    in_range &= r >= def.dofs[j].range_min - margin && r <= def.dofs[j].range_max + margin;
+    beyond_a_turn |= std::abs(q[j]) > 2 * M_PI;
+  }
+  return in_range && beyond_a_turn;
+}
+
 bool holds(unsigned signature, SnapshotPart p) { return (signature & snapshot_bit(p)) != 0; }
 
 // One part of a snapshot: which, and where its values lie in the flat vector.
@@ -233,12 +246,8 @@ std::string snapshot_error(const Model& m, const Data& d, unsigned signature, co
     if (c.status != Status::kOk) {
       std::string problem = domain_problem(m, d, x.data(), c);
       if (c.bad_index >= 0 && c.bad_index < qd_offset(m)) {
-        bool degrees = true;  // every joint in range once read as degrees
-        for (int j = 0; j < m.num_dofs; ++j) {
-          const double r = x[q_offset(m) + j] * (M_PI / 180.0);
-          degrees &= r >= def.dofs[j].range_min - kJointRangeMargin && r <= def.dofs[j].range_max + kJointRangeMargin;
-        }
-        if (degrees) problem += " (q is in rad: these values look like degrees)";
+        if (looks_like_degrees(def, x.data() + q_offset(m), kJointRangeMargin))
+          problem += " (q is in rad: these values look like degrees)";
       }
       return problem;
     }
@@ -252,10 +261,9 @@ std::string snapshot_error(const Model& m, const Data& d, unsigned signature, co
 
 std::string start_pose_error(const ModelDef& def, const double* q) {
   std::string desc;
-  bool far = false, degrees = true;
+  bool far = false;
   for (int j = 0; j < def.num_dofs; ++j) {
-    const double lo = def.dofs[j].range_min, hi = def.dofs[j].range_max, r = q[j] * (M_PI / 180.0);
-    degrees &= r >= lo - kStartRangeMargin && r <= hi + kStartRangeMargin;
+    const double lo = def.dofs[j].range_min, hi = def.dofs[j].range_max;
     if (q[j] >= lo && q[j] <= hi) continue;
     far |= !(q[j] >= lo - kStartRangeMargin && q[j] <= hi + kStartRangeMargin);  // NaN too
     char buf[192];
@@ -264,7 +272,8 @@ std::string start_pose_error(const ModelDef& def, const double* q) {
     desc += buf;
   }
   if (!far) return "";
-  return "q beyond the joint limits: " + desc + "." + (degrees ? " These look like degrees: q is in radians." : "");
+  return "q beyond the joint limits: " + desc + "." +
+         (looks_like_degrees(def, q, kStartRangeMargin) ? " These look like degrees: q is in radians." : "");
 }
 
 void set_snapshot(const Model& m, Data& d, Stepper& s, unsigned signature, const double* in) {

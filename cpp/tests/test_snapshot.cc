@@ -133,6 +133,9 @@ TEST_CASE("snapshot check: refuses what a step refuses, naming the value, and wr
   // ELx's range is [-1.5, 2] rad: 2.3 is within kJointRangeMargin (a passive limit is a spring), 2.5 beyond.
   CHECK(error_with(iq, 2.3) == "");
   CHECK(contains(error_with(iq, 2.5), "q[ELx] = 2.5 rad is more than 0.35 rad beyond its range [-1.5, 2] rad"));
+  // A radian value just beyond the margin is not called degrees: read as degrees almost any pose is in range, so
+  // the hint needs a value beyond a full turn (it fired for 2.5 rad before).
+  CHECK(!contains(error_with(iq, 2.5), "degrees"));
   // Both joints in degrees: 17.2 and 11.5 deg read as rad are far out, as rad they are in range.
   {
     std::vector<double> bad = no_memory;

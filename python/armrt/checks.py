@@ -133,9 +133,11 @@ def joint_range(q: np.ndarray, dof_names, dof_ranges: np.ndarray, warn: bool = T
     far = (q < lo - margin) | (q > hi + margin)
     if far.any():
         r = np.radians(q)
+        # Degrees only if some value is beyond a full turn, which no joint angle in radians is: with the margin,
+        # np.radians of almost any radian pose lands in range, and GHy = 1.4 rad got the hint (a new user's trial).
         hint = (" These look like degrees: q is in radians (np.radians(q) or armrt.rad(q); "
                 "armrt simulate --q-deg on the command line)."
-                if np.all((r >= lo - margin) & (r <= hi + margin)) else "")
+                if np.abs(q).max() > 2 * np.pi and np.all((r >= lo - margin) & (r <= hi + margin)) else "")
         raise ValueError(f"q beyond the joint limits: {desc}.{hint}")
     if warn:
         warnings.warn(f"q slightly beyond the joint limits: {desc}", RuntimeWarning, stacklevel=4)

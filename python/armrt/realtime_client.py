@@ -115,7 +115,8 @@ class GroupMapping:
 class StimulationChannels:
     """The runner's stimulation map on the controller's side: its channels in order, and the engine's own check
     of a command against each channel's limits (armrt.Arm.set_stimulation's), so a client refuses what the
-    Python API refuses before it is sent; the runner clamps and counts whatever still arrives beyond them.
+    Python API refuses before it is sent; the runner refuses (and counts, stimulation_refused) whatever still
+    arrives beyond them, holding the previous command.
 
     model: the runner's --model; stimulation: the same map as its --stimulation ("per_muscle", a .json/.toml
     path or a dict). ValueError / FileNotFoundError as Arm(model, stimulation=...)."""

@@ -68,8 +68,9 @@ class RealtimeSession:
     and the excitations streamed with send_excitation, are capped at it), strength ({name: value} or one
     value per element, finite and >= 0: scales the elements' DAS3 fmax as Arm.strength does, 1 = intact),
     stimulation (a map: "per_muscle",
-    "default" (the model's shipped map), a .json/.toml path or a dict, docs/fes.md; stimulation packets then drive its channels, clamped to their
-    limits and counted, zeroed when the session ends; state packets carry the applied stimulation and the
+    "default" (the model's shipped map), a .json/.toml path or a dict, docs/fes.md; stimulation packets then drive its channels, a packet beyond
+    a channel's limits refused whole and counted (stimulation_refused; the previous command held), zeroed when the
+    session ends; state packets carry the applied stimulation and the
     fatigue), static_optimization (True: feedforward by the rigid-tendon static optimisation each cycle, the
     client sending targets with UdpClient.send_target; so_kp (1/s^2) and so_kd (1/s): computed-torque gains, the
     solve then at the arm's state; so_gh_stab_max: GHstab bound in the solve; docs/realtime.md; the solve-time
