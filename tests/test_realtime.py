@@ -498,6 +498,29 @@ def test_ownership_counters_release_and_no_state_after_timeout():
     assert k["sessions"] == 3 and k["owner_changes"] == 3 and k["releases"] >= 1
 
 
+@pytest.mark.parametrize("option, value, exc, match", [
+    ("rate_hz", True, TypeError, "rate_hz must be a number, got the bool True"),
+    ("so_kp", True, TypeError, "so_kp must be a number, got the bool True"),
+    ("input_timeout", True, TypeError, "input_timeout must be a number, got the bool True"),
+    ("duration", np.bool_(True), TypeError, "duration must be a number, got the bool"),
+    ("state_rate_hz", "100", TypeError, "state_rate_hz must be a number, got the string '100'"),
+    ("cpu", True, TypeError, "cpu must be an integer, got bool True"),
+    ("rate_hz", 10.0, ValueError, r"--timeout defaults to 0.1 s, shorter than two periods at --rate 10 Hz: give "
+                                  r"--timeout in \[0.2, 10\] s"),
+])
+def test_session_options_refuse_bools_and_strings_and_name_the_default_timeout(option, value, exc, match):
+    """A new user's trial: RealtimeSession took so_kp=True, input_timeout=True and duration=True as 1, a string gave
+    pybind's dump of the whole signature, and rate_hz=10 failed on '--timeout ... got 0.1', an option never given."""
+    kw = {"static_optimization": True} if option.startswith("so_") else {}
+    with pytest.raises(exc, match=match):
+        rt.RealtimeSession(listen="127.0.0.1:0", **kw, **{option: value})
+    with pytest.raises(ValueError, match=r"--state-rate defaults to 100 Hz, above --rate 10 Hz: give --state-rate in "
+                                         r"\[0, 10\] Hz"):
+        rt.RealtimeSession(listen="127.0.0.1:0", rate_hz=10.0, input_timeout=0.5)
+    with rt.RealtimeSession(listen="127.0.0.1:0", rate_hz=10.0, input_timeout=0.5, state_rate_hz=10.0, duration=0.2) as s:
+        assert s.port > 0
+
+
 def test_a_released_client_does_not_get_the_arm_back_without_join():
     """A new user's trial: after release(), a state packet sent before the runner read the release restored the old
     session id in the client, send() went out, the runner answered that stale packet with an offer of its new

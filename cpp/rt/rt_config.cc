@@ -89,6 +89,11 @@ Schedule check_config(RtConfig& cfg) {
   if (cfg.priority < 1 || cfg.priority > 99) throw std::invalid_argument("--priority must be an integer in 1..99");
   if (cfg.cpu < -1 || cfg.cpu >= CPU_SETSIZE) throw std::invalid_argument("--cpu must be a CPU number >= 0");
   // The safety timeout is bounded: at least two periods (one late packet is not a silence), at most 10 s.
+  if (cfg.input_timeout == RtConfig{}.input_timeout && cfg.input_timeout < 2 * s.period_s)
+    // The default, not the user's number, is what fails at a low rate: say so (a trial's --rate 10 got
+    // "--timeout must be ... got 0.1" for an option it never gave).
+    throw std::invalid_argument("--timeout defaults to " + fmt(cfg.input_timeout) + " s, shorter than two periods at --rate " +
+                                fmt(cfg.rate_hz) + " Hz: give --timeout in [" + fmt(2 * s.period_s) + ", 10] s");
   check_range("--timeout", cfg.input_timeout, 2 * s.period_s, 10.0, "s");
   check_range("--resume-grace", cfg.resume_grace, 0.0, 60.0, "s");
   check_range("--busy-wait", cfg.busy_wait_us, 0.0, 0.5e6 * s.period_s, "us (at most half the period)");
@@ -115,6 +120,9 @@ Schedule check_config(RtConfig& cfg) {
     throw std::invalid_argument("--support must be a finite number of seconds >= 0, got " + fmt(cfg.support_s));
   if (cfg.rx_budget_us == 0) cfg.rx_budget_us = std::min(150.0, 0.25e6 * s.period_s);
   check_range("--rx-budget", cfg.rx_budget_us, 1.0, 0.5e6 * s.period_s, "us (at most half the period)");
+  if (cfg.state_rate_hz == RtConfig{}.state_rate_hz && cfg.state_rate_hz > cfg.rate_hz)
+    throw std::invalid_argument("--state-rate defaults to " + fmt(cfg.state_rate_hz) + " Hz, above --rate " +
+                                fmt(cfg.rate_hz) + " Hz: give --state-rate in [0, " + fmt(cfg.rate_hz) + "] Hz");
   check_range("--state-rate", cfg.state_rate_hz, 0.0, cfg.rate_hz, "Hz (at most --rate)");
   s.max_cycles = cfg.duration > 0 ? static_cast<std::int64_t>(std::llround(cfg.duration * cfg.rate_hz)) : 0;
   if (cfg.state_rate_hz > 0) {

@@ -46,6 +46,28 @@ def _max_activation_items(values, model: str) -> list[str]:
 
 
 # ---------------------------------------------------------------------------------------- session
+
+# The options that are one number (s, Hz, us, 1/s^2, ...): bools refused (rate_hz=True was 1 Hz, so_kp=True a gain of
+# 1, duration=True one second) and strings named, before the binding's conversion (its error for a string was a dump
+# of the whole constructor signature).
+_NUMBER_OPTIONS = ("rate_hz", "integration_step", "dt", "duration", "busy_wait_us", "max_lag", "state_rate_hz",
+                   "input_timeout", "rx_budget_us", "settle", "resume_grace", "so_gh_stab_max", "so_kp", "so_kd",
+                   "support")
+_INTEGER_OPTIONS = ("priority", "cpu")
+
+
+def _check_numbers(config: dict) -> None:
+    for name in _NUMBER_OPTIONS:
+        if name in config and not (name == "so_gh_stab_max" and config[name] is None):
+            config[name] = real_scalar(config[name], name, booleans=False)
+    for name in _INTEGER_OPTIONS:
+        if name in config:
+            v = config[name]
+            if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)):
+                raise TypeError(f"{name} must be an integer, got {type(v).__name__} {v!r}")
+            config[name] = int(v)
+
+
 class RealtimeSession:
     """The real-time loop in-process: a C++ thread steps the model at rate_hz (SCHED_FIFO at
     `priority` when permitted, else normal scheduling with a note in stats()["rt_note"]; with
@@ -78,6 +100,7 @@ class RealtimeSession:
     """
 
     def __init__(self, **config):
+        _check_numbers(config)
         if "dt" in config:
             if "integration_step" in config:
                 raise ValueError("dt (deprecated) and integration_step both given; use integration_step")
