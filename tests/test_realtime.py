@@ -116,6 +116,15 @@ def test_group_mapping():
         g.values([0.1, 0.2])
     e = rt.GroupMapping.from_model("elements")
     assert e.values({"bicb": 0.3}).sum() == pytest.approx(0.3 * len(arm.indices("bicb")))
+    # As Arm.set_excitation refuses them (a new user's trial found them sent): a column, bools.
+    with pytest.raises(ValueError, match=r"needs 9 values, shape \(9,\), got shape \(9, 1\)"):
+        g.values(np.full((9, 1), 0.1))
+    with pytest.raises(TypeError, match=r"excitation\['deltoid'\] must be a number, got the bool True"):
+        g.values({"deltoid": True})
+    with pytest.raises(TypeError, match="excitation must be numbers, got an array of bools"):
+        g.values(np.ones(9, bool))
+    with pytest.raises(TypeError, match=r"must be a number, got the bool True"):
+        arm.set_excitation({"bicb": True})
 
 
 # ---------------------------------------------------------------------------------------- session

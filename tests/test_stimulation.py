@@ -255,6 +255,12 @@ def test_commands_beyond_limits_are_refused():
             a.set_stimulation({"bicl": cmd})
     with pytest.raises(ValueError, match="unknown stimulation channel 'bicx'"):
         a.set_stimulation({"bicx": (1e-4, 0.01, 20.0)})
+    # Strings were converted by float() (a new user's trial, through UdpClient.send_stimulation too); "on" gave
+    # numpy's message.
+    with pytest.raises(TypeError, match=r"stimulation\['bicl'\] must be real numbers, got string values"):
+        a.set_stimulation({"bicl": ("2e-4", "0.015", "30")})
+    with pytest.raises(TypeError, match="stimulation must be numbers, got the string 'on'"):
+        a.set_stimulation("on")
     assert np.array_equal(a.stimulation, before)
     lim = {"channels": [{"name": "x", "elements": ["bicl"], "limits": {"max_charge_C": 2e-6}}]}
     b = armrt.Arm("das2", stimulation=lim)

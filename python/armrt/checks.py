@@ -151,7 +151,7 @@ def named_items(model_name: str, values: Mapping, what: str) -> list[tuple[str, 
     unknown = [name for name in values if not (isinstance(name, str) and _core.is_name(model_name, name))]
     if unknown:
         raise KeyError(_core.unknown_names_message(model_name, [str(name) for name in unknown]))
-    return [(name, real_scalar(v, f"{what}[{name!r}]")) for name, v in values.items()]
+    return [(name, real_scalar(v, f"{what}[{name!r}]", booleans=False)) for name, v in values.items()]
 
 
 def per_element(model_name: str, element_names, values, what: str, lo: float, hi: float | None, clip: bool,
@@ -168,7 +168,7 @@ def per_element(model_name: str, element_names, values, what: str, lo: float, hi
         base = np.zeros(n) if current is None else np.asarray(current, dtype=float)
         out = np.asarray(_core.values_from_names(model_name, items, base))
     else:
-        arr = real_array(values, what)
+        arr = real_array(values, what, booleans=False)  # a quantity per element: True was 1
         if arr.ndim == 0:
             arr = np.full(n, float(arr))
         if arr.shape != (n,):

@@ -88,7 +88,7 @@ class GroupMapping:
             pos = {name: k for k, name in enumerate(self.names)}
             for name, v in excitation.items():
                 # real_scalar: a string "0.3" is refused, as Arm.set_excitation refuses it (float() accepted it).
-                v = real_scalar(v, f"excitation[{name!r}]")
+                v = real_scalar(v, f"excitation[{name!r}]", booleans=False)
                 if name in pos:
                     out[pos[name]] = v
                 elif self.kind != "elements":
@@ -98,9 +98,9 @@ class GroupMapping:
                 return np.asarray(_core.excitations_from_names(self.model, [(str(k), float(v))
                                                                             for k, v in excitation.items()]))
             return out
-        arr = real_array(excitation, "excitation").ravel()
-        if arr.size != n:
-            raise ValueError(f"mapping {self.kind!r} needs {n} values, got {arr.size}")
+        arr = real_array(excitation, "excitation", booleans=False)
+        if arr.shape != (n,):  # (n, 1) too, as Arm.set_excitation: a column is not silently flattened
+            raise ValueError(f"mapping {self.kind!r} needs {n} values, shape ({n},), got shape {arr.shape}")
         return arr
 
     def to_elements(self, values) -> np.ndarray:

@@ -23,6 +23,7 @@ import numpy as np
 
 from . import _core
 from .model_files import find_model_file
+from .checks import real_array
 
 #: Columns of Arm.stimulation_state (the chain's memory per channel, stimulation.h StimState).
 STATE_COLUMNS = dict(_core.STIM_STATE_COLUMNS)
@@ -87,12 +88,12 @@ def commands(sim, values, current: np.ndarray) -> np.ndarray:
                 near = difflib.get_close_matches(str(name), names, n=3)
                 hint = f" (did you mean {', '.join(map(repr, near))}?)" if near else ""
                 raise ValueError(f"unknown stimulation channel {name!r}{hint}; channels: {', '.join(names)}")
-            a = np.asarray(v, dtype=float)
+            a = real_array(v, f"stimulation[{name!r}]", booleans=False)  # strings were converted by float()
             if a.shape != (3,):
                 raise ValueError(f"channel {name!r}: expected (pulse_width_s, amplitude_A, frequency_Hz), got {v!r}")
             out[names.index(name)] = a
     else:
-        a = np.asarray(values, dtype=float)
+        a = real_array(values, "stimulation", booleans=False)
         if a.shape != (len(names), 3):
             raise ValueError(f"stimulation must be a {{channel: (pulse_width_s, amplitude_A, frequency_Hz)}} dict "
                              f"or an array of shape ({len(names)}, 3), got shape {a.shape}")
