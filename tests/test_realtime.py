@@ -346,24 +346,22 @@ def test_fuzz_pool_covers_every_rejection():
         assert k[name] > 0, (name, k)
 
 
-def test_runner_divergence_stops_cleanly():
-    # One RK4 step per 10 ms cycle (no substeps) is unstable for this model: the engine refuses it at the
-    # first cycle ("step too large", before any state is computed; it used to diverge within a few
-    # cycles). The runner stops the same way as on a divergence: the last state packet, flagged
-    # stopped + error, reaches the subscriber, and the exit code is 1.
+def test_runner_refuses_an_explicit_step_unstable_at_rest_before_starting():
+    """One RK4 step per 10 ms cycle is unstable for this model even at rest. The runner used to start, print its
+    port, and stop in the first cycle with the engine's 'step too large' (and Python's substeps advice); it now
+    refuses the option at start-up (exit 2), naming --integration-step and the stable bound, and sends nothing.
+    The divergence path itself (last state packet flagged stopped + error) is cpp/rt/test_rt.cc's."""
     sub = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
     sub.bind(("127.0.0.1", 0))
-    sub.settimeout(5.0)
-    p = subprocess.Popen([runner(), "--integrator", "rk4", "--rate", "100", "--integration-step", "0.01", "--state-rate", "100",
-                          "--state-to", f"127.0.0.1:{sub.getsockname()[1]}"], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True)
-    rc = p.wait(timeout=10)
+    sub.settimeout(0.5)
+    r = subprocess.run([runner(), "--integrator", "rk4", "--rate", "100", "--integration-step", "0.01", "--state-rate",
+                        "100", "--timeout", "0.5", "--state-to", f"127.0.0.1:{sub.getsockname()[1]}"],
+                       capture_output=True, text=True, timeout=20)
     final = _last_state(sub)
     sub.close()
-    err = p.stderr.read()
-    assert rc == 1
-    assert "step too large for integrator 'rk4'" in err, err
-    assert final is not None and final.stopped and final.diverged
+    assert r.returncode == 2, (r.returncode, r.stderr)
+    assert "--integration-step 0.01 s is unstable for integrator 'rk4' even at rest" in r.stderr, r.stderr
+    assert "substeps" not in r.stderr and final is None
 
 
 def test_require_rt_without_privilege_fails_plainly():

@@ -17,6 +17,7 @@
 #include "armrt/snapshot.h"
 #include "armrt/engine.h"
 #include "armrt/stimulation.h"
+#include "armrt/stepper.h"
 
 namespace armrt::rt {
 
@@ -88,6 +89,24 @@ void RtLoop::make_simulator(const ModelDef& def, const Schedule& sched) {
     } catch (const std::exception& e) {
       throw std::invalid_argument(std::string("--stimulation: ") + e.what());
     }
+  }
+  // An explicit integration step beyond its stability limit at rest diverges in the first cycle (a trial's Euler at
+  // 10 ms started, printed its port, then stopped with Python's substeps advice): refused here, in the runner's own
+  // option; beyond the validated step but stable, a warning, as Arm's StepSizeWarning.
+  {
+    const Integrator integ = parse_integrator(cfg_.integrator);
+    const double h = sched.period_s / sched.substeps, rate = std::fabs(sim_->data.rest_fibre_rate);
+    const double h_stable = explicit_stability_limit(integ) / rate;
+    if (h > h_stable)
+      throw std::invalid_argument("--integration-step " + fmt(h) + " s is unstable for integrator '" + cfg_.integrator +
+                                  "' even at rest (the fibre of " + def.elements[sim_->data.rest_fibre_element].name +
+                                  ", eigenvalue " + fmt(-rate) + " 1/s, is stable for steps <= " + fmt(h_stable) +
+                                  " s): give --integration-step " + fmt(default_max_step(integ)) +
+                                  " (the validated step) or --integrator ros2");
+    if (std::isfinite(h_stable) && h > default_max_step(integ) * (1 + 1e-9))
+      warnings_.push_back("--integration-step " + fmt(h) + " s is above integrator '" + cfg_.integrator +
+                          "''s validated " + fmt(default_max_step(integ)) + " s (stable at rest up to " +
+                          fmt(h_stable) + " s; accuracy not validated)");
   }
   // --settle: the engine's settle (Arm::settle, as Python's Arm.settle), with the weakness and paralysis above in
   // effect and the stimulation channels at zero; the loop then starts from the relaxed state at time 0.

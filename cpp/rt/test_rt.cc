@@ -1149,6 +1149,34 @@ TEST_CASE("fixed-memory percentiles agree with exact ones within the bucket prec
   }
 }
 
+TEST_CASE("an explicit integration step unstable at rest is refused at start-up; one above the validated step warned") {
+  RtConfig c = test_config();
+  c.listen.clear();
+  c.integrator = "euler";
+  c.rate_hz = 100;
+  c.input_timeout = 0.5;
+  c.state_rate_hz = 100;
+  c.integration_step = 0.01;
+  try {
+    RtLoop loop(c);
+    FAIL("an unstable step was accepted");
+  } catch (const std::invalid_argument& e) {
+    const std::string msg = e.what();
+    CHECK(msg.find("--integration-step 0.01 s is unstable for integrator 'euler' even at rest") != std::string::npos);
+    CHECK(msg.find("or --integrator ros2") != std::string::npos);
+    CHECK(msg.find("substeps") == std::string::npos);  // the Python parameter is not the runner's option
+  }
+  c.integrator = "rk4";
+  c.rate_hz = 1000;
+  c.state_rate_hz = 500;
+  c.input_timeout = 0.05;
+  c.integration_step = 0.0005;
+  RtLoop loop(c);
+  bool warned = false;
+  for (const auto& w : loop.stats().warnings) warned |= w.find("above integrator 'rk4''s validated") != std::string::npos;
+  CHECK(warned);
+}
+
 TEST_CASE("divergence stops the loop cleanly with the message") {
   RtConfig c = test_config();
   c.listen.clear();
@@ -1163,6 +1191,34 @@ TEST_CASE("divergence stops the loop cleanly with the message") {
   // Every cycle run, the diverging one included, is in the statistics (a first-cycle divergence showed none).
   CHECK(st.tet.count == st.cycles);
   CHECK(st.tet.max > 0);
+  // On its thread, as armrt-rt runs it: a subscriber's last state packet is flagged stopped + error (diverged).
+  // (Python's subprocess test diverged an RK4 step unstable at rest; such steps are now
+  // refused at start-up, so the path is checked here.)
+  SessionWatch watch;
+  RtConfig c2 = test_config();
+  c2.listen.clear();
+  c2.state_rate_hz = 1000;
+  c2.send_excitation = true;
+  c2.state_to = {"127.0.0.1:" + std::to_string(watch.port())};
+  RtLoop threaded(c2);
+  threaded.arm().data.settings.max_joint_speed = 1e-9;
+  threaded.arm().data.excitation.fill(1.0);
+  threaded.start();
+  threaded.join();
+  CHECK(threaded.stats().stop_reason == "diverged");
+  usleep(2000);
+  std::uint8_t b[kMaxPacket];
+  Header last{};
+  bool got = false;
+  for (;;) {
+    const long n = ::recv(watch.s, b, sizeof b, MSG_DONTWAIT);
+    if (n < 0) break;
+    Header h;
+    if (decode_header(b, n, h) == DecodeError::kOk && h.type == kStatePacket) last = h, got = true;
+  }
+  REQUIRE(got);
+  CHECK((last.flags & kFlagStopped) != 0);
+  CHECK((last.flags & kFlagError) != 0);
 }
 
 TEST_CASE("start / stop on a thread, with statistics") {
