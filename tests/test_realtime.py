@@ -263,7 +263,9 @@ def test_the_last_state_packet_after_a_signal_carries_zero_excitation_and_stimul
     m = tmp_path / "flexors.toml"
     m.write_text('[[channels]]\nname = "flexors"\nelements = ["bicl", "brachialis"]\n')
     for sig in (signal.SIGINT, signal.SIGTERM):
-        p, port = start_runner("--state-rate", "100", "--excitations", "--stimulation", str(m))
+        # --timeout 2: the client is silent for 0.1 s below, which the default 0.1 s timeout raced (the session
+        # could end first, zeroing the command the test means to see live).
+        p, port = start_runner("--state-rate", "100", "--excitations", "--stimulation", str(m), "--timeout", "2")
         try:
             with rt.UdpClient(port, mapping="groups", stimulation=m) as c:
                 c.join(timeout=5.0)
