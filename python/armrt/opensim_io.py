@@ -305,8 +305,9 @@ def read_motion(path, model: str = "das2") -> Motion:
     col = {name.strip(): k for k, name in enumerate(labels)}
     if "time" not in col:
         raise ValueError(f"{path}: no 'time' column")
-    if sum(label.strip() == "time" for label in labels) > 1:
-        raise ValueError(f"{path}: {sum(label.strip() == 'time' for label in labels)} 'time' columns; keep one")
+    time_columns = sum(label.strip() == "time" for label in labels)
+    if time_columns > 1:
+        raise ValueError(f"{path}: {time_columns} 'time' columns; keep one")
     idx, missing = [], []
     for d in info["dofs"]:
         # One column per coordinate: a name twice, or OpenSim's and armrt's name both (GH_y and GHy), is
