@@ -1701,3 +1701,51 @@ def test_read_key_file_is_the_runners_reader(tmp_path):
         rt.read_key_file(short)
     with pytest.raises(ValueError, match="not a regular file"):
         rt.read_key_file(tmp_path)
+
+
+def test_runner_hand_load_matches_arm_set_hand_load(tmp_path):
+    """RealtimeSession(hand_force=, hand_moment=) / --hand-force, --hand-moment: a constant load at the hand, as
+    Arm.set_hand_load (the runner had no hand load at all): the streamed state is the offline arm's with the same
+    load, not the unloaded arm's; the statistics record the load."""
+    import armrt
+    force, moment = (0.0, -9.81, 0.0), (0.0, 0.0, 0.2)
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=200, input_timeout=1.0, send_forces=True,
+                            hand_force=force, hand_moment=moment) as s, rt.UdpClient(s.port, mapping="groups") as c:
+        c.join()
+        st = _state_after(c, 0.3)
+        stats = s.stop()
+    assert stats["error"] == "" and st is not None
+    assert stats["hand_load"] == {"force_N": list(force), "moment_N_m": list(moment)}
+    arm, unloaded = armrt.Arm(), armrt.Arm()
+    arm.set_hand_load(force, moment)
+    _assert_streamed_like_offline(st, arm, unloaded)
+    # The command line, the same numbers: the JSON statistics carry them; without the options, zeros.
+    out_json = tmp_path / "stats.json"
+    r = subprocess.run([runner(), "--hand-force", "0,-9.81,0", "--hand-moment", "0,0,0.2", "--duration", "0.05",
+                        "--json", str(out_json)], capture_output=True, text=True, timeout=20)
+    assert r.returncode == 0, r.stderr
+    assert json.loads(out_json.read_text())["hand_load"] == {"force_N": list(force), "moment_N_m": list(moment)}
+    with rt.RealtimeSession(duration=0.01) as s:
+        assert s.stop()["hand_load"] == {"force_N": [0.0] * 3, "moment_N_m": [0.0] * 3}
+
+
+@pytest.mark.parametrize("kwargs, error, message", [
+    ({"hand_force": (0.0, -9.81)}, ValueError, r"hand force must have shape \(3,\), got \(2,\)"),
+    ({"hand_moment": (0.0, np.nan, 0.0)}, ValueError, "hand moment contains NaN or infinite values"),
+    ({"hand_force": (True, False, False)}, TypeError, "bool"),
+    ({"hand_force": "0,-9.81,0"}, TypeError, "hand force"),
+])
+def test_hand_load_bad_values_are_refused(kwargs, error, message):
+    with pytest.raises(error, match=message):
+        rt.RealtimeSession(**kwargs)
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--hand-force", "0,-9.81"], "--hand-force needs 3 values (x lateral, y up, z posterior; thorax frame), got 2"),
+    (["--hand-force", "0,-9.81,0,1"], "--hand-force needs 3 values"),
+    (["--hand-moment", "0,inf,0"], "--hand-moment contains NaN or infinite values"),
+    (["--hand-force", "0,nan,0"], "--hand-force contains NaN or infinite values"),
+])
+def test_runner_hand_load_bad_values_are_refused(args, message):
+    r = subprocess.run([runner(), *args, "--duration", "0.05"], capture_output=True, text=True, timeout=20)
+    assert r.returncode == 2 and message in r.stderr, (r.returncode, r.stderr)

@@ -87,6 +87,27 @@ def test_holds_a_posture_and_tracks_a_slow_elbow_motion():
     assert stats["packets"]["targets_applied"] > 100
 
 
+def test_the_solves_account_for_the_hand_load():
+    """With hand_force (a 1 kg weight) the runner's feedforward activations are those of the Python API's solve for
+    an arm with the same hand load (rigid tendon, the runner's), not the unloaded solve's."""
+    q_hold = hold_posture()
+    force = (0.0, -9.81, 0.0)
+    with rt.RealtimeSession(listen="127.0.0.1:0", q0=q_hold, static_optimization=True, state_rate_hz=100,
+                            send_excitation=True, input_timeout=0.5, hand_force=force) as s, \
+            rt.UdpClient(s.port) as c:
+        c.join()
+        states = _send_until(c, 0.1, lambda t: (q_hold, 0.0, 0.0))
+        stats = s.stop()
+    assert stats["static_optimization"]["infeasible"] == 0
+    loaded = armrt.Arm()
+    loaded.set_hand_load(force)
+    expected = armrt.static_optimization(loaded, q_hold, tendon="rigid").activation
+    unloaded = armrt.static_optimization(armrt.Arm(), q_hold, tendon="rigid").activation
+    got = states[-1].excitation
+    assert np.abs(expected - unloaded).max() > 0.01
+    np.testing.assert_allclose(got, expected, atol=1e-5)
+
+
 def test_refused_targets_and_packets():
     q_hold = hold_posture()
     with rt.RealtimeSession(listen="127.0.0.1:0", q0=q_hold, static_optimization=True, state_rate_hz=100) as s, \
@@ -160,6 +181,10 @@ def test_options_are_checked():
         rt.RealtimeSession(static_optimization=True)
     with pytest.raises(ValueError, match="need --static-optimization"):
         rt.RealtimeSession(listen="127.0.0.1:0", so_kp=10.0)
+    # A gain of 0 for a loop that does not run is a mistaken command too (it was accepted; 10 was refused).
+    for gains in ({"so_kp": 0.0}, {"so_kd": 0.0}, {"so_kp": 0.0, "so_kd": 0.0}):
+        with pytest.raises(ValueError, match="need --static-optimization"):
+            rt.RealtimeSession(listen="127.0.0.1:0", **gains)
     with pytest.raises(ValueError, match="so-gh-stab-max"):
         rt.RealtimeSession(listen="127.0.0.1:0", static_optimization=True, so_gh_stab_max=50.0)
     # 0 is refused, not taken as no bound (static_optimization refuses it too); None is no bound.
@@ -170,8 +195,10 @@ def test_options_are_checked():
     with rt.RealtimeSession(listen="127.0.0.1:0", static_optimization=True, so_gh_stab_max=None,
                             duration=0.01) as s:
         assert s.stop()["static_optimization"]["gh_stab_max"] is None
-    with pytest.raises(ValueError, match="so-kp"):
+    with pytest.raises(ValueError, match=r"so-kp must be a finite number >= 0 \(1/s\^2\), got -1"):
         rt.RealtimeSession(listen="127.0.0.1:0", static_optimization=True, so_kp=-1.0)
+    with pytest.raises(ValueError, match=r"so-kd must be a finite number >= 0 \(1/s\), got nan"):
+        rt.RealtimeSession(listen="127.0.0.1:0", static_optimization=True, so_kd=float("nan"))
     # Without --static-optimization a target packet is refused (wrong count: the runner expects none).
     with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=100) as s, rt.UdpClient(s.port) as c:
         c.join()

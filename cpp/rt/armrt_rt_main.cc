@@ -93,6 +93,11 @@ int main(int argc, char** argv) {
                                   "(das2: GHy,GHz,GHyy,ELx,PSy; default: rest posture)")
       ->delimiter(',')->expected(1, armrt::kMaxDofs)->type_name("Q,Q,...");  // CLI11 would say FLOAT: one number
   app.add_option("--duration", cfg.duration, "run for S seconds (0: until SIGINT/SIGTERM)")->capture_default_str();
+  app.add_option("--hand-force", cfg.hand_force, "FX,FY,FZ: a constant force (N) at the hand point, thorax frame (x "
+                                                "lateral, y up, z posterior; a 1 kg weight: 0,-9.81,0), as Arm.set_hand_load")
+      ->delimiter(',')->allow_extra_args(false);
+  app.add_option("--hand-moment", cfg.hand_moment, "MX,MY,MZ: a constant moment (N m) on the hand, thorax frame")
+      ->delimiter(',')->allow_extra_args(false);
   app.add_option("--support", cfg.support_s, "hold the joints where the loop starts (qdot 0) until S seconds after "
                                            "the first command applied, the muscles responding as usual: the arm "
                                            "supported while stimulation builds up (fes_control.run_offline's hold_s)");

@@ -108,11 +108,21 @@ Schedule check_config(RtConfig& cfg) {
   if (cfg.so_gh_stab_max && *cfg.so_gh_stab_max < kMinGhStabMax)
     throw std::invalid_argument("--so-gh-stab-max " + fmt(*cfg.so_gh_stab_max) +
                                 " is below the smallest bound solved, " + fmt(kMinGhStabMax));
-  if (!std::isfinite(cfg.so_kp) || cfg.so_kp < 0 || !std::isfinite(cfg.so_kd) || cfg.so_kd < 0)
-    throw std::invalid_argument("--so-kp and --so-kd must be finite numbers >= 0, got " + fmt(cfg.so_kp) + ", " +
-                                fmt(cfg.so_kd));
-  if (!cfg.static_optimization && (cfg.so_gh_stab_max || cfg.so_kp > 0 || cfg.so_kd > 0))
+  if (cfg.so_kp && !(std::isfinite(*cfg.so_kp) && *cfg.so_kp >= 0))
+    throw std::invalid_argument("--so-kp must be a finite number >= 0 (1/s^2), got " + fmt(*cfg.so_kp));
+  if (cfg.so_kd && !(std::isfinite(*cfg.so_kd) && *cfg.so_kd >= 0))
+    throw std::invalid_argument("--so-kd must be a finite number >= 0 (1/s), got " + fmt(*cfg.so_kd));
+  if (!cfg.static_optimization && (cfg.so_gh_stab_max || cfg.so_kp || cfg.so_kd))
     throw std::invalid_argument("--so-gh-stab-max, --so-kp and --so-kd need --static-optimization");
+  // checks.hand_load's rule (the Python API's): three finite values each.
+  for (const auto& [name, v] : {std::pair<const char*, const std::vector<double>&>{"--hand-force", cfg.hand_force},
+                                {"--hand-moment", cfg.hand_moment}}) {
+    if (!v.empty() && v.size() != 3)
+      throw std::invalid_argument(std::string(name) + " needs 3 values (x lateral, y up, z posterior; thorax frame), got " +
+                                  std::to_string(v.size()));
+    for (double x : v)
+      if (!std::isfinite(x)) throw std::invalid_argument(std::string(name) + " contains NaN or infinite values");
+  }
   // Arm.settle's own check and wording (arm.py): any finite duration >= 0.
   if (!std::isfinite(cfg.settle_s) || cfg.settle_s < 0)
     throw std::invalid_argument("--settle must be a finite number of seconds >= 0, got " + fmt(cfg.settle_s));

@@ -32,6 +32,10 @@ struct RtConfig {
   // arm supported while a controller's stimulation builds up, as fes_control.run_offline(hold_s=...) starts a
   // trial, however long the controller takes to come; 0: none.
   double support_s = 0;
+  // A constant load at the hand from the start (--settle included), as Arm.set_hand_load: force (N) at the hand
+  // point and moment (N m) on the hand, thorax frame (x lateral, y up, z posterior); a 1 kg weight is 0,-9.81,0.
+  // Empty: none. The static optimisation's solves account for it.
+  std::vector<double> hand_force, hand_moment;
   // Real-time set-up.
   bool realtime = true;        // try SCHED_FIFO; false: normal scheduling on purpose
   int priority = 80;           // SCHED_FIFO priority (1..99)
@@ -60,7 +64,8 @@ struct RtConfig {
   // Arm.strength does (1 = intact); the same names and overlap rule as max_activation.
   std::vector<std::string> strength;
   // Stimulation map (docs/fes.md): a .json / .toml file or "per_muscle"; empty: none. With one, kStimulation
-  // packets drive the channels (values beyond a channel's limits are clamped and counted) and state packets
+  // packets drive the channels (a packet beyond a channel's limits is refused whole and counted, the previous
+  // command held) and state packets
   // carry the applied stimulation and each channel's fatigue.
   std::string stimulation;
   // Feedforward by static optimisation (cpp/src/static_optimization.cc, docs/realtime.md): the owner sends
@@ -70,8 +75,10 @@ struct RtConfig {
   // excitations; zero excitation without a target, when infeasible, or once the session ends.
   bool static_optimization = false;
   std::optional<double> so_gh_stab_max;  // GHstab <= this (> 0) in the solve (the GH polygon); none: no bound
-  double so_kp = 0;            // 1/s^2, the computed-torque loop's stiffness on the joint angles
-  double so_kd = 0;            // 1/s, its damping on the joint velocities
+  // Given only with static_optimization (a gain of 0 included: a gain for a loop that does not run is a mistaken
+  // command line); none: 0.
+  std::optional<double> so_kp;  // 1/s^2, the computed-torque loop's stiffness on the joint angles
+  std::optional<double> so_kd;  // 1/s, its damping on the joint velocities
   double rx_budget_us = 0;     // receive work per cycle: drain the socket until empty or this long; 0: min(150 us, period / 4)
 };
 

@@ -90,6 +90,9 @@ void RtLoop::make_simulator(const ModelDef& def, const Schedule& sched) {
       throw std::invalid_argument(std::string("--stimulation: ") + e.what());
     }
   }
+  // The hand load is data the dynamics and the static optimisation read (d.hand_force, d.hand_moment), set once.
+  if (!cfg_.hand_force.empty()) std::copy_n(cfg_.hand_force.begin(), 3, sim_->data.hand_force.begin());
+  if (!cfg_.hand_moment.empty()) std::copy_n(cfg_.hand_moment.begin(), 3, sim_->data.hand_moment.begin());
   // An explicit integration step beyond its stability limit at rest diverges in the first cycle (a trial's Euler at
   // 10 ms started, printed its port, then stopped with Python's substeps advice): refused here, in the runner's own
   // option; beyond the validated step but stable, a warning, as Arm's StepSizeWarning.
@@ -165,10 +168,11 @@ void RtLoop::static_optimization_cycle() {
   const double* q = &d.x[q_offset(m)];
   const double* qd = &d.x[qd_offset(m)];
   double qdd_cmd[kMaxDofs];
-  const bool feedback = cfg_.so_kp > 0 || cfg_.so_kd > 0;
+  const double kp = cfg_.so_kp.value_or(0.0), kd = cfg_.so_kd.value_or(0.0);
+  const bool feedback = kp > 0 || kd > 0;
   bool out_of_range = false;
   for (int j = 0; j < nq; ++j) {
-    qdd_cmd[j] = t[2 * nq + j] + cfg_.so_kp * (t[j] - q[j]) + cfg_.so_kd * (t[nq + j] - qd[j]);
+    qdd_cmd[j] = t[2 * nq + j] + kp * (t[j] - q[j]) + kd * (t[nq + j] - qd[j]);
     out_of_range = out_of_range || !(std::abs(qdd_cmd[j]) <= kStaticOptimizationMaxJointAcceleration);
   }
   if (out_of_range) {
@@ -453,6 +457,8 @@ RtStats RtLoop::stats() const {
   RtStats st;
   st.model = cfg_.model;
   st.profile = cfg_.profile;
+  std::copy(cfg_.hand_force.begin(), cfg_.hand_force.end(), st.hand_force.begin());  // validated: 0 or 3 values
+  std::copy(cfg_.hand_moment.begin(), cfg_.hand_moment.end(), st.hand_moment.begin());
   st.cycles = cycles_.load(std::memory_order_relaxed);
   rec_.fill(st);
   st.elapsed_s = elapsed_s_;
@@ -484,8 +490,8 @@ RtStats RtLoop::stats() const {
     st.so_not_converged = so_not_converged_;
     st.so_refused = so_refused_;
     st.so_gh_stab_max = cfg_.so_gh_stab_max.value_or(0.0);
-    st.so_kp = cfg_.so_kp;
-    st.so_kd = cfg_.so_kd;
+    st.so_kp = cfg_.so_kp.value_or(0.0);
+    st.so_kd = cfg_.so_kd.value_or(0.0);
     st.so_residual_max = so_residual_max_;
   }
   return st;

@@ -40,6 +40,7 @@ std::string stats_json(const RtStats& s) {
   nlohmann::ordered_json j;
   j["model"] = s.model;
   j["profile"] = s.profile.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(s.profile);
+  j["hand_load"] = {{"force_N", s.hand_force}, {"moment_N_m", s.hand_moment}};
   j["rate_hz"] = s.rate_hz;
   j["control_step"] = s.control_step;
   j["integration_step"] = s.integration_step;

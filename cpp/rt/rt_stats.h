@@ -3,6 +3,7 @@
 // nothing (a day at 1 kHz needs no more memory than a second); reading the statistics does.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -58,6 +59,7 @@ struct PacketCounters {
 struct RtStats {
   std::string model;              // the registered model's name (--model)
   std::string profile;            // the participant profile's name; "" (JSON null): none given
+  std::array<double, 3> hand_force{}, hand_moment{};  // N, N m (thorax frame): the constant hand load (0: none)
   std::int64_t cycles = 0;        // cycles run
   std::int64_t recorded = 0;      // cycles in the percentiles (all of them: fixed-memory histograms)
   std::int64_t overruns = 0;      // cycles whose work ended after the next deadline

@@ -132,8 +132,8 @@ PYBIND11_MODULE(_rt, m) {
                        std::vector<std::string> channels, double rx_budget_us,
                        std::vector<std::string> max_activation, const std::string& stimulation,
                        std::vector<std::string> strength, const std::string& profile, double settle,
-                       double resume_grace, bool static_optimization, std::optional<double> so_gh_stab_max, double so_kp, double so_kd,
-                       double support) {
+                       double resume_grace, bool static_optimization, std::optional<double> so_gh_stab_max, std::optional<double> so_kp, std::optional<double> so_kd,
+                       double support, std::vector<double> hand_force, std::vector<double> hand_moment) {
              RtConfig c;
              c.model = model;
              c.integrator = integrator;
@@ -169,6 +169,8 @@ PYBIND11_MODULE(_rt, m) {
              c.so_gh_stab_max = so_gh_stab_max;
              c.so_kp = so_kp;
              c.so_kd = so_kd;
+             c.hand_force = std::move(hand_force);
+             c.hand_moment = std::move(hand_moment);
              return std::make_unique<RtLoop>(c);
            }),
            py::arg("model") = "das2", py::arg("integrator") = RtConfig{}.integrator, py::arg("rate_hz") = 1000.0,
@@ -183,7 +185,8 @@ PYBIND11_MODULE(_rt, m) {
            py::arg("stimulation") = "", py::arg("strength") = std::vector<std::string>{},
            py::arg("profile") = "", py::arg("settle") = 0.0,
            py::arg("resume_grace") = RtConfig{}.resume_grace, py::arg("static_optimization") = false,
-           py::arg("so_gh_stab_max") = py::none(), py::arg("so_kp") = 0.0, py::arg("so_kd") = 0.0, py::arg("support") = 0.0)
+           py::arg("so_gh_stab_max") = py::none(), py::arg("so_kp") = py::none(), py::arg("so_kd") = py::none(), py::arg("support") = 0.0,
+           py::arg("hand_force") = std::vector<double>{}, py::arg("hand_moment") = std::vector<double>{})
       .def("start", [](RtLoop& l) {
         py::gil_scoped_release release;
         l.start();

@@ -17,7 +17,7 @@ from typing import Mapping
 import numpy as np
 
 from . import _rt
-from .checks import real_array, real_scalar
+from .checks import hand_load, real_array, real_scalar
 from .realtime_packets import _key_bytes
 
 
@@ -54,11 +54,12 @@ _NUMBER_OPTIONS = ("rate_hz", "integration_step", "dt", "duration", "busy_wait_u
                    "input_timeout", "rx_budget_us", "settle", "resume_grace", "so_gh_stab_max", "so_kp", "so_kd",
                    "support")
 _INTEGER_OPTIONS = ("priority", "cpu")
+_OPTIONAL_OPTIONS = ("so_gh_stab_max", "so_kp", "so_kd")  # None: not given (the runner's own default)
 
 
 def _check_numbers(config: dict) -> None:
     for name in _NUMBER_OPTIONS:
-        if name in config and not (name == "so_gh_stab_max" and config[name] is None):
+        if name in config and not (name in _OPTIONAL_OPTIONS and config[name] is None):
             config[name] = real_scalar(config[name], name, booleans=False)
     for name in _INTEGER_OPTIONS:
         if name in config:
@@ -96,7 +97,9 @@ class RealtimeSession:
     fatigue), static_optimization (True: feedforward by the rigid-tendon static optimisation each cycle, the
     client sending targets with UdpClient.send_target; so_kp (1/s^2) and so_kd (1/s): computed-torque gains, the
     solve then at the arm's state; so_gh_stab_max: GHstab bound in the solve; docs/realtime.md; the solve-time
-    statistics in stats()["static_optimization"]). Bad values raise ValueError naming the option.
+    statistics in stats()["static_optimization"]), hand_force (3,) N and hand_moment (3,) N m (a constant load at the
+    hand from the start, thorax frame, as Arm.set_hand_load; the static optimisation accounts for it; recorded in
+    stats()["hand_load"]). Bad values raise ValueError naming the option.
     """
 
     def __init__(self, **config):
@@ -140,6 +143,12 @@ class RealtimeSession:
                                                    float("inf"))
         else:
             config.pop("strength", None)
+        force, moment = config.pop("hand_force", None), config.pop("hand_moment", None)
+        if force is not None or moment is not None:
+            # checks.hand_load, Data.set_hand_load's rule: (3,) finite each, bools refused.
+            none = (0.0, 0.0, 0.0)
+            force, moment = hand_load(none if force is None else force, none if moment is None else moment)
+            config["hand_force"], config["hand_moment"] = force.tolist(), moment.tolist()
         for name in ("state_to", "allow"):
             if isinstance(config.get(name), str):
                 config[name] = [config[name]] if config[name] else []
