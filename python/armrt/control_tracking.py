@@ -11,7 +11,15 @@ static optimisation gives the activations a* that produce qddot_des, and the exc
 the one whose activation dynamics reach a* at t+T. Their gains, kp = 100 s^-2 and kv = 20 s^-1 (= 2 sqrt(kp),
 critically damped), and T = 10 ms, are the defaults. The state the accelerations are asked at is the arm's own at
 t, its position extrapolated to t+T with its velocity (q + T qdot), a first-order stand-in for CMC's integration
-over the interval."""
+over the interval.
+
+With correct_model_error=True (ours, not Thelen's) the moments asked of the optimiser are corrected by its own
+muscle model's error at the arm's present state, d = R^T (F_arm - F_model(a)) (F_arm: the tendon forces of the
+simulated fibres; F_model: the optimiser's at the same activations, fibres at the steady state of the path's
+velocity or a rigid tendon), asking R^T F_model = tau(qddot_des) - d = tau(qddot_des - M^-1 d) since the inverse
+dynamics is linear in qddot. It removes the slow-motion drift docs/control.md measures: an element the optimiser
+recruits from zero gives no force for 0.1-0.5 s (slack fibre), and that elbow moment reaches the forearm's
+rotation through the mass matrix."""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -77,9 +85,27 @@ def excitation_reaching(a0, a_target, c1, c2, interval: float, u_max):
     return np.clip(u, 0.0, u_max)
 
 
+def muscle_model_error(arm, tendon: str = "elastic") -> np.ndarray:
+    """(ndof,) N m: the generalised forces of the arm's simulated tendon forces minus those static optimisation's
+    muscle model gives at the same state and activations, R^T (F_arm - F_model(a)); F_model with tendon="elastic"
+    has the fibres at the steady state of the path's velocity (StaticOptimizer's elastic element), with "rigid" a
+    rigid tendon. Zero where the arm's fibres are at that steady state (at rest after arm.reset, for instance)."""
+    sim = arm._sim
+    L, R = sim.muscle_paths(arm.q)  # (n,), (n, ndof)
+    v = np.ascontiguousarray(-(R @ arm.qdot))  # dL/dt: moment arms are -dL/dq
+    a = np.ascontiguousarray(arm.activation)
+    if tendon == "elastic":
+        _, f_model, _ = sim.steady_forces(L, v, a, arm.lce.copy())
+    else:
+        _, f_active, f_passive = sim.rigid_tendon_forces(L, v)
+        f_model = f_active * a + f_passive
+    return R.T @ (arm.outputs()["muscle_force"] - f_model)
+
+
 def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = KV_THELEN_2003,
                  control_interval: float = CONTROL_INTERVAL_THELEN_2003, gh_stab_max=None,
-                 weights=None, criterion: str = "squared", tendon: str = "elastic") -> TrackingResult:
+                 weights=None, criterion: str = "squared", tendon: str = "elastic",
+                 correct_model_error: bool = False) -> TrackingResult:
     """Computed muscle control of `arm` (an armrt.Arm with its settings: strength, max_activation, hand load from
     arm.set_hand_load, integrator) along q_ref (T, ndof) rad at time (T,) s (strictly increasing, at least 4 frames;
     interpolated by a cubic spline, whose derivatives are the reference velocities and accelerations), or along a
@@ -87,14 +113,17 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
     honoured). The arm is reset to q_ref[0] with the reference velocity and the static-optimisation activations there, then simulated one
     control interval at a time (a whole number of the arm's steps; a last part of the motion shorter than an
     interval is not run). kp (s^-2), kv (s^-1) >= 0: the feedback gains (kp = kv = 0 plays the feedforward alone).
-    gh_stab_max, weights, criterion, tendon: as armrt.StaticOptimizer. An interval whose static optimisation is
+    gh_stab_max, weights, criterion, tendon: as armrt.StaticOptimizer. correct_model_error: subtract the optimiser's
+    muscle-model error at the arm's present state from the moments it is asked for (module docstring; off by default,
+    Thelen's method as published). An interval whose static optimisation is
     infeasible keeps its closest solution and is counted False in `feasible`; so is one whose predicted posture lies
     beyond the engine's domain (joint ranges + 0.35 rad: the arm has fallen away), solved at the domain's edge.
     ValueError for bad input (shapes, NaN, a frame beyond the joint domain,
     gains, an interval not a whole number of steps, a motion shorter than one interval, an arm with a stimulation
     map), and during the run for an interval whose feedforward plus feedback asks for a joint acceleration beyond
     the static optimisation's bound (1e5 rad/s^2: gains far too high), naming the interval and the gains;
-    TypeError for a Model, and for kp, kv or control_interval not a number (a bool included)."""
+    TypeError for a Model, for kp, kv or control_interval not a number (a bool included), and for
+    correct_model_error not a bool."""
     from scipy.interpolate import CubicSpline  # noqa: PLC0415 (scipy is a dependency; only this needs it)
 
     if not hasattr(arm, "_sim"):
@@ -125,6 +154,10 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
     if steps < 1 or abs(steps * arm.dt - interval) > 1e-9 * max(1.0, interval):
         raise ValueError(f"control_interval must be a whole number (>= 1) of the arm's step {arm.dt:g} s, "
                          f"got {interval:g} s")
+
+    if not isinstance(correct_model_error, (bool, np.bool_)):
+        raise TypeError(f"correct_model_error must be True or False, got {type(correct_model_error).__name__} "
+                        f"{correct_model_error!r}")
 
     spline = CubicSpline(time, q_ref, axis=0)
     ref_v, ref_a = spline.derivative(1), spline.derivative(2)
@@ -159,7 +192,10 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
         joint_acceleration_within(qdd_des, model.dof_names, _engine_bounds()[2],
                                   f"track_motion (interval {k}, t = {t:.4g} s; the feedback kp = {kp:g} s^-2, kv = "
                                   f"{kv:g} s^-1 on the error; the arm is left where the run stopped)")
-        res = so.solve(q_solve, qd, qdd_des, on_infeasible="return")
+        qdd_asked = qdd_des
+        if correct_model_error:
+            qdd_asked = qdd_des - np.linalg.solve(arm.mass_matrix(q_solve), muscle_model_error(arm, tendon))
+        res = so.solve(q_solve, qd, qdd_asked, on_infeasible="return")
         amax = arm.max_activation
         u = excitation_reaching(arm.activation, res.activation, c1, c2, interval, amax)
         arm.set_excitation(u)
