@@ -154,6 +154,10 @@ def test_real_array_refuses_bools_where_asked_and_keeps_them_by_default():
                        (np.bool_(False), "x must be a number, got the bool False"),
                        (np.ones(3, bool), r"x must be numbers, got an array of bools \(shape \(3,\)\)"),
                        ([True, False], "x must be numbers, got an array of bools"),
+                       # Mixed in a list or tuple (a trial's command_velocity([True, 0, 0]) and a stimulation
+                       # (200e-6, 0.01, True) were taken as 1): numpy casts them to integers, so they are looked for.
+                       ([True, 0, 0], "x must be numbers, got the bool True among them"),
+                       (([0.0, 1.0], (2.0, np.False_)), "x must be numbers, got the bool False among them"),
                        (np.array([1.0, True], dtype=object), "x must be numbers, got the bool True among them")):
         with pytest.raises(TypeError, match=match):
             checks.real_array(bad, "x", booleans=False)

@@ -119,6 +119,8 @@ def test_refused_targets_and_packets():
             c.send_target(np.full(5, np.nan))
         with pytest.raises(ValueError, match="shape"):
             c.send_target(q_hold[:4])
+        with pytest.raises(TypeError, match="qdot must be a number, got the bool True"):
+            c.send_target(q_hold, True)
         with pytest.raises(ValueError, match="qddot"):
             c.send_target(q_hold, 0.0, np.full(5, 1e6))
         with pytest.raises(ValueError, match=r"qdot\[GHy\] = 150 rad/s is beyond max_joint_speed 100"):

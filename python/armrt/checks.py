@@ -31,13 +31,25 @@ def _masked_count(values) -> int:
     return 0
 
 
+def _first_bool(values):
+    """The first bool (Python's or numpy's) in nested lists / tuples, or None."""
+    for v in values:
+        if isinstance(v, (bool, np.bool_)):
+            return bool(v)
+        if isinstance(v, (list, tuple)):
+            found = _first_bool(v)
+            if found is not None:
+                return found
+    return None
+
+
 def real_array(values, what: str, booleans: bool = True) -> np.ndarray:
     """`values` as a float array; TypeError for what is not real numbers (complex, strings, None,
     other objects) instead of numpy's silent casts (complex -> real part, None -> NaN); ValueError for
     a numpy masked array with masked values (np.asarray would use the values hidden under the mask).
     booleans=False: TypeError for a bool or an array of bools too (True would be taken as 1), for the inputs
-    that are a quantity (a gain, a time, a posture, a weight) and never a flag; a bool inside a list of
-    other numbers is cast by numpy before it can be seen, and is not caught."""
+    that are a quantity (a gain, a time, a posture, a weight) and never a flag, a bool inside a list or tuple of
+    other numbers included (numpy would cast [True, 0, 0] to integers before it could be seen)."""
     if isinstance(values, (str, bytes)):
         raise TypeError(f"{what} must be numbers, got the string {values!r}")
     masked = _masked_count(values)
@@ -63,6 +75,10 @@ def real_array(values, what: str, booleans: bool = True) -> np.ndarray:
             raise TypeError(f"{what} must be a number, got the bool {bool(arr)!r}")
         raise TypeError(f"{what} must be numbers, got an array of bools (shape {arr.shape}): True and False "
                         f"would be taken as 1 and 0")
+    if not booleans and arr.dtype.kind in "iuf" and isinstance(values, (list, tuple)):
+        found = _first_bool(values)  # [True, 0, 0]: numpy made the bool an integer
+        if found is not None:
+            raise TypeError(f"{what} must be numbers, got the bool {found!r} among them")
     if arr.dtype.kind not in "biuf":
         kind = {"c": "complex", "U": "string", "S": "bytes", "M": "datetime", "m": "timedelta", "V": "structured"}
         raise TypeError(f"{what} must be real numbers, got {kind.get(arr.dtype.kind, str(arr.dtype))} values "

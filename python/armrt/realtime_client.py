@@ -359,7 +359,7 @@ class UdpClient:
 
         def vec(v, what):
             if np.isscalar(v) and not isinstance(v, (str, bytes)):
-                if real_scalar(v, what) != 0:
+                if real_scalar(v, what, booleans=False) != 0:  # True was "a scalar must be 0", not named a bool
                     raise ValueError(f"{what}: a scalar must be 0 (for every DOF); give an array of shape ({m.n_dofs},)")
                 return np.zeros(m.n_dofs)
             return np.asarray(dof_vector(v, what, m.dof_names), dtype=float)
