@@ -1749,3 +1749,33 @@ def test_hand_load_bad_values_are_refused(kwargs, error, message):
 def test_runner_hand_load_bad_values_are_refused(args, message):
     r = subprocess.run([runner(), *args, "--duration", "0.05"], capture_output=True, text=True, timeout=20)
     assert r.returncode == 2 and message in r.stderr, (r.returncode, r.stderr)
+
+
+def test_latest_state_after_a_stall_is_not_the_stale_queue():
+    """A third trial's controller stalled 1.5 s and 3 s at a 1 kHz state rate: the 2 MB receive buffer fills in
+    about 0.9 s, the kernel drops what comes after, and latest_state() returned a state seconds old that still
+    showed the stimulation on after the session's timeout (the runner sends a timed-out owner nothing more, and
+    its session-ended notice was lost). Now a newest state older than the wait is counted and not returned: after
+    1.5 s (the session alive) the newest is a fresh one, packets arriving while the queue drains; after the
+    timeout, none, and the next send learns that the session ended."""
+    from armrt.realtime_client import SessionEnded
+    with rt.RealtimeSession(listen="127.0.0.1:0", state_rate_hz=1000, input_timeout=2.0, send_forces=True) as s, \
+            rt.UdpClient(s.port) as c:
+        c.join()
+        c.send({"bicb": 0.2})
+        t0 = c.latest_state(timeout=0.5).time
+        time.sleep(1.5)  # the buffer is full after about 0.9 s; the session (--timeout 2 s) still runs, and the
+        st = c.latest_state(timeout=0.5)  # packets that come while the queue drains are fresh: that one is newest
+        assert st is not None and st.time > t0 + 1.4 and time.monotonic() - st.received_at < 0.1, (t0, st.time)
+        assert c.stale_states == 0 and not st.timed_out
+        c.send({"bicb": 0.2})
+        time.sleep(3.0)  # the buffer full again before the timeout; then no state is sent, the notice is lost
+        assert c.latest_state(timeout=0.3) is None and c.stale_states == 1
+        assert c.last_state is not None and c.last_state.time < st.time + 2.5
+        c.send({"bicb": 0.2})  # goes out (the client cannot know yet); the runner refuses it and says why
+        for _ in range(20):
+            c.poll(0.05)
+        assert c.session_end is not None
+        with pytest.raises(SessionEnded):
+            c.send({"bicb": 0.2})
+        s.stop()

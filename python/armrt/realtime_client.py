@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import collections
 import socket
+import struct
+import sys
 import time
 from dataclasses import dataclass, field
 from typing import Mapping, Sequence
@@ -20,6 +22,21 @@ from .realtime_packets import (EXC_CHANNELS, EXC_ELEMENTS, EXC_GROUPS, EXC_MUSCL
                                state_fields, state_packet_fields)
 
 MAPPING_TYPES = {"elements": EXC_ELEMENTS, "muscles": EXC_MUSCLES, "groups": EXC_GROUPS, "channels": EXC_CHANNELS}
+
+# Linux's SO_TIMESTAMPNS (= SCM_TIMESTAMPNS; asm-generic/socket.h, not in Python's socket module): each datagram's
+# arrival time (CLOCK_REALTIME) in a recvmsg control message, so a packet read late keeps the time it came.
+_SO_TIMESTAMPNS = 35 if sys.platform.startswith("linux") else None
+_TIMESPEC = struct.Struct("qq")
+
+
+def _arrival(ancillary) -> float:
+    """time.monotonic() at which the kernel received the datagram (its SO_TIMESTAMPNS), else now."""
+    now = time.monotonic()
+    for level, kind, data in ancillary:
+        if level == socket.SOL_SOCKET and kind == _SO_TIMESTAMPNS and len(data) >= _TIMESPEC.size:
+            sec, nsec = _TIMESPEC.unpack_from(data)
+            return min(now, now - (time.time() - (sec + 1e-9 * nsec)))
+    return now
 
 
 def parse_endpoint(endpoint: str, require_port: bool = False) -> tuple[str, int]:
@@ -200,6 +217,13 @@ class UdpClient:
         self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         self.sock.bind(("127.0.0.1" if self.address[0].startswith("127.") else "", bind_port))
         self.sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 1 << 20)
+        self._timestamps = False
+        if _SO_TIMESTAMPNS is not None:
+            try:
+                self.sock.setsockopt(socket.SOL_SOCKET, _SO_TIMESTAMPNS, 1)
+                self._timestamps = True
+            except OSError:
+                pass
         self.seq = 0
         self.session = 0
         self._joining = False      # only join() takes a session id: an offer or a state packet elsewhere is not one
@@ -209,6 +233,11 @@ class UdpClient:
         self.last_error = ""       # why the last bad datagram was refused
         self.session_end: SessionEnd | None = None  # the runner's notice that this session ended (None: none)
         self._states: collections.deque = collections.deque(maxlen=4096)
+        self._state_interval = 0.0  # s between the last two state packets' arrivals
+        self._last_arrival = None
+        #: latest_state() calls whose newest queued state was stale (older than timeout and two state intervals:
+        #: after a stall the kernel had dropped the newer ones, or the runner had stopped sending) and so not returned.
+        self.stale_states = 0
 
     @property
     def local_port(self) -> int:
@@ -222,7 +251,12 @@ class UdpClient:
         """Reads one datagram (waiting up to timeout s; None: forever); True if one was read."""
         self.sock.settimeout(timeout)
         try:
-            data, src = self.sock.recvfrom(65536)
+            if self._timestamps:
+                data, ancillary, _, src = self.sock.recvmsg(65536, socket.CMSG_SPACE(_TIMESPEC.size))
+                arrival = _arrival(ancillary)
+            else:
+                data, src = self.sock.recvfrom(65536)
+                arrival = time.monotonic()
         except (socket.timeout, BlockingIOError):
             return False
         if (src[0], src[1]) != self.address:
@@ -244,7 +278,10 @@ class UdpClient:
                     self.session = 0
             elif p.type == STATE:
                 st = StatePacket.from_packet(p, self.state_table)
-                st.received_at = time.monotonic()
+                st.received_at = arrival
+                if self._last_arrival is not None and arrival > self._last_arrival:
+                    self._state_interval = arrival - self._last_arrival
+                self._last_arrival = arrival
                 # The session id is not taken from state packets: one sent before the runner read this client's
                 # release restored the old id, and the runner's offer to the send() that followed claimed the
                 # arm again without join() (a new user's trial). Subscribers get state packets too.
@@ -407,7 +444,22 @@ class UdpClient:
         return st
 
     def latest_state(self, timeout: float = 0.1) -> StatePacket | None:
-        """Waits for a state packet, then drains the queue and returns the newest one."""
+        """Waits up to timeout s for a state packet, then drains the queue and returns the newest one; None if none
+        comes. A newest queued state that arrived longer ago than timeout and two state intervals is not returned:
+        after a controller stalled longer than the receive buffer holds (1 MB asked: about 0.9 s of 1 kHz state)
+        the kernel dropped the newer packets, the runner's session-ended notice among them, so the queue held a state
+        seconds old that still showed the stimulation on. Then the wait starts again for a state that arrives
+        after the drain (None if none comes: a timed-out owner is sent none), the stale one counted in
+        .stale_states and kept in .last_state. received_at is the kernel's arrival time (Linux SO_TIMESTAMPNS)."""
+        st = self._newest(timeout)
+        if st is None:
+            return None
+        if time.monotonic() - st.received_at > max(timeout, 2.0 * self._state_interval):
+            self.stale_states += 1
+            st = self._newest(timeout)
+        return st
+
+    def _newest(self, timeout: float) -> StatePacket | None:
         st = self.recv_state(timeout)
         if st is None:
             return None
