@@ -319,3 +319,25 @@ def test_a_command_beyond_any_arm_is_refused_naming_the_command_before_the_arm_s
     with pytest.raises(ValueError, match=match):
         ctl.step()
     assert arm.time == 0.0
+
+
+def test_an_unreachable_command_warns_once():
+    """A third trial: command_position 10 m away made every solve infeasible and flung the hand past the GH rim with
+    only n_infeasible to tell. The first infeasible solve now warns, naming the command; later ones are counted."""
+    import warnings
+
+    from armrt.endpoint_control import start_at_rest
+    arm = armrt.Arm("das2")
+    start_at_rest(arm, np.radians([30, 60, 10, 60, 80]))
+    ctl = EndpointController(arm)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        for _ in range(10):
+            ctl.step()
+        assert not caught and ctl.n_infeasible == 0  # a reachable hold says nothing
+        ctl.command_position(ctl.hand_position() + np.array([0.0, 10.0, 0.0]))
+        for _ in range(50):
+            ctl.step()
+    assert ctl.n_infeasible >= 5
+    msgs = [str(w.message) for w in caught if issubclass(w.category, RuntimeWarning)]
+    assert len(msgs) == 1 and "x_ref 10 m from the hand" in msgs[0] and "n_infeasible" in msgs[0], msgs

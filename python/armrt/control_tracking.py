@@ -22,6 +22,7 @@ recruits from zero gives no force for 0.1-0.5 s (slack fibre), and that elbow mo
 rotation through the mass matrix."""
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -118,6 +119,8 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
     Thelen's method as published). An interval whose static optimisation is
     infeasible keeps its closest solution and is counted False in `feasible`; so is one whose predicted posture lies
     beyond the engine's domain (joint ranges + 0.35 rad: the arm has fallen away), solved at the domain's edge.
+    A RuntimeWarning says when the simulated GHstab at an interval's end passed gh_stab_max (which bounds the
+    solves, not the moving arm).
     ValueError for bad input (shapes, NaN, a frame beyond the joint domain,
     gains, an interval not a whole number of steps, a motion shorter than one interval, an arm with a stimulation
     map), and during the run for an interval whose feedforward plus feedback asks for a joint acceleration beyond
@@ -203,6 +206,16 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
         out_t[k], out_q[k], out_r[k] = arm.time, arm.q, spline(arm.time)
         out_u[k], out_a[k], gh[k] = u, res.activation, arm.gh_stab
         feasible[k] = res.feasible and bool(np.array_equal(q_solve, q_pred))
+    bound = so.gh_stab_max
+    if bound is not None and gh.max() > bound * (1 + 1e-6):
+        # The bound holds each interval's solve, not the moving arm: above it, the user is told (a trial's 1e-6
+        # bound gave 1.1e-3, every interval feasible, nothing said).
+        k = int(np.argmax(gh))
+        warnings.warn(f"track_motion: the simulated GHstab reached {gh[k]:.4g} at t = {out_t[k]:.4g} s, above "
+                      f"gh_stab_max {bound:.4g} ({gh[k] / bound:.3g} times; {int((gh > bound).sum())} of {gh.size} "
+                      "interval ends): the bound holds each interval's static optimisation, not the arm between "
+                      "solves (docs/control.md); choose a margin under the limit to be kept", RuntimeWarning,
+                      stacklevel=2)
     err = np.degrees(out_q - out_r)
     names = model.dof_names
     return TrackingResult(time=out_t, q=out_q, q_ref=out_r, excitation=out_u, target_activation=out_a,

@@ -96,7 +96,7 @@ class EndpointController:
     command asks for a joint acceleration beyond the static optimisation's bound (1e5 rad/s^2: with the default
     gains, on das2 at 30 60 10 60 80 deg, a hand velocity command of 2-3 km/s or a position 650-1000 m away),
     naming the command, before the arm steps; an infeasible solve keeps its best activations (counted in
-    n_infeasible)."""
+    n_infeasible; the first one warns, a RuntimeWarning naming the command)."""
 
     def __init__(self, arm, gains: EndpointGains | None = None, tendon: str = "elastic"):
         self.arm = _driven_arm(arm, "EndpointController")
@@ -149,6 +149,14 @@ class EndpointController:
             "the arm was not stepped)")
         r = self._so.solve(q, qd, qdd, on_infeasible="return")
         self.n_solves += 1
+        if not r.feasible and self.n_infeasible == 0:
+            # Once per controller: a decoder's unreachable command (a target metres away, a hand speed of
+            # 100 m/s) flung the arm past the GH rim with only the counter to tell (a trial's finding).
+            why = r.report.splitlines()[0] if r.report else "infeasible"
+            warnings.warn("EndpointController: a solve has no activations that give the commanded hand motion (x_ref "
+                          f"{np.linalg.norm(self.x_ref - x):.3g} m from the hand, v_ref {np.linalg.norm(self.v_ref):.3g} "
+                          "m/s); its closest activations are applied and the arm may not follow; this and later "
+                          f"ones are counted in n_infeasible (warned once): {why}", RuntimeWarning, stacklevel=3)
         self.n_infeasible += int(not r.feasible)
         self.activation = r.activation
         arm.set_excitation(r.activation)
