@@ -1586,16 +1586,18 @@ def test_runner_support_holds_the_joints_until_s_after_the_first_command():
 
 
 def test_settle_bad_values_are_refused():
-    for bad in (-1.0, float("nan"), float("inf")):
+    for bad in (-1.0, float("nan"), float("inf"), 1e308):  # 1e308 overflowed the cycle count
         with pytest.raises(ValueError, match=r"--settle must be a finite number of seconds >= 0"):
             rt.RealtimeSession(settle=bad)
     r = subprocess.run([runner(), "--settle", "-0.5", "--duration", "0.1"], capture_output=True, text=True, timeout=20)
-    assert r.returncode == 2 and "--settle must be a finite number of seconds >= 0, got -0.5" in r.stderr, r.stderr
-    for bad in (-1.0, float("nan"), float("inf")):
+    assert r.returncode == 2 and "--settle must be a finite number of seconds >= 0 (at most 1e7), got -0.5" in r.stderr, r.stderr
+    for bad in (-1.0, float("nan"), float("inf"), 1e308):
         with pytest.raises(ValueError, match=r"--support must be a finite number of seconds >= 0"):
             rt.RealtimeSession(support=bad)
     r = subprocess.run([runner(), "--support", "-0.5", "--duration", "0.1"], capture_output=True, text=True, timeout=20)
-    assert r.returncode == 2 and "--support must be a finite number of seconds >= 0, got -0.5" in r.stderr, r.stderr
+    assert r.returncode == 2 and "--support must be a finite number of seconds >= 0 (at most 1e7), got -0.5" in r.stderr, r.stderr
+    r = subprocess.run([runner(), "--support", "1e308", "--duration", "0.1"], capture_output=True, text=True, timeout=20)
+    assert r.returncode == 2 and "at most 1e7), got 1e+308" in r.stderr, r.stderr
 
 
 def test_runner_profile_is_arm_apply_profile():

@@ -124,10 +124,13 @@ Schedule check_config(RtConfig& cfg) {
       if (!std::isfinite(x)) throw std::invalid_argument(std::string(name) + " contains NaN or infinite values");
   }
   // Arm.settle's own check and wording (arm.py): any finite duration >= 0.
-  if (!std::isfinite(cfg.settle_s) || cfg.settle_s < 0)
-    throw std::invalid_argument("--settle must be a finite number of seconds >= 0, got " + fmt(cfg.settle_s));
-  if (!std::isfinite(cfg.support_s) || cfg.support_s < 0)
-    throw std::invalid_argument("--support must be a finite number of seconds >= 0, got " + fmt(cfg.support_s));
+  // At most 1e7 s, as --duration: round(S x rate) cycles must be a count (1e308 overflowed llround, undefined).
+  if (!std::isfinite(cfg.settle_s) || cfg.settle_s < 0 || cfg.settle_s > 1e7)
+    throw std::invalid_argument("--settle must be a finite number of seconds >= 0 (at most 1e7), got " +
+                                fmt(cfg.settle_s));
+  if (!std::isfinite(cfg.support_s) || cfg.support_s < 0 || cfg.support_s > 1e7)
+    throw std::invalid_argument("--support must be a finite number of seconds >= 0 (at most 1e7), got " +
+                                fmt(cfg.support_s));
   if (cfg.rx_budget_us == 0) cfg.rx_budget_us = std::min(150.0, 0.25e6 * s.period_s);
   check_range("--rx-budget", cfg.rx_budget_us, 1.0, 0.5e6 * s.period_s, "us (at most half the period)");
   if (cfg.state_rate_hz == RtConfig{}.state_rate_hz && cfg.state_rate_hz > cfg.rate_hz)
