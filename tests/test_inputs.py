@@ -1,6 +1,7 @@
 """Issue 11, item 4: the API refuses what it cannot mean (types, counts, NaN time, overflow), returns
 on Ctrl-C, and refuses use of one Arm from two threads at once."""
 import _thread
+import signal
 import threading
 import time
 
@@ -97,20 +98,34 @@ def test_dt_and_duration_refuse_strings():
 def test_ctrl_c_stops_a_long_run_early(arm, call):
     """A run that would take minutes returns KeyboardInterrupt once SIGINT arrives inside the C++ loop
     (it checks every ~50 ms); the state is that of the last completed step."""
-    def fire():
-        while arm.time == 0.0:                    # wait until the C++ loop is stepping
-            time.sleep(1e-3)
-        _thread.interrupt_main()                  # as Ctrl-C: trips SIGINT's handler in the main thread
+    # A fresh clone's .ci/run started from a non-interactive shell's background job hung here (2026-12-07): such a
+    # job inherits SIGINT ignored (POSIX), Python then installs no SIGINT handler, and interrupt_main does nothing.
+    # So the test installs Python's own handler for its duration, and fires again every 5 s until the run ends.
+    done = threading.Event()
 
+    def fire():
+        while arm.time == 0.0 and not done.is_set():  # wait until the C++ loop is stepping
+            time.sleep(1e-3)
+        while not done.is_set():
+            _thread.interrupt_main()              # as Ctrl-C: trips SIGINT's handler in the main thread
+            done.wait(5.0)
+
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     firing = threading.Thread(target=fire)
     arm.set_excitation({"bicb": 0.2})
-    firing.start()
-    with pytest.raises(KeyboardInterrupt):
-        if call == "step":
-            arm.step(10**7)                       # 10 000 s of simulated time
-        else:
-            arm.simulate({"bicb": 0.2}, 10_000.0, record_every=10**6)
-    firing.join()
+    try:
+        firing.start()
+        with pytest.raises(KeyboardInterrupt):
+            try:
+                if call == "step":
+                    arm.step(10**7)                   # 10 000 s of simulated time
+                else:
+                    arm.simulate({"bicb": 0.2}, 10_000.0, record_every=10**6)
+            finally:
+                done.set()
+        firing.join()
+    finally:
+        signal.signal(signal.SIGINT, previous)
     assert 0 < arm.time < 10_000.0
     t = arm.time
     arm.step(1)                                   # still usable
