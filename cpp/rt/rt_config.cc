@@ -123,8 +123,8 @@ Schedule check_config(RtConfig& cfg) {
     for (double x : v)
       if (!std::isfinite(x)) throw std::invalid_argument(std::string(name) + " contains NaN or infinite values");
   }
-  // Arm.settle's own check and wording (arm.py): any finite duration >= 0.
-  // At most 1e7 s, as --duration: round(S x rate) cycles must be a count (1e308 overflowed llround, undefined).
+  // Arm.settle's check (arm.py: any finite duration >= 0), and at most 1e7 s, as --duration: round(S x rate) cycles
+  // must be a count (1e308 overflowed llround, undefined).
   if (!std::isfinite(cfg.settle_s) || cfg.settle_s < 0 || cfg.settle_s > 1e7)
     throw std::invalid_argument("--settle must be a finite number of seconds >= 0 (at most 1e7), got " +
                                 fmt(cfg.settle_s));
