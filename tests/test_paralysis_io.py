@@ -164,3 +164,62 @@ def test_motion_replays_as_a_kinematic_result(arm, tmp_path):
     np.testing.assert_allclose(replay.q, res.q, atol=1e-8)
     np.testing.assert_allclose(replay.thorax_humerus, res.thorax_humerus, atol=1e-7)
     assert np.all(np.isnan(replay.gh_stab)) and np.all(np.isnan(replay.activation))
+
+
+def _rest_rows(labels_extra="", values_extra="", times=(0, 0.5)):
+    rest = np.array([d["rest"] for d in armrt._core.model_info("das2")["dofs"]])
+    body = "".join(f"{t} " + " ".join(f"{v:.8f}" for v in rest) + (f" {values_extra}" if values_extra else "") + "\n"
+                   for t in times)
+    return rest, "time GH_y GH_z GH_yy EL_x PS_y" + (f" {labels_extra}" if labels_extra else "") + "\n" + body
+
+
+def test_mot_column_that_is_no_coordinate_is_named_and_a_misspelt_one_hinted(tmp_path):
+    # A typo beside the right column (EL_X_typo beside EL_x) was dropped without a word; now a RuntimeWarning
+    # names it and the coordinate it resembles. Without the right column the missing-column error points at it.
+    rest, table = _rest_rows("EL_X_typo", "9.0")
+    p = tmp_path / "m.mot"
+    p.write_text("m\ninDegrees=no\nendheader\n" + table)
+    with pytest.warns(RuntimeWarning, match=r"columns EL_X_typo \(like EL_x\) are not coordinates of das2; ignored"):
+        m = opensim_io.read_motion(p)
+    np.testing.assert_allclose(m.q[0], rest, atol=1e-8)
+    p.write_text("m\ninDegrees=no\nendheader\n" + table.replace(" EL_x ", " ELbow_x ", 1))
+    with pytest.raises(ValueError, match=r"no column for coordinates \['EL_x'\].*perhaps misspelt: EL_x \(a column "
+                                         r"'ELbow_x'\?\)"):
+        opensim_io.read_motion(p)
+
+
+def test_mot_of_das3_and_opensim_states_paths_read_without_warnings(tmp_path):
+    # The DAS3 girdle's columns are known (das2 fixes them); an OpenSim 4 states file names coordinates by path
+    # (/jointset/<joint>/<coordinate>/value) and also holds speeds and muscle states, which are ignored.
+    import warnings
+    rest = np.array([d["rest"] for d in armrt._core.model_info("das2")["dofs"]])
+    names = ["GH_y", "GH_z", "GH_yy", "EL_x", "PS_y"]
+    labels = ["time"] + [f"/jointset/j{k}/{n}/value" for k, n in enumerate(names)] + \
+        [f"/jointset/j{k}/{n}/speed" for k, n in enumerate(names)] + ["/forceset/bic_l/activation"]
+    p = tmp_path / "states.sto"
+    p.write_text("states\nversion=1\nnRows=2\nnColumns=12\ninDegrees=no\nendheader\n" + "\t".join(labels) + "\n"
+                 + "".join("\t".join(map(str, [t, *rest, *np.zeros(5), 0.1])) + "\n" for t in (0, 0.01)))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        m = opensim_io.read_motion(p)
+    np.testing.assert_allclose(m.q[1], rest, atol=1e-12)
+    # A path and a plain name for one coordinate are two columns for it.
+    p.write_text(p.read_text().replace("/forceset/bic_l/activation", "EL_x"))
+    with pytest.raises(ValueError, match=r"coordinate EL_x has 2 columns \(/jointset/j3/EL_x/value, EL_x\)"):
+        opensim_io.read_motion(p)
+
+
+@pytest.mark.parametrize("header, message", [
+    ("nRows=3", r"the header says nRows=3 but the file has 2 rows: cut short"),
+    ("nColumns=5", r"the header says nColumns=5 but the file has 6 columns \(time included\)"),
+    ("nRows=two", r"the header's nRows must be an integer, got 'two'"),
+])
+def test_storage_whose_header_contradicts_its_table_is_refused(tmp_path, header, message):
+    # A file cut short (nRows says more than there are) was read as the shorter motion without a word.
+    _, table = _rest_rows()
+    p = tmp_path / "m.mot"
+    p.write_text(f"m\n{header}\ninDegrees=no\nendheader\n" + table)
+    with pytest.raises(ValueError, match=message):
+        opensim_io.read_motion(p)
+    p.write_text("m\nnRows=2\nnColumns=6\ninDegrees=no\nendheader\n" + table)
+    assert opensim_io.read_motion(p).q.shape == (2, 5)

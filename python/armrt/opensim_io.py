@@ -25,7 +25,9 @@ DOF names, `inDegrees=yes` converted to radians) into a `Motion`: a start postur
 """
 from __future__ import annotations
 
+import difflib
 import json
+import re
 from pathlib import Path
 
 import numpy as np
@@ -95,6 +97,17 @@ def read_storage(path) -> tuple[dict, list[str], np.ndarray]:
             rows.append([float(v) for v in fields])
         except ValueError:
             raise ValueError(f"{path}:{lineno}: not a number in {line[:60]!r}") from None
+    # OpenSim's Storage writes the table's size in the header: a file that disagrees was cut short or edited by
+    # hand, and reading what is there would lose the rest without a word.
+    for key, have, what in (("nRows", len(rows), "rows"), ("nColumns", len(labels), "columns (time included)")):
+        if key in header:
+            try:
+                said = int(header[key])
+            except ValueError:
+                raise ValueError(f"{path}: the header's {key} must be an integer, got {header[key]!r}") from None
+            if said != have:
+                raise ValueError(f"{path}: the header says {key}={said} but the file has {have} {what}: cut short "
+                                 f"or edited? Correct the header or the table")
     return header, labels, np.array(rows, dtype=float).reshape(-1, len(labels))
 
 
@@ -282,13 +295,37 @@ def _check_angle_unit(path, q: np.ndarray, raw: np.ndarray, in_degrees: bool, do
                      f"Correct the header's inDegrees line.")
 
 
+# The coordinates of the DAS3 OpenSim model (das3.osim's CoordinateSet): columns of a DAS3 motion any armrt model
+# may read, the girdle's ignored by das2 (which fixes it).
+_DAS3_COORDINATES = ("SC_y", "SC_z", "SC_x", "AC_y", "AC_z", "AC_x", "GH_y", "GH_z", "GH_yy", "EL_x", "PS_y")
+# An OpenSim 4 states file's coordinate columns: /jointset/<joint>/<coordinate>/value (and .../speed).
+_STATE_VALUE = re.compile(r"^/jointset/[^/]+/([^/]+)/value$")
+
+
+def _coordinate_label(label: str) -> str:
+    """The coordinate a storage column holds: its label, or <coordinate> for an OpenSim 4 state path
+    /jointset/<joint>/<coordinate>/value; other labels as they are."""
+    label = label.strip()
+    match = _STATE_VALUE.match(label)
+    return match.group(1) if match else label
+
+
+def _resembles(name: str, candidates) -> str | None:
+    """The candidate `name` most resembles, ignoring case (difflib's ratio at least 0.6), or None."""
+    lower = {c.lower(): c for c in candidates}
+    close = difflib.get_close_matches(name.lower(), list(lower), n=1, cutoff=0.6)
+    return lower[close[0]] if close else None
+
+
 def read_motion(path, model: str = "das2") -> Motion:
     """A .mot/.sto of joint angles as a Motion (radians). Columns: the model's DOFs by OpenSim
-    coordinate name (GH_y, ..., PS_y; das3 also SC_y ... AC_x) or armrt name (GHy, ...); other columns
-    (das2's fixed girdle, SC_*, AC_*) are ignored, with a RuntimeWarning if the girdle differs from the
-    model's. `inDegrees=yes`
-    is honoured. Raises ValueError naming missing columns, a coordinate with two columns (GH_y and GHy), two time
-    columns, non-numeric rows, a bad time column, an inDegrees other than yes or no, or an inDegrees header the
+    coordinate name (GH_y, ..., PS_y; das3 also SC_y ... AC_x), armrt name (GHy, ...) or OpenSim 4 state path
+    (/jointset/<joint>/GH_y/value, as a states .sto holds them). das2's fixed girdle (SC_*, AC_*) is ignored, with a
+    RuntimeWarning if it differs from the model's; other state paths (speeds, /forceset/...) are ignored; any
+    other column is ignored with a RuntimeWarning naming it (and the coordinate it resembles). `inDegrees=yes`
+    is honoured. Raises ValueError naming missing columns (and a column that looks like a misspelling of one), a
+    coordinate with two columns (GH_y and GHy), two time columns, a header nRows or nColumns the table contradicts,
+    non-numeric rows, a bad time column, an inDegrees other than yes or no, or an inDegrees header the
     values contradict (angles outside the model's ranges at more samples than in the other unit)."""
     from . import _core
     from .arm import known_model
@@ -302,7 +339,9 @@ def read_motion(path, model: str = "das2") -> Motion:
     if flag not in ("yes", "no"):  # OpenSim writes yes or no; 'true' was read as no
         raise ValueError(f"{path}: the header's inDegrees must be yes or no, got {header['inDegrees'].strip()!r}")
     deg = flag == "yes"
-    col = {name.strip(): k for k, name in enumerate(labels)}
+    raw_labels = [label.strip() for label in labels]
+    labels = [_coordinate_label(label) for label in raw_labels]
+    col = {name: k for k, name in enumerate(labels)}
     if "time" not in col:
         raise ValueError(f"{path}: no 'time' column")
     time_columns = sum(label.strip() == "time" for label in labels)
@@ -312,15 +351,28 @@ def read_motion(path, model: str = "das2") -> Motion:
     for d in info["dofs"]:
         # One column per coordinate: a name twice, or OpenSim's and armrt's name both (GH_y and GHy), is
         # ambiguous; before, one of them was taken silently.
-        both = [name for name in dict.fromkeys((d["osim_name"], d["name"]))
-                for label in labels if label.strip() == name]
+        both = [raw for raw, label in zip(raw_labels, labels) if label in (d["osim_name"], d["name"])]
         if len(both) > 1:
             raise ValueError(f"{path}: coordinate {d['osim_name']} has {len(both)} columns ({', '.join(both)}); "
                              f"keep one")
         k = col.get(d["osim_name"], col.get(d["name"]))
         (missing if k is None else idx).append(d["osim_name"] if k is None else k)
+    girdle = [(g["osim_name"], g["angle"]) for g in model_description(model).get("girdle", {}).get("dofs", [])] \
+        if find_model_file(model) is not None else []
+    names = [n for d in info["dofs"] for n in (d["osim_name"], d["name"])]
+    # Columns that are no coordinate armrt knows: a typo (EL_X_typo beside EL_x) or another model's coordinate was
+    # dropped without a word. OpenSim states files' other columns (speeds, /forceset/...) are ignored silently.
+    unknown = [label for label in labels if label != "time" and label not in names
+               and label not in _DAS3_COORDINATES and not label.startswith("/")]
     if missing:
-        raise ValueError(f"{path}: no column for coordinates {missing} (columns: {labels[:12]})")
+        hints = [f"{m} (a column {close!r}?)" for m in missing if (close := _resembles(m, unknown))]
+        raise ValueError(f"{path}: no column for coordinates {missing} (columns: {labels[:12]})"
+                         + (f"; perhaps misspelt: {', '.join(hints)}" if hints else ""))
+    if unknown:
+        hints = {u: close for u in unknown if (close := _resembles(u, names))}
+        said = ", ".join(f"{u} (like {hints[u]})" if u in hints else u for u in unknown)
+        warnings.warn(f"{path}: columns {said} are not coordinates of {model}; ignored", RuntimeWarning,
+                      stacklevel=2)
     if data.shape[0] == 0:
         raise ValueError(f"{path}: no rows")
     time = data[:, col["time"]]
@@ -332,9 +384,7 @@ def read_motion(path, model: str = "das2") -> Motion:
     if time.size > 1 and np.any(np.diff(time) <= 0):
         raise ValueError(f"{path}: time must be strictly increasing")
     _check_angle_unit(path, q, data[:, idx], deg, info["dofs"])
-    path_desc = find_model_file(model)
-    if path_desc is not None:
-        girdle = [(g["osim_name"], g["angle"]) for g in model_description(model).get("girdle", {}).get("dofs", [])]
+    if girdle:
         off = [name for name, a in girdle if name in col and
                np.max(np.abs((np.radians(data[:, col[name]]) if deg else data[:, col[name]]) - a)) > 1e-3]
         if off:
