@@ -270,6 +270,24 @@ def test_batch_hand_load_refuses_non_numbers():
     b = armrt.ArmBatch(2, threads=1)
     with pytest.raises(TypeError, match="hand force must be real numbers, got complex"):
         b.set_hand_load(force=[0, 1j, 0])
+    with pytest.raises(TypeError, match="hand force must be numbers, got an array of bools"):
+        b.set_hand_load(force=[True, False, False])
+
+
+def test_hand_loads_beyond_any_arm_are_refused_by_arm_and_batch_alike():
+    """One bound for every hand load (checks.hand_load: 1e5 N, 1e4 N m): Arm.set_hand_load took 1e7 N, which
+    diverged in the first step, and ArmBatch's own rule took it too. The batch names the arm's row."""
+    arm = armrt.Arm()
+    b = armrt.ArmBatch(2, threads=1)
+    for setter in (arm.set_hand_load, b.set_hand_load):
+        with pytest.raises(ValueError, match=r"hand force of 1e\+07 N is beyond 1e\+05 N, more than any arm bears"):
+            setter(force=[0.0, -1e7, 0.0])
+        with pytest.raises(ValueError, match=r"hand moment of 2e\+04 N m is beyond 1e\+04 N m"):
+            setter(moment=[2e4, 0.0, 0.0])
+        setter(force=[0.0, -1e5, 0.0])  # the bound itself is accepted
+    with pytest.raises(ValueError, match=r"hand force \(row 1\) of 2e\+05 N"):
+        b.set_hand_load(force=[[0.0, -9.81, 0.0], [0.0, -2e5, 0.0]])
+    np.testing.assert_array_equal(np.array(arm._sim.hand_force), [0.0, -1e5, 0.0])
 
 
 # ------------------------------------------------------------------- functions of a pose check q

@@ -170,8 +170,14 @@ def test_inputs_near_the_largest_double_are_refused_where_the_answer_overflows(t
     the answer (2026-12-07). Now a ValueError naming the overflow; a large but representable answer is returned."""
     obj = armrt.Arm("das2") if target == "arm" else armrt.Model("das2")
     q = armrt.Arm("das2").rest_posture
-    with pytest.raises(ValueError, match="overflowed.*tau_muscle"):
-        obj.inverse_dynamics(q, hand_load=[1.7e308] * 3)
+    # A hand load that large is refused before (checks.hand_load's 1e5 N, the bound of every hand load); 1e9 N and
+    # 1e300 N were taken and returned as 1e9-1e299 N m (a fourth trial).
+    for force in ([1.7e308] * 3, [0.0, -1e9, 0.0], [0.0, 0.0, 1e300]):
+        with pytest.raises(ValueError, match=r"hand force of .* N is beyond 1e\+05 N, more than any arm bears"):
+            obj.inverse_dynamics(q, hand_load=force)
+    with pytest.raises(ValueError, match=r"hand moment of 2e\+04 N m is beyond 1e\+04 N m"):
+        obj.inverse_dynamics(q, hand_load={"moment": [0.0, 2e4, 0.0]})
+    assert np.all(np.isfinite(obj.inverse_dynamics(q, hand_load=[0.0, -1e5, 0.0])))  # the bound itself is a load
     with pytest.raises(ValueError, match="overflowed"):
         obj.inverse_dynamics(q, 0.0, np.full(5, 1.7e308) * np.array([1, -1, 1, -1, 1]))
     tau = obj.inverse_dynamics(q, 0.0, np.full(5, 1e300))

@@ -19,7 +19,7 @@ os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
 from . import _batch, _core  # noqa: E402
 from .arm import Arm, SimulationError  # noqa: E402
-from .checks import applied_moments, count, each_row, joint_range_rows, real_array  # noqa: E402
+from .checks import applied_moments, count, each_row, hand_load_within, joint_range_rows, real_array  # noqa: E402
 from .snapshot import StatePart, part_slices, signature  # noqa: E402
 
 # The engine counts its arms in a C int.
@@ -317,14 +317,19 @@ class ArmBatch:
         return 1.0 - self._raw.stimulation_state[:, :, STATE_COLUMNS["fatigue_A"]]
 
     def set_hand_load(self, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> None:
-        """External force (N) at the hand and moment (N m) on it, thorax frame: (n, 3) or (3,) for every arm."""
-        for name, v, target in (("force", force, self._hand_force), ("moment", moment, self._hand_moment)):
-            a = real_array(v, f"hand {name}")
+        """External force (N) at the hand and moment (N m) on it, thorax frame: (n, 3) or (3,) for every arm.
+        ValueError for another shape, NaN or a load beyond Arm.set_hand_load's bound (checks.hand_load: 1e5 N,
+        1e4 N m); TypeError for bools."""
+        checked = []
+        for name, v in (("force", force), ("moment", moment)):
+            a = real_array(v, f"hand {name}", booleans=False)
             if a.shape not in ((3,), (self.n, 3)):
                 raise ValueError(f"hand {name} must have shape ({self.n}, 3) or (3,), got {a.shape}")
             if not np.all(np.isfinite(a)):
                 raise ValueError(f"hand {name} contains NaN or infinite values")
-            target[...] = a
+            hand_load_within(a, name)
+            checked.append(a)
+        self._hand_force[...], self._hand_moment[...] = checked
         self._outputs_stale = True
 
     def set_applied_moment(self, moment=0.0) -> None:

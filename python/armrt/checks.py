@@ -272,9 +272,18 @@ def applied_moments(values, dof_names, what: str = "applied moment", rows: int |
     return dof_vector(values, what, dof_names)
 
 
+# The largest hand load anything takes (N, N m; the engine's constants, static_optimization.h): 1e5 N is ten tonnes
+# in the hand. Beyond it a step diverges at once (1e7 N in the first step), the static optimisation's QPs run for
+# minutes, and inverse dynamics returned 1e299 N m for 1e300 N: a wrong unit, never a load.
+MAX_HAND_FORCE = _core.STATIC_OPTIMIZATION_MAX_HAND_FORCE
+MAX_HAND_MOMENT = _core.STATIC_OPTIMIZATION_MAX_HAND_MOMENT
+
+
 def hand_load(force, moment) -> tuple[np.ndarray, np.ndarray]:
-    """(force (3,) N, moment (3,) N m) checked: ValueError for another shape or NaN/infinite values; TypeError for
-    bools (a load is a quantity: [True, False, False] was a 1 N force)."""
+    """(force (3,) N, moment (3,) N m) checked: ValueError for another shape, NaN/infinite values or a magnitude
+    beyond MAX_HAND_FORCE (1e5 N) or MAX_HAND_MOMENT (1e4 N m); TypeError for bools (a load is a quantity:
+    [True, False, False] was a 1 N force). The one rule of set_hand_load, inverse dynamics, static optimisation,
+    the controllers and armrt-rt's --hand-force / --hand-moment."""
     values = []
     for name, v in (("force", force), ("moment", moment)):
         a = real_array(v, f"hand {name}", booleans=False)
@@ -282,8 +291,27 @@ def hand_load(force, moment) -> tuple[np.ndarray, np.ndarray]:
             raise ValueError(f"hand {name} must have shape (3,), got {a.shape}")
         if not np.all(np.isfinite(a)):
             raise ValueError(f"hand {name} contains NaN or infinite values")
+        hand_load_within(a, name)
         values.append(a)
     return values[0], values[1]
+
+
+def hand_load_within(a: np.ndarray, name: str) -> None:
+    """ValueError where a hand force (name "force", N) or moment ("moment", N m), (3,) or (k, 3) finite, is beyond
+    MAX_HAND_FORCE or MAX_HAND_MOMENT in magnitude (row r named for (k, 3))."""
+    limit, unit = (MAX_HAND_FORCE, "N") if name == "force" else (MAX_HAND_MOMENT, "N m")
+    rows = np.atleast_2d(a)
+    scale = np.max(np.abs(rows), axis=1)
+    # |a| as scale |a / scale|: 1.7e308 N squared overflowed (a RuntimeWarning beside the refusal); its largest
+    # component where even that overflows.
+    with np.errstate(over="ignore"):
+        size = scale * np.linalg.norm(rows / np.where(scale > 0, scale, 1.0)[:, None], axis=1)
+    size = np.where(np.isfinite(size), size, scale)
+    if np.any(size > limit):
+        r = int(np.argmax(size))
+        where = f" (row {r})" if np.ndim(a) == 2 else ""
+        raise ValueError(f"hand {name}{where} of {size[r]:.3g} {unit} is beyond {limit:.0e} {unit}, more than any "
+                         f"arm bears (check the units)")
 
 
 def each_row(check, q: np.ndarray, rows, label, stacklevel: int = 2) -> None:

@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .checks import MAX_HAND_FORCE, MAX_HAND_MOMENT  # noqa: F401 (N, N m; re-exported)
 from .checks import hand_load as _checked_hand_load
 from .checks import (count, dof_vector, joint_acceleration_within, joint_range, joint_speed_within, real_array,
                      real_scalar)
@@ -115,14 +116,14 @@ def _state(model, q, qdot, qddot, sim=None):
 # (static_optimization.h), which armrt-rt holds its targets to as well. At a 1e16 N hand load ProxQP's closest-solution
 # QPs ran for minutes (absolute tolerances below what doubles resolve), while up to 1e14 N they report the frame
 # infeasible in about a second. The bounds are far above anything an arm bears or does (1e5 N is ten tonnes in the
-# hand; a baseball pitch's shoulder reaches about 1e3-1e4 rad/s^2).
-def _engine_bounds():
+# hand; a baseball pitch's shoulder reaches about 1e3-1e4 rad/s^2). The hand-load bounds hold for every hand load
+# (checks.hand_load).
+def _engine_max_joint_acceleration() -> float:
     from . import _core  # noqa: PLC0415 (the extension, not an armrt module: no cycle)
-    return (_core.STATIC_OPTIMIZATION_MAX_HAND_FORCE, _core.STATIC_OPTIMIZATION_MAX_HAND_MOMENT,
-            _core.STATIC_OPTIMIZATION_MAX_JOINT_ACCELERATION)
+    return _core.STATIC_OPTIMIZATION_MAX_JOINT_ACCELERATION
 
 
-MAX_HAND_FORCE, MAX_HAND_MOMENT, MAX_JOINT_ACCELERATION = _engine_bounds()  # N, N m, rad/s^2 (per DOF)
+MAX_JOINT_ACCELERATION = _engine_max_joint_acceleration()  # rad/s^2 (per DOF)
 
 
 def _engine_min_gh_stab_max() -> float:
@@ -135,14 +136,9 @@ def _engine_min_gh_stab_max() -> float:
 MIN_GH_STAB_MAX = _engine_min_gh_stab_max()
 
 
-def _check_solvable_scale(model, qdd, f_hand, m_hand) -> None:
-    """ValueError for a hand load or joint acceleration beyond MAX_HAND_FORCE, MAX_HAND_MOMENT or
-    MAX_JOINT_ACCELERATION (the static optimisation's input, either backend)."""
-    for what, value, limit, unit in (("hand force", float(np.linalg.norm(f_hand)), MAX_HAND_FORCE, "N"),
-                                     ("hand moment", float(np.linalg.norm(m_hand)), MAX_HAND_MOMENT, "N m")):
-        if value > limit:
-            raise ValueError(f"{what} of {value:.3g} {unit} is beyond {limit:.0e} {unit}, more than any arm bears: "
-                             f"static optimisation refuses it (check the units)")
+def _check_solvable_scale(model, qdd) -> None:
+    """ValueError for a joint acceleration beyond MAX_JOINT_ACCELERATION (the static optimisation's input, either
+    backend; its hand load is held to MAX_HAND_FORCE and MAX_HAND_MOMENT by checks.hand_load, as every hand load)."""
     joint_acceleration_within(qdd, model.dof_names, MAX_JOINT_ACCELERATION, "static optimisation")
 
 
@@ -445,7 +441,7 @@ class StaticOptimizer:
         q, qd, qdd = _state(model, q, qdot, qddot, sim)
         f_hand, m_hand = _hand_load(hand_load, self._default_load if not hasattr(self._arm_or_model, "_sim") else
                                     (np.array(sim.hand_force), np.array(sim.hand_moment)))
-        _check_solvable_scale(model, qdd, f_hand, m_hand)
+        _check_solvable_scale(model, qdd)
         if self._cpp is not None:
             res = self._solve_cpp(q, qd, qdd, f_hand, m_hand, on_infeasible)
             if res is not None:

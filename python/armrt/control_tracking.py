@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .checks import STATE_MARGIN, joint_acceleration_within, real_array, real_scalar
-from .control import StaticOptimizer, _engine_bounds
+from .control import MAX_JOINT_ACCELERATION, StaticOptimizer
 from .control_motion import check_motion
 
 KP_THELEN_2003 = 100.0  # s^-2, Thelen et al. 2003
@@ -192,7 +192,7 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
         # count the interval infeasible.
         q_solve = np.clip(q_pred, domain_lo, domain_hi)
         # The solve refuses this too; here the message can name the interval and the gains that asked for it.
-        joint_acceleration_within(qdd_des, model.dof_names, _engine_bounds()[2],
+        joint_acceleration_within(qdd_des, model.dof_names, MAX_JOINT_ACCELERATION,
                                   f"track_motion (interval {k}, t = {t:.4g} s; the feedback kp = {kp:g} s^-2, kv = "
                                   f"{kv:g} s^-1 on the error; the arm is left where the run stopped)")
         qdd_asked = qdd_des

@@ -26,7 +26,7 @@ import numpy as np
 
 from . import checks
 from .arm import Arm
-from .control import StaticOptimizer, _engine_bounds, check_gh_stab_max, check_on_infeasible
+from .control import MAX_JOINT_ACCELERATION, StaticOptimizer, check_gh_stab_max, check_on_infeasible
 from .errors import StaticOptimizationInfeasible
 
 
@@ -143,7 +143,7 @@ class EndpointController:
         qdd = Jp @ a - (np.eye(len(q)) - Jp @ J) @ (g.k_null * qd)
         # The solve refuses this too; here the message can name the command that asked for it.
         checks.joint_acceleration_within(
-            qdd, arm.dof_names, _engine_bounds()[2],
+            qdd, arm.dof_names, MAX_JOINT_ACCELERATION,
             f"EndpointController (the command: x_ref {np.linalg.norm(self.x_ref - x):.3g} m from the hand, v_ref "
             f"{np.linalg.norm(self.v_ref):.3g} m/s, so a desired hand acceleration of {np.linalg.norm(a):.3g} m/s^2; "
             "the arm was not stepped)")
