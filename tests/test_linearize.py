@@ -173,12 +173,36 @@ def test_linearize_raises_where_the_step_would_stop():
     x[arm.n_dofs + arm.dof_names.index("GHy")] = 99.999
     arm.set_state_vector(x, StatePart.PHYSICS)
     before = arm.get_state_vector(StatePart.FULL)
-    with pytest.raises(armrt.SimulationError, match=r"qdot\[GHy\].*exceeds the bound"):
+    # Said of the step from x0: this arm was not stepped, and the step() message's "call reset()" was misleading.
+    with pytest.raises(armrt.SimulationError, match=r"linearize: the step from this state would fail \(.*qdot\[GHy\]"
+                                                    r".*exceeds the bound.*\); A and B are of no step\. The arm is "
+                                                    r"unchanged \(not stepped\)$") as caught:
         arm.linearize()
+    assert "reset()" not in str(caught.value)
     np.testing.assert_array_equal(arm.get_state_vector(StatePart.FULL), before)
     assert arm.linearize(continuous=True).dfdx.shape == (x.size, x.size)  # no step taken: nothing to refuse
     with pytest.raises(armrt.SimulationError, match=r"qdot\[GHy\]"):
         arm.step(1)
+
+
+@pytest.mark.parametrize("continuous", [False, True])
+def test_linearize_after_a_failed_step_raises_the_simulation_error(continuous):
+    """A fourth trial's arm diverged in its first step (qdot 1e29 rad/s): linearize(continuous=True) returned NaN
+    matrices without a word, and the discrete call a ValueError of set_state_vector's. Now both raise the
+    SimulationError the docstring promises, naming the failed step, until reset()."""
+    arm = armrt.Arm("das2")
+    x = arm.get_state_vector(StatePart.PHYSICS)
+    x[arm.n_dofs + arm.dof_names.index("GHy")] = 99.0
+    arm.set_state_vector(x, StatePart.PHYSICS)
+    arm.set_hand_load([0.0, 0.0, 1e5])
+    with pytest.raises(armrt.SimulationError):
+        arm.step(5)
+    with pytest.raises(armrt.SimulationError, match=r"linearize: the arm's last step failed \(.*\); there is no "
+                                                    r"state to linearise at; call reset\(\) to continue"):
+        arm.linearize(continuous=continuous)
+    arm.reset()
+    arm.set_hand_load()  # from rest, the step under 1e5 N would fail too (the test above)
+    assert np.all(np.isfinite(arm.linearize(continuous=continuous).dfdx))
 
 
 def test_linearize_refuses_what_it_cannot_linearize():

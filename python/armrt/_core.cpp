@@ -694,6 +694,7 @@ PYBIND11_MODULE(_core, mod) {
       // linearize (engine.h) at the current state and inputs: (dfdx, dfdu) or, with step, (dfdx, dfdu, A, B, x_next,
       // in_domain) of one ROS2 step of dt / substeps.
       .def("linearize", [](Arm& s, LinearizeWorkspace& w, bool step) -> py::tuple {
+        raise_if_failed(s);  // a diverged state (qdot 1e29 rad/s) gave NaN matrices, or a set-state error, before
         const int ns = state_size(s.model), n = s.model.num_elements;
         Array dfdx({ns, ns}), dfdu({ns, n});
         if (!step) {

@@ -18,6 +18,7 @@ from .checks import MAX_COUNT, RANGE_MARGIN, count, deg, dof_vector, joint_range
 from .data import OUTPUTS_DOC, Data, State, _snapshot_from_state
 from .snapshot import StatePart
 from .errors import ConcurrentUseError, SimulationError, StepSizeWarning
+from .errors import RESET_HINT as _RESET_HINT
 from .errors import simulation_error as _simulation_error
 from .linearization import STATE_UNITS, Linearization
 from .linearization import state_names as linearization_state_names
@@ -725,19 +726,29 @@ class Arm:
                                  f"(continuous=True gives df/dx, df/du for any integrator)")
             if self._linearize_workspace is None:
                 self._linearize_workspace = _core.LinearizeWorkspace()
+            try:
+                out = self._sim.linearize(self._linearize_workspace, not continuous)
+            except RuntimeError as exc:  # the arm's last step failed: its state is no operating point
+                raise _simulation_error(RuntimeError(f"linearize: the arm's last step failed ({exc}); there is "
+                                                     f"no state to linearise at")) from None
             x0 = self.data.get_state_vector(StatePart.PHYSICS)
             u0 = self.excitation.copy()
-            out = self._sim.linearize(self._linearize_workspace, not continuous)
         x_next = None
         if not continuous:
             # Where the step lands, from the stages linearize() formed (the step's own arithmetic; a deepcopy of the
             # arm stepped once cost 4x the linearisation, docs/control.md "Cost"). Where that step would stop, the
-            # step itself, on a copy, raises the SimulationError step() raises.
+            # step itself, on a copy, raises the SimulationError step() raises, said of the step from x0: this arm
+            # was not stepped and needs no reset.
             x_next, in_domain = out[4], out[5]
             if not in_domain:
                 probe = copy.deepcopy(self)
                 probe.set_state_vector(x0, StatePart.PHYSICS)
-                probe.step(1)
+                try:
+                    probe.step(1)
+                except SimulationError as exc:
+                    said = str(exc).removesuffix(_RESET_HINT)
+                    raise SimulationError(f"linearize: the step from this state would fail ({said}); A and B are "
+                                          f"of no step. The arm is unchanged (not stepped)") from None
                 x_next = probe.get_state_vector(StatePart.PHYSICS)
         slices = {k: slice(o, o + n) for k, (o, n) in self.model.state_layout.items()}
         return Linearization(A=None if continuous else out[2], B=None if continuous else out[3], dfdx=out[0],

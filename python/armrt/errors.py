@@ -17,11 +17,14 @@ class ConcurrentUseError(RuntimeError):
     """An Arm (or its Data) was used from a second thread while another thread was stepping or changing it."""
 
 
+RESET_HINT = "; call reset() to continue"  # how a SimulationError of a failed step ends
+
+
 def simulation_error(exc: RuntimeError) -> SimulationError:
     """The engine's RuntimeError as a SimulationError that says how to go on."""
     msg = str(exc)
     # A step the integrator cannot take fails again after reset(): the message says what to change.
-    hint = "" if msg.startswith("step too large") else "; call reset() to continue"
+    hint = "" if msg.startswith("step too large") else RESET_HINT
     return SimulationError(msg + hint)
 
 
