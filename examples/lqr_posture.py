@@ -22,6 +22,7 @@ linear-quadratic feedback on Arm.linearize()'s (A, B) (docs/control.md "Linearis
 from __future__ import annotations
 
 import argparse
+import warnings
 
 import numpy as np
 import scipy.linalg
@@ -60,6 +61,12 @@ def baseline_excitation(arm: armrt.Arm, q: np.ndarray, cocontraction: float, u_m
         if np.abs(qdd).max() < 1e-6:
             break
         u = scipy.optimize.lsq_linear(G, G @ u - M @ qdd, bounds=(cocontraction, u_max)).x
+    else:
+        # An LQR about a point that is no equilibrium regulates towards a moving state: said, not printed only (a
+        # fourth trial's posture stopped at |qdd| 0.15 rad/s^2 and the script went on).
+        warnings.warn(f"the baseline excitation is no equilibrium of this posture: |qdd| = {np.abs(qdd).max():.2g} "
+                      f"rad/s^2 after 20 corrections (excitations within [{cocontraction:g}, {u_max:g}]); the LQR is "
+                      f"designed about a point the arm accelerates from", RuntimeWarning, stacklevel=2)
     return u
 
 

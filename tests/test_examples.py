@@ -64,6 +64,22 @@ def test_lqr_posture_holds_against_a_push():
     assert 0.0 <= lo and hi <= 1.0
 
 
+def test_lqr_posture_warns_where_its_baseline_is_no_equilibrium():
+    """A fourth trial's posture (GHy 0.8, GHz 1.2, GHyy 0.3, ELx 2.0, PSy 0.5 rad): the baseline's corrections stop
+    at |qdd| 0.15 rad/s^2 and the example went on to design its LQR about that point with the number only printed.
+    Now a RuntimeWarning says so; the example's own posture balances without one."""
+    import warnings
+
+    import armrt
+    ex = load("lqr_posture")
+    arm = armrt.Arm("das2")
+    with pytest.warns(RuntimeWarning, match=r"no equilibrium of this posture: \|qdd\| = .* rad/s\^2 after 20"):
+        ex.baseline_excitation(arm, np.array([0.8, 1.2, 0.3, 2.0, 0.5]), 0.05)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ex.baseline_excitation(arm, np.array([ex.POSTURE[d] for d in arm.dof_names]), 0.05)
+
+
 @pytest.mark.parametrize("name, rows", [("cmc_elbow", 6), ("posture_gh_limit", 4)])
 def test_control_examples_print_their_tables(name, rows, capsys):
     load(name).main()
