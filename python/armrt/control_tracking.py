@@ -19,10 +19,15 @@ simulated fibres; F_model: the optimiser's at the same activations, fibres at th
 velocity or a rigid tendon), asking R^T F_model = tau(qddot_des) - d = tau(qddot_des - M^-1 d) since the inverse
 dynamics is linear in qddot. It removes the slow-motion drift docs/control.md measures: an element the optimiser
 recruits from zero gives no force for 0.1-0.5 s (slack fibre), and that elbow moment reaches the forearm's
-rotation through the mass matrix."""
+rotation through the mass matrix. d alone misses the error within an interval (the activations reach a* only at
+its end), which on a fast elastic-tendon flexion had cancelled part of it, so d alone made that worse; the
+correction adds the remainder the last intervals' plans missed beyond d, measured from the arm's mean acceleration
+and averaged over MODEL_ERROR_WINDOW (a disturbance observer: Ohnishi, Shibata & Murakami 1996, IEEE/ASME Trans
+Mechatronics 1:56; time-delay estimation: Youcef-Toumi & Ito 1990, J Dyn Syst Meas Control 112:133)."""
 from __future__ import annotations
 
 import warnings
+from collections import deque
 from dataclasses import dataclass
 
 import numpy as np
@@ -34,6 +39,10 @@ from .control_motion import check_motion
 KP_THELEN_2003 = 100.0  # s^-2, Thelen et al. 2003
 KV_THELEN_2003 = 20.0  # s^-1, 2 sqrt(kp)
 CONTROL_INTERVAL_THELEN_2003 = 0.010  # s
+# s: correct_model_error's remainder (what the last plans missed beyond the present fibre-state error) is the mean
+# over the intervals within this window, a disturbance observer's low-pass filter (ours: docs/control.md says what
+# shorter windows did).
+MODEL_ERROR_WINDOW = 0.040
 
 
 @dataclass
@@ -115,8 +124,9 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
     control interval at a time (a whole number of the arm's steps; a last part of the motion shorter than an
     interval is not run). kp (s^-2), kv (s^-1) >= 0: the feedback gains (kp = kv = 0 plays the feedforward alone).
     gh_stab_max, weights, criterion, tendon: as armrt.StaticOptimizer. correct_model_error: subtract the optimiser's
-    muscle-model error at the arm's present state from the moments it is asked for (module docstring; off by default,
-    Thelen's method as published). An interval whose static optimisation is
+    muscle-model error at the arm's present state, and what the last intervals' plans missed beyond it (averaged over
+    MODEL_ERROR_WINDOW), from the moments it is asked for (module docstring; off by default, Thelen's method as
+    published). An interval whose static optimisation is
     infeasible keeps its closest solution and is counted False in `feasible`; so is one whose predicted posture lies
     beyond the engine's domain (joint ranges + 0.35 rad: the arm has fallen away), solved at the domain's edge.
     A RuntimeWarning says when the simulated GHstab at an interval's end passed gh_stab_max (which bounds the
@@ -181,6 +191,8 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
     out_t, out_q, out_r = np.empty(k_total), np.empty((k_total, nq)), np.empty((k_total, nq))
     out_u, out_a = np.empty((k_total, n)), np.empty((k_total, n))
     feasible, gh = np.empty(k_total, bool), np.empty(k_total)
+    remainder = deque(maxlen=max(1, int(round(MODEL_ERROR_WINDOW / interval))))  # N m per DOF, one per interval
+    last_plan = None  # (qdot rad/s, qddot asked rad/s^2, M kg m^2, d N m) at the last interval's start
     for k in range(k_total):
         t = arm.time
         t_next = t + interval
@@ -197,7 +209,21 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
                                   f"{kv:g} s^-1 on the error; the arm is left where the run stopped)")
         qdd_asked = qdd_des
         if correct_model_error:
-            qdd_asked = qdd_des - np.linalg.solve(arm.mass_matrix(q_solve), muscle_model_error(arm, tendon))
+            # d, the optimiser's muscle-model error at the present state, is taken where the activations equal the
+            # last plan's: it misses what happens within an interval (the activations reach the plan only at its
+            # end), which on the elastic 1 s flexion had cancelled part of it. The remainder is what the last plan
+            # missed beyond d, from the arm's mean acceleration over the interval, M (qdot - qdot_last) / T -
+            # M qddot_asked_last, less the interval's fibre-state error (d at its two ends), averaged over
+            # MODEL_ERROR_WINDOW: a disturbance observer (Ohnishi et al. 1996). An infeasible interval's shortfall
+            # is no model error and would wind up: it is left out.
+            d = muscle_model_error(arm, tendon)
+            mass = arm.mass_matrix(q_solve)
+            if last_plan is not None and feasible[k - 1]:
+                qd_last, qdd_last, mass_last, d_last = last_plan
+                remainder.append(mass_last @ ((qd - qd_last) / interval - qdd_last) - 0.5 * (d_last + d))
+            correction = d + (np.mean(remainder, axis=0) if remainder else 0.0)
+            qdd_asked = qdd_des - np.linalg.solve(mass, correction)
+            last_plan = (qd.copy(), qdd_asked, mass, d)
         res = so.solve(q_solve, qd, qdd_asked, on_infeasible="return")
         amax = arm.max_activation
         u = excitation_reaching(arm.activation, res.activation, c1, c2, interval, amax)
