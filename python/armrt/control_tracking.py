@@ -112,6 +112,32 @@ def muscle_model_error(arm, tendon: str = "elastic") -> np.ndarray:
     return R.T @ (arm.outputs()["muscle_force"] - f_model)
 
 
+class ModelErrorObserver:
+    """correct_model_error's two terms for a controller that solves a static optimisation every interval_s seconds
+    of an armrt.Arm (track_motion, EndpointController): asked(qddot_des, q, qdot, last_feasible) -> the qddot (ndof,)
+    rad/s^2 to ask the optimiser for, qddot_des - M^-1 (d + mean r), with d = muscle_model_error(arm, tendon) at the
+    arm's present state and r what each of the last intervals' plans missed beyond d, M (qdot - qdot_last) /
+    interval_s - M qddot_asked_last - (d_last + d) / 2, over the last MODEL_ERROR_WINDOW (feasible intervals only):
+    a disturbance observer (Ohnishi, Shibata & Murakami 1996; docs/control.md "Why d alone was not enough"). Call it
+    once per solve, at the solve's state, before the arm moves on."""
+
+    def __init__(self, arm, tendon: str, interval_s: float, window_s: float = MODEL_ERROR_WINDOW):
+        self.arm, self.tendon, self.interval_s = arm, tendon, float(interval_s)
+        self._remainder = deque(maxlen=max(1, int(round(window_s / self.interval_s))))  # N m per DOF, one per interval
+        self._last = None  # (qdot rad/s, qddot asked rad/s^2, M kg m^2, d N m) at the last solve
+
+    def asked(self, qdd_des, q, qd, last_feasible: bool) -> np.ndarray:
+        d = muscle_model_error(self.arm, self.tendon)
+        mass = self.arm.mass_matrix(q)
+        if self._last is not None and last_feasible:  # an infeasible plan's shortfall is no model error
+            qd_last, qdd_last, mass_last, d_last = self._last
+            self._remainder.append(mass_last @ ((qd - qd_last) / self.interval_s - qdd_last) - 0.5 * (d_last + d))
+        correction = d + (np.mean(self._remainder, axis=0) if self._remainder else 0.0)
+        qdd_asked = qdd_des - np.linalg.solve(mass, correction)
+        self._last = (np.array(qd, dtype=float), qdd_asked, mass, d)
+        return qdd_asked
+
+
 def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = KV_THELEN_2003,
                  control_interval: float = CONTROL_INTERVAL_THELEN_2003, gh_stab_max=None,
                  weights=None, criterion: str = "squared", tendon: str = "elastic",
@@ -191,8 +217,7 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
     out_t, out_q, out_r = np.empty(k_total), np.empty((k_total, nq)), np.empty((k_total, nq))
     out_u, out_a = np.empty((k_total, n)), np.empty((k_total, n))
     feasible, gh = np.empty(k_total, bool), np.empty(k_total)
-    remainder = deque(maxlen=max(1, int(round(MODEL_ERROR_WINDOW / interval))))  # N m per DOF, one per interval
-    last_plan = None  # (qdot rad/s, qddot asked rad/s^2, M kg m^2, d N m) at the last interval's start
+    observer = ModelErrorObserver(arm, tendon, interval) if correct_model_error else None
     for k in range(k_total):
         t = arm.time
         t_next = t + interval
@@ -208,22 +233,8 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
                                   f"track_motion (interval {k}, t = {t:.4g} s; the feedback kp = {kp:g} s^-2, kv = "
                                   f"{kv:g} s^-1 on the error; the arm is left where the run stopped)")
         qdd_asked = qdd_des
-        if correct_model_error:
-            # d, the optimiser's muscle-model error at the present state, is taken where the activations equal the
-            # last plan's: it misses what happens within an interval (the activations reach the plan only at its
-            # end), which on the elastic 1 s flexion had cancelled part of it. The remainder is what the last plan
-            # missed beyond d, from the arm's mean acceleration over the interval, M (qdot - qdot_last) / T -
-            # M qddot_asked_last, less the interval's fibre-state error (d at its two ends), averaged over
-            # MODEL_ERROR_WINDOW: a disturbance observer (Ohnishi et al. 1996). An infeasible interval's shortfall
-            # is no model error and would wind up: it is left out.
-            d = muscle_model_error(arm, tendon)
-            mass = arm.mass_matrix(q_solve)
-            if last_plan is not None and feasible[k - 1]:
-                qd_last, qdd_last, mass_last, d_last = last_plan
-                remainder.append(mass_last @ ((qd - qd_last) / interval - qdd_last) - 0.5 * (d_last + d))
-            correction = d + (np.mean(remainder, axis=0) if remainder else 0.0)
-            qdd_asked = qdd_des - np.linalg.solve(mass, correction)
-            last_plan = (qd.copy(), qdd_asked, mass, d)
+        if observer is not None:
+            qdd_asked = observer.asked(qdd_des, q_solve, qd, k > 0 and bool(feasible[k - 1]))
         res = so.solve(q_solve, qd, qdd_asked, on_infeasible="return")
         amax = arm.max_activation
         u = excitation_reaching(arm.activation, res.activation, c1, c2, interval, amax)

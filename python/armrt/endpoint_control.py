@@ -27,6 +27,7 @@ import numpy as np
 from . import checks
 from .arm import Arm
 from .control import MAX_JOINT_ACCELERATION, StaticOptimizer, check_gh_stab_max, check_on_infeasible
+from .control_tracking import ModelErrorObserver
 from .errors import StaticOptimizationInfeasible
 
 
@@ -96,14 +97,26 @@ class EndpointController:
     command asks for a joint acceleration beyond the static optimisation's bound (1e5 rad/s^2: with the default
     gains, on das2 at 30 60 10 60 80 deg, a hand velocity command of 2-3 km/s or a position 650-1000 m away),
     naming the command, before the arm steps; an infeasible solve keeps its best activations (counted in
-    n_infeasible; the first one warns, a RuntimeWarning naming the command)."""
+    n_infeasible; the first one warns, a RuntimeWarning naming the command).
+    correct_model_error: as track_motion's (armrt.control_tracking.ModelErrorObserver, off by default): each solve
+    asks for the desired joint accelerations less M^-1 times the optimiser's muscle-model error and what the last
+    solves' plans missed; TypeError unless a bool."""
 
-    def __init__(self, arm, gains: EndpointGains | None = None, tendon: str = "elastic"):
+    def __init__(self, arm, gains: EndpointGains | None = None, tendon: str = "elastic",
+                 correct_model_error: bool = False):
         self.arm = _driven_arm(arm, "EndpointController")
         self.gains = gains if gains is not None else EndpointGains()
         if not isinstance(self.gains, EndpointGains):
             raise TypeError(f"gains must be an EndpointGains, got {type(self.gains).__name__}")
+        if not isinstance(correct_model_error, (bool, np.bool_)):
+            raise TypeError(f"correct_model_error must be True or False, got {type(correct_model_error).__name__} "
+                            f"{correct_model_error!r}")
         self._so = StaticOptimizer(arm, gh_stab_max=self.gains.gh_stab_max, tendon=tendon)
+        # track_motion's correction of the optimiser's muscle model (docs/control.md "Endpoint control"): its
+        # elements recruited from slack give no force yet, and the hand is kicked off a reached target.
+        self._observer = ModelErrorObserver(arm, tendon, self.gains.solve_every * arm.dt) if correct_model_error \
+            else None
+        self._last_feasible = False
         self.x_ref = self.hand_position()
         self.v_ref = np.zeros(3)
         self._n = 0
@@ -147,7 +160,10 @@ class EndpointController:
             f"EndpointController (the command: x_ref {np.linalg.norm(self.x_ref - x):.3g} m from the hand, v_ref "
             f"{np.linalg.norm(self.v_ref):.3g} m/s, so a desired hand acceleration of {np.linalg.norm(a):.3g} m/s^2; "
             "the arm was not stepped)")
+        if self._observer is not None:
+            qdd = self._observer.asked(qdd, q, qd, self._last_feasible)
         r = self._so.solve(q, qd, qdd, on_infeasible="return")
+        self._last_feasible = bool(r.feasible)
         self.n_solves += 1
         if not r.feasible and self.n_infeasible == 0:
             # Once per controller: a decoder's unreachable command (a target metres away, a hand speed of
