@@ -116,6 +116,32 @@ def test_linearization_matches_finite_differences_of_the_step(model, seed, steps
     assert np.abs(lin.block("A", "qdot", "lce")).max() > 10
 
 
+def test_a_kink_a_few_1e_8_m_away_is_not_straddled_by_the_internal_difference():
+    """A fourth trial's state (das2, 5 steps at u = 0 then 5 at u = 1): brachialis7's fibre velocity changes sign
+    3.5e-8 m away in its CE length, within the 1e-7 m step dJ_W was differenced with, and A[lce, lce] of that element
+    was 0.3286 against 0.3111 by central differences of the step at 3e-8 to 1e-10 m (5.6 %), its (lce, q[ELx]) entry
+    2.6 % off. With dJ_W's length steps at 1e-8 lceopt (about 1e-9 m) both agree with the step's derivative."""
+    arm = armrt.Arm("das2")
+    arm.set_excitation(np.zeros(arm.n_elements))
+    arm.step(5)
+    arm.set_excitation(np.ones(arm.n_elements))
+    arm.step(5)
+    lin = arm.linearize()
+    k = lin.state_names.index("lce[brachialis7]")
+    j = lin.state_names.index("q[ELx]")
+
+    def step(x):
+        arm.set_state_vector(x, StatePart.PHYSICS)
+        arm.step(1)
+        return arm.get_state_vector(StatePart.PHYSICS)
+
+    for col, h in ((k, 1e-9), (j, 1e-8)):  # m, rad: both well inside the kink's distance
+        e = np.zeros(lin.x0.size)
+        e[col] = h
+        derivative = (step(lin.x0 + e) - step(lin.x0 - e))[k] / (2 * h)
+        assert lin.A[k, col] == pytest.approx(derivative, rel=2e-3), (lin.state_names[col], lin.A[k, col], derivative)
+
+
 def test_continuous_joint_block_is_the_full_one():
     """dfdx's joint-acceleration block is the full one (gravity, Coriolis, dM/dq, moment-arm derivatives, hand
     load), which the step's structured Jacobian leaves out: against central differences of forward() at 1e-4."""

@@ -26,6 +26,12 @@ namespace {
 // third derivative) is below round-off, large enough that round-off (1e-16 qdd / eps) stays near 1e-10 relative.
 constexpr double kJointAngleStep = 1e-6;     // rad
 constexpr double kJointVelocityStep = 1e-6;  // rad/s
+// lceopt (of each element): the CE-length, muscle-tendon-length and lengthening-rate (per second) steps of J_W's
+// element derivatives. J_W's entries are analytic, so their differences lose only 1e-16 |J| / step to round-off; a
+// step of 1e-6 lceopt (about 1e-7 m) straddled kinks a few 1e-8 m away (the concentric/eccentric switch: A 5.6 % off,
+// tests/test_linearize.py). The activation and excitation steps stay 1e-6: at 1e-8 the rest states' (q, activation)
+// block lost digits to round-off (5.7e-4 relative against 5.6e-5).
+constexpr double kElementLengthStep = 1e-8;
 
 // The generalised forces (N m) at q that do not move with qd, the tendon forces F (N) held, paths R at q given (by
 // DOF): R^T F, the hand load, the girdle and the applied moments, as forward() sums them.
@@ -266,7 +272,7 @@ void element_derivatives(const Model& m, Data& d, LinearizeWorkspace& w, double 
   double eps[kMaxElements];
   for (int i = 0; i < n; ++i)
     eps[i] = block == 0 || block == 3
-                 ? 1e-6 / mc.inv_lceopt[i]
+                 ? kElementLengthStep / mc.inv_lceopt[i]
                  : (block == 1 ? 1e-6 : (d.excitation[i] < 0.5 * mc.max_activation[i] ? 1e-6 : -1e-6));
   const double* x = d.x.data();
   if (block == 3) {
@@ -301,7 +307,7 @@ void element_derivatives(const Model& m, Data& d, LinearizeWorkspace& w, double 
 
 // d(entries)/d(dL/dt) of every element at once: the lengthening rate enters J only through the fibre limiter
 // (the muscle stage does not see it), so the limiter alone runs again from x's unlimited J, with every element's
-// dL/dt = -R qd moved by +-1e-6 lceopt per second. Central differences.
+// dL/dt = -R qd moved by +-kElementLengthStep lceopt per second. Central differences.
 void element_rate_derivatives(const Model& m, Data& d, LinearizeWorkspace& w, double h,
                               std::array<std::array<double, kMaxElements>, kElementEntries>& out) {
   const int n = m.num_elements, nq = m.num_dofs, iqd = qd_offset(m);
@@ -314,7 +320,8 @@ void element_rate_derivatives(const Model& m, Data& d, LinearizeWorkspace& w, do
   for (int sgn = 0; sgn < 2; ++sgn) {
     StepJacobian& jac = sgn == 0 ? w.jac_plus : w.jac_minus;
     copy_jacobian(unlimited, jac);
-    for (int i = 0; i < n; ++i) shifted[i] = L_rate[i] + (sgn == 0 ? 1e-6 : -1e-6) / mc.inv_lceopt[i];
+    for (int i = 0; i < n; ++i)
+      shifted[i] = L_rate[i] + (sgn == 0 ? kElementLengthStep : -kElementLengthStep) / mc.inv_lceopt[i];
     limit_fibre_overshoot_at_rates(m, d, jac, d.x.data(), w.f.data(), h, shifted);
   }
   d.limited_fibre_steps = limited;
@@ -322,7 +329,7 @@ void element_rate_derivatives(const Model& m, Data& d, LinearizeWorkspace& w, do
     double ep[kElementEntries], em[kElementEntries];
     element_entries(w.jac_plus, i, ep);
     element_entries(w.jac_minus, i, em);
-    const double step = 2e-6 / mc.inv_lceopt[i];
+    const double step = 2 * kElementLengthStep / mc.inv_lceopt[i];
     for (int k = 0; k < kElementEntries; ++k) out[k][i] = (ep[k] - em[k]) / step;
   }
 }
