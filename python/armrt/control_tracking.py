@@ -43,6 +43,10 @@ CONTROL_INTERVAL_THELEN_2003 = 0.010  # s
 # over the intervals within this window, a disturbance observer's low-pass filter (ours: docs/control.md says what
 # shorter windows did).
 MODEL_ERROR_WINDOW = 0.040
+# s: track_motion uses the remainder at control intervals up to this, where it was measured to help (5 and 10 ms); at
+# 20-40 ms it made slow motions unstable (PSy 17.6-81 deg against 0.16-3.9 without a correction), while d alone
+# helped at every interval measured (docs/control.md "Why d alone was not enough").
+MODEL_ERROR_REMAINDER_MAX_INTERVAL = 0.010
 
 
 @dataclass
@@ -118,18 +122,19 @@ class ModelErrorObserver:
     rad/s^2 to ask the optimiser for, qddot_des - M^-1 (d + mean r), with d = muscle_model_error(arm, tendon) at the
     arm's present state and r what each of the last intervals' plans missed beyond d, M (qdot - qdot_last) /
     interval_s - M qddot_asked_last - (d_last + d) / 2, over the last MODEL_ERROR_WINDOW (feasible intervals only):
-    a disturbance observer (Ohnishi, Shibata & Murakami 1996; docs/control.md "Why d alone was not enough"). Call it
-    once per solve, at the solve's state, before the arm moves on."""
+    a disturbance observer (Ohnishi, Shibata & Murakami 1996; docs/control.md "Why d alone was not enough"); with
+    remainder=False, d alone. Call it once per solve, at the solve's state, before the arm moves on."""
 
-    def __init__(self, arm, tendon: str, interval_s: float, window_s: float = MODEL_ERROR_WINDOW):
-        self.arm, self.tendon, self.interval_s = arm, tendon, float(interval_s)
+    def __init__(self, arm, tendon: str, interval_s: float, window_s: float = MODEL_ERROR_WINDOW,
+                 remainder: bool = True):
+        self.arm, self.tendon, self.interval_s, self.remainder = arm, tendon, float(interval_s), bool(remainder)
         self._remainder = deque(maxlen=max(1, int(round(window_s / self.interval_s))))  # N m per DOF, one per interval
         self._last = None  # (qdot rad/s, qddot asked rad/s^2, M kg m^2, d N m) at the last solve
 
     def asked(self, qdd_des, q, qd, last_feasible: bool) -> np.ndarray:
         d = muscle_model_error(self.arm, self.tendon)
         mass = self.arm.mass_matrix(q)
-        if self._last is not None and last_feasible:  # an infeasible plan's shortfall is no model error
+        if self.remainder and self._last is not None and last_feasible:  # an infeasible plan's shortfall is none
             qd_last, qdd_last, mass_last, d_last = self._last
             self._remainder.append(mass_last @ ((qd - qd_last) / self.interval_s - qdd_last) - 0.5 * (d_last + d))
         correction = d + (np.mean(self._remainder, axis=0) if self._remainder else 0.0)
@@ -150,8 +155,9 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
     control interval at a time (a whole number of the arm's steps; a last part of the motion shorter than an
     interval is not run). kp (s^-2), kv (s^-1) >= 0: the feedback gains (kp = kv = 0 plays the feedforward alone).
     gh_stab_max, weights, criterion, tendon: as armrt.StaticOptimizer. correct_model_error: subtract the optimiser's
-    muscle-model error at the arm's present state, and what the last intervals' plans missed beyond it (averaged over
-    MODEL_ERROR_WINDOW), from the moments it is asked for (module docstring; off by default, Thelen's method as
+    muscle-model error at the arm's present state, and (at control intervals up to
+    MODEL_ERROR_REMAINDER_MAX_INTERVAL, 10 ms) what the last intervals' plans missed beyond it, averaged over
+    MODEL_ERROR_WINDOW, from the moments it is asked for (module docstring; off by default, Thelen's method as
     published). An interval whose static optimisation is
     infeasible keeps its closest solution and is counted False in `feasible`; so is one whose predicted posture lies
     beyond the engine's domain (joint ranges + 0.35 rad: the arm has fallen away), solved at the domain's edge.
@@ -217,7 +223,9 @@ def track_motion(arm, q_ref, time=None, kp: float = KP_THELEN_2003, kv: float = 
     out_t, out_q, out_r = np.empty(k_total), np.empty((k_total, nq)), np.empty((k_total, nq))
     out_u, out_a = np.empty((k_total, n)), np.empty((k_total, n))
     feasible, gh = np.empty(k_total, bool), np.empty(k_total)
-    observer = ModelErrorObserver(arm, tendon, interval) if correct_model_error else None
+    observer = ModelErrorObserver(arm, tendon, interval,
+                                  remainder=interval <= MODEL_ERROR_REMAINDER_MAX_INTERVAL * (1 + 1e-9)) \
+        if correct_model_error else None
     for k in range(k_total):
         t = arm.time
         t_next = t + interval
