@@ -175,7 +175,7 @@ def test_inputs_near_the_largest_double_are_refused_where_the_answer_overflows(t
     for force in ([1.7e308] * 3, [0.0, -1e9, 0.0], [0.0, 0.0, 1e300]):
         with pytest.raises(ValueError, match=r"hand force of .* N is beyond 1e\+05 N, more than any arm bears"):
             obj.inverse_dynamics(q, hand_load=force)
-    with pytest.raises(ValueError, match=r"hand moment of 2e\+04 N m is beyond 1e\+04 N m"):
+    with pytest.raises(ValueError, match=r"hand moment of 20000 N m is beyond 10000 N m"):
         obj.inverse_dynamics(q, hand_load={"moment": [0.0, 2e4, 0.0]})
     assert np.all(np.isfinite(obj.inverse_dynamics(q, hand_load=[0.0, -1e5, 0.0])))  # the bound itself is a load
     with pytest.raises(ValueError, match="overflowed"):

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
+#include <tuple>
 
 #include <openssl/evp.h>
 
@@ -114,28 +115,19 @@ Schedule check_config(RtConfig& cfg) {
     throw std::invalid_argument("--so-kd must be a finite number >= 0 (1/s), got " + fmt(*cfg.so_kd));
   if (!cfg.static_optimization && (cfg.so_gh_stab_max || cfg.so_kp || cfg.so_kd))
     throw std::invalid_argument("--so-gh-stab-max, --so-kp and --so-kd need --static-optimization");
-  // checks.hand_load's rule (the Python API's): three finite values each, at most 1e5 N and 1e4 N m in magnitude.
-  struct HandLoadOption {
-    const char* name;
-    const std::vector<double>& value;
-    double limit;
-    const char* unit;
-  };
-  for (const HandLoadOption& o : {HandLoadOption{"--hand-force", cfg.hand_force, kStaticOptimizationMaxHandForce, "N"},
-                                  HandLoadOption{"--hand-moment", cfg.hand_moment, kStaticOptimizationMaxHandMoment,
-                                                 "N m"}}) {
-    if (!o.value.empty() && o.value.size() != 3)
-      throw std::invalid_argument(std::string(o.name) + " needs 3 values (x lateral, y up, z posterior; thorax frame), got " +
-                                  std::to_string(o.value.size()));
-    double squared = 0.0;
-    for (double x : o.value) {
-      if (!std::isfinite(x)) throw std::invalid_argument(std::string(o.name) + " contains NaN or infinite values");
-      squared += x * x;
+  // checks.hand_load's rule (the Python API's): three finite values each, and the engine's hand_load_error.
+  for (const auto& [name, v, moment] :
+       {std::tuple<const char*, const std::vector<double>&, bool>{"--hand-force", cfg.hand_force, false},
+        {"--hand-moment", cfg.hand_moment, true}}) {
+    if (!v.empty() && v.size() != 3)
+      throw std::invalid_argument(std::string(name) + " needs 3 values (x lateral, y up, z posterior; thorax frame), got " +
+                                  std::to_string(v.size()));
+    for (double x : v)
+      if (!std::isfinite(x)) throw std::invalid_argument(std::string(name) + " contains NaN or infinite values");
+    if (!v.empty()) {
+      const std::string problem = hand_load_error(name, v.data(), moment);
+      if (!problem.empty()) throw std::invalid_argument(problem);
     }
-    if (std::sqrt(squared) > o.limit)
-      throw std::invalid_argument(std::string(o.name) + " of " + fmt(std::sqrt(squared)) + " " + o.unit +
-                                  " is beyond " + fmt(o.limit) + " " + o.unit +
-                                  ", more than any arm bears (check the units)");
   }
   // Arm.settle's check (arm.py: any finite duration >= 0), and at most 1e7 s, as --duration: round(S x rate) cycles
   // must be a count (1e308 overflowed llround, undefined).

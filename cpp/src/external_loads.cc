@@ -1,8 +1,29 @@
 // Stage: external loads. (q, hand force (N) and moment (N m) in the thorax frame) -> the load in the
 // scapula frame and its generalised forces tau_ext = Jv^T F + Jw^T M (N m) at the hand.
+#include <charconv>
+#include <cmath>
+#include <string>
+
 #include "armrt/engine.h"
 
 namespace armrt {
+
+namespace {
+std::string shortest(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+}  // namespace
+
+std::string hand_load_error(const char* what, const double* v, bool moment) {
+  const double size = std::hypot(v[0], v[1], v[2]);
+  const double limit = moment ? kMaxHandMoment : kMaxHandForce;
+  if (!(size > limit)) return "";
+  const char* unit = moment ? "N m" : "N";
+  return std::string(what) + " of " + shortest(size) + " " + unit + " is beyond " + shortest(limit) + " " + unit +
+         ", more than any arm bears (check the units)";
+}
 
 bool external_load(const Model& m, const double* q, const double* hand_force, const double* hand_moment,
                    double* f_ext, double* t_ext, double* tau_ext) {

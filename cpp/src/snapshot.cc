@@ -219,6 +219,11 @@ std::string snapshot_error(const Model& m, const Data& d, unsigned signature, co
           std::snprintf(buf, sizeof buf, "%s = %.6g is outside [0, 1]", value_name(m, p, i).c_str(), in[o + i]);
           return buf;
         }
+    } else if (p == SnapshotPart::hand_force || p == SnapshotPart::hand_moment) {
+      // Arm.set_hand_load's bound (engine.h hand_load_error): a state vector set it around the check.
+      const bool moment = p == SnapshotPart::hand_moment;
+      const std::string problem = hand_load_error(moment ? "hand_moment" : "hand_force", in + o, moment);
+      if (!problem.empty()) return problem;
     } else if (p == SnapshotPart::stimulation) {
       for (int c = 0; c < d.stimulation_map.num_channels; ++c) {
         const double* v = in + o + c * kStimInputs;

@@ -229,6 +229,11 @@ PYBIND11_MODULE(_core, mod) {
   mod.def("snapshot_rows", []() { return table_rows(snapshot_rows(), kNumSnapshotParts); },
           "The snapshot's parts in order, part k being signature bit 1 << k: (name, size rule, unit, stage, "
           "girdle_only, description)");
+  // engine.h hand_load_error: "" or why a hand force (moment=False, N) or moment (N m), three finite values, is
+  // refused (the one rule of every hand load; checks.hand_load calls it).
+  mod.def("hand_load_error", [](const std::string& what, const Array& v, bool moment) {
+    return hand_load_error(what.c_str(), checked(v, 3, what.c_str()), moment);
+  }, py::arg("what"), py::arg("v"), py::arg("moment"));
   mod.attr("STATIC_OPTIMIZATION_MAX_HAND_FORCE") = kStaticOptimizationMaxHandForce;    // N (static_optimization.h)
   mod.attr("STATIC_OPTIMIZATION_MIN_GH_STAB_MAX") = kMinGhStabMax;                     // 1 (static_optimization.h)
   mod.attr("STATIC_OPTIMIZATION_MAX_HAND_MOMENT") = kStaticOptimizationMaxHandMoment;  // N m

@@ -272,9 +272,10 @@ def applied_moments(values, dof_names, what: str = "applied moment", rows: int |
     return dof_vector(values, what, dof_names)
 
 
-# The largest hand load anything takes (N, N m; the engine's constants, static_optimization.h): 1e5 N is ten tonnes
-# in the hand. Beyond it a step diverges at once (1e7 N in the first step), the static optimisation's QPs run for
-# minutes, and inverse dynamics returned 1e299 N m for 1e300 N: a wrong unit, never a load.
+# The largest hand load anything takes (N, N m; the engine's kMaxHandForce, kMaxHandMoment, engine.h): 1e5 N is ten
+# tonnes in the hand, a wrong unit, never a load. Not a stability limit: 1e5 N itself throws das2 past the joint-speed
+# bound in its first step. Beyond it the static optimisation's QPs ran for minutes (1e16 N) and inverse dynamics
+# returned 1e299 N m for 1e300 N.
 MAX_HAND_FORCE = _core.STATIC_OPTIMIZATION_MAX_HAND_FORCE
 MAX_HAND_MOMENT = _core.STATIC_OPTIMIZATION_MAX_HAND_MOMENT
 
@@ -298,20 +299,14 @@ def hand_load(force, moment) -> tuple[np.ndarray, np.ndarray]:
 
 def hand_load_within(a: np.ndarray, name: str) -> None:
     """ValueError where a hand force (name "force", N) or moment ("moment", N m), (3,) or (k, 3) finite, is beyond
-    MAX_HAND_FORCE or MAX_HAND_MOMENT in magnitude (row r named for (k, 3))."""
-    limit, unit = (MAX_HAND_FORCE, "N") if name == "force" else (MAX_HAND_MOMENT, "N m")
+    MAX_HAND_FORCE or MAX_HAND_MOMENT in magnitude (row r named for (k, 3)): the engine's hand_load_error, so that
+    armrt-rt, the state vectors and this agree to the last bit."""
     rows = np.atleast_2d(a)
-    scale = np.max(np.abs(rows), axis=1)
-    # |a| as scale |a / scale|: 1.7e308 N squared overflowed (a RuntimeWarning beside the refusal); its largest
-    # component where even that overflows.
-    with np.errstate(over="ignore"):
-        size = scale * np.linalg.norm(rows / np.where(scale > 0, scale, 1.0)[:, None], axis=1)
-    size = np.where(np.isfinite(size), size, scale)
-    if np.any(size > limit):
-        r = int(np.argmax(size))
-        where = f" (row {r})" if np.ndim(a) == 2 else ""
-        raise ValueError(f"hand {name}{where} of {size[r]:.3g} {unit} is beyond {limit:.0e} {unit}, more than any "
-                         f"arm bears (check the units)")
+    for r, v in enumerate(rows):
+        what = f"hand {name}" + (f" (row {r})" if np.ndim(a) == 2 else "")
+        problem = _core.hand_load_error(what, np.ascontiguousarray(v, dtype=float), name == "moment")
+        if problem:
+            raise ValueError(problem)
 
 
 def each_row(check, q: np.ndarray, rows, label, stacklevel: int = 2) -> None:

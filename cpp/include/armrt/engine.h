@@ -112,6 +112,16 @@ bool external_load(const Model& m, const double* q, const double* hand_force, co
                    double* f_ext, double* t_ext, double* tau_ext);
 // The hand point (m) in the thorax frame at q.
 void hand_position_in_thorax(const Model& m, const double* q, double* p_thorax);
+// The largest hand load any input takes (N, N m; |.| of the three components): 1e5 N is ten tonnes in the hand.
+// A load that large is a wrong unit, not a load: 1e5 N already throws das2 past the joint-speed bound in its first
+// step, 1e7 N and more did so at once, and ProxQP's closest-solution QPs ran for minutes at 1e16 N.
+inline constexpr double kMaxHandForce = 1e5;   // N
+inline constexpr double kMaxHandMoment = 1e4;  // N m
+// "" or why a hand force (moment false: N, against kMaxHandForce) or moment (N m, kMaxHandMoment), three finite values,
+// is refused: "<what> of <|v|> N is beyond 100000 N, more than any arm bears (check the units)", |v| by std::hypot
+// (no overflow) in the shortest form that round-trips, so a value one ulp beyond shows it. The one rule of
+// Arm.set_hand_load, the snapshots, inverse dynamics, static optimisation and armrt-rt (checks.hand_load calls it).
+std::string hand_load_error(const char* what, const double* v, bool moment);
 // girdle.cc. Generalised forces tau (N m) of the girdle's contact and conoid forces at q (zero for a model
 // with a fixed girdle); with a non-null stiffness also d tau/dq (n x n row-major, N m/rad), with a
 // non-null state the contact distances and forces and the conoid's length and tension.

@@ -32,8 +32,8 @@ inline constexpr double kStaticOptimizationMomentTolerance = 1e-6;
 // Inputs beyond these are refused, not solved (control.py's check, armrt-rt's target packets and its computed
 // qddot): far above anything an arm bears or does (1e5 N is ten tonnes in the hand; a baseball pitch's shoulder
 // reaches about 1e3-1e4 rad/s^2), and at a 1e16 N load ProxQP's closest-solution QPs ran for seconds to minutes.
-inline constexpr double kStaticOptimizationMaxHandForce = 1e5;          // N, |hand force|
-inline constexpr double kStaticOptimizationMaxHandMoment = 1e4;         // N m, |hand moment|
+inline constexpr double kStaticOptimizationMaxHandForce = kMaxHandForce;    // N, |hand force| (engine.h: every load's)
+inline constexpr double kStaticOptimizationMaxHandMoment = kMaxHandMoment;  // N m, |hand moment|
 inline constexpr double kStaticOptimizationMaxJointAcceleration = 1e5;  // rad/s^2, |qddot| per DOF
 // The elastic tendon's SQP stops after this many QPs (control.py's max_iterations default, which the C++ path
 // holds fixed: StaticOptimizer refuses another max_iterations with backend "cpp").
