@@ -223,3 +223,31 @@ def test_storage_whose_header_contradicts_its_table_is_refused(tmp_path, header,
         opensim_io.read_motion(p)
     p.write_text("m\nnRows=2\nnColumns=6\ninDegrees=no\nendheader\n" + table)
     assert opensim_io.read_motion(p).q.shape == (2, 5)
+
+
+def test_opensim3_states_columns_are_known_and_messages_name_the_columns_not_read(tmp_path):
+    """A fifth trial: an OpenSim 3 states file (bare names, <coordinate>_u speeds, <muscle>.activation) gave a
+    3620-character warning hinting GH_y_u as a misspelling of GH_y; a states path without its leading slash got no
+    hint; a missing coordinate's error listed the first 12 columns (speeds), not the ones not read; a blank line
+    before the labels gave '12 values, expected 0'."""
+    import warnings
+    rest = np.array([d["rest"] for d in armrt._core.model_info("das2")["dofs"]])
+    names = ["GH_y", "GH_z", "GH_yy", "EL_x", "PS_y"]
+    labels = ["time", *names, *[f"{n}_u" for n in names], *[f"m{i}.activation" for i in range(40)]]
+    row = lambda t: "\t".join(map(str, [t, *rest, *np.zeros(5), *np.full(40, 0.1)]))  # noqa: E731
+    p = tmp_path / "states3.sto"
+    p.write_text("states\ninDegrees=no\nendheader\n\n" + "\t".join(labels) + "\n" + row(0) + "\n" + row(0.01) + "\n")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        np.testing.assert_allclose(opensim_io.read_motion(p).q[1], rest, atol=1e-12)
+    p.write_text(p.read_text().replace("\tEL_x\t", "\tjointset/hu/EL_x/value\t", 1))
+    np.testing.assert_allclose(opensim_io.read_motion(p).q[0], rest, atol=1e-12)
+    p.write_text(p.read_text().replace("jointset/hu/EL_x/value", "jointset/hu/EL_X/value", 1))
+    with pytest.raises(ValueError, match=r"columns not read: \['jointset/hu/EL_X/value'\]\); perhaps misspelt: EL_x "
+                                         r"\(a column 'jointset/hu/EL_X/value'\?\)"):
+        opensim_io.read_motion(p)
+    many = ["time", *names, *[f"extra{i}" for i in range(20)]]
+    p.write_text("m\ninDegrees=no\nendheader\n" + " ".join(many) + "\n"
+                 + " ".join(map(str, [0, *rest, *np.zeros(20)])) + "\n")
+    with pytest.warns(RuntimeWarning, match=r"columns extra0, .*, extra7 and 12 more are not coordinates"):
+        opensim_io.read_motion(p)

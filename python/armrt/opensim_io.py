@@ -83,11 +83,24 @@ def read_storage(path) -> tuple[dict, list[str], np.ndarray]:
             header[key.strip()] = value.strip()
     else:
         raise ValueError(f"{path}: no 'endheader' line")
-    if k + 1 >= len(text):
+    k += 1
+    while k < len(text) and not text[k].strip():  # blank lines before the labels (a trial's file had one)
+        k += 1
+    if k >= len(text):
         raise ValueError(f"{path}: no column labels after 'endheader'")
-    labels = text[k + 1].split()
+    labels = text[k].split()
+    body = [line for line in text[k + 1:] if line.strip()]
+    try:
+        # numpy's parser (a 1e6-row file took 25 s row by row in Python); where it fails, the loop below names the line
+        table = np.loadtxt(body, dtype=float, ndmin=2, comments=None) if body else np.empty((0, len(labels)))
+        if table.shape[1] != len(labels):
+            raise ValueError("width")
+    except ValueError:
+        table = None
     rows = []
-    for lineno, line in enumerate(text[k + 2:], start=k + 3):
+    for lineno, line in enumerate(text[k + 1:], start=k + 2):
+        if table is not None:
+            break
         if not line.strip():
             continue
         fields = line.split()
@@ -97,9 +110,11 @@ def read_storage(path) -> tuple[dict, list[str], np.ndarray]:
             rows.append([float(v) for v in fields])
         except ValueError:
             raise ValueError(f"{path}:{lineno}: not a number in {line[:60]!r}") from None
+    if table is None:
+        table = np.array(rows, dtype=float).reshape(-1, len(labels))
     # OpenSim's Storage writes the table's size in the header: a file that disagrees was cut short or edited by
     # hand, and reading what is there would lose the rest without a word.
-    for key, have, what in (("nRows", len(rows), "rows"), ("nColumns", len(labels), "columns (time included)")):
+    for key, have, what in (("nRows", table.shape[0], "rows"), ("nColumns", len(labels), "columns (time included)")):
         if key in header:
             try:
                 said = int(header[key])
@@ -108,7 +123,7 @@ def read_storage(path) -> tuple[dict, list[str], np.ndarray]:
             if said != have:
                 raise ValueError(f"{path}: the header says {key}={said} but the file has {have} {what}: cut short "
                                  f"or edited? Correct the header or the table")
-    return header, labels, np.array(rows, dtype=float).reshape(-1, len(labels))
+    return header, labels, table
 
 
 def coordinate_table(result, model_desc: dict) -> tuple[list[str], np.ndarray]:
@@ -299,7 +314,7 @@ def _check_angle_unit(path, q: np.ndarray, raw: np.ndarray, in_degrees: bool, do
 # may read, the girdle's ignored by das2 (which fixes it).
 _DAS3_COORDINATES = ("SC_y", "SC_z", "SC_x", "AC_y", "AC_z", "AC_x", "GH_y", "GH_z", "GH_yy", "EL_x", "PS_y")
 # An OpenSim 4 states file's coordinate columns: /jointset/<joint>/<coordinate>/value (and .../speed).
-_STATE_VALUE = re.compile(r"^/jointset/[^/]+/([^/]+)/value$")
+_STATE_VALUE = re.compile(r"^/?jointset/[^/]+/([^/]+)/value$")
 
 
 def _coordinate_label(label: str) -> str:
@@ -308,6 +323,21 @@ def _coordinate_label(label: str) -> str:
     label = label.strip()
     match = _STATE_VALUE.match(label)
     return match.group(1) if match else label
+
+
+# An OpenSim 3 states file's muscle state columns: <muscle>.<state>.
+_OPENSIM3_FORCE_STATES = ("activation", "fiber_length", "fiber_velocity", "excitation")
+
+
+def _known_column(label: str, names) -> bool:
+    """Whether a storage column is one armrt knows and may ignore: a coordinate of the model (names) or of DAS3, an
+    OpenSim 4 state path (/jointset/.../speed, /forceset/...), or an OpenSim 3 states file's speed (<coordinate>_u)
+    or force state (<muscle>.activation, <muscle>.fiber_length)."""
+    if label in names or label in _DAS3_COORDINATES or label.startswith("/"):
+        return True
+    if label.endswith("_u") and (label[:-2] in names or label[:-2] in _DAS3_COORDINATES):
+        return True
+    return "." in label and label.rsplit(".", 1)[1] in _OPENSIM3_FORCE_STATES
 
 
 def _resembles(name: str, candidates) -> str | None:
@@ -362,16 +392,20 @@ def read_motion(path, model: str = "das2") -> Motion:
     names = [n for d in info["dofs"] for n in (d["osim_name"], d["name"])]
     # Columns that are no coordinate armrt knows: a typo (EL_X_typo beside EL_x) or another model's coordinate was
     # dropped without a word. OpenSim states files' other columns (speeds, /forceset/...) are ignored silently.
-    unknown = [label for label in labels if label != "time" and label not in names
-               and label not in _DAS3_COORDINATES and not label.startswith("/")]
+    raw_of = dict(zip(labels, raw_labels))
+    unknown = [label for label in labels if label != "time" and not _known_column(label, names)]
     if missing:
-        hints = [f"{m} (a column {close!r}?)" for m in missing if (close := _resembles(m, unknown))]
-        raise ValueError(f"{path}: no column for coordinates {missing} (columns: {labels[:12]})"
+        hints = [f"{m} (a column {raw_of[close]!r}?)" for m in missing if (close := _resembles(m, unknown))]
+        shown = [raw_of[u] for u in unknown] or raw_labels
+        raise ValueError(f"{path}: no column for coordinates {missing} ("
+                         + (f"columns not read: {shown[:12]}" if unknown else f"columns: {shown[:12]}")
+                         + (f" and {len(shown) - 12} more" if len(shown) > 12 else "") + ")"
                          + (f"; perhaps misspelt: {', '.join(hints)}" if hints else ""))
     if unknown:
         hints = {u: close for u in unknown if (close := _resembles(u, names))}
-        said = ", ".join(f"{u} (like {hints[u]})" if u in hints else u for u in unknown)
-        warnings.warn(f"{path}: columns {said} are not coordinates of {model}; ignored", RuntimeWarning,
+        said = ", ".join(f"{raw_of[u]} (like {hints[u]})" if u in hints else raw_of[u] for u in unknown[:8])
+        more = f" and {len(unknown) - 8} more" if len(unknown) > 8 else ""
+        warnings.warn(f"{path}: columns {said}{more} are not coordinates of {model}; ignored", RuntimeWarning,
                       stacklevel=2)
     if data.shape[0] == 0:
         raise ValueError(f"{path}: no rows")
