@@ -34,7 +34,10 @@ from armrt import StatePart
 POSTURE = {"GHy": 0.4, "GHz": 0.6, "GHyy": 0.3, "ELx": 1.2, "PSy": 1.4}  # rad: arm forward, elbow flexed
 
 
-def baseline_excitation(arm: armrt.Arm, q: np.ndarray, cocontraction: float, u_max: float = 0.6) -> np.ndarray:
+U_MAX = 0.6  # the baseline's largest excitation
+
+
+def baseline_excitation(arm: armrt.Arm, q: np.ndarray, cocontraction: float, u_max: float = U_MAX) -> np.ndarray:
     """u (n_elements,) in [cocontraction, u_max] whose isometric forces balance gravity and the passive joint moments
     at q (least squares on the moment balance, scipy.optimize.lsq_linear)."""
     n = arm.n_elements
@@ -54,14 +57,14 @@ def baseline_excitation(arm: armrt.Arm, q: np.ndarray, cocontraction: float, u_m
     # G as the slope, until the posture's acceleration is below 1e-6 rad/s^2 or 20 corrections.
     probe = armrt.Arm(arm.model)
     M = arm.mass_matrix(q)
-    for _ in range(20):
+    for corrections in range(21):
         probe.set_excitation(u)
         probe.reset(q=q, activation=u)
-        qdd = probe._sim.state_derivative()[arm.n_dofs:2 * arm.n_dofs]
-        if np.abs(qdd).max() < 1e-6:
+        qdd = probe._sim.state_derivative()[arm.n_dofs:2 * arm.n_dofs]  # of the u returned, the last one included
+        if np.abs(qdd).max() < 1e-6 or corrections == 20:
             break
         u = scipy.optimize.lsq_linear(G, G @ u - M @ qdd, bounds=(cocontraction, u_max)).x
-    else:
+    if np.abs(qdd).max() >= 1e-6:
         # An LQR about a point that is no equilibrium regulates towards a moving state: said, not printed only (a
         # fourth trial's posture stopped at |qdd| 0.15 rad/s^2 and the script went on).
         warnings.warn(f"the baseline excitation is no equilibrium of this posture: |qdd| = {np.abs(qdd).max():.2g} "
@@ -120,6 +123,9 @@ def main(argv=None):
     p.add_argument("--qd-weight", type=float, default=1e2)
     p.add_argument("--r-weight", type=float, default=1.0)
     args = p.parse_args(argv)
+    if not 0.0 <= args.cocontraction < U_MAX:  # lsq_linear needs lower < upper bounds; a negative one is no excitation
+        p.error(f"--cocontraction must be in [0, {U_MAX:g}) (the baseline's excitations lie in [cocontraction, "
+                f"{U_MAX:g}]), got {args.cocontraction:g}")
 
     arm = armrt.Arm("das2")
     q = np.array([POSTURE[d] for d in arm.dof_names])

@@ -78,6 +78,10 @@ def test_lqr_posture_warns_where_its_baseline_is_no_equilibrium():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         ex.baseline_excitation(arm, np.array([ex.POSTURE[d] for d in arm.dof_names]), 0.05)
+    for bad in ("0.6", "-0.1"):  # lsq_linear's bounds error and a traceback before (a fifth trial)
+        with pytest.raises(SystemExit) as stop:
+            ex.main(["--cocontraction", bad])
+        assert stop.value.code == 2
 
 
 @pytest.mark.parametrize("name, rows", [("cmc_elbow", 6), ("posture_gh_limit", 4)])
