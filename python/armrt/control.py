@@ -136,12 +136,6 @@ def _engine_min_gh_stab_max() -> float:
 MIN_GH_STAB_MAX = _engine_min_gh_stab_max()
 
 
-def _check_solvable_scale(model, qdd) -> None:
-    """ValueError for a joint acceleration beyond MAX_JOINT_ACCELERATION (the static optimisation's input, either
-    backend; its hand load is held to MAX_HAND_FORCE and MAX_HAND_MOMENT by checks.hand_load, as every hand load)."""
-    joint_acceleration_within(qdd, model.dof_names, MAX_JOINT_ACCELERATION, "static optimisation")
-
-
 def check_on_infeasible(on_infeasible) -> None:
     """ValueError unless on_infeasible is "raise" or "return"."""
     if on_infeasible not in ("raise", "return"):
@@ -441,7 +435,8 @@ class StaticOptimizer:
         q, qd, qdd = _state(model, q, qdot, qddot, sim)
         f_hand, m_hand = _hand_load(hand_load, self._default_load if not hasattr(self._arm_or_model, "_sim") else
                                     (np.array(sim.hand_force), np.array(sim.hand_moment)))
-        _check_solvable_scale(model, qdd)
+        # Either backend's input; the hand load is held to MAX_HAND_FORCE, MAX_HAND_MOMENT by checks.hand_load.
+        joint_acceleration_within(qdd, model.dof_names, MAX_JOINT_ACCELERATION, "static optimisation")
         if self._cpp is not None:
             res = self._solve_cpp(q, qd, qdd, f_hand, m_hand, on_infeasible)
             if res is not None:

@@ -128,7 +128,7 @@ class ModelErrorObserver:
     def __init__(self, arm, tendon: str, interval_s: float, window_s: float = MODEL_ERROR_WINDOW,
                  remainder: bool = True):
         self.arm, self.tendon, self.interval_s, self.remainder = arm, tendon, float(interval_s), bool(remainder)
-        self._remainder = deque(maxlen=max(1, int(round(window_s / self.interval_s))))  # N m per DOF, one per interval
+        self._missed = deque(maxlen=max(1, int(round(window_s / self.interval_s))))  # r, N m per DOF, one per interval
         self._last = None  # (qdot rad/s, qddot asked rad/s^2, M kg m^2, d N m) at the last solve
 
     def asked(self, qdd_des, q, qd, last_feasible: bool) -> np.ndarray:
@@ -136,8 +136,8 @@ class ModelErrorObserver:
         mass = self.arm.mass_matrix(q)
         if self.remainder and self._last is not None and last_feasible:  # an infeasible plan's shortfall is none
             qd_last, qdd_last, mass_last, d_last = self._last
-            self._remainder.append(mass_last @ ((qd - qd_last) / self.interval_s - qdd_last) - 0.5 * (d_last + d))
-        correction = d + (np.mean(self._remainder, axis=0) if self._remainder else 0.0)
+            self._missed.append(mass_last @ ((qd - qd_last) / self.interval_s - qdd_last) - 0.5 * (d_last + d))
+        correction = d + (np.mean(self._missed, axis=0) if self._missed else 0.0)
         qdd_asked = qdd_des - np.linalg.solve(mass, correction)
         self._last = (np.array(qd, dtype=float), qdd_asked, mass, d)
         return qdd_asked

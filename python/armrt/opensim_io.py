@@ -71,6 +71,23 @@ def _write_storage(path, name: str, labels: list[str], time: np.ndarray, data: n
     Path(path).write_text("\n".join(lines) + "\n" + body + "\n")
 
 
+def _table_row_by_row(path, text: list[str], k: int, labels: list[str]) -> np.ndarray:
+    """(T, len(labels)) of the lines after text[k] (the labels), or ValueError naming the first line with the wrong
+    number of values or a value that is not a number."""
+    rows = []
+    for lineno, line in enumerate(text[k + 1:], start=k + 2):
+        if not line.strip():
+            continue
+        fields = line.split()
+        if len(fields) != len(labels):
+            raise ValueError(f"{path}:{lineno}: {len(fields)} values, expected {len(labels)}")
+        try:
+            rows.append([float(v) for v in fields])
+        except ValueError:
+            raise ValueError(f"{path}:{lineno}: not a number in {line[:60]!r}") from None
+    return np.array(rows, dtype=float).reshape(-1, len(labels))
+
+
 def read_storage(path) -> tuple[dict, list[str], np.ndarray]:
     """(header {key: value}, labels including 'time', data (T, ncols)) of a .mot/.sto written here."""
     text = Path(path).read_text().splitlines()
@@ -91,27 +108,12 @@ def read_storage(path) -> tuple[dict, list[str], np.ndarray]:
     labels = text[k].split()
     body = [line for line in text[k + 1:] if line.strip()]
     try:
-        # numpy's parser (a 1e6-row file took 25 s row by row in Python); where it fails, the loop below names the line
+        # numpy's parser (a 1e6-row file took 25 s row by row in Python); where it fails, the row-by-row one names the line
         table = np.loadtxt(body, dtype=float, ndmin=2, comments=None) if body else np.empty((0, len(labels)))
         if table.shape[1] != len(labels):
             raise ValueError("width")
     except ValueError:
-        table = None
-    rows = []
-    for lineno, line in enumerate(text[k + 1:], start=k + 2):
-        if table is not None:
-            break
-        if not line.strip():
-            continue
-        fields = line.split()
-        if len(fields) != len(labels):
-            raise ValueError(f"{path}:{lineno}: {len(fields)} values, expected {len(labels)}")
-        try:
-            rows.append([float(v) for v in fields])
-        except ValueError:
-            raise ValueError(f"{path}:{lineno}: not a number in {line[:60]!r}") from None
-    if table is None:
-        table = np.array(rows, dtype=float).reshape(-1, len(labels))
+        table = _table_row_by_row(path, text, k, labels)
     # OpenSim's Storage writes the table's size in the header: a file that disagrees was cut short or edited by
     # hand, and reading what is there would lose the rest without a word.
     for key, have, what in (("nRows", table.shape[0], "rows"), ("nColumns", len(labels), "columns (time included)")):

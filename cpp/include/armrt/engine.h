@@ -118,7 +118,7 @@ void hand_position_in_thorax(const Model& m, const double* q, double* p_thorax);
 inline constexpr double kMaxHandForce = 1e5;   // N
 inline constexpr double kMaxHandMoment = 1e4;  // N m
 // "" or why a hand force (moment false: N, against kMaxHandForce) or moment (N m, kMaxHandMoment), three finite values,
-// is refused: "<what> of <|v|> N is beyond 100000 N, more than any arm bears (check the units)", |v| by std::hypot
+// is refused: "<what> of <|v|> N is beyond 1e+05 N, more than any arm bears (check the units)", |v| by std::hypot
 // (no overflow) in the shortest form that round-trips, so a value one ulp beyond shows it. The one rule of
 // Arm.set_hand_load, the snapshots, inverse dynamics, static optimisation and armrt-rt (checks.hand_load calls it).
 std::string hand_load_error(const char* what, const double* v, bool moment);
